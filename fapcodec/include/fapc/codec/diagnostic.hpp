@@ -1,0 +1,83 @@
+// Errors and warnings as values. The libraries never print or exit: they return a Diagnostic and
+// the command line decides how to show it (see docs/cli.md of the contract).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace fapc {
+
+enum class Severity { warning, error };
+
+// Where a diagnostic points. Text inputs use line and column (1-based); binary inputs use a byte
+// offset. A line of 0 and an offset of -1 mean "the whole file".
+struct Location {
+  std::string file;
+  int line = 0;
+  int column = 0;
+  std::int64_t byte_offset = -1;
+
+  static Location text(std::string file, int line, int column) {
+    return Location{std::move(file), line, column, -1};
+  }
+  static Location binary(std::string file, std::int64_t offset) {
+    return Location{std::move(file), 0, 0, offset};
+  }
+};
+
+struct Diagnostic {
+  Severity severity = Severity::error;
+  Location where;
+  std::string message;
+  // The source line the diagnostic points into, when there is one, so a caret can be drawn.
+  std::string source_line;
+};
+
+using Diagnostics = std::vector<Diagnostic>;
+
+// "FILE:LINE:COL: error: MESSAGE" or "FILE: byte N: error: MESSAGE" (docs/cli.md). Without the
+// caret lines; see render_with_caret for the full form.
+std::string format_diagnostic(const Diagnostic& d);
+
+// format_diagnostic plus, when the source line is known, the line and a caret under the column.
+std::string render_with_caret(const Diagnostic& d);
+
+inline Diagnostic make_error(Location where, std::string message, std::string source_line = {}) {
+  return Diagnostic{Severity::error, std::move(where), std::move(message), std::move(source_line)};
+}
+inline Diagnostic make_warning(Location where, std::string message, std::string source_line = {}) {
+  return Diagnostic{Severity::warning, std::move(where), std::move(message),
+                    std::move(source_line)};
+}
+
+// A value or the error that prevented it. Warnings travel beside the value where a reader
+// produces them (see each reader's result type).
+template <class T>
+class Result {
+ public:
+  Result(T value) : state_(std::move(value)) {}                 // NOLINT: implicit on purpose
+  Result(Diagnostic error) : state_(std::move(error)) {}        // NOLINT: implicit on purpose
+
+  bool ok() const { return std::holds_alternative<T>(state_); }
+  explicit operator bool() const { return ok(); }
+  T& value() { return std::get<T>(state_); }
+  const T& value() const { return std::get<T>(state_); }
+  T& operator*() { return value(); }
+  const T& operator*() const { return value(); }
+  T* operator->() { return &value(); }
+  const T* operator->() const { return &value(); }
+  const Diagnostic& error() const { return std::get<Diagnostic>(state_); }
+
+ private:
+  std::variant<T, Diagnostic> state_;
+};
+
+// For operations that produce nothing but can fail.
+struct Unit {};
+using Status = Result<Unit>;
+inline Status ok_status() { return Unit{}; }
+
+}  // namespace fapc

@@ -1,0 +1,109 @@
+#include "fapc/codec/file_io.hpp"
+
+#include <zlib.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <random>
+
+namespace fapc {
+
+namespace {
+
+bool ends_with(std::string_view s, std::string_view suffix) {
+  return s.size() >= suffix.size() && s.substr(s.size() - suffix.size()) == suffix;
+}
+
+Diagnostic io_error(const std::string& path, const std::string& what) {
+  return make_error(Location{path, 0, 0, -1}, what + ": " + std::strerror(errno));
+}
+
+}  // namespace
+
+bool is_gzip(std::string_view bytes) {
+  return bytes.size() >= 2 && static_cast<unsigned char>(bytes[0]) == 0x1f &&
+         static_cast<unsigned char>(bytes[1]) == 0x8b;
+}
+
+Result<std::string> gunzip(std::string_view bytes, const std::string& file) {
+  z_stream z{};
+  if (inflateInit2(&z, 15 + 32) != Z_OK)  // +32: accept gzip and zlib headers
+    return make_error(Location::binary(file, 0), "cannot start the gzip decoder");
+  std::string out;
+  char buffer[65536];
+  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
+  z.avail_in = static_cast<uInt>(bytes.size());
+  int rc = Z_OK;
+  while (rc != Z_STREAM_END) {
+    z.next_out = reinterpret_cast<Bytef*>(buffer);
+    z.avail_out = sizeof buffer;
+    rc = inflate(&z, Z_NO_FLUSH);
+    if (rc != Z_OK && rc != Z_STREAM_END) {
+      const auto offset = static_cast<std::int64_t>(z.total_in);
+      const std::string why = z.msg ? z.msg : (rc == Z_BUF_ERROR ? "truncated gzip data" : "bad gzip data");
+      inflateEnd(&z);
+      return make_error(Location::binary(file, offset), "gzip: " + why);
+    }
+    out.append(buffer, sizeof buffer - z.avail_out);
+  }
+  inflateEnd(&z);
+  return out;
+}
+
+std::string gzip(std::string_view bytes) {
+  z_stream z{};
+  deflateInit2(&z, Z_BEST_COMPRESSION, Z_DEFLATED, 15 + 16, 9, Z_DEFAULT_STRATEGY);  // +16: gzip
+  std::string out(deflateBound(&z, static_cast<uLong>(bytes.size())) + 32, '\0');
+  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
+  z.avail_in = static_cast<uInt>(bytes.size());
+  z.next_out = reinterpret_cast<Bytef*>(out.data());
+  z.avail_out = static_cast<uInt>(out.size());
+  deflate(&z, Z_FINISH);
+  out.resize(z.total_out);
+  deflateEnd(&z);
+  return out;
+}
+
+Result<std::string> read_file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return io_error(path, "cannot open file");
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) return io_error(path, "cannot read file");
+  if (is_gzip(bytes)) return gunzip(bytes, path);
+  return bytes;
+}
+
+Status write_file_atomic(const std::string& path, std::string_view bytes) {
+  std::string data;
+  if (ends_with(path, ".gz")) {
+    data = gzip(bytes);
+    bytes = data;
+  }
+  const auto slash = path.find_last_of('/');
+  const std::string folder = slash == std::string::npos ? "." : path.substr(0, slash);
+  std::random_device seed;
+  const std::string temp =
+      folder + "/.fapc-tmp-" + std::to_string(seed()) + "-" +
+      (slash == std::string::npos ? path : path.substr(slash + 1));
+  {
+    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    if (!out) return io_error(path, "cannot create output");
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.flush();
+    if (!out) {
+      std::remove(temp.c_str());
+      return io_error(path, "cannot write output");
+    }
+  }
+  if (std::rename(temp.c_str(), path.c_str()) != 0) {
+    const Diagnostic error = io_error(path, "cannot replace output");
+    std::remove(temp.c_str());
+    return error;
+  }
+  return ok_status();
+}
+
+}  // namespace fapc

@@ -1,0 +1,31 @@
+// Helpers shared by every test program: where the sources and the corpus are, and golden files.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace fapc::test {
+
+std::string source_dir();  // the project's top folder
+std::string binary_dir();  // the build folder
+std::string corpus_dir();  // source_dir() + "/corpus"
+std::string fapc_program();  // the built fapc program
+
+std::string read_text(const std::string& path);  // bytes as they are; fails the test if missing
+// Every regular file under `folder` whose name ends with `suffix`, sorted.
+std::vector<std::string> files_under(const std::string& folder, const std::string& suffix);
+
+// Compares `actual` with the golden file at `path` (relative to corpus/). With the environment
+// variable FAPC_REGENERATE_GOLDEN=1 the golden file is rewritten instead, and the test passes;
+// review the result with `git diff corpus/` before committing (docs/testing.md).
+void expect_golden(const std::string& path, const std::string& actual);
+
+struct CommandRun {
+  int exit_status = -1;
+  std::string out;
+  std::string err;
+};
+// Runs the built fapc with `args` (a shell-quoted string) from the source folder.
+CommandRun run_fapc(const std::string& args);
+
+}  // namespace fapc::test

@@ -1,0 +1,91 @@
+// The registries of the fapc program: subcommands, input formats and output formats. Each lives in
+// its own .cpp file and registers itself with a static Register* object, so the command table and
+// the format table are assembled at start-up and no central list needs editing.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "fapc/codec/diagnostic.hpp"
+#include "fapc/codec/fap_sequence.hpp"
+#include "fapc/transcoder/curves.hpp"
+
+namespace fapc::cli {
+
+// docs/cli.md: exit statuses.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitBadInput = 1;
+inline constexpr int kExitUsage = 2;
+inline constexpr int kExitVerifyFailed = 3;
+
+// ---- subcommands -------------------------------------------------------------------------------
+
+using CommandFn = int (*)(const std::vector<std::string>& args);
+
+struct Command {
+  std::string name;
+  std::string usage;  // one line, as in docs/cli.md
+  CommandFn run;
+};
+
+struct RegisterCommand {
+  RegisterCommand(std::string name, std::string usage, CommandFn run);
+};
+
+const std::map<std::string, Command>& commands();
+
+// ---- conversion options shared by compile, batch and the format handlers ---------------------
+
+struct ConvertOptions {
+  int fps = 25;
+  std::optional<std::string> profile;
+  std::map<std::string, std::string> events;  // --event NAME=VALUE
+  int quant = 1;                             // fap_quant for .fba/.mp4 outputs
+  int intra_period = 0;                      // 0: encoder decides
+  std::string ranges = "fit";                // fit | max
+  bool strict = false;
+  bool verify = false;
+};
+
+// What an input became: always frames; curves when the front end has them (timeline inputs).
+struct Loaded {
+  FapSequence frames;
+  std::optional<Curves> curves;
+  Diagnostics warnings;
+};
+
+struct InputFormat {
+  std::string kind;                     // "fap", "fba", "mimic", ...
+  std::vector<std::string> extensions;  // ".fap", ".fap.gz"
+  std::function<Result<Loaded>(const std::string& path, const ConvertOptions&)> load;
+};
+
+struct OutputFormat {
+  std::string kind;
+  std::vector<std::string> extensions;
+  // The bytes to write for `path` (the name may go into the output, e.g. a .fap header).
+  std::function<Result<std::string>(const Loaded&, const std::string& path, const ConvertOptions&)>
+      write;
+};
+
+struct RegisterInput {
+  explicit RegisterInput(InputFormat format);
+};
+struct RegisterOutput {
+  explicit RegisterOutput(OutputFormat format);
+};
+
+// Lookup by the longest matching extension (".fap.gz" before ".gz"), or by kind name.
+const InputFormat* input_format_for(const std::string& path);
+const OutputFormat* output_format_for(const std::string& path);
+const InputFormat* input_format_named(const std::string& kind);
+const OutputFormat* output_format_named(const std::string& kind);
+
+// Loads any supported input (by extension), or reports why not.
+Result<Loaded> load_input(const std::string& path, const ConvertOptions& options);
+
+}  // namespace fapc::cli
