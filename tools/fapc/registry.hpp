@@ -10,6 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/fap_sequence.hpp"
 #include "fapc/transcoder/curves.hpp"
@@ -62,6 +64,10 @@ struct InputFormat {
   std::string kind;                     // "fap", "fba", "mimic", ...
   std::vector<std::string> extensions;  // ".fap", ".fap.gz"
   std::function<Result<Loaded>(const std::string& path, const ConvertOptions&)> load;
+  // Optional: facts for `fapc info` beyond the generic frame summary (format variant, stream
+  // statistics, tracks...). Keys become lines of the text output and members of --json.
+  std::function<Result<nlohmann::ordered_json>(const std::string& path, const ConvertOptions&)>
+      describe;
 };
 
 struct OutputFormat {
