@@ -1,0 +1,72 @@
+#include "fapc/convert.hpp"
+
+#include <iostream>
+
+#include "fapc/codec/file_io.hpp"
+#include "fapc/report.hpp"
+
+namespace fapc::cli {
+
+ConvertOptions convert_options(Args& args) {
+  ConvertOptions options;
+  options.fps = args.integer("fps", 25, 1, 1000);
+  options.quant = args.integer("quant", 1, 0, 31);
+  options.intra_period = args.integer("intra-period", 0, 0, 1 << 20);
+  options.profile = args.value("profile");
+  options.strict = args.flag("strict");
+  options.verify = args.flag("verify");
+  if (const auto ranges = args.value("ranges")) options.ranges = *ranges;
+  for (const std::string& event : args.values("event")) {
+    const auto eq = event.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      args.integer("event", 0, 0, 0);  // records nothing; the message below is clearer
+      return options;
+    }
+    options.events[event.substr(0, eq)] = event.substr(eq + 1);
+  }
+  return options;
+}
+
+ConvertOutcome convert(const std::string& input, const std::string& output,
+                       const ConvertOptions& options, const std::string& to_kind) {
+  ConvertOutcome outcome;
+  const OutputFormat* writer =
+      to_kind.empty() ? output_format_for(output) : output_format_named(to_kind);
+  if (!writer) {
+    report(make_error(Location{output, 0, 0, -1},
+                      "unknown output kind (expected .fap, .fap.gz, .fba, .mp4, .xmt, .json or .svg)"));
+    outcome.exit_status = kExitBadInput;
+    return outcome;
+  }
+  auto loaded = load_input(input, options);
+  if (!loaded) {
+    report(loaded.error());
+    outcome.exit_status = kExitBadInput;
+    return outcome;
+  }
+  report_all(loaded->warnings);
+  if (options.strict && !loaded->warnings.empty()) {
+    std::cerr << input << ": error: " << loaded->warnings.size()
+              << " warning(s) treated as errors (--strict); nothing written\n";
+    outcome.exit_status = kExitBadInput;
+    return outcome;
+  }
+  auto bytes = writer->write(*loaded, output, options);
+  if (!bytes) {
+    report(bytes.error());
+    outcome.exit_status = bytes.error().message.rfind("verification", 0) == 0 ? kExitVerifyFailed
+                                                                             : kExitBadInput;
+    return outcome;
+  }
+  if (output == "-") {
+    std::cout << *bytes << std::flush;
+  } else if (auto written = write_file_atomic(output, *bytes); !written) {
+    report(written.error());
+    outcome.exit_status = kExitBadInput;
+    return outcome;
+  }
+  outcome.loaded = std::move(*loaded);
+  return outcome;
+}
+
+}  // namespace fapc::cli

@@ -1,0 +1,29 @@
+// The conversion at the heart of `compile` and `batch`: load any input, write any output,
+// atomically, reporting warnings (errors under --strict).
+#pragma once
+
+#include <string>
+
+#include "fapc/args.hpp"
+#include "fapc/registry.hpp"
+
+namespace fapc::cli {
+
+// Option names shared by compile and batch.
+inline const std::set<std::string> kConvertValued = {"fps", "profile", "event", "quant",
+                                                      "intra-period", "ranges", "from", "to"};
+inline const std::set<std::string> kConvertFlags = {"strict", "verify"};
+
+// Reads the shared options; sets args' error on bad values.
+ConvertOptions convert_options(Args& args);
+
+struct ConvertOutcome {
+  int exit_status = kExitOk;
+  Loaded loaded;  // what the input became (for summaries)
+};
+
+// Converts `input` to `output` (by extension, or by `to_kind` when given); prints diagnostics.
+ConvertOutcome convert(const std::string& input, const std::string& output,
+                       const ConvertOptions& options, const std::string& to_kind = {});
+
+}  // namespace fapc::cli
