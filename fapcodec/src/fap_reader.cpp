@@ -55,10 +55,12 @@ class Reader {
   Result<FapReadResult> run();
 
  private:
-  Diagnostic error_at(const Line& line, int column, const std::string& message) const {
+  template <class AnyLine>
+  Diagnostic error_at(const AnyLine& line, int column, const std::string& message) const {
     return make_error(Location::text(file_, line.number, column), message, std::string(line.text));
   }
-  void warn_at(const Line& line, int column, const std::string& message) {
+  template <class AnyLine>
+  void warn_at(const AnyLine& line, int column, const std::string& message) {
     out_.warnings.push_back(
         make_warning(Location::text(file_, line.number, column), message, std::string(line.text)));
   }
@@ -71,7 +73,7 @@ class Reader {
   std::optional<Diagnostic> read_values(const Line& line, const std::bitset<kFapCount>& mask,
                                         FapFrame& frame);
   std::optional<Diagnostic> read_value(const Line& line, const Token& token, long long low,
-                                       long long high, const char* what, bool is_field,
+                                       long long high, const char* field_name, int fap,
                                        std::int32_t& value);
   std::optional<Diagnostic> place_frames_in_time();
 
@@ -80,7 +82,13 @@ class Reader {
   const FapReadOptions& options_;
   FapReadResult out_;
   std::optional<long long> semaine_time_;
-  std::vector<const Line*> value_lines_;  // per frame, for timing diagnostics
+  // Per frame, where its value line is, for the timing diagnostics after reading.
+  struct FrameLine {
+    int number;
+    std::string_view text;
+    int first_column;
+  };
+  std::vector<FrameLine> value_lines_;
   bool warned_float_ = false;
   bool warned_comment_after_header_ = false;
 };
@@ -156,8 +164,12 @@ std::optional<Diagnostic> Reader::read_mask(const Line& line, std::bitset<kFapCo
 }
 
 std::optional<Diagnostic> Reader::read_value(const Line& line, const Token& token, long long low,
-                                             long long high, const char* what, bool is_field,
+                                             long long high, const char* field_name, int fap,
                                              std::int32_t& value) {
+  // Named lazily: building the name for every value would dominate the reading time.
+  const auto what = [&] {
+    return fap > 0 ? "value of FAP " + std::to_string(fap) : std::string(field_name);
+  };
   double number = 0;
   if (const auto integer = parse_integer(token.text)) {
     number = static_cast<double>(*integer);
@@ -171,14 +183,14 @@ std::optional<Diagnostic> Reader::read_value(const Line& line, const Token& toke
     out_.facts.float_values = true;
   } else {
     return error_at(line, token.column,
-                    std::string(what) + " must be a number, found '" + std::string(token.text) + "'");
+                    what() + " must be a number, found '" + std::string(token.text) + "'");
   }
   // VREng's private scaling applies to FAP values, not to the viseme and expression fields.
-  if (options_.vreng_divide_v20 && out_.facts.version == "2.0" && !is_field) number /= 20;
+  if (options_.vreng_divide_v20 && out_.facts.version == "2.0" && fap > 0) number /= 20;
   const double rounded = std::round(number);  // std::round: halves away from zero
   if (rounded < static_cast<double>(low) || rounded > static_cast<double>(high))
     return error_at(line, token.column,
-                    std::string(what) + " " + std::string(token.text) + " is outside " +
+                    what() + " " + std::string(token.text) + " is outside " +
                         std::to_string(low) + ".." + std::to_string(high));
   value = static_cast<std::int32_t>(rounded);
   return std::nullopt;
@@ -226,7 +238,7 @@ std::optional<Diagnostic> Reader::read_values(const Line& line,
     // A single viseme value is taken as viseme_select1 shown alone (blend 63): Greta's form.
     const int count = full_fields ? kVisemeFieldCount : 1;
     for (int k = 0; k < count; ++k) {
-      if (auto e = read_value(line, tokens[next++], 0, kVisemeMax[k], kVisemeField[k], true,
+      if (auto e = read_value(line, tokens[next++], 0, kVisemeMax[k], kVisemeField[k], 0,
                                 field))
         return e;
       *fields[k] = field;
@@ -241,7 +253,7 @@ std::optional<Diagnostic> Reader::read_values(const Line& line,
     const int count = full_fields ? kExpressionFieldCount : 1;
     for (int k = 0; k < count; ++k) {
       if (auto e = read_value(line, tokens[next++], 0, kExpressionMax[k], kExpressionField[k],
-                              true, field))
+                              0, field))
         return e;
       *fields[k] = field;
     }
@@ -249,10 +261,8 @@ std::optional<Diagnostic> Reader::read_values(const Line& line,
   }
   for (int fap = 3; fap <= kFapCount; ++fap) {
     if (!frame.has(fap)) continue;
-    const std::string what = "value of FAP " + std::to_string(fap);
     constexpr long long kLimit = std::numeric_limits<std::int32_t>::max();
-    if (auto e = read_value(line, tokens[next++], -kLimit, kLimit, what.c_str(), false, field))
-      return e;
+    if (auto e = read_value(line, tokens[next++], -kLimit, kLimit, nullptr, fap, field)) return e;
     frame.values[static_cast<std::size_t>(fap - 1)] = field;
   }
   return std::nullopt;
@@ -264,8 +274,8 @@ std::optional<Diagnostic> Reader::place_frames_in_time() {
   FapFileFacts& facts = out_.facts;
   for (std::size_t i = 1; i < frames.size(); ++i)
     if (frames[i].number <= frames[i - 1].number) {
-      const Line& line = *value_lines_[i];
-      return error_at(line, line.tokens.front().column,
+      const FrameLine& line = value_lines_[i];
+      return error_at(line, line.first_column,
                       "frame number " + std::to_string(frames[i].number) +
                           " does not follow frame " + std::to_string(frames[i - 1].number) +
                           "; frame numbers must ascend");
@@ -287,8 +297,8 @@ std::optional<Diagnostic> Reader::place_frames_in_time() {
     for (std::size_t i = 0; i < frames.size(); ++i) {
       const long long offset = frames[i].number - first;
       if (offset % step != 0) {
-        const Line& line = *value_lines_[i];
-        return error_at(line, line.tokens.front().column,
+        const FrameLine& line = value_lines_[i];
+        return error_at(line, line.first_column,
                         "time stamp " + std::to_string(frames[i].number) + " ms is not on the " +
                             std::to_string(step) + " ms grid of the first frame");
       }
@@ -310,8 +320,8 @@ std::optional<Diagnostic> Reader::place_frames_in_time() {
   for (std::size_t i = 1; i < frames.size(); ++i)
     if (frames[i].number != frames[i - 1].number + 1) {
       facts.frame_gaps = true;
-      const Line& line = *value_lines_[i];
-      warn_at(line, line.tokens.front().column,
+      const FrameLine& line = value_lines_[i];
+      warn_at(line, line.first_column,
               "frames " + std::to_string(frames[i - 1].number + 1) + " to " +
                   std::to_string(frames[i].number - 1) + " are absent");
     }
@@ -326,8 +336,12 @@ Result<FapReadResult> Reader::run() {
 
   enum class Expect { header, mask, values } expect = Expect::header;
   std::bitset<kFapCount> mask;
-  const Line* mask_line = nullptr;
-  for (const Line& line : split_.lines) {
+  fapfile::RawLine mask_line{0, {}};
+  out_.sequence.frames.reserve(split_.lines.size() / 2);
+  Line line;
+  line.tokens.reserve(72);  // a mask line has 68 or 69 tokens
+  for (const fapfile::RawLine& raw : split_.lines) {
+    fapfile::tokenize(raw, line);
     if (line.tokens.empty()) continue;  // blank lines carry nothing
     if (line.first_is_comment()) {
       ++facts.comment_lines;
@@ -356,19 +370,19 @@ Result<FapReadResult> Reader::run() {
     }
     if (expect == Expect::mask) {
       if (auto e = read_mask(line, mask)) return *e;
-      mask_line = &line;
+      mask_line = raw;
       expect = Expect::values;
     } else {
       FapFrame frame;
       if (auto e = read_values(line, mask, frame)) return *e;
       if (frame.mask.none()) facts.zero_active_faps = true;
       out_.sequence.frames.push_back(frame);
-      value_lines_.push_back(&line);
+      value_lines_.push_back(FrameLine{line.number, line.text, line.tokens.front().column});
       expect = Expect::mask;
     }
   }
   if (expect == Expect::values)
-    return error_at(*mask_line, static_cast<int>(mask_line->text.size()) + 1,
+    return error_at(mask_line, static_cast<int>(mask_line.text.size()) + 1,
                     "mask line without the value line that must follow it");
   if (auto e = place_frames_in_time()) return *e;
   const auto frames = static_cast<long long>(out_.sequence.frames.size());

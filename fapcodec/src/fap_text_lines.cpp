@@ -6,8 +6,14 @@ namespace {
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
 
-Line tokenize(int number, std::string_view text) {
-  Line line{number, text, {}, false, false};
+}  // namespace
+
+void tokenize(const RawLine& raw, Line& line) {
+  const std::string_view text = raw.text;
+  line.number = raw.number;
+  line.text = text;
+  line.tokens.clear();
+  line.has_tab = false;
   std::size_t i = 0;
   while (i < text.size()) {
     if (is_blank(text[i])) {
@@ -20,10 +26,7 @@ Line tokenize(int number, std::string_view text) {
     line.tokens.push_back(Token{text.substr(start, i - start), static_cast<int>(start) + 1});
   }
   line.trailing_blank = !text.empty() && is_blank(text.back()) && !line.tokens.empty();
-  return line;
 }
-
-}  // namespace
 
 SplitText split_lines(std::string_view text) {
   SplitText out;
@@ -42,7 +45,7 @@ SplitText split_lines(std::string_view text) {
       line.remove_suffix(1);
       out.crlf = true;
     }
-    out.lines.push_back(tokenize(++number, line));
+    out.lines.push_back(RawLine{++number, line});
     start = end + 1;
   }
   return out;

@@ -22,13 +22,21 @@ struct Line {
   bool first_is_comment() const { return !tokens.empty() && tokens.front().text[0] == '#'; }
 };
 
+// A physical line before tokenizing (tokens are made one line at a time into a reused Line, so
+// reading a file does not allocate per line).
+struct RawLine {
+  int number;
+  std::string_view text;
+};
+
 struct SplitText {
-  std::vector<Line> lines;
+  std::vector<RawLine> lines;
   bool crlf = false;
   bool final_newline = true;
   bool utf8_bom = false;
 };
 
 SplitText split_lines(std::string_view text);
+void tokenize(const RawLine& raw, Line& line);
 
 }  // namespace fapc::fapfile
