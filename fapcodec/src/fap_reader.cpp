@@ -105,9 +105,10 @@ std::optional<Diagnostic> Reader::read_header(const Line& line) {
   const Token& fps_token = tokens[tokens.size() - 2];
   const Token& count_token = tokens.back();
   const auto fps = parse_number(fps_token.text);
-  if (!fps || *fps <= 0 || *fps > 1000)
+  // Frame rates are integers once read (docs/fap-files.md), so below 0.5 would round to 0.
+  if (!fps || *fps < 0.5 || *fps > 1000)
     return error_at(line, fps_token.column,
-                    "header frame rate must be a positive number, found '" +
+                    "header frame rate must be a number from 1 to 1000, found '" +
                         std::string(fps_token.text) + "'");
   const auto count = parse_integer(count_token.text);
   if (!count || *count < 0)

@@ -30,9 +30,11 @@ struct BadCase {
 std::vector<BadCase> bad_cases() {
   return {
       {"fps-not-a-number", "2.1 demo fast 1\n" + kJaw + "\n0 1\n",
-       "bad.fap:1:10: error: header frame rate must be a positive number, found 'fast'"},
+       "bad.fap:1:10: error: header frame rate must be a number from 1 to 1000, found 'fast'"},
       {"fps-zero", "2.1 demo 0 1\n" + kJaw + "\n0 1\n",
-       "bad.fap:1:10: error: header frame rate must be a positive number, found '0'"},
+       "bad.fap:1:10: error: header frame rate must be a number from 1 to 1000, found '0'"},
+      {"fps-rounds-to-zero", "2.1 demo .1 1\n" + kJaw + "\n0 1\n",  // found by the fuzzer
+       "bad.fap:1:10: error: header frame rate must be a number from 1 to 1000, found '.1'"},
       {"count-negative", "2.1 demo 25 -1\n" + kJaw + "\n0 1\n",
        "bad.fap:1:13: error: header frame count must be a non-negative integer, found '-1'"},
       {"count-float", "2.1 demo 25 2.5\n" + kJaw + "\n0 1\n",
@@ -97,7 +99,7 @@ TEST(FapMalformed, CaretPointsAtTheColumn) {
   auto read = read_fap_text("2.1 demo fast 1\n", "bad.fap");
   ASSERT_FALSE(read.ok());
   EXPECT_EQ(render_with_caret(read.error()),
-            "bad.fap:1:10: error: header frame rate must be a positive number, found 'fast'\n"
+            "bad.fap:1:10: error: header frame rate must be a number from 1 to 1000, found 'fast'\n"
             "2.1 demo fast 1\n"
             "         ^");
 }
