@@ -1,0 +1,63 @@
+// Rendering the shared timeline (semantics.md §1): blended values at any time, frames at a frame
+// rate, and thinned time-value lists. No I/O; clamps come back as warnings.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fapc/codec/diagnostic.hpp"
+#include "fapc/codec/fap_sequence.hpp"
+#include "fapc/transcoder/curves.hpp"
+#include "fapc/transcoder/profile.hpp"
+#include "fapc/transcoder/timeline.hpp"
+
+namespace fapc {
+
+// Answers value queries on one timeline. Construction indexes the clips per target and resolves
+// fill=freeze ends; queries cost O(log n + active clips).
+class TimelineEvaluator {
+ public:
+  explicit TimelineEvaluator(const Timeline& timeline);
+
+  std::vector<std::string> targets() const;  // sorted
+  // The blended value of `target` at t; 0 (neutral) where no clip is active. `from_left` takes the
+  // limit from the left (clips active on (begin, end]): the value a span has at its own end.
+  double value_at(const std::string& target, double t, bool from_left = false) const;
+  // [first begin, last end) of the target's clips, counting frozen clips to their resolved end.
+  std::pair<double, double> span(const std::string& target) const;
+
+ private:
+  struct Impl;
+  std::shared_ptr<const Impl> impl_;
+};
+
+struct RenderOptions {
+  int fps = 25;
+  const Profile* profile = nullptr;  // nullptr: default_profile()
+  std::string name;                  // the sequence's name
+};
+
+struct Rendered {
+  FapSequence frames;
+  Diagnostics warnings;  // clamps, once per clip, at the clip's source
+};
+
+// Frames k = 0 .. ceil(end * fps) - 1 at time k / fps. Errors: a target no profile maps.
+Result<Rendered> render_frames(const Timeline& timeline, const RenderOptions& options);
+
+struct CurveOptions {
+  int fps = 25;
+  double tolerance = 1e-6;  // relative to the target's value range
+};
+
+// Per target: the blended curve sampled at the frame rate plus every key-point time and span
+// end, then thinned (semantics.md §1, "Time-value lists").
+Curves render_curves(const Timeline& timeline, const CurveOptions& options);
+
+// Per clip, its own unblended curve, labelled "target (file:line)": the upper plot of the Mimic
+// paper's Figure 1.
+Curves render_clip_curves(const Timeline& timeline, const CurveOptions& options);
+
+}  // namespace fapc
