@@ -15,6 +15,7 @@
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/fap_sequence.hpp"
 #include "fapc/transcoder/curves.hpp"
+#include "fapc/transcoder/timeline.hpp"
 
 namespace fapc::cli {
 
@@ -53,10 +54,12 @@ struct ConvertOptions {
   bool verify = false;
 };
 
-// What an input became: always frames; curves when the front end has them (timeline inputs).
+// What an input became: always frames; the timeline and its curves when the front end has them
+// (Mimic, FML, XMT-Omega), so curve outputs and per-clip plots keep the authored shape.
 struct Loaded {
   FapSequence frames;
   std::optional<Curves> curves;
+  std::optional<Timeline> timeline;
   Diagnostics warnings;
 };
 
