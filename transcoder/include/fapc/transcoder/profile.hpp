@@ -23,8 +23,10 @@ struct Profile {
   std::map<std::string, std::vector<FapContribution>, std::less<>> parameters;
 };
 
-// The bundled profile: covers every free name of the Mimic paper's examples.
+// The bundled profile: covers every free name of the Mimic paper's examples. Its text, in the
+// profile format, is a starting point for custom profiles (docs/profiles.md shows it).
 const Profile& default_profile();
+std::string_view default_profile_text();
 
 // The profile text format: `name fap scale` per line (fap by name or number), `#` comments; a name
 // on several lines drives several FAPs. Errors at file:line:col.

@@ -1,0 +1,99 @@
+// Time-value lists (semantics.md §1): per target, the blended curve sampled at the frame rate plus
+// every key-point time, jumps kept as two points at one time, then thinned.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "thin_points.hpp"
+#include "timeline_index.hpp"
+
+namespace fapc {
+namespace {
+
+using Points = std::vector<std::pair<double, double>>;
+
+// The times where a clip's curve has a key point, an edge, or a jump, in absolute seconds.
+void add_clip_times(const Clip& clip, double end, std::vector<double>& times) {
+  times.push_back(clip.begin);
+  if (std::isfinite(end)) times.push_back(end);
+  if (clip.curve.periodic) return;
+  for (const KeyPoint& key : clip.curve.keys) {
+    const double t = clip.begin + key.time - clip.curve_offset;
+    if (t >= clip.begin && t <= end) times.push_back(t);
+  }
+}
+
+void add_frame_times(double from, double to, int fps, std::vector<double>& times) {
+  for (auto k = static_cast<std::int64_t>(std::ceil(from * fps)); static_cast<double>(k) / fps < to; ++k) {
+    times.push_back(static_cast<double>(k) / fps);
+  }
+}
+
+void sort_unique(std::vector<double>& times) {
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+}
+
+// Samples `value(t, from_left)` at `times`: where the left limit differs from the value (a jump),
+// both are kept, the left one first, except before the very first point.
+template <class ValueFn>
+Points sample(const std::vector<double>& times, ValueFn value) {
+  Points points;
+  for (const double t : times) {
+    const double right = value(t, false);
+    if (!points.empty()) {
+      const double left = value(t, true);
+      if (left != right) points.emplace_back(t, left);
+    }
+    points.emplace_back(t, right);
+  }
+  return points;
+}
+
+}  // namespace
+
+Curves render_curves(const Timeline& timeline, const CurveOptions& options) {
+  const TimelineIndex index(timeline);
+  Curves out;
+  out.fps = options.fps;
+  out.duration = timeline.end();
+  for (const auto& [target, target_index] : index.targets) {
+    std::vector<double> times;
+    for (std::size_t i = 0; i < target_index.clips.size(); ++i) {
+      const double end = std::min(target_index.effective_end[i], out.duration);
+      add_clip_times(index.clips[target_index.clips[i]], end, times);
+    }
+    const double last = std::min(target_index.span_end, out.duration);
+    add_frame_times(target_index.span_begin, last, options.fps, times);
+    times.push_back(last);
+    sort_unique(times);
+    Points points = sample(times, [&](double t, bool from_left) {
+      return index.value_at(target_index, t, from_left).value;
+    });
+    out.curves[target] = thin_points(std::move(points), options.tolerance);
+  }
+  return out;
+}
+
+Curves render_clip_curves(const Timeline& timeline, const CurveOptions& options) {
+  Curves out;
+  out.fps = options.fps;
+  out.duration = timeline.end();
+  for (const Clip& clip : timeline.clips) {
+    std::vector<double> times;
+    add_clip_times(clip, clip.end, times);
+    add_frame_times(clip.begin, clip.end, options.fps, times);
+    sort_unique(times);
+    Points points = sample(times, [&](double t, bool) { return clip_value(clip, t); });
+    // "jaw (table2.mimic:5)"; a second clip from the same place (a macro used twice) gets " #2".
+    std::string label = clip.target + " (" +
+                        std::filesystem::path(clip.source.file).filename().string() + ":" +
+                        std::to_string(clip.source.line) + ")";
+    std::string unique = label;
+    for (int n = 2; out.curves.contains(unique); ++n) unique = label + " #" + std::to_string(n);
+    out.curves[unique] = thin_points(std::move(points), options.tolerance);
+  }
+  return out;
+}
+
+}  // namespace fapc

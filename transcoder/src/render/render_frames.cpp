@@ -1,0 +1,160 @@
+// Frames from the timeline (semantics.md §1 "Rendering"): sample, sum the targets that drive each
+// FAP, round halves away from zero, clamp to the legal range with one warning per clip.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include "timeline_index.hpp"
+
+namespace fapc {
+namespace {
+
+struct Driver {
+  const TargetIndex* index;
+  std::vector<FapContribution> contributions;
+  int weight_slot = -1;  // viseme or expression number for viseme.X / expression.X targets
+};
+
+int weight_slot(const std::string& target) {
+  const auto dot = target.find('.');
+  const std::string_view name = std::string_view(target).substr(dot + 1);
+  const bool viseme = target.starts_with("viseme.");
+  for (int i = 0; i < (viseme ? 15 : 7); ++i) {
+    const std::string_view known = viseme ? viseme_name(i) : expression_name(i);
+    if (std::equal(name.begin(), name.end(), known.begin(), known.end(),
+                   [](char a, char b) {
+                     return std::tolower(static_cast<unsigned char>(a)) ==
+                            std::tolower(static_cast<unsigned char>(b));
+                   })) {
+      return i;
+    }
+  }
+  return 0;
+}
+
+// The two strongest weights become FAP 1 / FAP 2's two slots (ties: the lower number).
+std::pair<std::pair<int, int>, std::pair<int, int>> strongest_two(const std::vector<int>& weights) {
+  std::pair<int, int> first{0, 0};
+  std::pair<int, int> second{0, 0};
+  for (int slot = 1; slot < static_cast<int>(weights.size()); ++slot) {
+    const int w = weights[static_cast<std::size_t>(slot)];
+    if (w > first.second) {
+      second = first;
+      first = {slot, w};
+    } else if (w > second.second) {
+      second = {slot, w};
+    }
+  }
+  return {first, second};
+}
+
+class FrameRenderer {
+ public:
+  FrameRenderer(const TimelineIndex& index, const RenderOptions& options)
+      : index_(index), options_(options) {}
+
+  Rendered run(std::vector<Driver> drivers, double end) {
+    Rendered out;
+    out.frames.name = options_.name;
+    out.frames.fps = options_.fps;
+    const auto count = static_cast<std::int64_t>(std::ceil(end * options_.fps - 1e-9));
+    out.frames.frames.reserve(static_cast<std::size_t>(std::max<std::int64_t>(count, 0)));
+    for (std::int64_t k = 0; k < count; ++k) {
+      out.frames.frames.push_back(frame_at(drivers, k));
+    }
+    out.warnings = std::move(warnings_);
+    return out;
+  }
+
+ private:
+  const TimelineIndex& index_;
+  const RenderOptions& options_;
+  Diagnostics warnings_;
+  std::set<std::int64_t> warned_clips_;
+
+  FapFrame frame_at(const std::vector<Driver>& drivers, std::int64_t k) {
+    const double t = static_cast<double>(k) / options_.fps;
+    FapFrame frame;
+    frame.number = k;
+    std::array<double, kFapCount> sums{};
+    std::array<std::int64_t, kFapCount> causes;
+    causes.fill(-1);
+    std::vector<int> visemes(15, 0);
+    std::vector<int> expressions(7, 0);
+    for (const Driver& driver : drivers) {
+      if (t < driver.index->span_begin || t >= driver.index->span_end) continue;
+      const Blended blended = index_.value_at(*driver.index, t, false);
+      for (const FapContribution& c : driver.contributions) {
+        const auto slot = static_cast<std::size_t>(c.fap - 1);
+        frame.mask.set(slot);
+        if (driver.weight_slot >= 0) {
+          std::vector<int>& weights = c.fap == 1 ? visemes : expressions;
+          weights[static_cast<std::size_t>(driver.weight_slot)] =
+              clamp_and_warn(blended.value, 63, 0, blended.cause, t, "the weight");
+          continue;
+        }
+        sums[slot] += blended.value * c.scale;
+        if (blended.cause >= 0 && (causes[slot] < 0 || c.scale != 0)) causes[slot] = blended.cause;
+      }
+    }
+    for (int fap = 3; fap <= kFapCount; ++fap) {
+      const auto slot = static_cast<std::size_t>(fap - 1);
+      if (!frame.mask.test(slot)) continue;
+      const int limit = find_fap(fap)->legal_max();
+      frame.values[slot] = clamp_and_warn(sums[slot], limit, -limit, causes[slot], t, find_fap(fap)->name);
+    }
+    if (frame.has(1)) {
+      const auto [a, b] = strongest_two(visemes);
+      frame.viseme.select1 = a.first;
+      frame.viseme.select2 = b.first;
+      // blend weighs select1 against select2; alone, a viseme's weight mixes it with neutral.
+      frame.viseme.blend =
+          b.second > 0 ? static_cast<int>(std::lround(63.0 * a.second / (a.second + b.second)))
+                       : a.second;
+    }
+    if (frame.has(2)) {
+      const auto [a, b] = strongest_two(expressions);
+      frame.expression = ExpressionFields{a.first, a.second, b.first, b.second, 0, 0};
+    }
+    return frame;
+  }
+
+  int clamp_and_warn(double value, int high, int low, std::int64_t cause, double t,
+                     std::string_view what) {
+    const double rounded = std::round(value);  // halves away from zero
+    if (rounded >= low && rounded <= high) return static_cast<int>(rounded);
+    if (cause >= 0 && warned_clips_.insert(cause).second) {
+      const Clip& clip = index_.clips[static_cast<std::size_t>(cause)];
+      std::ostringstream message;
+      message << what << " of '" << clip.target << "' reaches " << rounded << " at " << t
+              << " s, outside " << low << ".." << high << "; clamped";
+      warnings_.push_back(make_warning(clip.source, message.str()));
+    }
+    return static_cast<int>(std::clamp(rounded, double(low), double(high)));
+  }
+};
+
+}  // namespace
+
+Result<Rendered> render_frames(const Timeline& timeline, const RenderOptions& options) {
+  if (options.fps <= 0) return make_error(Location{}, "the frame rate must be positive");
+  const Profile& profile = options.profile ? *options.profile : default_profile();
+  const TimelineIndex index(timeline);
+  std::vector<Driver> drivers;
+  for (const auto& [target, target_index] : index.targets) {
+    Driver driver{&target_index, resolve_target(target, profile), -1};
+    if (driver.contributions.empty()) {
+      const Clip& first = index.clips[target_index.clips.front()];
+      return make_error(first.source, unknown_parameter_message(target, profile));
+    }
+    if (target.starts_with("viseme.") || target.starts_with("expression.")) {
+      driver.weight_slot = weight_slot(target);
+    }
+    drivers.push_back(std::move(driver));
+  }
+  return FrameRenderer(index, options).run(std::move(drivers), timeline.end());
+}
+
+}  // namespace fapc

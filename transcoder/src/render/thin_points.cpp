@@ -1,0 +1,56 @@
+#include "thin_points.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fapc {
+namespace {
+
+// Longest run of points checked against one chord: bounds the cost on long smooth stretches
+// (a kept point every 512 samples costs nothing visible).
+constexpr std::size_t kMaxRun = 512;
+
+}  // namespace
+
+std::vector<std::pair<double, double>> thin_points(std::vector<std::pair<double, double>> points,
+                                                   double tolerance) {
+  if (points.size() <= 2) return points;
+  double low = points.front().second;
+  double high = low;
+  for (const auto& [t, v] : points) {
+    low = std::min(low, v);
+    high = std::max(high, v);
+  }
+  const double range = high > low ? high - low : std::max(1.0, std::abs(high));
+  const double allowed = tolerance * range;
+
+  const auto is_jump = [&](std::size_t i) {
+    return (i > 0 && points[i - 1].first == points[i].first) ||
+           (i + 1 < points.size() && points[i + 1].first == points[i].first);
+  };
+  // Can every point strictly between a and b be rebuilt from the chord a-b?
+  const auto chord_fits = [&](std::size_t a, std::size_t b) {
+    const auto [ta, va] = points[a];
+    const auto [tb, vb] = points[b];
+    for (std::size_t i = a + 1; i < b; ++i) {
+      const double u = (points[i].first - ta) / (tb - ta);
+      if (std::abs(va + (vb - va) * u - points[i].second) > allowed) return false;
+    }
+    return true;
+  };
+
+  std::vector<std::pair<double, double>> kept{points.front()};
+  std::size_t anchor = 0;
+  for (std::size_t i = 1; i + 1 < points.size(); ++i) {
+    const bool droppable = !is_jump(i) && !is_jump(i + 1) && i + 1 - anchor <= kMaxRun &&
+                           chord_fits(anchor, i + 1);
+    if (!droppable) {
+      kept.push_back(points[i]);
+      anchor = i;
+    }
+  }
+  kept.push_back(points.back());
+  return kept;
+}
+
+}  // namespace fapc

@@ -1,0 +1,15 @@
+// Private: thinning a time-value list (semantics.md §1).
+#pragma once
+
+#include <utility>
+#include <vector>
+
+namespace fapc {
+
+// Drops every point whose value, linearly interpolated from its kept neighbours, is off by no more
+// than `tolerance` times the list's value range. The first and last points, and both points of a
+// jump (two points at one time), are always kept.
+std::vector<std::pair<double, double>> thin_points(std::vector<std::pair<double, double>> points,
+                                                   double tolerance);
+
+}  // namespace fapc

@@ -1,0 +1,160 @@
+// Blending (semantics.md §1). Per target, the clips' begins and (fill-resolved) ends cut time into
+// elementary intervals, each with the list of clips active in it, so a query is one binary search
+// plus the blend of the few clips active there.
+#include "timeline_index.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+
+namespace fapc {
+namespace {
+
+constexpr double kForever = std::numeric_limits<double>::infinity();
+
+}  // namespace
+
+TargetIndex::TargetIndex(const std::vector<Clip>& all, std::vector<std::uint32_t> of_target)
+    : clips(std::move(of_target)) {
+  std::stable_sort(clips.begin(), clips.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return all[a].begin < all[b].begin;
+  });
+  // A frozen clip holds until the next clip of its target that begins at or after its end.
+  effective_end.reserve(clips.size());
+  for (const std::uint32_t c : clips) {
+    const Clip& clip = all[c];
+    double end = clip.end;
+    if (clip.fill == Fill::freeze) {
+      const auto next = std::lower_bound(
+          clips.begin(), clips.end(), clip.end,
+          [&](std::uint32_t other, double t) { return all[other].begin < t; });
+      end = next == clips.end() ? kForever : std::max(clip.end, all[*next].begin);
+    }
+    effective_end.push_back(end);
+  }
+  build_intervals(all);
+}
+
+void TargetIndex::build_intervals(const std::vector<Clip>& all) {
+  struct Event {
+    double time;
+    bool starts;
+    std::uint32_t clip;
+  };
+  std::vector<Event> events;
+  for (std::size_t i = 0; i < clips.size(); ++i) {
+    if (!(effective_end[i] > all[clips[i]].begin)) continue;  // empty clips never count
+    events.push_back(Event{all[clips[i]].begin, true, clips[i]});
+    events.push_back(Event{effective_end[i], false, clips[i]});
+  }
+  std::sort(events.begin(), events.end(),
+            [](const Event& a, const Event& b) { return a.time < b.time; });
+  std::set<std::uint32_t> active;  // clip indices: source order, which blending needs
+  offsets.push_back(0);
+  for (std::size_t i = 0; i < events.size();) {
+    const double time = events[i].time;
+    for (; i < events.size() && events[i].time == time; ++i) {
+      if (events[i].starts) {
+        active.insert(events[i].clip);
+      } else {
+        active.erase(events[i].clip);
+      }
+    }
+    cuts.push_back(time);
+    members.insert(members.end(), active.begin(), active.end());
+    offsets.push_back(static_cast<std::uint32_t>(members.size()));
+  }
+  if (!cuts.empty()) {
+    span_begin = cuts.front();
+    span_end = cuts.back();
+  }
+}
+
+std::span<const std::uint32_t> TargetIndex::active_at(double t, bool from_left) const {
+  // Interval j is [cuts[j], cuts[j+1]) (from the left: (cuts[j], cuts[j+1]]).
+  const auto it = from_left ? std::lower_bound(cuts.begin(), cuts.end(), t)
+                            : std::upper_bound(cuts.begin(), cuts.end(), t);
+  if (it == cuts.begin()) return {};
+  const auto j = static_cast<std::size_t>(it - cuts.begin() - 1);
+  return std::span<const std::uint32_t>(members).subspan(offsets[j], offsets[j + 1] - offsets[j]);
+}
+
+double clip_value(const Clip& clip, double t) {
+  return clip.curve.value_at(clip.local_time(std::min(t, clip.end)));
+}
+
+Blended blend(const std::vector<Clip>& all, std::span<const std::uint32_t> active, double t) {
+  Blended result;
+  if (active.empty()) return result;
+  // 1. The overwrite clip that began last wins (ties: the later in the source).
+  const Clip* winner = nullptr;
+  bool any_average = false;
+  for (const std::uint32_t c : active) {
+    const Clip& clip = all[c];
+    if (clip.blend == BlendMode::overwrite && (!winner || clip.begin >= winner->begin)) {
+      winner = &clip;
+      result.cause = c;
+    }
+    any_average = any_average || clip.blend == BlendMode::average;
+  }
+  if (winner) {
+    result.value = clip_value(*winner, t);
+    return result;
+  }
+  // 2. Any average: the mean of all; 3. otherwise the sum. The cause is the largest contributor.
+  double largest = -1;
+  for (const std::uint32_t c : active) {
+    const double v = clip_value(all[c], t);
+    result.value += v;
+    if (std::abs(v) > largest) {
+      largest = std::abs(v);
+      result.cause = c;
+    }
+  }
+  if (any_average) result.value /= static_cast<double>(active.size());
+  return result;
+}
+
+TimelineIndex::TimelineIndex(const Timeline& timeline) : clips(timeline.clips) {
+  std::map<std::string, std::vector<std::uint32_t>> by_target;
+  for (std::size_t i = 0; i < clips.size(); ++i) {
+    by_target[clips[i].target].push_back(static_cast<std::uint32_t>(i));
+  }
+  for (auto& [target, list] : by_target) {
+    targets.emplace(target, TargetIndex(clips, std::move(list)));
+  }
+}
+
+Blended TimelineIndex::value_at(const TargetIndex& target, double t, bool from_left) const {
+  return blend(clips, target.active_at(t, from_left), t);
+}
+
+// ---- the public face -----------------------------------------------------------------------
+
+struct TimelineEvaluator::Impl {
+  TimelineIndex index;
+};
+
+TimelineEvaluator::TimelineEvaluator(const Timeline& timeline)
+    : impl_(std::make_shared<const Impl>(Impl{TimelineIndex(timeline)})) {}
+
+std::vector<std::string> TimelineEvaluator::targets() const {
+  std::vector<std::string> names;
+  for (const auto& [name, index] : impl_->index.targets) names.push_back(name);
+  return names;
+}
+
+double TimelineEvaluator::value_at(const std::string& target, double t, bool from_left) const {
+  const auto found = impl_->index.targets.find(target);
+  if (found == impl_->index.targets.end()) return 0;
+  return impl_->index.value_at(found->second, t, from_left).value;
+}
+
+std::pair<double, double> TimelineEvaluator::span(const std::string& target) const {
+  const auto found = impl_->index.targets.find(target);
+  if (found == impl_->index.targets.end()) return {0, 0};
+  return {found->second.span_begin, found->second.span_end};
+}
+
+}  // namespace fapc

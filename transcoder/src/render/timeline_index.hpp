@@ -1,0 +1,51 @@
+// Private: the per-target index behind TimelineEvaluator, render_frames and render_curves.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "fapc/transcoder/render.hpp"
+
+namespace fapc {
+
+struct TargetIndex {
+  TargetIndex(const std::vector<Clip>& all, std::vector<std::uint32_t> of_target);
+
+  std::vector<std::uint32_t> clips;  // indices into the timeline, by begin
+  std::vector<double> effective_end;  // per entry of `clips`, fill=freeze resolved
+  // Elementary interval j is [cuts[j], cuts[j+1]); its active clips are
+  // members[offsets[j] .. offsets[j+1]), in source order.
+  std::vector<double> cuts;
+  std::vector<std::uint32_t> offsets;
+  std::vector<std::uint32_t> members;
+  double span_begin = 0;  // first begin .. last effective end (may be infinite)
+  double span_end = 0;
+
+  std::span<const std::uint32_t> active_at(double t, bool from_left) const;
+
+ private:
+  void build_intervals(const std::vector<Clip>& all);
+};
+
+struct Blended {
+  double value = 0;
+  std::int64_t cause = -1;  // the clip that decided the value (for warnings), -1 when none
+};
+
+// The value of one clip at absolute time t (a frozen clip past its end keeps its end value).
+double clip_value(const Clip& clip, double t);
+Blended blend(const std::vector<Clip>& all, std::span<const std::uint32_t> active, double t);
+
+struct TimelineIndex {
+  explicit TimelineIndex(const Timeline& timeline);
+
+  std::vector<Clip> clips;
+  std::map<std::string, TargetIndex> targets;
+
+  Blended value_at(const TargetIndex& target, double t, bool from_left) const;
+};
+
+}  // namespace fapc

@@ -1,0 +1,60 @@
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "fapc/transcoder/timeline.hpp"
+
+namespace fapc {
+namespace {
+
+// The Mimic fading functions on the fraction u in [0, 1] of a segment (semantics.md §2).
+double shape(Interpolation how, double u) {
+  switch (how) {
+    case Interpolation::linear:
+      return u;
+    case Interpolation::step:
+      return 0;
+    case Interpolation::sin:
+      return (1 - std::cos(std::numbers::pi * u)) / 2;
+    case Interpolation::log:
+      return std::log1p(9 * u) / std::numbers::ln10;
+    case Interpolation::exp:
+      return (std::pow(10.0, u) - 1) / 9;
+  }
+  return u;
+}
+
+double periodic_value(const Periodic& p, double t) {
+  const double span = p.max - p.min;
+  if (p.period <= 0) return p.min;
+  if (p.shape == Periodic::Shape::sine) {
+    return p.min + span * (1 - std::cos(2 * std::numbers::pi * t / p.period)) / 2;
+  }
+  double phase = std::fmod(t / p.period, 1.0);
+  if (phase < 0) phase += 1;
+  return phase < 0.5 ? p.min + span * 2 * phase : p.max - span * (2 * phase - 1);
+}
+
+}  // namespace
+
+Curve Curve::constant(double value) { return Curve{{KeyPoint{0, value}}, std::nullopt}; }
+
+Curve Curve::ramp(double from, double to, double duration, Interpolation how) {
+  return Curve{{KeyPoint{0, from, how}, KeyPoint{duration, to}}, std::nullopt};
+}
+
+double Curve::value_at(double local_time) const {
+  if (periodic) return periodic_value(*periodic, local_time);
+  if (keys.empty()) return 0;
+  // The last key at or before t: with two keys at one time (a jump) the later one wins.
+  const auto after = std::upper_bound(keys.begin(), keys.end(), local_time,
+                                      [](double t, const KeyPoint& k) { return t < k.time; });
+  if (after == keys.begin()) return keys.front().value;
+  if (after == keys.end()) return keys.back().value;
+  const KeyPoint& a = *(after - 1);
+  const KeyPoint& b = *after;
+  const double u = (local_time - a.time) / (b.time - a.time);
+  return a.value + (b.value - a.value) * shape(a.to_next, u);
+}
+
+}  // namespace fapc

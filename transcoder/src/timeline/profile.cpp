@@ -1,0 +1,147 @@
+#include "fapc/transcoder/profile.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+
+#include "fapc/codec/fap_table.hpp"
+#include "fapc/codec/file_io.hpp"
+
+namespace fapc {
+namespace {
+
+bool same_ignoring_case(std::string_view a, std::string_view b) {
+  return a.size() == b.size() &&
+         std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::tolower(static_cast<unsigned char>(x)) ==
+                  std::tolower(static_cast<unsigned char>(y));
+         });
+}
+
+// "viseme.PP" -> FAP 1, "expression.joy" -> FAP 2, when the name after the dot is a known one.
+std::optional<int> weight_target_fap(std::string_view target) {
+  const auto known = [](std::string_view name, int count, auto name_of) {
+    for (int i = 0; i < count; ++i) {
+      if (same_ignoring_case(name, name_of(i))) return true;
+    }
+    return false;
+  };
+  if (target.starts_with("viseme.") && known(target.substr(7), 15, viseme_name)) return 1;
+  if (target.starts_with("expression.") && known(target.substr(11), 7, expression_name)) return 2;
+  return std::nullopt;
+}
+
+struct Field {
+  std::string_view text;
+  int column = 0;  // 1-based
+};
+
+std::vector<Field> split_fields(std::string_view line) {
+  std::vector<Field> fields;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+    if (i >= line.size() || line[i] == '#') break;
+    const std::size_t start = i;
+    while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+    fields.push_back(Field{line.substr(start, i - start), static_cast<int>(start) + 1});
+  }
+  return fields;
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
+Result<Profile> parse_profile(std::string_view text, const std::string& file_name) {
+  Profile profile;
+  profile.name = file_name;
+  int line_number = 0;
+  while (!text.empty()) {
+    const std::size_t newline = text.find('\n');
+    std::string_view line = text.substr(0, newline);
+    text = newline == std::string_view::npos ? std::string_view{} : text.substr(newline + 1);
+    ++line_number;
+    if (line.ends_with('\r')) line.remove_suffix(1);
+    const std::vector<Field> fields = split_fields(line);
+    if (fields.empty()) continue;
+    const auto error = [&](const Field& at, std::string message) {
+      return make_error(Location::text(file_name, line_number, at.column), std::move(message),
+                        std::string(line));
+    };
+    if (fields.size() != 3) {
+      return error(fields.size() > 3 ? fields[3] : fields.back(),
+                   "expected 'name fap scale', found " + std::to_string(fields.size()) + " fields");
+    }
+    const FapInfo* fap = find_fap_by_name_or_number(fields[1].text);
+    if (fap == nullptr || fap->number <= 2) {
+      return error(fields[1], fap ? "FAP 1 and 2 are not scalar parameters; use viseme.<name> or "
+                                    "expression.<name> targets"
+                                  : unknown_fap_message(fields[1].text));
+    }
+    double scale = 0;
+    const Field& scale_field = fields[2];
+    const char* end = scale_field.text.data() + scale_field.text.size();
+    const auto [stop, status] = std::from_chars(scale_field.text.data(), end, scale);
+    if (status != std::errc{} || stop != end || !std::isfinite(scale)) {
+      return error(scale_field, "the scale '" + std::string(scale_field.text) + "' is not a number");
+    }
+    if (find_fap_by_name_or_number(fields[0].text) != nullptr) {
+      return error(fields[0], "'" + std::string(fields[0].text) +
+                                  "' is a standard FAP name; a profile maps other names");
+    }
+    profile.parameters[std::string(fields[0].text)].push_back(FapContribution{fap->number, scale});
+  }
+  return profile;
+}
+
+Result<Profile> load_profile(const std::string& path) {
+  Result<std::string> bytes = read_file_bytes(path);
+  if (!bytes) return bytes.error();
+  return parse_profile(*bytes, path);
+}
+
+std::vector<FapContribution> resolve_target(std::string_view target, const Profile& profile) {
+  if (const FapInfo* fap = find_fap_by_name_or_number(target); fap != nullptr && fap->number > 2) {
+    return {FapContribution{fap->number, 1}};
+  }
+  if (const std::optional<int> fap = weight_target_fap(target)) return {FapContribution{*fap, 1}};
+  if (const auto found = profile.parameters.find(target); found != profile.parameters.end()) {
+    return found->second;
+  }
+  return {};
+}
+
+std::string unknown_parameter_message(std::string_view name, const Profile& profile) {
+  std::vector<std::pair<std::size_t, std::string>> candidates;
+  for (const auto& [parameter, contributions] : profile.parameters) {
+    candidates.emplace_back(edit_distance(name, parameter), parameter);
+  }
+  for (const std::string_view fap : closest_fap_names(name, 3)) {
+    candidates.emplace_back(edit_distance(name, fap), std::string(fap));
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::string message = "unknown animation parameter '" + std::string(name) + "'";
+  const std::size_t shown = std::min<std::size_t>(3, candidates.size());
+  for (std::size_t i = 0; i < shown; ++i) {
+    message += (i == 0 ? "; did you mean " : ", ") + candidates[i].second;
+  }
+  return message + (shown > 0 ? "?" : "");
+}
+
+}  // namespace fapc

@@ -1,0 +1,271 @@
+// The scheduler (docs/timeline.md). Two passes: measure() finds each node's active duration where
+// it is known without the parent (memoised, so the whole run is linear in the tree size), then
+// place() walks the tree once, top-down, with absolute times.
+#include "fapc/transcoder/schedule.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <unordered_map>
+
+namespace fapc {
+namespace {
+
+using Kind = ScheduleNode::Kind;
+constexpr double kForever = std::numeric_limits<double>::infinity();
+
+std::string seconds(double t) {
+  std::ostringstream out;
+  out << t << " s";
+  return out.str();
+}
+
+class Scheduler {
+ public:
+  std::optional<Diagnostic> error;
+
+  // The active duration of `node` when it is known without a parent end.
+  std::optional<double> measure(const ScheduleNode& node) {
+    if (const auto found = measured_.find(&node); found != measured_.end()) return found->second;
+    const std::optional<double> result = active_duration(node, simple_duration(node));
+    measured_.emplace(&node, result);
+    return result;
+  }
+
+  // Places `node` with its active span starting at `start`. `limit` is the reference end that
+  // open-ended nodes stretch to; `cut` is where the ancestors end. Returns the node's active end.
+  double place(const ScheduleNode& node, double start, std::optional<double> limit, double cut,
+               std::vector<Occurrence>& out) {
+    if (error) return start;
+    std::optional<double> active = measure(node);
+    if (!active) {
+      if (!limit) {
+        fail(node, "has no duration and nothing around it ends: give it a duration, or place it "
+                   "in a parallel with a known end");
+        return start;
+      }
+      active = std::max(0.0, *limit - start);
+    }
+    const double end = start + *active;
+    const double inner_cut = std::min(cut, end);
+    if (node.kind == Kind::leaf) {
+      if (start < 0) {
+        fail(node, "starts before time 0 (at " + seconds(start) + ")");
+        return end;
+      }
+      const double simple = node.timing.duration.value_or(*active);
+      place_runs(node.leaf_id, start, simple, *active, inner_cut, out);
+      return end;
+    }
+    // A group: lay out one iteration, then repeat its occurrences shifted.
+    const std::size_t first = out.size();
+    const std::optional<double> own_limit =
+        node.timing.duration ? std::optional<double>(start + *node.timing.duration) : limit;
+    // With an explicit duration, children beyond it are cut at the end of each iteration.
+    const double iteration_cut =
+        node.timing.duration ? std::min(inner_cut, start + *node.timing.duration) : inner_cut;
+    const double children_end = place_children(node, start, own_limit, iteration_cut, out);
+    if (error) return end;
+    const double simple = node.timing.duration.value_or(children_end - start);
+    repeat_group(first, start, simple, inner_cut, out);
+    return end;
+  }
+
+ private:
+  std::unordered_map<const ScheduleNode*, std::optional<double>> measured_;
+
+  void fail(const ScheduleNode& node, const std::string& message) {
+    if (!error) error = make_error(node.source, message);
+  }
+
+  std::optional<double> simple_duration(const ScheduleNode& node) {
+    if (node.timing.duration) return node.timing.duration;
+    switch (node.kind) {
+      case Kind::leaf:
+        return std::nullopt;
+      case Kind::sequence:
+        return measure_sequence(node);
+      case Kind::parallel:
+      case Kind::exclusive:
+        return measure_parallel(node);
+    }
+    return std::nullopt;
+  }
+
+  std::optional<double> active_duration(const ScheduleNode& node, std::optional<double> simple) {
+    const Timing& timing = node.timing;
+    if (timing.end) return std::max(0.0, *timing.end - timing.offset);
+    if (timing.repeat_indefinite) return timing.repeat_duration;
+    if (!simple) return std::nullopt;
+    double active = *simple * timing.repeat;
+    if (timing.repeat_duration) active = std::min(active, *timing.repeat_duration);
+    return active;
+  }
+
+  std::optional<double> measure_sequence(const ScheduleNode& node) {
+    double cursor = 0;
+    double latest = 0;
+    for (const ScheduleNode& child : node.children) {
+      const std::optional<double> active = measure(child);
+      if (!active) return std::nullopt;
+      cursor = cursor + child.timing.offset + *active;
+      latest = std::max(latest, cursor);
+    }
+    return latest;
+  }
+
+  // A parallel's reference end is the latest end among the children whose duration is known
+  // without it (right-aligned children excluded: their place depends on it).
+  std::optional<double> reference_end(const ScheduleNode& node) {
+    std::optional<double> reference;
+    for (const ScheduleNode& child : node.children) {
+      if (child.timing.align_right) continue;
+      if (const std::optional<double> active = measure(child)) {
+        reference = std::max(reference.value_or(-kForever), child.timing.offset + *active);
+      }
+    }
+    return reference;
+  }
+
+  std::optional<double> measure_parallel(const ScheduleNode& node) {
+    const std::optional<double> reference = reference_end(node);
+    if (!reference) return std::nullopt;
+    double latest = std::max(0.0, *reference);
+    for (const ScheduleNode& child : node.children) {
+      if (child.timing.align_right) latest = std::max(latest, *reference + *child.timing.align_right);
+    }
+    return latest;
+  }
+
+  void place_runs(std::size_t leaf, double start, double simple, double active, double cut,
+                  std::vector<Occurrence>& out) {
+    if (simple <= 0) {
+      out.push_back(Occurrence{leaf, start, 0, start, 0, 0});
+      return;
+    }
+    const double active_end = std::min(start + active, cut);
+    for (int i = 0;; ++i) {
+      const double begin = start + i * simple;
+      if (i > 0 && begin >= active_end) break;
+      out.push_back(Occurrence{leaf, begin, simple, std::min(begin + simple, active_end), 0, i});
+    }
+  }
+
+  // Places the children of a group starting at `start`; returns the latest child end.
+  double place_children(const ScheduleNode& node, double start, std::optional<double> limit,
+                        double cut, std::vector<Occurrence>& out) {
+    if (node.kind == Kind::sequence) return place_sequence(node, start, limit, cut, out);
+    std::optional<double> reference;
+    if (node.timing.duration) {
+      reference = start + *node.timing.duration;
+    } else if (const std::optional<double> relative = reference_end(node)) {
+      reference = start + *relative;
+    } else {
+      reference = limit;
+    }
+    double latest = start;
+    std::vector<ChildRun> runs;  // exclusive groups: who cuts whom
+    for (const ScheduleNode& child : node.children) {
+      double child_start = start + child.timing.offset;
+      std::optional<double> child_limit = reference;
+      if (child.timing.align_right) {
+        if (!reference) {
+          fail(child, "is aligned right but the parallel has no known end");
+          return latest;
+        }
+        const double child_end = *reference + *child.timing.align_right;
+        // A child of known length moves so that it ends there; an open-ended one stretches to it.
+        if (const std::optional<double> active = measure(child)) child_start = child_end - *active;
+        child_limit = child_end;
+      }
+      const std::size_t from = out.size();
+      latest = std::max(latest, place(child, child_start, child_limit, cut, out));
+      if (error) return latest;
+      runs.push_back(ChildRun{child_start, from, out.size()});
+    }
+    if (node.kind == Kind::exclusive) cut_exclusive(runs, out);
+    return latest;
+  }
+
+  double place_sequence(const ScheduleNode& node, double start, std::optional<double> limit,
+                        double cut, std::vector<Occurrence>& out) {
+    double cursor = start;
+    double latest = start;
+    for (const ScheduleNode& child : node.children) {
+      if (child.timing.align_right) {
+        fail(child, "right alignment is only allowed in a parallel, not in a sequence");
+        return latest;
+      }
+      cursor = place(child, cursor + child.timing.offset, limit, cut, out);
+      if (error) return latest;
+      latest = std::max(latest, cursor);
+    }
+    return latest;
+  }
+
+  struct ChildRun {
+    double start;
+    std::size_t from, to;  // its occurrences in `out`
+  };
+
+  // In an exclusive group one child plays at a time: a child that starts cuts the one playing
+  // (at equal starts the later child in the source wins).
+  static void cut_exclusive(std::vector<ChildRun> runs, std::vector<Occurrence>& out) {
+    std::stable_sort(runs.begin(), runs.end(),
+                     [](const ChildRun& a, const ChildRun& b) { return a.start < b.start; });
+    for (std::size_t i = 0; i + 1 < runs.size(); ++i) {
+      for (std::size_t k = runs[i].from; k < runs[i].to; ++k) {
+        out[k].end = std::max(out[k].begin, std::min(out[k].end, runs[i + 1].start));
+      }
+    }
+  }
+
+  static void repeat_group(std::size_t first, double start, double simple, double cut,
+                           std::vector<Occurrence>& out) {
+    const std::size_t last = out.size();
+    for (std::size_t k = first; k < last; ++k) out[k].end = std::min(out[k].end, cut);
+    if (simple <= 0) return;
+    for (int i = 1; start + i * simple < cut; ++i) {
+      const double shift = i * simple;
+      for (std::size_t k = first; k < last; ++k) {
+        Occurrence copy = out[k];
+        copy.begin += shift;
+        copy.end = std::min(copy.end + shift, cut);
+        if (copy.begin >= cut) continue;
+        out.push_back(copy);
+      }
+    }
+  }
+};
+
+}  // namespace
+
+ScheduleNode ScheduleNode::leaf(std::size_t id, Timing timing, Location source) {
+  ScheduleNode node;
+  node.kind = Kind::leaf;
+  node.timing = timing;
+  node.leaf_id = id;
+  node.source = std::move(source);
+  return node;
+}
+
+ScheduleNode ScheduleNode::group(Kind kind, Timing timing, Location source) {
+  ScheduleNode node;
+  node.kind = kind;
+  node.timing = timing;
+  node.source = std::move(source);
+  return node;
+}
+
+Result<Schedule> schedule(const ScheduleNode& root, const ScheduleOptions& options) {
+  Scheduler scheduler;
+  Schedule result;
+  const double cut = options.root_end.value_or(kForever);
+  result.end = scheduler.place(root, root.timing.offset, options.root_end, cut, result.occurrences);
+  if (scheduler.error) return *scheduler.error;
+  if (options.root_end) result.end = *options.root_end;
+  return result;
+}
+
+}  // namespace fapc
