@@ -42,7 +42,7 @@ std::vector<std::pair<double, double>> thin_points(std::vector<std::pair<double,
   std::vector<std::pair<double, double>> kept{points.front()};
   std::size_t anchor = 0;
   for (std::size_t i = 1; i + 1 < points.size(); ++i) {
-    const bool droppable = !is_jump(i) && !is_jump(i + 1) && i + 1 - anchor <= kMaxRun &&
+    const bool droppable = !is_jump(i) && i + 1 - anchor <= kMaxRun &&
                            chord_fits(anchor, i + 1);
     if (!droppable) {
       kept.push_back(points[i]);

@@ -131,7 +131,9 @@ std::string unknown_parameter_message(std::string_view name, const Profile& prof
   for (const auto& [parameter, contributions] : profile.parameters) {
     candidates.emplace_back(edit_distance(name, parameter), parameter);
   }
-  for (const std::string_view fap : closest_fap_names(name, 3)) {
+  for (const std::string_view fap : closest_fap_names(name, 5)) {
+    // FAP 1 and 2 are reached through viseme.<name> / expression.<name>, not by their own names.
+    if (fap == "viseme" || fap == "expression") continue;
     candidates.emplace_back(edit_distance(name, fap), std::string(fap));
   }
   std::stable_sort(candidates.begin(), candidates.end(),

@@ -39,26 +39,25 @@ class Scheduler {
                std::vector<Occurrence>& out) {
     if (error) return start;
     std::optional<double> active = measure(node);
-    if (!active) {
-      if (!limit) {
+    if (!active && limit) active = std::max(0.0, *limit - start);
+    if (node.kind == Kind::leaf) {
+      if (!active) {
         fail(node, "has no duration and nothing around it ends: give it a duration, or place it "
                    "in a parallel with a known end");
         return start;
       }
-      active = std::max(0.0, *limit - start);
-    }
-    const double end = start + *active;
-    const double inner_cut = std::min(cut, end);
-    if (node.kind == Kind::leaf) {
       if (start < 0) {
         fail(node, "starts before time 0 (at " + seconds(start) + ")");
-        return end;
+        return start;
       }
       const double simple = node.timing.duration.value_or(*active);
-      place_runs(node.leaf_id, start, simple, *active, inner_cut, out);
-      return end;
+      place_runs(node.leaf_id, start, simple, *active, std::min(cut, start + *active), out);
+      return start + *active;
     }
-    // A group: lay out one iteration, then repeat its occurrences shifted.
+    // A group: lay out one iteration, then repeat its occurrences shifted. A group of unknown
+    // length with nothing around it to end it still places its children: the open one among
+    // them reports the error at its own position.
+    const double inner_cut = active ? std::min(cut, start + *active) : cut;
     const std::size_t first = out.size();
     const std::optional<double> own_limit =
         node.timing.duration ? std::optional<double>(start + *node.timing.duration) : limit;
@@ -66,10 +65,10 @@ class Scheduler {
     const double iteration_cut =
         node.timing.duration ? std::min(inner_cut, start + *node.timing.duration) : inner_cut;
     const double children_end = place_children(node, start, own_limit, iteration_cut, out);
-    if (error) return end;
+    if (error) return start;
     const double simple = node.timing.duration.value_or(children_end - start);
     repeat_group(first, start, simple, inner_cut, out);
-    return end;
+    return active ? start + *active : children_end;
   }
 
  private:
