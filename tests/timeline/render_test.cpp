@@ -173,6 +173,15 @@ TEST(Curves, ThinnedListKeepsKeysAndJumps) {
   EXPECT_EQ(c.duration, 6);
 }
 
+TEST(Curves, VisemeCurveCarriesTheStrongestNumber) {
+  // docs/cli.md: FAP 1 appears as "viseme", valued by the strongest viseme's number (PP 1, FF 2).
+  Timeline t{{clip("viseme.PP", 0, 1, Curve::constant(63)), clip("viseme.FF", 1, 2, Curve::constant(63))}, {}};
+  const Curves c = render_curves(t, CurveOptions{});
+  using P = std::vector<std::pair<double, double>>;
+  EXPECT_EQ(c.curves.at("viseme"), (P{{0, 1}, {1, 1}, {1, 2}, {2, 2}, {2, 0}}));
+  EXPECT_EQ(c.curves.at("viseme.PP"), (P{{0, 63}, {1, 63}, {1, 0}}));
+}
+
 TEST(Curves, PerClipCurvesAreLabelledByTheirSource) {
   Timeline t{{clip("jaw", 0, 2, Curve::ramp(0, 1, 2, Interpolation::linear), BlendMode::add, Fill::remove, 5),
               clip("jaw", 0, 2, Curve::constant(1), BlendMode::add, Fill::remove, 5)},

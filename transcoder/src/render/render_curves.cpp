@@ -50,6 +50,46 @@ Points sample(const std::vector<double>& times, ValueFn value) {
   return points;
 }
 
+// docs/cli.md: FAP 1 and FAP 2 appear as "viseme" and "expression" curves whose value is the
+// number of the strongest weight (0 when none), as for frame inputs; the weights themselves stay
+// under their own targets. The number steps, so every change is a jump.
+void add_strongest_curve(const TimelineIndex& index, int fap, const char* name, Curves& out) {
+  std::vector<std::pair<const TargetIndex*, double>> members;  // with the viseme/expression number
+  std::vector<double> times;
+  for (const auto& [target, target_index] : index.targets) {
+    const std::optional<WeightTarget> weight = weight_target(target);
+    if (!weight || weight->fap != fap) continue;
+    members.emplace_back(&target_index, weight->number);
+    for (std::size_t i = 0; i < target_index.clips.size(); ++i) {
+      times.push_back(index.clips[target_index.clips[i]].begin);
+      if (std::isfinite(target_index.effective_end[i])) times.push_back(target_index.effective_end[i]);
+      add_frame_times(index.clips[target_index.clips[i]].begin,
+                      std::min(target_index.effective_end[i], out.duration), out.fps, times);
+    }
+  }
+  if (members.empty()) return;
+  sort_unique(times);
+  const auto strongest = [&](double t, bool from_left) {
+    double best = 0;
+    double slot = 0;
+    for (const auto& [member, number] : members) {
+      const double w = index.value_at(*member, t, from_left).value;
+      if (w > best) {
+        best = w;
+        slot = number;
+      }
+    }
+    return slot;
+  };
+  Points points;
+  for (const double t : times) {
+    const double now = strongest(t, false);
+    if (!points.empty() && points.back().second != now) points.emplace_back(t, points.back().second);
+    points.emplace_back(t, now);
+  }
+  out.curves[name] = thin_points(std::move(points), 0);
+}
+
 }  // namespace
 
 Curves render_curves(const Timeline& timeline, const CurveOptions& options) {
@@ -72,6 +112,8 @@ Curves render_curves(const Timeline& timeline, const CurveOptions& options) {
     });
     out.curves[target] = thin_points(std::move(points), options.tolerance);
   }
+  add_strongest_curve(index, 1, "viseme", out);
+  add_strongest_curve(index, 2, "expression", out);
   return out;
 }
 

@@ -1,7 +1,6 @@
 // Frames from the timeline (semantics.md §1 "Rendering"): sample, sum the targets that drive each
 // FAP, round halves away from zero, clamp to the legal range with one warning per clip.
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -16,23 +15,6 @@ struct Driver {
   std::vector<FapContribution> contributions;
   int weight_slot = -1;  // viseme or expression number for viseme.X / expression.X targets
 };
-
-int weight_slot(const std::string& target) {
-  const auto dot = target.find('.');
-  const std::string_view name = std::string_view(target).substr(dot + 1);
-  const bool viseme = target.starts_with("viseme.");
-  for (int i = 0; i < (viseme ? 15 : 7); ++i) {
-    const std::string_view known = viseme ? viseme_name(i) : expression_name(i);
-    if (std::equal(name.begin(), name.end(), known.begin(), known.end(),
-                   [](char a, char b) {
-                     return std::tolower(static_cast<unsigned char>(a)) ==
-                            std::tolower(static_cast<unsigned char>(b));
-                   })) {
-      return i;
-    }
-  }
-  return 0;
-}
 
 // The two strongest weights become FAP 1 / FAP 2's two slots (ties: the lower number).
 std::pair<std::pair<int, int>, std::pair<int, int>> strongest_two(const std::vector<int>& weights) {
@@ -149,8 +131,8 @@ Result<Rendered> render_frames(const Timeline& timeline, const RenderOptions& op
       const Clip& first = index.clips[target_index.clips.front()];
       return make_error(first.source, unknown_parameter_message(target, profile));
     }
-    if (target.starts_with("viseme.") || target.starts_with("expression.")) {
-      driver.weight_slot = weight_slot(target);
+    if (const std::optional<WeightTarget> weight = weight_target(target)) {
+      driver.weight_slot = weight->number;
     }
     drivers.push_back(std::move(driver));
   }

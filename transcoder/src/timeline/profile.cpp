@@ -19,19 +19,6 @@ bool same_ignoring_case(std::string_view a, std::string_view b) {
          });
 }
 
-// "viseme.PP" -> FAP 1, "expression.joy" -> FAP 2, when the name after the dot is a known one.
-std::optional<int> weight_target_fap(std::string_view target) {
-  const auto known = [](std::string_view name, int count, auto name_of) {
-    for (int i = 0; i < count; ++i) {
-      if (same_ignoring_case(name, name_of(i))) return true;
-    }
-    return false;
-  };
-  if (target.starts_with("viseme.") && known(target.substr(7), 15, viseme_name)) return 1;
-  if (target.starts_with("expression.") && known(target.substr(11), 7, expression_name)) return 2;
-  return std::nullopt;
-}
-
 struct Field {
   std::string_view text;
   int column = 0;  // 1-based
@@ -66,6 +53,18 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
 }
 
 }  // namespace
+
+std::optional<WeightTarget> weight_target(std::string_view target) {
+  const bool viseme = target.starts_with("viseme.");
+  if (!viseme && !target.starts_with("expression.")) return std::nullopt;
+  const std::string_view name = target.substr(target.find('.') + 1);
+  for (int number = 0; number < (viseme ? 15 : 7); ++number) {
+    if (same_ignoring_case(name, viseme ? viseme_name(number) : expression_name(number))) {
+      return WeightTarget{viseme ? 1 : 2, number};
+    }
+  }
+  return std::nullopt;
+}
 
 Result<Profile> parse_profile(std::string_view text, const std::string& file_name) {
   Profile profile;
@@ -119,7 +118,9 @@ std::vector<FapContribution> resolve_target(std::string_view target, const Profi
   if (const FapInfo* fap = find_fap_by_name_or_number(target); fap != nullptr && fap->number > 2) {
     return {FapContribution{fap->number, 1}};
   }
-  if (const std::optional<int> fap = weight_target_fap(target)) return {FapContribution{*fap, 1}};
+  if (const std::optional<WeightTarget> weight = weight_target(target)) {
+    return {FapContribution{weight->fap, 1}};
+  }
   if (const auto found = profile.parameters.find(target); found != profile.parameters.end()) {
     return found->second;
   }

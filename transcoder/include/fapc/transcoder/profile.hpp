@@ -3,6 +3,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,6 +33,14 @@ std::string_view default_profile_text();
 // on several lines drives several FAPs. Errors at file:line:col.
 Result<Profile> parse_profile(std::string_view text, const std::string& file_name);
 Result<Profile> load_profile(const std::string& path);
+
+// "viseme.PP" -> {1, 1}, "expression.Joy" -> {2, 1}: the FAP (1 or 2) and the viseme or
+// expression number (names of fap_table.hpp, any case). Empty for every other target.
+struct WeightTarget {
+  int fap = 0;
+  int number = 0;
+};
+std::optional<WeightTarget> weight_target(std::string_view target);
 
 // What a clip target drives: a standard FAP name or number gives {fap, 1}; a profile name its
 // contributions; "viseme.X"/"expression.X" give FAP 1 / FAP 2 (scale 1). Empty when unknown.
