@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <iostream>
+#include <sstream>
 
 #include "fapc/registry.hpp"
 
@@ -57,10 +58,24 @@ int Args::integer(const std::string& name, int fallback, int low, int high) {
   int parsed = 0;
   const auto [end, ec] = std::from_chars(text->data(), text->data() + text->size(), parsed);
   if (ec != std::errc{} || end != text->data() + text->size() || parsed < low || parsed > high) {
-    if (error_.empty())
-      error_ = "--" + name + " takes an integer from " + std::to_string(low) + " to " +
-               std::to_string(high) + ", not '" + *text + "'";
+    fail("--" + name + " takes an integer from " + std::to_string(low) + " to " +
+         std::to_string(high) + ", not '" + *text + "'");
     return fallback;
+  }
+  return parsed;
+}
+
+std::optional<double> Args::decimal(const std::string& name, double low, double high) {
+  const auto text = value(name);
+  if (!text) return std::nullopt;
+  double parsed = 0;
+  const auto [end, ec] = std::from_chars(text->data(), text->data() + text->size(), parsed);
+  if (ec != std::errc{} || end != text->data() + text->size() || !(parsed >= low && parsed <= high)) {
+    std::ostringstream message;
+    message << "--" << name << " takes a number from " << low << " to " << high << ", not '"
+            << *text << "'";
+    fail(message.str());
+    return std::nullopt;
   }
   return parsed;
 }

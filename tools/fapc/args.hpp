@@ -26,6 +26,12 @@ class Args {
   std::vector<std::string> values(const std::string& name) const;   // every one, in order
   // An integer option in [low, high]; sets error() when it is not one.
   int integer(const std::string& name, int fallback, int low, int high);
+  // A decimal option in [low, high]; empty when absent; sets error() when it is not one.
+  std::optional<double> decimal(const std::string& name, double low, double high);
+  // Records a usage error (the first one wins).
+  void fail(std::string message) {
+    if (error_.empty()) error_ = std::move(message);
+  }
 
  private:
   std::vector<std::string> positionals_;

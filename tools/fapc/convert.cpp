@@ -13,13 +13,14 @@ ConvertOptions convert_options(Args& args) {
   options.quant = args.integer("quant", 1, 0, 31);
   options.intra_period = args.integer("intra-period", 0, 0, 1 << 20);
   options.profile = args.value("profile");
+  options.duration = args.decimal("duration", 0, 1e7);
   options.strict = args.flag("strict");
   options.verify = args.flag("verify");
   if (const auto ranges = args.value("ranges")) options.ranges = *ranges;
   for (const std::string& event : args.values("event")) {
     const auto eq = event.find('=');
     if (eq == std::string::npos || eq == 0) {
-      args.integer("event", 0, 0, 0);  // records nothing; the message below is clearer
+      args.fail("--event takes NAME=VALUE, not '" + event + "'");
       return options;
     }
     options.events[event.substr(0, eq)] = event.substr(eq + 1);

@@ -11,7 +11,8 @@ namespace fapc::cli {
 
 // Option names shared by compile and batch.
 inline const std::set<std::string> kConvertValued = {"fps", "profile", "event", "quant",
-                                                      "intra-period", "ranges", "from", "to"};
+                                                      "intra-period", "ranges", "from", "to",
+                                                      "duration"};
 inline const std::set<std::string> kConvertFlags = {"strict", "verify"};
 
 // Reads the shared options; sets args' error on bad values.

@@ -46,6 +46,7 @@ const std::map<std::string, Command>& commands();
 struct ConvertOptions {
   int fps = 25;
   std::optional<std::string> profile;
+  std::optional<double> duration;             // --duration: the end of timelines that give none
   std::map<std::string, std::string> events;  // --event NAME=VALUE
   int quant = 1;                             // fap_quant for .fba/.mp4 outputs
   int intra_period = 0;                      // 0: encoder decides

@@ -1,0 +1,32 @@
+// .json output: the curves JSON of docs/cli.md (time-value lists after blending and thinning).
+#include "fapc/registry.hpp"
+
+namespace fapc::cli {
+
+namespace {
+
+Result<std::string> write_curves_json(const Loaded& loaded, const std::string&,
+                                      const ConvertOptions&) {
+  const Curves curves = loaded.curves ? *loaded.curves : curves_from_frames(loaded.frames);
+  // One target per line, its points inline: diffs of golden files stay readable.
+  using json = nlohmann::json;
+  std::string out = "{\n \"fps\": " + json(curves.fps).dump() +
+                    ",\n \"duration\": " + json(curves.duration).dump() + ",\n \"curves\": {";
+  const char* separator = "\n";
+  for (const auto& [target, points] : curves.curves) {
+    out += separator;
+    out += "  " + json(target).dump() + ": [";
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      out += (i ? ", [" : "[") + json(points[i].first).dump() + ", " + json(points[i].second).dump() + "]";
+    }
+    out += "]";
+    separator = ",\n";
+  }
+  return out + "\n }\n}\n";
+}
+
+const RegisterOutput json_output{OutputFormat{"json", {".json"}, write_curves_json}};
+
+}  // namespace
+
+}  // namespace fapc::cli

@@ -1,0 +1,33 @@
+#include "fapc/timeline_input.hpp"
+
+#include <filesystem>
+
+#include "fapc/transcoder/render.hpp"
+
+namespace fapc::cli {
+
+Result<Profile> profile_for(const ConvertOptions& options) {
+  if (!options.profile) return default_profile();
+  return load_profile(*options.profile);
+}
+
+Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
+                                    const Profile& profile, const ConvertOptions& options,
+                                    Diagnostics warnings) {
+  if (options.duration) timeline.explicit_end = *options.duration;
+  RenderOptions render;
+  render.fps = options.fps;
+  render.profile = &profile;
+  render.name = std::filesystem::path(name).stem().string();
+  Result<Rendered> rendered = render_frames(timeline, render);
+  if (!rendered) return rendered.error();
+  Loaded loaded;
+  loaded.frames = std::move(rendered->frames);
+  loaded.curves = render_curves(timeline, CurveOptions{options.fps, 1e-6});
+  loaded.timeline = std::move(timeline);
+  loaded.warnings = std::move(warnings);
+  loaded.warnings.insert(loaded.warnings.end(), rendered->warnings.begin(), rendered->warnings.end());
+  return loaded;
+}
+
+}  // namespace fapc::cli

@@ -1,0 +1,20 @@
+// What every timeline front end (Mimic, FML, XMT-Omega) does after lowering: render the frames and
+// the curves with the user's options and keep the timeline for per-clip plots.
+#pragma once
+
+#include <string>
+
+#include "fapc/registry.hpp"
+#include "fapc/transcoder/profile.hpp"
+
+namespace fapc::cli {
+
+// The profile of --profile, or the default one.
+Result<Profile> profile_for(const ConvertOptions& options);
+
+// Frames at options.fps (clamp warnings appended to `warnings`), curves, and the timeline itself.
+Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
+                                    const Profile& profile, const ConvertOptions& options,
+                                    Diagnostics warnings);
+
+}  // namespace fapc::cli
