@@ -11,6 +11,7 @@
 #include <sstream>
 #include <thread>
 
+#include "fapc/xml_text.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "fapc/convert.hpp"
 
@@ -69,19 +70,6 @@ std::vector<std::string> split_list(const std::string& list) {
   return out;
 }
 
-std::string xml_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 std::string junit_report(const std::vector<Job>& jobs, const std::vector<JobResult>& results) {
   std::size_t failures = 0;

@@ -1,3 +1,4 @@
+#include "fapc/xml_text.hpp"
 #include "fapc/svg_plot.hpp"
 
 #include <algorithm>
@@ -19,19 +20,6 @@ const char* const kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd",
 
 using Points = std::vector<std::pair<double, double>>;
 
-std::string escape(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 // A round tick step giving about `count` ticks over `span`.
 double tick_step(double span, int count) {
@@ -64,7 +52,7 @@ void polyline(std::ostringstream& svg, const Panel& panel, const Points& points,
 
 void axes(std::ostringstream& svg, const Panel& panel, const std::string& name) {
   svg << "<text x=\"" << kLeft << "\" y=\"" << panel.top - 6 << "\" font-weight=\"bold\">"
-      << escape(name) << "</text>\n";
+      << xml_escape(name) << "</text>\n";
   svg << "<rect x=\"" << kLeft << "\" y=\"" << panel.top << "\" width=\"" << kWidth - kLeft - kRight
       << "\" height=\"" << kPanel << "\" fill=\"none\" stroke=\"#999\"/>\n";
   for (const double v : {panel.low, panel.high}) {
@@ -96,7 +84,7 @@ std::string plot_svg(const Curves& blended, const Curves* per_clip, const std::s
   svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << height
       << "\" font-family=\"sans-serif\" font-size=\"11\">\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-      << "<text x=\"" << kLeft << "\" y=\"20\" font-size=\"14\">" << escape(title)
+      << "<text x=\"" << kLeft << "\" y=\"20\" font-size=\"14\">" << xml_escape(title)
       << " (time in seconds)</text>\n";
   double top = kTop;
   std::size_t colour = 0;
@@ -125,7 +113,7 @@ std::string plot_svg(const Curves& blended, const Curves* per_clip, const std::s
       if (!clip->second.empty()) {
         const auto& [t, v] = clip->second.front();
         svg << "<text x=\"" << panel.x(t) + 2 << "\" y=\"" << panel.y(v) - 3
-            << "\" fill=\"#777\">" << escape(line_label(clip->first)) << "</text>\n";
+            << "\" fill=\"#777\">" << xml_escape(line_label(clip->first)) << "</text>\n";
       }
     }
     polyline(svg, panel, points, kColours[colour++ % std::size(kColours)], 1.8);
