@@ -47,7 +47,7 @@ class Scheduler {
         return start;
       }
       if (start < 0) {
-        fail(node, "starts before time 0 (at " + seconds(start) + ")");
+        fail(node, "the action starts before time 0 (at " + seconds(start) + ")");
         return start;
       }
       const double simple = node.timing.duration.value_or(*active);
