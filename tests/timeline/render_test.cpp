@@ -32,6 +32,8 @@ TEST(Curve, KeysHoldOutsideAndJumpAtEqualTimes) {
   EXPECT_DOUBLE_EQ(c.value_at(0.5), 2);
   EXPECT_DOUBLE_EQ(c.value_at(1), 7);  // the later of two keys at one time
   EXPECT_DOUBLE_EQ(c.value_at(5), 7);
+  EXPECT_DOUBLE_EQ(c.left_limit(1), 3);  // the earlier of the two
+  EXPECT_DOUBLE_EQ(c.left_limit(0.5), 2);
 }
 
 TEST(Curve, PeriodicShapes) {

@@ -126,7 +126,9 @@ Curves render_clip_curves(const Timeline& timeline, const CurveOptions& options)
     add_clip_times(clip, clip.end, times);
     add_frame_times(clip.begin, clip.end, options.fps, times);
     sort_unique(times);
-    Points points = sample(times, [&](double t, bool) { return clip_value(clip, t); });
+    Points points = sample(times, [&](double t, bool from_left) {
+      return t >= clip.end && !from_left ? clip_value(clip, t, true) : clip_value(clip, t, from_left);
+    });
     // "jaw (table2.mimic:5)"; a second clip from the same place (a macro used twice) gets " #2".
     std::string label = clip.target + " (" +
                         std::filesystem::path(clip.source.file).filename().string() + ":" +

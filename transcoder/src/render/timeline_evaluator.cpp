@@ -80,11 +80,15 @@ std::span<const std::uint32_t> TargetIndex::active_at(double t, bool from_left) 
   return std::span<const std::uint32_t>(members).subspan(offsets[j], offsets[j + 1] - offsets[j]);
 }
 
-double clip_value(const Clip& clip, double t) {
-  return clip.curve.value_at(clip.local_time(std::min(t, clip.end)));
+double clip_value(const Clip& clip, double t, bool from_left) {
+  // Past its end a (frozen) clip holds the value it reached, the limit from the left.
+  if (t >= clip.end) return clip.curve.left_limit(clip.local_time(clip.end));
+  const double local = clip.local_time(t);
+  return from_left ? clip.curve.left_limit(local) : clip.curve.value_at(local);
 }
 
-Blended blend(const std::vector<Clip>& all, std::span<const std::uint32_t> active, double t) {
+Blended blend(const std::vector<Clip>& all, std::span<const std::uint32_t> active, double t,
+              bool from_left) {
   Blended result;
   if (active.empty()) return result;
   // 1. The overwrite clip that began last wins (ties: the later in the source).
@@ -99,13 +103,13 @@ Blended blend(const std::vector<Clip>& all, std::span<const std::uint32_t> activ
     any_average = any_average || clip.blend == BlendMode::average;
   }
   if (winner) {
-    result.value = clip_value(*winner, t);
+    result.value = clip_value(*winner, t, from_left);
     return result;
   }
   // 2. Any average: the mean of all; 3. otherwise the sum. The cause is the largest contributor.
   double largest = -1;
   for (const std::uint32_t c : active) {
-    const double v = clip_value(all[c], t);
+    const double v = clip_value(all[c], t, from_left);
     result.value += v;
     if (std::abs(v) > largest) {
       largest = std::abs(v);
@@ -127,7 +131,7 @@ TimelineIndex::TimelineIndex(const Timeline& timeline) : clips(timeline.clips) {
 }
 
 Blended TimelineIndex::value_at(const TargetIndex& target, double t, bool from_left) const {
-  return blend(clips, target.active_at(t, from_left), t);
+  return blend(clips, target.active_at(t, from_left), t, from_left);
 }
 
 // ---- the public face -----------------------------------------------------------------------

@@ -35,9 +35,11 @@ struct Blended {
   std::int64_t cause = -1;  // the clip that decided the value (for warnings), -1 when none
 };
 
-// The value of one clip at absolute time t (a frozen clip past its end keeps its end value).
-double clip_value(const Clip& clip, double t);
-Blended blend(const std::vector<Clip>& all, std::span<const std::uint32_t> active, double t);
+// The value of one clip at absolute time t (a frozen clip past its end keeps its end value);
+// `from_left`: the limit from the left, which is what a clip has at its own end.
+double clip_value(const Clip& clip, double t, bool from_left = false);
+Blended blend(const std::vector<Clip>& all, std::span<const std::uint32_t> active, double t,
+              bool from_left);
 
 struct TimelineIndex {
   explicit TimelineIndex(const Timeline& timeline);

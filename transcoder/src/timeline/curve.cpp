@@ -43,18 +43,39 @@ Curve Curve::ramp(double from, double to, double duration, Interpolation how) {
   return Curve{{KeyPoint{0, from, how}, KeyPoint{duration, to}}, std::nullopt};
 }
 
+namespace {
+
+// The value on the segment that ends at `after` (not the first key).
+double on_segment(std::vector<KeyPoint>::const_iterator after, double t) {
+  const KeyPoint& a = *(after - 1);
+  const KeyPoint& b = *after;
+  if (b.time <= a.time) return b.value;
+  const double u = (t - a.time) / (b.time - a.time);
+  return a.value + (b.value - a.value) * shape(a.to_next, u);
+}
+
+}  // namespace
+
 double Curve::value_at(double local_time) const {
   if (periodic) return periodic_value(*periodic, local_time);
   if (keys.empty()) return 0;
-  // The last key at or before t: with two keys at one time (a jump) the later one wins.
+  // The segment after the last key at or before t: at two keys at one time the later one wins.
   const auto after = std::upper_bound(keys.begin(), keys.end(), local_time,
                                       [](double t, const KeyPoint& k) { return t < k.time; });
   if (after == keys.begin()) return keys.front().value;
   if (after == keys.end()) return keys.back().value;
-  const KeyPoint& a = *(after - 1);
-  const KeyPoint& b = *after;
-  const double u = (local_time - a.time) / (b.time - a.time);
-  return a.value + (b.value - a.value) * shape(a.to_next, u);
+  return on_segment(after, local_time);
+}
+
+double Curve::left_limit(double local_time) const {
+  if (periodic) return periodic_value(*periodic, local_time);
+  if (keys.empty()) return 0;
+  // The segment that ends at or after t: at two keys at one time the earlier one counts.
+  const auto after = std::lower_bound(keys.begin(), keys.end(), local_time,
+                                      [](const KeyPoint& k, double t) { return k.time < t; });
+  if (after == keys.begin()) return keys.front().value;
+  if (after == keys.end()) return keys.back().value;
+  return on_segment(after, local_time);
 }
 
 }  // namespace fapc

@@ -43,6 +43,8 @@ struct Curve {
   static Curve constant(double value);
   static Curve ramp(double from, double to, double duration, Interpolation how);
   double value_at(double local_time) const;
+  // The limit from the left: at a jump (two keys at one time) the earlier key's side.
+  double left_limit(double local_time) const;
   friend bool operator==(const Curve&, const Curve&) = default;
 };
 
