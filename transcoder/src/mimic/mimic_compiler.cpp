@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <unordered_map>
 #include <sstream>
 
 #include "action_params.hpp"
@@ -99,6 +100,13 @@ class Compiler {
   // value of `connect=x` (empty inside: take the next clip's value).
   std::vector<std::optional<std::optional<double>>> connects_;
   Diagnostics warnings_;
+  std::unordered_map<std::string, std::vector<FapContribution>> resolved_;  // per target name
+
+  const std::vector<FapContribution>& contributions(const std::string& target) {
+    const auto found = resolved_.find(target);
+    if (found != resolved_.end()) return found->second;
+    return resolved_.emplace(target, resolve_target(target, profile_)).first->second;
+  }
 
   Diagnostic error(Position at, const std::string& message) const {
     return make_error(Location::text(file_, at.line, at.column), message,
@@ -215,7 +223,7 @@ class Compiler {
     const auto expression = expressions_.find(action.name);
     if (expression != expressions_.end()) {
       for (const ExpressionEntry& entry : expression->second) leaf.targets.push_back({entry.parameter, entry.value});
-    } else if (resolve_target(action.name, profile_).empty()) {
+    } else if (contributions(action.name).empty()) {
       return error(action.at, unknown_parameter_message(action.name, profile_));
     } else {
       leaf.targets.push_back({action.name, 1});
@@ -302,7 +310,7 @@ class Compiler {
     }
     for (const Number& v : leaf.action->values) numbers.push_back(&v);
     for (const Target& target : leaf.targets) {
-      for (const FapContribution& c : resolve_target(target.name, profile_)) {
+      for (const FapContribution& c : contributions(target.name)) {
         const int high = c.fap <= 2 ? 63 : find_fap(c.fap)->legal_max();
         const int low = c.fap <= 2 ? 0 : -high;
         for (const Number* n : numbers) {

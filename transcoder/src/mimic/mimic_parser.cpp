@@ -22,8 +22,8 @@ bool is_keyword(std::string_view name) {
 
 class Parser {
  public:
-  Parser(std::vector<Token> tokens, std::string_view source, const std::string& file)
-      : tokens_(std::move(tokens)), source_(source), file_(file) {}
+  Parser(std::string_view source, const std::string& file)
+      : lexer_(source, file), current_(lexer_.next()), source_(source), file_(file) {}
 
   Result<Program> program() {
     Program program;
@@ -50,13 +50,21 @@ class Parser {
   }
 
  private:
-  std::vector<Token> tokens_;
-  std::size_t at_ = 0;
+  Lexer lexer_;
+  Token current_;
+  Token previous_;
   std::string_view source_;
   const std::string& file_;
 
-  const Token& peek() const { return tokens_[at_]; }
-  const Token& next() { return tokens_[at_ < tokens_.size() - 1 ? at_++ : at_]; }
+  const Token& peek() const { return current_; }
+  // Consumes the current token and returns it (valid until the next call).
+  const Token& next() {
+    previous_ = current_;
+    if (current_.kind != TokenKind::end_of_input && current_.kind != TokenKind::error) {
+      current_ = lexer_.next();
+    }
+    return previous_;
+  }
   static Position position(const Token& t) { return Position{t.line, t.column}; }
 
   Diagnostic error_at(const Token& t, std::string message) const {
@@ -65,9 +73,10 @@ class Parser {
   }
   Diagnostic unexpected(const std::string& wanted) const {
     const Token& t = peek();
+    if (t.kind == TokenKind::error) return lexer_.error();  // the lexer's message is the right one
     const std::string found = t.kind == TokenKind::end_of_input ? "the end of the program"
-                              : t.kind == TokenKind::string     ? "\"" + t.text + "\""
-                                                                : "'" + t.text + "'";
+                              : t.kind == TokenKind::string     ? "\"" + t.str() + "\""
+                                                                : "'" + t.str() + "'";
     return error_at(t, "expected " + wanted + ", found " + found);
   }
 
@@ -81,13 +90,13 @@ class Parser {
     definition.expression = next().text == "defxpr";
     Result<Token> name = expect(TokenKind::identifier, "a name to define");
     if (!name) return name.error();
-    if (is_keyword(name->text)) return error_at(*name, "'" + name->text + "' is a keyword, not a name");
-    definition.name = name->text;
+    if (is_keyword(name->text)) return error_at(*name, "'" + name->str() + "' is a keyword, not a name");
+    definition.name = name->str();
     definition.at = position(*name);
     if (definition.expression) {
       Result<Token> file = expect(TokenKind::string, "a quoted expression file name (\"smile.xpr\")");
       if (!file) return file.error();
-      definition.file = file->text;
+      definition.file = file->str();
       definition.file_at = position(*file);
       return definition;
     }
@@ -98,7 +107,7 @@ class Parser {
   }
 
   Result<Action> action_group() {
-    const Token& open = peek();
+    const Token open = peek();  // a copy: peek() moves on
     if (open.kind != TokenKind::left_brace && open.kind != TokenKind::left_bracket) {
       return unexpected("'{' (a sequence) or '[' (a parallel)");
     }
@@ -141,11 +150,11 @@ class Parser {
     Result<Token> name = expect(TokenKind::identifier, "an action (a name, '{', '[' or '<')");
     if (!name) return name.error();
     if (is_keyword(name->text)) {
-      return error_at(*name, "'" + name->text + "' must come before main, at the top of the program");
+      return error_at(*name, "'" + name->str() + "' must come before main, at the top of the program");
     }
     Action atomic;
     atomic.kind = Action::Kind::named;
-    atomic.name = name->text;
+    atomic.name = name->str();
     atomic.at = position(*name);
     if (peek().kind == TokenKind::less) {
       Result<std::vector<Param>> params = parameters();
@@ -190,7 +199,7 @@ class Parser {
     for (;;) {
       Result<Token> name = expect(TokenKind::identifier, "a parameter name");
       if (!name) return name.error();
-      Param param{name->text, position(*name), std::nullopt};
+      Param param{name->str(), position(*name), std::nullopt};
       const bool known = kWithoutValue.contains(param.name) || kWithValue.contains(param.name) ||
                          kValueOptional.contains(param.name);
       if (!known) {
@@ -206,7 +215,7 @@ class Parser {
         next();
         if (peek().kind == TokenKind::identifier) {
           return error_at(peek(), "'" + param.name + "' takes a number, not the name '" +
-                                      peek().text + "'");
+                                      peek().str() + "'");
         }
         Result<Token> value = expect(TokenKind::number, "a number after '" + param.name + "='");
         if (!value) return value.error();
@@ -230,9 +239,7 @@ class Parser {
 }  // namespace
 
 Result<Program> parse_program(std::string_view source, const std::string& file_name) {
-  Result<std::vector<Token>> tokens = tokenize(source, file_name);
-  if (!tokens) return tokens.error();
-  return Parser(std::move(*tokens), source, file_name).program();
+  return Parser(source, file_name).program();
 }
 
 }  // namespace fapc::mimic
