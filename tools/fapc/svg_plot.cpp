@@ -88,11 +88,13 @@ std::string plot_svg(const Curves& blended, const Curves* per_clip, const std::s
       << " (time in seconds)</text>\n";
   double top = kTop;
   std::size_t colour = 0;
-  for (const auto& [target, points] : blended.curves) {
+  for (const auto& entry : blended.curves) {
+    const std::string& target = entry.first;
+    const Points& points = entry.second;  // not a binding: the lambda below captures it
     std::vector<const std::pair<const std::string, Points>*> clips;
     if (per_clip) {
-      for (const auto& entry : per_clip->curves) {
-        if (entry.first.starts_with(target + " (")) clips.push_back(&entry);
+      for (const auto& clip_entry : per_clip->curves) {
+        if (clip_entry.first.starts_with(target + " (")) clips.push_back(&clip_entry);
       }
     }
     Panel panel{top, 0, 0, std::max(blended.duration, 1e-9)};

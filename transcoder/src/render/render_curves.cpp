@@ -97,7 +97,9 @@ Curves render_curves(const Timeline& timeline, const CurveOptions& options) {
   Curves out;
   out.fps = options.fps;
   out.duration = timeline.end();
-  for (const auto& [target, target_index] : index.targets) {
+  for (const auto& entry : index.targets) {
+    // Not a structured binding: lambdas below capture it (clang 14 cannot capture bindings).
+    const TargetIndex& target_index = entry.second;
     std::vector<double> times;
     for (std::size_t i = 0; i < target_index.clips.size(); ++i) {
       const double end = std::min(target_index.effective_end[i], out.duration);
@@ -110,7 +112,7 @@ Curves render_curves(const Timeline& timeline, const CurveOptions& options) {
     Points points = sample(times, [&](double t, bool from_left) {
       return index.value_at(target_index, t, from_left).value;
     });
-    out.curves[target] = thin_points(std::move(points), options.tolerance);
+    out.curves[entry.first] = thin_points(std::move(points), options.tolerance);
   }
   add_strongest_curve(index, 1, "viseme", out);
   add_strongest_curve(index, 2, "expression", out);
