@@ -126,9 +126,12 @@ TEST(MimicSemantics, MacrosExpandWhereUsedWithTheirParameters) {
 TEST(MimicSemantics, ExpressionsAmplifyEveryParameter) {
   const Timeline t = timeline_of("defxpr smile \"s.xpr\" main { smile <in=2,value=0.5>; }",
                                  {{"s.xpr", "# a smile\nraise_l_cornerlip 120\njaw 0.2\n"}});
+  // The expression becomes a facial state in FAP units (jaw 0.2 x 1024 = 204.8 -> 205 on
+  // open_jaw), amplified by the Algebra: round(0.5 x 120) = 60, round(0.5 x 205) = 103 (half
+  // away from zero). Half way up the fade: 30 and 51.5.
   ASSERT_EQ(t.clips.size(), 2u);
-  EXPECT_DOUBLE_EQ(at(t, "raise_l_cornerlip", 1), 30);  // 0.5 x 120, half way up
-  EXPECT_DOUBLE_EQ(at(t, "jaw", 1), 0.05);  // 0.5 x 0.2, half way up
+  EXPECT_DOUBLE_EQ(at(t, "raise_l_cornerlip", 1), 30);
+  EXPECT_DOUBLE_EQ(at(t, "open_jaw", 1), 51.5);
 }
 
 TEST(MimicSemantics, CommentsAndOptionalSemicolons) {

@@ -28,14 +28,48 @@ ConvertOptions convert_options(Args& args) {
   return options;
 }
 
-ConvertOutcome convert(const std::string& input, const std::string& output,
-                       const ConvertOptions& options, const std::string& to_kind) {
-  ConvertOutcome outcome;
+namespace {
+
+const OutputFormat* writer_for(const std::string& output, const std::string& to_kind) {
   const OutputFormat* writer =
       to_kind.empty() ? output_format_for(output) : output_format_named(to_kind);
   if (!writer) {
     report(make_error(Location{output, 0, 0, -1},
                       "unknown output kind (expected .fap, .fap.gz, .fba, .mp4, .xmt, .json or .svg)"));
+  }
+  return writer;
+}
+
+int write_with(const OutputFormat& writer, const Loaded& loaded, const std::string& output,
+               const ConvertOptions& options) {
+  auto bytes = writer.write(loaded, output, options);
+  if (!bytes) {
+    report(bytes.error());
+    return bytes.error().message.rfind("verification", 0) == 0 ? kExitVerifyFailed : kExitBadInput;
+  }
+  if (output == "-") {
+    std::cout << *bytes << std::flush;
+  } else if (auto written = write_file_atomic(output, *bytes); !written) {
+    report(written.error());
+    return kExitBadInput;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+int write_output(const Loaded& loaded, const std::string& output, const ConvertOptions& options,
+                 const std::string& to_kind) {
+  const OutputFormat* writer = writer_for(output, to_kind);
+  return writer ? write_with(*writer, loaded, output, options) : kExitBadInput;
+}
+
+ConvertOutcome convert(const std::string& input, const std::string& output,
+                       const ConvertOptions& options, const std::string& to_kind) {
+  ConvertOutcome outcome;
+  // The output kind is checked first: a typo in -o should not cost a long compile.
+  const OutputFormat* writer = writer_for(output, to_kind);
+  if (!writer) {
     outcome.exit_status = kExitBadInput;
     return outcome;
   }
@@ -52,21 +86,8 @@ ConvertOutcome convert(const std::string& input, const std::string& output,
     outcome.exit_status = kExitBadInput;
     return outcome;
   }
-  auto bytes = writer->write(*loaded, output, options);
-  if (!bytes) {
-    report(bytes.error());
-    outcome.exit_status = bytes.error().message.rfind("verification", 0) == 0 ? kExitVerifyFailed
-                                                                             : kExitBadInput;
-    return outcome;
-  }
-  if (output == "-") {
-    std::cout << *bytes << std::flush;
-  } else if (auto written = write_file_atomic(output, *bytes); !written) {
-    report(written.error());
-    outcome.exit_status = kExitBadInput;
-    return outcome;
-  }
-  outcome.loaded = std::move(*loaded);
+  outcome.exit_status = write_with(*writer, *loaded, output, options);
+  if (outcome.exit_status == kExitOk) outcome.loaded = std::move(*loaded);
   return outcome;
 }
 

@@ -23,6 +23,11 @@ struct ConvertOutcome {
   Loaded loaded;  // what the input became (for summaries)
 };
 
+// Writes `loaded` to `output` (by extension, or `to_kind`), atomically, or `-` for standard output;
+// prints diagnostics and returns the exit status.
+int write_output(const Loaded& loaded, const std::string& output, const ConvertOptions& options,
+                 const std::string& to_kind = {});
+
 // Converts `input` to `output` (by extension, or by `to_kind` when given); prints diagnostics.
 ConvertOutcome convert(const std::string& input, const std::string& output,
                        const ConvertOptions& options, const std::string& to_kind = {});

@@ -11,6 +11,7 @@
 #include "action_params.hpp"
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/codec/file_io.hpp"
+#include "fapc/transcoder/algebra.hpp"
 #include "fapc/transcoder/expression_file.hpp"
 #include "fapc/transcoder/mimic.hpp"
 #include "fapc/transcoder/schedule.hpp"
@@ -31,6 +32,9 @@ struct Target {
 struct Leaf {
   enum class Shape { fade, periodic, list };
   Shape shape = Shape::fade;
+  // A defxpr instance: its targets' factors are already the amplified state (the fade's value
+  // applied by the Algebra's amplifier), so the fade rises to the factor itself.
+  bool expression = false;
   std::vector<Target> targets;
   ActionParams params;
   const Action* action = nullptr;
@@ -93,7 +97,7 @@ class Compiler {
   const MimicOptions& options_;
   const Profile& profile_;
   std::map<std::string, const Definition*> macros_;
-  std::map<std::string, std::vector<ExpressionEntry>> expressions_;
+  std::map<std::string, algebra::FacialState> expressions_;
   std::vector<Leaf> leaves_;
   std::vector<std::string> stack_;  // macros being expanded, for recursion errors
   // Per clip of the timeline being built: empty when it does not connect, else the explicit end
@@ -137,14 +141,15 @@ class Compiler {
       }
       macros_[d.name] = &d;
       if (!d.expression) continue;
-      Result<std::vector<ExpressionEntry>> entries = load_expression(d);
-      if (!entries) return entries.error();
-      expressions_[d.name] = std::move(*entries);
+      Result<algebra::FacialState> state = load_expression(d);
+      if (!state) return state.error();
+      expressions_[d.name] = *state;
     }
     return ok_status();
   }
 
-  Result<std::vector<ExpressionEntry>> load_expression(const Definition& d) {
+  // The .xpr file as a facial state (FAP units, through the profile), by the Algebra's code.
+  Result<algebra::FacialState> load_expression(const Definition& d) {
     const std::string path = (std::filesystem::path(file_).parent_path() / d.file).string();
     Result<std::string> text = options_.read_file ? options_.read_file(path) : read_file_bytes(path);
     if (!text) {
@@ -152,14 +157,14 @@ class Compiler {
     }
     Result<std::vector<ExpressionEntry>> entries = parse_expression_file(*text, path);
     if (!entries) return entries.error();
-    for (const ExpressionEntry& entry : *entries) {
-      if (resolve_target(entry.parameter, profile_).empty()) {
-        return make_error(entry.where, unknown_parameter_message(entry.parameter, profile_),
-                          source_line(*text, entry.where.line));
-      }
-    }
     if (entries->empty()) return error(d.file_at, "the expression file '" + d.file + "' sets no parameter");
-    return entries;
+    Result<algebra::FacialState> state = algebra::state_from_entries(*entries, profile_);
+    if (!state) {
+      Diagnostic problem = state.error();
+      problem.source_line = source_line(*text, problem.where.line);
+      return problem;
+    }
+    return state;
   }
 
   Result<ScheduleNode> build(const Action& action, const Context& context) {
@@ -222,7 +227,14 @@ class Compiler {
     leaf.blend = blend;
     const auto expression = expressions_.find(action.name);
     if (expression != expressions_.end()) {
-      for (const ExpressionEntry& entry : expression->second) leaf.targets.push_back({entry.parameter, entry.value});
+      leaf.expression = true;
+      if (params.value) {
+        const algebra::FacialState amplified = algebra::amplify(expression->second, params.value->value);
+        for (int fap = 3; fap <= kFapCount; ++fap) {
+          if (expression->second.at(fap) == 0) continue;
+          leaf.targets.push_back({std::string(find_fap(fap)->name), static_cast<double>(amplified.at(fap))});
+        }
+      }
     } else if (contributions(action.name).empty()) {
       return error(action.at, unknown_parameter_message(action.name, profile_));
     } else {
@@ -308,13 +320,16 @@ class Compiler {
     for (const std::optional<Number>* n : {&leaf.params.value, &leaf.params.min, &leaf.params.max}) {
       if (*n) numbers.push_back(&**n);
     }
+
     for (const Number& v : leaf.action->values) numbers.push_back(&v);
     for (const Target& target : leaf.targets) {
       for (const FapContribution& c : contributions(target.name)) {
         const int high = c.fap <= 2 ? 63 : find_fap(c.fap)->legal_max();
         const int low = c.fap <= 2 ? 0 : -high;
         for (const Number* n : numbers) {
-          const double fap_value = n->value * target.factor * c.scale;
+          // An expression's factor already includes the fade's value: check the factor alone.
+          const double written = leaf.expression ? 1 : n->value;
+          const double fap_value = written * target.factor * c.scale;
           if (fap_value >= low && fap_value <= high) continue;
           warnings_.push_back(make_warning(
               location(n->at),
@@ -353,7 +368,7 @@ class Compiler {
         const double in = value_or_zero(p.in);
         const double hold = value_or_zero(p.hold);
         const double out = value_or_zero(p.out);
-        const double v = p.value->value * target.factor;
+        const double v = leaf.expression ? target.factor : p.value->value * target.factor;
         const Interpolation f = p.interpolation();
         // Rise from the neutral 0 to v, hold, fall to the end value (0 until `connect` sets it).
         clip.curve.keys = {{0, 0, f}, {in, v, Interpolation::linear}, {in + hold, v, f}, {in + hold + out, 0}};

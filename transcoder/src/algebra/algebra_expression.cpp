@@ -1,0 +1,291 @@
+// Grammar (docs/algebra.md):
+//   overlap := sum ('|' sum)*
+//   sum     := product ('+' ['[' NUMBER ']'] product)*
+//   product := NUMBER '*' product | postfix ('*' NUMBER)*
+//   postfix := primary ('[' MASK ']' | '@' INTEGER | '>>' NUMBER)*
+//   primary := NAME | '"' NAME '"' | '(' overlap ')'
+#include "fapc/transcoder/algebra_expression.hpp"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+namespace fapc::algebra {
+namespace {
+
+// An operand with what only an overlap uses.
+struct Term {
+  Value value;
+  std::optional<Mask> mask;
+  std::optional<int> priority;
+  int column = 0;
+};
+
+bool name_char(char c) {
+  return !std::isspace(static_cast<unsigned char>(c)) && c != '+' && c != '*' && c != '|' &&
+         c != '[' && c != ']' && c != '(' && c != ')' && c != '@' && c != '"' && c != '>';
+}
+
+// A state meets an animation: the state holds on every slot of the animation's grid.
+Animation broadcast(const FacialState& state, const Animation& like) {
+  Animation out;
+  out.fps = like.fps;
+  out.frames.assign(std::max<std::size_t>(like.size(), 1), state);
+  for (int fap = 3; fap <= 68; ++fap) {
+    if (state.at(fap) != 0) out.carried.set(static_cast<std::size_t>(fap - 3));
+  }
+  return out;
+}
+
+class Evaluator {
+ public:
+  Evaluator(std::string_view text, const OperandLoader& load) : text_(text), load_(load) {}
+
+  Result<Value> run() {
+    Result<Term> result = overlap();
+    if (!result) return result.error();
+    skip_blanks();
+    if (at_ < text_.size()) return error(at_, "unexpected '" + std::string(1, text_[at_]) + "'");
+    if (result->priority) return error(static_cast<std::size_t>(result->column - 1), "'@' gives a priority to an operand of '|'; there is no '|' here");
+    if (result->mask) return masked(*result);
+    return result->value;
+  }
+
+ private:
+  std::string_view text_;
+  const OperandLoader& load_;
+  std::size_t at_ = 0;
+
+  Diagnostic error(std::size_t offset, const std::string& message) const {
+    return make_error(Location::text("<expression>", 1, static_cast<int>(offset) + 1), message,
+                      std::string(text_));
+  }
+  void skip_blanks() {
+    while (at_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[at_]))) ++at_;
+  }
+  bool accept(std::string_view token) {
+    skip_blanks();
+    if (text_.substr(at_, token.size()) != token) return false;
+    at_ += token.size();
+    return true;
+  }
+
+  Result<double> number() {
+    skip_blanks();
+    const std::size_t start = at_;
+    double value = 0;
+    const auto [end, status] = std::from_chars(text_.data() + at_, text_.data() + text_.size(), value);
+    if (status != std::errc{} || !std::isfinite(value)) return error(start, "expected a number");
+    at_ = static_cast<std::size_t>(end - text_.data());
+    return value;
+  }
+  bool number_ahead() {
+    skip_blanks();
+    if (at_ >= text_.size()) return false;
+    const char c = text_[at_];
+    return std::isdigit(static_cast<unsigned char>(c)) || c == '-' ||
+           (c == '.' && at_ + 1 < text_.size() && std::isdigit(static_cast<unsigned char>(text_[at_ + 1])));
+  }
+
+  Result<Term> overlap() {
+    std::vector<Term> terms;
+    for (;;) {
+      Result<Term> term = sum();
+      if (!term) return term.error();
+      terms.push_back(std::move(*term));
+      if (!accept("|")) break;
+    }
+    if (terms.size() == 1) return std::move(terms.front());
+    // States meet animations on the animations' grid; then the frames are folded.
+    const Animation* grid = nullptr;
+    for (const Term& t : terms) {
+      if (!t.value.state) grid = &t.value.animation;
+    }
+    std::vector<LayeredAnimation> layers;
+    for (const Term& t : terms) {
+      if (!t.priority) {
+        return error(static_cast<std::size_t>(t.column - 1), "every operand of '|' needs a priority ('@2')");
+      }
+      layers.push_back(LayeredAnimation{
+          t.value.state ? broadcast(*t.value.state, grid ? *grid : Animation{}) : t.value.animation,
+          t.mask.value_or(Mask::all()), *t.priority});
+    }
+    Result<Animation> folded = fapc::algebra::overlap(layers);
+    if (!folded) return error(static_cast<std::size_t>(terms.front().column - 1), folded.error().message);
+    Term out;
+    out.column = terms.front().column;
+    if (!grid) {
+      out.value.state = folded->frames.front().value_or(FacialState{});
+    } else {
+      out.value.animation = std::move(*folded);
+    }
+    return out;
+  }
+
+  Result<Term> sum() {
+    Result<Term> left = product();
+    if (!left) return left.error();
+    for (;;) {
+      skip_blanks();
+      const std::size_t at = at_;
+      if (!accept("+")) return left;
+      double v = 0.5;
+      if (accept("[")) {
+        Result<double> weight = number();
+        if (!weight) return weight.error();
+        if (*weight < 0 || *weight > 1) return error(at, "the sum's weight must be within 0..1");
+        v = *weight;
+        if (!accept("]")) return error(at_, "expected ']' after the sum's weight");
+      }
+      Result<Term> right = product();
+      if (!right) return right.error();
+      if (auto bad = overlap_only(*left); bad) return *bad;
+      if (auto bad = overlap_only(*right); bad) return *bad;
+      left->value = combine(left->value, right->value, [v](const auto& s, const auto& t) { return fapc::algebra::sum(s, t, v); });
+    }
+  }
+
+  Result<Term> product() {
+    if (number_ahead()) {
+      Result<double> w = number();
+      if (!w) return w.error();
+      if (!accept("*")) return error(at_, "expected '*' after the amplifier " + format(*w));
+      Result<Term> operand = product();
+      if (!operand) return operand.error();
+      if (auto bad = overlap_only(*operand); bad) return *bad;
+      amplify_in_place(operand->value, *w);
+      return operand;
+    }
+    Result<Term> operand = postfix();
+    if (!operand) return operand.error();
+    while (accept("*")) {
+      Result<double> w = number();
+      if (!w) return w.error();
+      if (auto bad = overlap_only(*operand); bad) return *bad;
+      amplify_in_place(operand->value, *w);
+    }
+    return operand;
+  }
+
+  Result<Term> postfix() {
+    Result<Term> term = primary();
+    if (!term) return term.error();
+    for (;;) {
+      skip_blanks();
+      const std::size_t at = at_;
+      if (accept("[")) {
+        const std::size_t close = text_.find(']', at_);
+        if (close == std::string_view::npos) return error(at, "'[' without ']'");
+        Result<Mask> mask = parse_mask(text_.substr(at_, close - at_));
+        if (!mask) return error(at_ + static_cast<std::size_t>(mask.error().where.column), mask.error().message);
+        term->mask = *mask;
+        at_ = close + 1;
+      } else if (accept("@")) {
+        skip_blanks();
+        int priority = 0;
+        const auto [end, status] = std::from_chars(text_.data() + at_, text_.data() + text_.size(), priority);
+        if (status != std::errc{}) return error(at_, "expected an integer priority after '@'");
+        at_ = static_cast<std::size_t>(end - text_.data());
+        term->priority = priority;
+      } else if (accept(">>")) {
+        Result<double> seconds = number();
+        if (!seconds) return seconds.error();
+        if (term->value.state) return error(at, "'>>' delays an animation; this operand is a state");
+        term->value.animation = shifted(term->value.animation, *seconds);
+      } else {
+        return term;
+      }
+    }
+  }
+
+  Result<Term> primary() {
+    skip_blanks();
+    const std::size_t start = at_;
+    if (accept("(")) {
+      Result<Term> inner = overlap();
+      if (!inner) return inner.error();
+      if (!accept(")")) return error(at_, "expected ')'");
+      inner->column = static_cast<int>(start) + 1;
+      if (inner->mask) {
+        inner->value = masked(*inner);
+        inner->mask.reset();
+      }
+      inner->priority.reset();
+      return inner;
+    }
+    std::string name;
+    if (accept("\"")) {
+      const std::size_t close = text_.find('"', at_);
+      if (close == std::string_view::npos) return error(start, "'\"' without a closing '\"'");
+      name = std::string(text_.substr(at_, close - at_));
+      at_ = close + 1;
+    } else {
+      while (at_ < text_.size() && name_char(text_[at_])) ++at_;
+      name = std::string(text_.substr(start, at_ - start));
+    }
+    if (name.empty()) {
+      return error(start, at_ < text_.size() ? "expected a file, a number or '(', found '" + std::string(1, text_[at_]) + "'"
+                                              : "expected a file, a number or '(' at the end");
+    }
+    Result<Value> value = load_(name, static_cast<int>(start) + 1);
+    if (!value) return value.error();
+    return Term{std::move(*value), std::nullopt, std::nullopt, static_cast<int>(start) + 1};
+  }
+
+  std::optional<Diagnostic> overlap_only(const Term& t) const {
+    if (!t.mask && !t.priority) return std::nullopt;
+    return error(static_cast<std::size_t>(t.column - 1),
+                 "masks '[...]' and priorities '@N' belong to operands of '|'");
+  }
+
+  static Value masked(const Term& t) {
+    Value out = t.value;
+    const auto apply = [&](FacialState& s) {
+      for (int fap = 3; fap <= 68; ++fap) {
+        if (!t.mask->covers(fap)) s.at(fap) = 0;
+      }
+    };
+    if (out.state) apply(*out.state);
+    for (auto& frame : out.animation.frames) {
+      if (frame) apply(*frame);
+    }
+    out.animation.carried &= t.mask->bits;
+    return out;
+  }
+
+  static void amplify_in_place(Value& value, double w) {
+    if (value.state) {
+      *value.state = fapc::algebra::amplify(*value.state, w);
+    } else {
+      value.animation = fapc::algebra::amplify(value.animation, w);
+    }
+  }
+
+  template <class Op>
+  static Value combine(const Value& a, const Value& b, Op op) {
+    Value out;
+    if (a.state && b.state) {
+      out.state = op(*a.state, *b.state);
+      return out;
+    }
+    const Animation x = a.state ? broadcast(*a.state, b.animation) : a.animation;
+    const Animation y = b.state ? broadcast(*b.state, a.animation) : b.animation;
+    out.animation = op(x, y);
+    return out;
+  }
+
+  static std::string format(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
+  }
+};
+
+}  // namespace
+
+Result<Value> evaluate(std::string_view expression, const OperandLoader& load) {
+  return Evaluator(expression, load).run();
+}
+
+}  // namespace fapc::algebra
