@@ -2,6 +2,8 @@
 // (regenerate with FAPC_REGENERATE_GOLDEN=1, review with `git diff corpus/`).
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "support/test_support.hpp"
 
 namespace fapc {
@@ -18,6 +20,15 @@ TEST(GoldenOutputs, MimicExamples) {
     const std::string input = "corpus/mimic/" + name + ".mimic";
     expect_output_golden(input, "json", "mimic/golden/" + name + ".json");
     expect_output_golden(input, "fap", "mimic/golden/" + name + ".fap");
+  }
+}
+
+TEST(GoldenOutputs, AlgebraExamples) {
+  const std::vector<std::string> inputs = test::files_under(test::corpus_dir() + "/algebra", ".combine");
+  ASSERT_EQ(inputs.size(), 5u);
+  for (const std::string& input : inputs) {
+    const std::string stem = std::filesystem::path(input).stem().string();
+    expect_output_golden(input, "fap", "algebra/golden/" + stem + ".fap");
   }
 }
 

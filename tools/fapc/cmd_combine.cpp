@@ -3,50 +3,15 @@
 #include <filesystem>
 #include <iostream>
 
-#include "fapc/codec/file_io.hpp"
 #include "fapc/convert.hpp"
 #include "fapc/report.hpp"
-#include "fapc/timeline_input.hpp"
-#include "fapc/transcoder/algebra_expression.hpp"
+#include "fapc/combine_eval.hpp"
 
 namespace fapc::cli {
 
 namespace {
 
 using algebra::Value;
-
-Result<Value> load_operand(const std::string& name, const ConvertOptions& options,
-                           const Profile& profile) {
-  Value value;
-  if (name.ends_with(".xpr")) {  // a facial state
-    Result<std::string> text = read_file_bytes(name);
-    if (!text) return text.error();
-    Result<std::vector<ExpressionEntry>> entries = parse_expression_file(*text, name);
-    if (!entries) return entries.error();
-    Result<algebra::FacialState> state = algebra::state_from_entries(*entries, profile);
-    if (!state) return state.error();
-    value.state = *state;
-    return value;
-  }
-  Result<Loaded> loaded = load_input(name, options);
-  if (!loaded) return loaded.error();
-  report_all(loaded->warnings);
-  value.animation = algebra::animation_from(loaded->frames);
-  return value;
-}
-
-// The result as frames: a state is one frame.
-FapSequence frames_of(const Value& value, int fps, const std::string& name) {
-  algebra::Animation animation = value.animation;
-  if (value.state) {
-    animation.fps = fps;
-    animation.frames = {*value.state};
-    for (int fap = 3; fap <= 68; ++fap) {
-      if (value.state->at(fap) != 0) animation.carried.set(static_cast<std::size_t>(fap - 3));
-    }
-  }
-  return algebra::sequence_from(animation, name);
-}
 
 int print_state(const Value& value, const Args& args) {
   const algebra::FacialState* state = value.state ? &*value.state : nullptr;
@@ -80,13 +45,9 @@ int run_combine(const std::vector<std::string>& argv) {
   const bool states = args.flag("states");
   const auto output = args.value("output");
   if (!states && !output) return usage_error("combine", "missing -o OUTPUT (or --states)");
-  Result<Profile> profile = profile_for(options);
-  if (!profile) {
-    report(profile.error());
-    return kExitBadInput;
-  }
-  const auto load = [&](const std::string& name, int) { return load_operand(name, options, *profile); };
-  Result<Value> value = algebra::evaluate(args.positionals().front(), load);
+  Diagnostics warnings;
+  Result<Value> value = evaluate_combination(args.positionals().front(), "", options, warnings);
+  report_all(warnings);
   if (!value) {
     report(value.error());
     return kExitBadInput;

@@ -192,6 +192,8 @@ class Evaluator {
         Result<double> seconds = number();
         if (!seconds) return seconds.error();
         if (term->value.state) return error(at, "'>>' delays an animation; this operand is a state");
+        // A day of frames is already more than any face animation; beyond it is a typo.
+        if (std::abs(*seconds) > 86400) return error(at, "a delay is at most 86400 s (a day)");
         term->value.animation = shifted(term->value.animation, *seconds);
       } else {
         return term;

@@ -1,6 +1,7 @@
 // The operators on animations (the paper's section 3, semantics.md §5).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/transcoder/algebra.hpp"
@@ -148,7 +149,9 @@ Result<Animation> overlap(const std::vector<LayeredAnimation>& operands) {
       Result<Layer> next = overlap(*folded, layer);
       if (!next) {
         Diagnostic d = next.error();
-        d.message += " (at " + std::to_string(static_cast<double>(k) / out.fps) + " s)";
+        char at[48];
+        std::snprintf(at, sizeof at, " (at %g s)", static_cast<double>(k) / out.fps);
+        d.message += at;
         return d;
       }
       folded = *next;

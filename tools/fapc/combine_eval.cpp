@@ -1,0 +1,60 @@
+#include "fapc/combine_eval.hpp"
+
+#include <filesystem>
+
+#include "fapc/codec/file_io.hpp"
+#include "fapc/timeline_input.hpp"
+
+namespace fapc::cli {
+
+namespace {
+
+Result<algebra::Value> load_operand(const std::string& path, const ConvertOptions& options,
+                                    const Profile& profile, Diagnostics& warnings) {
+  algebra::Value value;
+  if (path.ends_with(".xpr")) {  // a facial state
+    Result<std::string> text = read_file_bytes(path);
+    if (!text) return text.error();
+    Result<std::vector<ExpressionEntry>> entries = parse_expression_file(*text, path);
+    if (!entries) return entries.error();
+    Result<algebra::FacialState> state = algebra::state_from_entries(*entries, profile);
+    if (!state) return state.error();
+    value.state = *state;
+    return value;
+  }
+  Result<Loaded> loaded = load_input(path, options);
+  if (!loaded) return loaded.error();
+  warnings.insert(warnings.end(), loaded->warnings.begin(), loaded->warnings.end());
+  value.animation = algebra::animation_from(loaded->frames);
+  return value;
+}
+
+}  // namespace
+
+Result<algebra::Value> evaluate_combination(const std::string& expression,
+                                            const std::string& base_folder,
+                                            const ConvertOptions& options, Diagnostics& warnings) {
+  Result<Profile> profile = profile_for(options);
+  if (!profile) return profile.error();
+  const auto load = [&](const std::string& name, int) {
+    const std::filesystem::path path(name);
+    const std::string resolved =
+        path.is_absolute() || base_folder.empty() ? name : (std::filesystem::path(base_folder) / path).string();
+    return load_operand(resolved, options, *profile, warnings);
+  };
+  return algebra::evaluate(expression, load);
+}
+
+FapSequence frames_of(const algebra::Value& value, int fps, const std::string& name) {
+  algebra::Animation animation = value.animation;
+  if (value.state) {
+    animation.fps = fps;
+    animation.frames = {*value.state};
+    for (int fap = 3; fap <= 68; ++fap) {
+      if (value.state->at(fap) != 0) animation.carried.set(static_cast<std::size_t>(fap - 3));
+    }
+  }
+  return algebra::sequence_from(animation, name);
+}
+
+}  // namespace fapc::cli
