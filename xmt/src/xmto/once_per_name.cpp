@@ -1,26 +1,20 @@
 #include "xmto/once_per_name.hpp"
 
-#include <algorithm>
-#include <vector>
-
 namespace fapc::xmt {
 
 void OncePerName::report(const std::string& key, Diagnostic warning) {
-  ++entries_.try_emplace(key, Entry{entries_.size(), std::move(warning), 0}).first->second.count;
+  const auto [seen, fresh] = seen_.try_emplace(key, Seen{out_.size(), 0});
+  if (fresh) out_.push_back(std::move(warning));
+  ++seen->second.count;
 }
 
-Diagnostics OncePerName::take() {
-  std::vector<Entry*> ordered;
-  for (auto& [key, entry] : entries_) ordered.push_back(&entry);
-  std::sort(ordered.begin(), ordered.end(), [](const Entry* a, const Entry* b) { return a->order < b->order; });
-  Diagnostics out;
-  for (Entry* entry : ordered) {
-    if (entry->count > 1)
-      entry->warning.message += " (" + std::to_string(entry->count) + " times; first here)";
-    out.push_back(std::move(entry->warning));
+void OncePerName::finish() {
+  for (auto& [key, seen] : seen_) {
+    if (seen.count > 1) {
+      out_[seen.index].message += " (" + std::to_string(seen.count) + " times; first here)";
+      seen.count = 1;
+    }
   }
-  entries_.clear();
-  return out;
 }
 
 }  // namespace fapc::xmt

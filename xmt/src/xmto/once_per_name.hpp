@@ -1,5 +1,5 @@
 // Warnings that would repeat for every occurrence (an unsupported element, an ignored attribute)
-// are given once per name, at the first occurrence, with the count of the others.
+// are given once per name, at the first occurrence, with the count of all of them.
 #pragma once
 
 #include <map>
@@ -11,18 +11,20 @@ namespace fapc::xmt {
 
 class OncePerName {
  public:
-  // The first call for `key` keeps `warning`; later calls only count.
+  explicit OncePerName(Diagnostics& out) : out_(out) {}
+
+  // The first report for `key` appends `warning` to the output; later ones only count.
   void report(const std::string& key, Diagnostic warning);
-  // The kept warnings in order of first occurrence, "(N times; first here)" added where N > 1.
-  Diagnostics take();
+  // Adds "(N times; first here)" to the warnings reported more than once.
+  void finish();
 
  private:
-  struct Entry {
-    std::size_t order;
-    Diagnostic warning;
+  struct Seen {
+    std::size_t index;  // in out_
     int count;
   };
-  std::map<std::string, Entry> entries_;
+  Diagnostics& out_;
+  std::map<std::string, Seen> seen_;
 };
 
 }  // namespace fapc::xmt

@@ -32,7 +32,9 @@ bool is_blank(std::string_view text) {
 class DocumentReader {
  public:
   DocumentReader(const xml::XmlDocument& doc, const XmtoOptions& options)
-      : doc_(doc), options_(options) {}
+      : doc_(doc), options_(options), once_(result_.warnings) {
+    result_.warnings = doc_.warnings();
+  }
 
   Result<XmtoDocument> run() {
     const xmlNode* root = doc_.root();
@@ -71,9 +73,7 @@ class DocumentReader {
     const Result<Schedule> scheduled = schedule(tree_.root, schedule_options);
     if (!scheduled) return with_source_line(scheduled.error());
     result_.timeline = lower_to_timeline(tree_, *scheduled);
-    Diagnostics once = once_.take();
-    result_.warnings.insert(result_.warnings.begin(), doc_.warnings().begin(), doc_.warnings().end());
-    result_.warnings.insert(result_.warnings.end(), once.begin(), once.end());
+    once_.finish();
     return std::move(result_);
   }
 
@@ -82,9 +82,9 @@ class DocumentReader {
   const XmtoOptions& options_;
   std::string root_namespace_;
   std::optional<Diagnostic> error_;
+  XmtoDocument result_;  // before once_, which appends to its warnings
   OncePerName once_;
   XmtoTree tree_;
-  XmtoDocument result_;
 
   void fail(Diagnostic d) {
     if (!error_) error_ = std::move(d);
@@ -102,7 +102,7 @@ class DocumentReader {
 
   void unsupported(const xmlNode* node, const std::string& why = "is not supported and was skipped") {
     std::string name(xml::local_name(node));
-    if (!is_xmto(node)) name = "{" + std::string(xml::namespace_uri(node)) + "}" + name;
+    if (!is_xmto(node)) name += "' in namespace '" + std::string(xml::namespace_uri(node));
     once_.report("element " + name, doc_.warning(node, "element '" + name + "' " + why));
   }
 
