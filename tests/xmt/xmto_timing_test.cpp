@@ -109,8 +109,9 @@ TEST(XmtoTiming, IndefiniteRepeatEndsWithTheParDur) {
 TEST(XmtoTiming, IndefiniteRepeatAtTheTopNeedsADuration) {
   const std::string text = document(jaw("dur=\"1s\" repeatCount=\"indefinite\""));
   EXPECT_EQ(read_error(text),
-            "t.xmt:3:1: error: has no duration and nothing around it ends: give it a duration, or "
-            "place it in a parallel with a known end");
+            "t.xmt:3:1: error: animate has no duration and nothing around it ends: give it a "
+            "duration, or place it in a parallel with a known end (repeatCount=\"indefinite\" needs "
+            "an end: from a par with dur, end, repeatDur or --duration)");
   XmtoOptions options;
   options.duration = 2.5;  // --duration
   const auto doc = read_ok(text, options);
@@ -170,7 +171,7 @@ TEST(XmtoTiming, IndefiniteBeginAndEndBeforeBeginNeverPlay) {
 
 TEST(XmtoTiming, NegativeBeginThatStartsBeforeZeroIsAnError) {
   EXPECT_EQ(read_error(document("<par>" + jaw("dur=\"1s\" begin=\"-1s\"") + "</par>")),
-            "t.xmt:3:6: error: starts before time 0 (at -1 s)");
+            "t.xmt:3:6: error: animate starts before time 0 (at -1 s)");
 }
 
 TEST(XmtoTiming, NegativeBeginInsideALaterParIsFine) {

@@ -32,7 +32,8 @@ void collect_error(void* user_data, xmlErrorPtr error) {
   if (error->level == XML_ERR_WARNING) {
     report->warnings.push_back(make_warning(where, "XML: " + message));
   } else if (!report->first_error) {
-    report->first_error = make_error(where, "not well-formed XML: " + message);
+    const char* kind = error->domain == XML_FROM_NAMESPACE ? "XML namespace error: " : "not well-formed XML: ";
+    report->first_error = make_error(where, kind + message);
   }
 }
 

@@ -72,7 +72,11 @@ class Reader {
     for (const char* word : allowed)
       if (s == word) return word;
     std::string expected;
-    for (const char* word : allowed) expected += (expected.empty() ? "" : " or ") + std::string(word);
+    std::size_t i = 0;
+    for (const char* word : allowed) {
+      expected += (i == 0 ? "" : i + 1 == allowed.size() ? " or " : ", ") + std::string(word);
+      ++i;
+    }
     fail(name, std::string(name) + " '" + *text + "' is not supported: expected " + expected);
     return *allowed.begin();
   }

@@ -1,6 +1,7 @@
 // The XMT-Omega reader: walks the document, builds the time tree (xmto_tree.hpp), schedules it and
 // lowers the runs to clips. What it does not read is reported, never dropped silently.
 #include <initializer_list>
+#include <map>
 #include <string>
 
 #include "fapc/codec/file_io.hpp"
@@ -71,7 +72,7 @@ class DocumentReader {
     ScheduleOptions schedule_options;
     schedule_options.root_end = options_.duration;
     const Result<Schedule> scheduled = schedule(tree_.root, schedule_options);
-    if (!scheduled) return with_source_line(scheduled.error());
+    if (!scheduled) return scheduler_error(scheduled.error());
     result_.timeline = lower_to_timeline(tree_, *scheduled);
     once_.finish();
     return std::move(result_);
@@ -85,9 +86,31 @@ class DocumentReader {
   XmtoDocument result_;  // before once_, which appends to its warnings
   OncePerName once_;
   XmtoTree tree_;
+  struct ElementFacts {
+    std::string name;
+    bool repeats_indefinitely = false;
+  };
+  std::map<std::pair<int, int>, ElementFacts> element_at_;  // by line, column: for schedule errors
+
+  ScheduleNode scheduled_node(ScheduleNode node, const xmlNode* element) {
+    element_at_[{node.source.line, node.source.column}] =
+        ElementFacts{std::string(xml::local_name(element)),
+                     node.timing.repeat_indefinite && !node.timing.repeat_duration};
+    return node;
+  }
 
   void fail(Diagnostic d) {
     if (!error_) error_ = std::move(d);
+  }
+
+  // The scheduler's messages start with a verb ("starts before time 0"): name the element.
+  Diagnostic scheduler_error(Diagnostic d) const {
+    if (const auto found = element_at_.find({d.where.line, d.where.column}); found != element_at_.end()) {
+      d.message = found->second.name + ' ' + d.message;
+      if (found->second.repeats_indefinitely)
+        d.message += " (repeatCount=\"indefinite\" needs an end: from a par with dur, end, repeatDur or --duration)";
+    }
+    return with_source_line(std::move(d));
   }
 
   Diagnostic with_source_line(Diagnostic d) const {
@@ -204,7 +227,8 @@ class DocumentReader {
     const Kind kind = name == "par" ? Kind::parallel : name == "excl" ? Kind::exclusive : Kind::sequence;
     check_attributes(node, kTimingAttributes);
     check_text(node);
-    ScheduleNode group = ScheduleNode::group(kind, to_schedule_timing(timing, std::nullopt), doc_.where(node));
+    ScheduleNode group = scheduled_node(
+        ScheduleNode::group(kind, to_schedule_timing(timing, std::nullopt), doc_.where(node)), node);
     for (const xmlNode* child : xml::element_children(node)) {
       std::optional<ScheduleNode> placed = element(child, fill, kind == Kind::exclusive);
       if (error_) return std::nullopt;
@@ -217,7 +241,7 @@ class DocumentReader {
     leaf.where = doc_.where(node);
     const std::size_t id = tree_.leaves.size();
     tree_.leaves.push_back(std::move(leaf));
-    return ScheduleNode::leaf(id, timing, doc_.where(node));
+    return scheduled_node(ScheduleNode::leaf(id, timing, doc_.where(node)), node);
   }
 
   std::optional<ScheduleNode> animate_or_set(const xmlNode* node, const SmilTiming& timing, Fill fill) {
