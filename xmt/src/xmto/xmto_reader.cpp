@@ -1,5 +1,6 @@
 // The XMT-Omega reader: walks the document, builds the time tree (xmto_tree.hpp), schedules it and
 // lowers the runs to clips. What it does not read is reported, never dropped silently.
+#include <algorithm>
 #include <initializer_list>
 #include <map>
 #include <string>
@@ -11,6 +12,7 @@
 #include "xmto/animation_include.hpp"
 #include "xmto/attribute_target.hpp"
 #include "xmto/once_per_name.hpp"
+#include "xmto/run_budget.hpp"
 #include "xmto/smil_timing.hpp"
 #include "xmto/xmto_tree.hpp"
 
@@ -65,7 +67,9 @@ class DocumentReader {
     }
     check_text(root);
     if (!body) return doc_.error(root, "XMT-O has no body");
-    std::optional<ScheduleNode> tree = element(body, Fill::remove, false);
+    RunBudget budget;
+    if (options_.duration) budget.available = *options_.duration;
+    std::optional<ScheduleNode> tree = element(body, Fill::remove, false, budget);
     if (error_) return *error_;
     // The body is a sequence (SMIL); a body that never plays leaves an empty timeline.
     tree_.root = tree ? std::move(*tree) : ScheduleNode::group(Kind::sequence, {}, doc_.where(body));
@@ -90,7 +94,8 @@ class DocumentReader {
     std::string name;
     bool repeats_indefinitely = false;
   };
-  std::map<std::pair<int, int>, ElementFacts> element_at_;  // by line, column: for schedule errors
+  std::map<std::pair<int, int>, ElementFacts> element_at_;
+  double planned_clips_ = 0;  // upper bound, see run_budget.hpp  // by line, column: for schedule errors
 
   ScheduleNode scheduled_node(ScheduleNode node, const xmlNode* element) {
     element_at_[{node.source.line, node.source.column}] =
@@ -179,7 +184,8 @@ class DocumentReader {
   }
 
   // One element of the body; empty when it contributes nothing (skipped or never plays).
-  std::optional<ScheduleNode> element(const xmlNode* node, Fill inherited, bool in_excl) {
+  std::optional<ScheduleNode> element(const xmlNode* node, Fill inherited, bool in_excl,
+                                      const RunBudget& budget) {
     if (error_) return std::nullopt;
     if (!is_xmto(node)) {
       unsupported(node);
@@ -198,9 +204,9 @@ class DocumentReader {
     }
     if (!plays(node, *timing, in_excl)) return std::nullopt;
     const Fill fill = timing->effective_fill(inherited);
-    if (group) return time_container(node, *timing, fill);
-    if (name == "animation") return animation(node, *timing, fill);
-    return animate_or_set(node, *timing, fill);
+    if (group) return time_container(node, *timing, fill, budget.inside(*timing, std::nullopt));
+    if (name == "animation") return animation(node, *timing, fill, budget);
+    return animate_or_set(node, *timing, fill, budget);
   }
 
   bool plays(const xmlNode* node, const SmilTiming& timing, bool in_excl) {
@@ -222,7 +228,8 @@ class DocumentReader {
     return true;
   }
 
-  std::optional<ScheduleNode> time_container(const xmlNode* node, const SmilTiming& timing, Fill fill) {
+  std::optional<ScheduleNode> time_container(const xmlNode* node, const SmilTiming& timing, Fill fill,
+                                             const RunBudget& inner) {
     const std::string_view name = xml::local_name(node);
     const Kind kind = name == "par" ? Kind::parallel : name == "excl" ? Kind::exclusive : Kind::sequence;
     check_attributes(node, kTimingAttributes);
@@ -230,11 +237,21 @@ class DocumentReader {
     ScheduleNode group = scheduled_node(
         ScheduleNode::group(kind, to_schedule_timing(timing, std::nullopt), doc_.where(node)), node);
     for (const xmlNode* child : xml::element_children(node)) {
-      std::optional<ScheduleNode> placed = element(child, fill, kind == Kind::exclusive);
+      std::optional<ScheduleNode> placed = element(child, fill, kind == Kind::exclusive, inner);
       if (error_) return std::nullopt;
       if (placed) group.children.push_back(std::move(*placed));
     }
     return group;
+  }
+
+  // Counts the clips a leaf will make (runs times clips per run) against kMaxRuns.
+  bool within_budget(const xmlNode* node, double clips) {
+    planned_clips_ += clips;
+    if (planned_clips_ <= kMaxRuns) return true;
+    fail(doc_.error(node, std::string(xml::local_name(node)) + " brings the document to more than " +
+                              std::to_string(static_cast<long>(kMaxRuns)) +
+                              " clips (repeats of repeats?): fapc refuses to schedule so many"));
+    return false;
   }
 
   ScheduleNode add_leaf(const xmlNode* node, Leaf leaf, Timing timing) {
@@ -244,7 +261,8 @@ class DocumentReader {
     return scheduled_node(ScheduleNode::leaf(id, timing, doc_.where(node)), node);
   }
 
-  std::optional<ScheduleNode> animate_or_set(const xmlNode* node, const SmilTiming& timing, Fill fill) {
+  std::optional<ScheduleNode> animate_or_set(const xmlNode* node, const SmilTiming& timing, Fill fill,
+                                             const RunBudget& budget) {
     const bool is_set = xml::local_name(node) == "set";
     if (is_set) {
       check_attributes(node, kTimingAttributes, {"attributeName", "attributeType", "to"});
@@ -277,10 +295,12 @@ class DocumentReader {
       return std::nullopt;
     }
     leaf.function = std::move(*function);
+    if (!within_budget(node, budget.inside(timing, std::nullopt).repeats)) return std::nullopt;
     return add_leaf(node, std::move(leaf), to_schedule_timing(timing, std::nullopt));
   }
 
-  std::optional<ScheduleNode> animation(const xmlNode* node, const SmilTiming& timing, Fill fill) {
+  std::optional<ScheduleNode> animation(const xmlNode* node, const SmilTiming& timing, Fill fill,
+                                        const RunBudget& budget) {
     check_attributes(node, kTimingAttributes, {"src", "ref"});
     check_text(node);
     Result<Included> included = load_included(doc_, node, options_, result_.warnings);
@@ -294,6 +314,8 @@ class DocumentReader {
     Leaf leaf;
     leaf.fill = fill;
     const double length = included->animation.timeline.end();
+    const double clips_per_run = std::max<double>(1, static_cast<double>(included->animation.timeline.clips.size()));
+    if (!within_budget(node, budget.inside(timing, length).repeats * clips_per_run)) return std::nullopt;
     leaf.included = std::move(included->animation.timeline);
     return add_leaf(node, std::move(leaf), to_schedule_timing(timing, length));
   }
