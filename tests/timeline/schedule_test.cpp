@@ -49,7 +49,7 @@ TEST(Schedule, StartBeforeZeroIsAnErrorAtTheLeaf) {
   const auto s = schedule(group(Kind::sequence, {leaf(0, 1), leaf(1, 1, -2)}));
   ASSERT_FALSE(s.ok());
   EXPECT_EQ(s.error().where.line, 2);
-  EXPECT_EQ(s.error().message, "starts before time 0 (at -1 s)");
+  EXPECT_EQ(s.error().message, "the action starts before time 0 (at -1 s)");
 }
 
 TEST(Schedule, ParallelStretchesOpenChildrenToTheReferenceEnd) {

@@ -1,9 +1,19 @@
 // .json output: the curves JSON of docs/cli.md (time-value lists after blending and thinning).
+#include <cstdio>
+
 #include "fapc/registry.hpp"
 
 namespace fapc::cli {
 
 namespace {
+
+// Ten significant digits: far below any tolerance of the data, and golden files do not change
+// with the last bits of a sine between compilers.
+std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.10g", v);
+  return text;
+}
 
 Result<std::string> write_curves_json(const Loaded& loaded, const std::string&,
                                       const ConvertOptions&) {
@@ -11,13 +21,13 @@ Result<std::string> write_curves_json(const Loaded& loaded, const std::string&,
   // One target per line, its points inline: diffs of golden files stay readable.
   using json = nlohmann::json;
   std::string out = "{\n \"fps\": " + json(curves.fps).dump() +
-                    ",\n \"duration\": " + json(curves.duration).dump() + ",\n \"curves\": {";
+                    ",\n \"duration\": " + number(curves.duration) + ",\n \"curves\": {";
   const char* separator = "\n";
   for (const auto& [target, points] : curves.curves) {
     out += separator;
     out += "  " + json(target).dump() + ": [";
     for (std::size_t i = 0; i < points.size(); ++i) {
-      out += (i ? ", [" : "[") + json(points[i].first).dump() + ", " + json(points[i].second).dump() + "]";
+      out += (i ? ", [" : "[") + number(points[i].first) + ", " + number(points[i].second) + "]";
     }
     out += "]";
     separator = ",\n";

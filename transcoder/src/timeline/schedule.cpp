@@ -47,7 +47,7 @@ class Scheduler {
         return start;
       }
       if (start < 0) {
-        fail(node, "starts before time 0 (at " + seconds(start) + ")");
+        fail(node, "the action starts before time 0 (at " + seconds(start) + ")");
         return start;
       }
       const double simple = node.timing.duration.value_or(*active);
@@ -139,6 +139,8 @@ class Scheduler {
 
   void place_runs(std::size_t leaf, double start, double simple, double active, double cut,
                   std::vector<Occurrence>& out) {
+    // A leaf wholly after the end of an ancestor (a group's dur, --duration) does not run.
+    if (start > cut || (start == cut && simple > 0)) return;
     if (simple <= 0) {
       out.push_back(Occurrence{leaf, start, 0, start, 0, 0});
       return;
@@ -146,7 +148,7 @@ class Scheduler {
     const double active_end = std::min(start + active, cut);
     for (int i = 0;; ++i) {
       const double begin = start + i * simple;
-      if (i > 0 && begin >= active_end) break;
+      if (begin >= active_end) break;
       out.push_back(Occurrence{leaf, begin, simple, std::min(begin + simple, active_end), 0, i});
     }
   }
@@ -223,7 +225,6 @@ class Scheduler {
   static void repeat_group(std::size_t first, double start, double simple, double cut,
                            std::vector<Occurrence>& out) {
     const std::size_t last = out.size();
-    for (std::size_t k = first; k < last; ++k) out[k].end = std::min(out[k].end, cut);
     if (simple <= 0) return;
     for (int i = 1; start + i * simple < cut; ++i) {
       const double shift = i * simple;

@@ -1,0 +1,31 @@
+// The Mimic language (seeds/mimic-language.txt, semantics.md §2, docs/mimic.md): a program
+// compiles to the shared timeline. Parse, check, schedule and lower; the first error stops.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "fapc/codec/diagnostic.hpp"
+#include "fapc/transcoder/profile.hpp"
+#include "fapc/transcoder/timeline.hpp"
+
+namespace fapc {
+
+struct MimicOptions {
+  const Profile* profile = nullptr;  // nullptr: default_profile()
+  // Reads an included file (defxpr). Empty: read from disk (read_file_bytes). Tests and fuzzers
+  // pass their own.
+  std::function<Result<std::string>(const std::string& path)> read_file;
+};
+
+struct MimicProgram {
+  Timeline timeline;
+  Diagnostics warnings;  // range checks and other non-fatal findings, with positions
+};
+
+Result<MimicProgram> compile_mimic(std::string_view source, const std::string& file_name,
+                                   const MimicOptions& options = {});
+
+}  // namespace fapc

@@ -1,0 +1,424 @@
+// Mimic semantics (semantics.md §2, docs/mimic.md): check the parsed program, build the schedule
+// tree (macros expanded), schedule it with the shared scheduler and lower the atomic actions to
+// clips; `connect` is resolved last, once every clip has its place.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+#include "action_params.hpp"
+#include "fapc/codec/fap_table.hpp"
+#include "fapc/codec/file_io.hpp"
+#include "fapc/transcoder/expression_file.hpp"
+#include "fapc/transcoder/mimic.hpp"
+#include "fapc/transcoder/schedule.hpp"
+#include "mimic_lexer.hpp"
+#include "mimic_parser.hpp"
+
+namespace fapc {
+namespace mimic {
+namespace {
+
+using Kind = ScheduleNode::Kind;
+
+struct Target {
+  std::string name;
+  double factor = 1;  // a defxpr entry's value: the amplifier applied to the fade's value
+};
+
+struct Leaf {
+  enum class Shape { fade, periodic, list };
+  Shape shape = Shape::fade;
+  std::vector<Target> targets;
+  ActionParams params;
+  const Action* action = nullptr;
+  BlendMode blend = BlendMode::add;
+};
+
+struct Context {
+  std::optional<BlendMode> blend;
+  Action::Kind parent = Action::Kind::sequence;
+};
+
+std::string format_number(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+class Compiler {
+ public:
+  Compiler(const Program& program, std::string_view source, const std::string& file,
+           const MimicOptions& options)
+      : program_(program),
+        source_(source),
+        file_(file),
+        options_(options),
+        profile_(options.profile ? *options.profile : default_profile()) {}
+
+  Result<MimicProgram> run() {
+    if (auto defined = collect_definitions(); !defined) return defined.error();
+    // Macro bodies are checked where they are written, even when no one uses them.
+    for (const Definition& d : program_.definitions) {
+      if (d.expression) continue;
+      stack_ = {d.name};
+      const std::size_t keep = leaves_.size();
+      if (auto body = build(d.group, Context{}); !body) return body.error();
+      leaves_.resize(keep);
+    }
+    stack_.clear();
+    Result<ActionParams> main = read(program_.main_params);
+    if (!main) return main.error();
+    if (main->right) return error(main->right->at, "'right' needs a parallel around it; main has none");
+    if (const Param* p = atomic_param(*main)) {
+      return error(p->at, "'" + p->name + "' applies to atomic actions, not to main");
+    }
+    Result<ScheduleNode> root = build(program_.main, Context{main->blend_mode(), Action::Kind::sequence});
+    if (!root) return root.error();
+    if (main->left) root->timing.offset += main->left->value;
+    Result<Schedule> scheduled = schedule(*root);
+    if (!scheduled) return with_source_line(scheduled.error());
+    MimicProgram out;
+    out.timeline = lower(*scheduled);
+    out.warnings = std::move(warnings_);
+    return out;
+  }
+
+ private:
+  const Program& program_;
+  std::string_view source_;
+  const std::string& file_;
+  const MimicOptions& options_;
+  const Profile& profile_;
+  std::map<std::string, const Definition*> macros_;
+  std::map<std::string, std::vector<ExpressionEntry>> expressions_;
+  std::vector<Leaf> leaves_;
+  std::vector<std::string> stack_;  // macros being expanded, for recursion errors
+  // Per clip of the timeline being built: empty when it does not connect, else the explicit end
+  // value of `connect=x` (empty inside: take the next clip's value).
+  std::vector<std::optional<std::optional<double>>> connects_;
+  Diagnostics warnings_;
+
+  Diagnostic error(Position at, const std::string& message) const {
+    return make_error(Location::text(file_, at.line, at.column), message,
+                      source_line(source_, at.line));
+  }
+  Diagnostic with_source_line(Diagnostic d) const {
+    if (d.where.file == file_) d.source_line = source_line(source_, d.where.line);
+    return d;
+  }
+  Location location(Position at) const { return Location::text(file_, at.line, at.column); }
+
+  Result<ActionParams> read(const std::vector<Param>& params) const {
+    return read_params(params, [this](Position at, const std::string& m) { return error(at, m); });
+  }
+
+  // The first parameter that only an atomic action may have.
+  static const Param* atomic_param(const ActionParams& p) {
+    if (p.first_fade) return p.first_fade;
+    if (p.first_periodic) return p.first_periodic;
+    return p.function ? &*p.function : nullptr;
+  }
+
+  Status collect_definitions() {
+    for (const Definition& d : program_.definitions) {
+      if (macros_.contains(d.name)) return error(d.at, "'" + d.name + "' is defined twice");
+      if (!resolve_target(d.name, profile_).empty()) {
+        return error(d.at, "'" + d.name + "' is an animation parameter; a definition needs another name");
+      }
+      macros_[d.name] = &d;
+      if (!d.expression) continue;
+      Result<std::vector<ExpressionEntry>> entries = load_expression(d);
+      if (!entries) return entries.error();
+      expressions_[d.name] = std::move(*entries);
+    }
+    return ok_status();
+  }
+
+  Result<std::vector<ExpressionEntry>> load_expression(const Definition& d) {
+    const std::string path = (std::filesystem::path(file_).parent_path() / d.file).string();
+    Result<std::string> text = options_.read_file ? options_.read_file(path) : read_file_bytes(path);
+    if (!text) {
+      return error(d.file_at, "cannot read the expression file '" + d.file + "': " + text.error().message);
+    }
+    Result<std::vector<ExpressionEntry>> entries = parse_expression_file(*text, path);
+    if (!entries) return entries.error();
+    for (const ExpressionEntry& entry : *entries) {
+      if (resolve_target(entry.parameter, profile_).empty()) {
+        return make_error(entry.where, unknown_parameter_message(entry.parameter, profile_),
+                          source_line(*text, entry.where.line));
+      }
+    }
+    if (entries->empty()) return error(d.file_at, "the expression file '" + d.file + "' sets no parameter");
+    return entries;
+  }
+
+  Result<ScheduleNode> build(const Action& action, const Context& context) {
+    Result<ActionParams> params = read(action.params);
+    if (!params) return params.error();
+    Timing timing;
+    if (params->left) timing.offset = params->left->value;
+    if (params->right) {
+      if (context.parent != Action::Kind::parallel) {
+        return error(params->right->at, "right alignment is only allowed in a parallel, not in a sequence");
+      }
+      timing.align_right = params->right->value;
+    }
+    const std::optional<BlendMode> blend = params->blend_mode() ? params->blend_mode() : context.blend;
+    if (action.kind != Action::Kind::named) {
+      if (const Param* p = atomic_param(*params)) {
+        return error(p->at, "'" + p->name + "' applies to atomic actions, not to a group");
+      }
+      ScheduleNode node = ScheduleNode::group(
+          action.kind == Action::Kind::sequence ? Kind::sequence : Kind::parallel, timing,
+          location(action.at));
+      for (const Action& child : action.children) {
+        Result<ScheduleNode> built = build(child, Context{blend, action.kind});
+        if (!built) return built.error();
+        node.children.push_back(std::move(*built));
+      }
+      return node;
+    }
+    if (const auto macro = macros_.find(action.name); macro != macros_.end() && !macro->second->expression) {
+      return instantiate(action, *macro->second, *params, timing, blend);
+    }
+    return atomic(action, *std::move(params), timing, blend.value_or(BlendMode::add), context);
+  }
+
+  Result<ScheduleNode> instantiate(const Action& action, const Definition& macro,
+                                   const ActionParams& params, const Timing& timing,
+                                   std::optional<BlendMode> blend) {
+    if (const Param* p = atomic_param(params)) {
+      return error(p->at, "'" + p->name + "' does not apply to '" + macro.name +
+                              "', a macro: give it alignment and blend parameters only");
+    }
+    if (action.has_list) return error(action.list_at, "'" + macro.name + "' is a macro; it takes no time-value list");
+    if (std::find(stack_.begin(), stack_.end(), macro.name) != stack_.end()) {
+      std::string chain;
+      for (const std::string& name : stack_) chain += name + " -> ";
+      return error(action.at, "the macro '" + macro.name + "' uses itself (" + chain + macro.name + ")");
+    }
+    stack_.push_back(macro.name);
+    Result<ScheduleNode> body = build(macro.group, Context{blend, Action::Kind::sequence});
+    stack_.pop_back();
+    if (!body) return body.error();
+    body->timing = timing;  // the instance's alignment, applied as to a group
+    return body;
+  }
+
+  Result<ScheduleNode> atomic(const Action& action, ActionParams params, Timing timing,
+                              BlendMode blend, const Context& context) {
+    Leaf leaf;
+    leaf.action = &action;
+    leaf.blend = blend;
+    const auto expression = expressions_.find(action.name);
+    if (expression != expressions_.end()) {
+      for (const ExpressionEntry& entry : expression->second) leaf.targets.push_back({entry.parameter, entry.value});
+    } else if (resolve_target(action.name, profile_).empty()) {
+      return error(action.at, unknown_parameter_message(action.name, profile_));
+    } else {
+      leaf.targets.push_back({action.name, 1});
+    }
+    if (action.has_list) {
+      if (expression != expressions_.end()) {
+        return error(action.list_at, "'" + action.name + "' is an expression; fade it with <in=..., value=...>");
+      }
+      if (const Param* p = atomic_param(params)) {
+        return error(p->at, "'" + p->name + "' does not apply to a time-value list");
+      }
+      if (auto checked = check_list(action); !checked) return checked.error();
+      leaf.shape = Leaf::Shape::list;
+      timing.duration = action.times.empty() ? 0 : action.times.back().value;
+    } else if (params.first_fade && params.first_periodic) {
+      const Param* later = params.first_fade->at.line > params.first_periodic->at.line ||
+                                   (params.first_fade->at.line == params.first_periodic->at.line &&
+                                    params.first_fade->at.column > params.first_periodic->at.column)
+                               ? params.first_fade
+                               : params.first_periodic;
+      return error(later->at, "'" + later->name + "' mixes a fade (in, hold, out, value) with a "
+                                                  "periodic action (min, max, freq, period, duration)");
+    } else if (params.first_fade || expression != expressions_.end()) {
+      if (params.first_periodic) {
+        return error(params.first_periodic->at, "'" + params.first_periodic->name + "' does not apply to an expression fade");
+      }
+      if (!params.value) return error(action.at, "a fade needs value=... (and in, hold, out as needed)");
+      leaf.shape = Leaf::Shape::fade;
+      timing.duration = value_or_zero(params.in) + value_or_zero(params.hold) + value_or_zero(params.out);
+    } else if (params.first_periodic) {
+      if (auto checked = check_periodic(action, params, context); !checked) return checked.error();
+      leaf.shape = Leaf::Shape::periodic;
+      if (params.duration) timing.duration = params.duration->value;
+    } else {
+      return error(action.at, "'" + action.name + "' needs a fade (in, hold, out, value), a periodic "
+                              "function (min, max, freq or period) or a time-value list");
+    }
+    leaf.params = std::move(params);
+    check_ranges(leaf);
+    leaves_.push_back(std::move(leaf));
+    return ScheduleNode::leaf(leaves_.size() - 1, timing, location(action.at));
+  }
+
+  static double value_or_zero(const std::optional<Number>& n) { return n ? n->value : 0; }
+
+  Status check_list(const Action& action) const {
+    if (action.times.size() != action.values.size()) {
+      return error(action.list_at, std::to_string(action.times.size()) + " times but " +
+                                       std::to_string(action.values.size()) +
+                                       " values: a time-value list needs one value per time");
+    }
+    for (std::size_t i = 0; i < action.times.size(); ++i) {
+      const Number& t = action.times[i];
+      if (t.value < 0) return error(t.at, "times are offsets from the action's start and must not be negative");
+      if (i > 0 && t.value < action.times[i - 1].value) {
+        return error(t.at, "time " + format_number(t.value) + " comes before the previous time " +
+                               format_number(action.times[i - 1].value) + ": times must not decrease");
+      }
+    }
+    return ok_status();
+  }
+
+  Status check_periodic(const Action& action, const ActionParams& p, const Context& context) const {
+    if (!p.freq && !p.period) return error(action.at, "a periodic action needs freq=... or period=...");
+    if (p.freq && p.period && std::abs(p.freq->value * p.period->value - 1) > 1e-9) {
+      return error(p.period->at, "freq=" + format_number(p.freq->value) + " and period=" +
+                                     format_number(p.period->value) + " disagree (freq x period must be 1)");
+    }
+    if (!p.max) return error(action.at, "a periodic action needs max=... (min defaults to 0)");
+    if (p.function && p.function->name != "sin" && p.function->name != "linear") {
+      return error(p.function->at, "a periodic action oscillates with sin or linear, not " + p.function->name);
+    }
+    if (!p.duration && context.parent != Action::Kind::parallel) {
+      return error(action.at, "a periodic action without duration= must be in a parallel, which gives its length");
+    }
+    return ok_status();
+  }
+
+  // Values beyond what the target can carry: a warning at the number (semantics.md §2).
+  void check_ranges(const Leaf& leaf) {
+    std::vector<const Number*> numbers;
+    for (const std::optional<Number>* n : {&leaf.params.value, &leaf.params.min, &leaf.params.max}) {
+      if (*n) numbers.push_back(&**n);
+    }
+    for (const Number& v : leaf.action->values) numbers.push_back(&v);
+    for (const Target& target : leaf.targets) {
+      for (const FapContribution& c : resolve_target(target.name, profile_)) {
+        const int high = c.fap <= 2 ? 63 : find_fap(c.fap)->legal_max();
+        const int low = c.fap <= 2 ? 0 : -high;
+        for (const Number* n : numbers) {
+          const double fap_value = n->value * target.factor * c.scale;
+          if (fap_value >= low && fap_value <= high) continue;
+          warnings_.push_back(make_warning(
+              location(n->at),
+              "value " + format_number(n->value) + " of '" + target.name + "' is " +
+                  format_number(fap_value) + " in " + std::string(find_fap(c.fap)->name) +
+                  " units, outside " + std::to_string(low) + ".." + std::to_string(high) +
+                  " (it will be clamped)",
+              source_line(source_, n->at.line)));
+        }
+      }
+    }
+  }
+
+  // ---- lowering ------------------------------------------------------------------------------
+
+  Timeline lower(const Schedule& scheduled) {
+    Timeline timeline;
+    for (const Occurrence& o : scheduled.occurrences) {
+      const Leaf& leaf = leaves_[o.leaf_id];
+      for (const Target& target : leaf.targets) add_clip(timeline, leaf, target, o);
+    }
+    resolve_connects(timeline);
+    return timeline;
+  }
+
+  void add_clip(Timeline& timeline, const Leaf& leaf, const Target& target, const Occurrence& o) {
+    Clip clip;
+    clip.target = target.name;
+    clip.begin = o.begin;
+    clip.end = o.end;
+    clip.blend = leaf.blend;
+    clip.source = location(leaf.action->at);
+    const ActionParams& p = leaf.params;
+    switch (leaf.shape) {
+      case Leaf::Shape::fade: {
+        const double in = value_or_zero(p.in);
+        const double hold = value_or_zero(p.hold);
+        const double out = value_or_zero(p.out);
+        const double v = p.value->value * target.factor;
+        const Interpolation f = p.interpolation();
+        // Rise from the neutral 0 to v, hold, fall to the end value (0 until `connect` sets it).
+        clip.curve.keys = {{0, 0, f}, {in, v, Interpolation::linear}, {in + hold, v, f}, {in + hold + out, 0}};
+        break;
+      }
+      case Leaf::Shape::periodic: {
+        Periodic wave;
+        wave.shape = p.function && p.function->name == "linear" ? Periodic::Shape::triangle : Periodic::Shape::sine;
+        wave.min = value_or_zero(p.min) * target.factor;
+        wave.max = p.max->value * target.factor;
+        wave.period = p.period ? p.period->value : 1 / p.freq->value;
+        clip.curve.periodic = wave;
+        break;
+      }
+      case Leaf::Shape::list: {
+        const std::vector<Number>& times = leaf.action->times;
+        if (times.empty()) return;
+        // The curve starts at the first time: before it the action is absent.
+        clip.begin = o.begin + times.front().value;
+        for (std::size_t i = 0; i < times.size(); ++i) {
+          clip.curve.keys.push_back(KeyPoint{times[i].value - times.front().value,
+                                             leaf.action->values[i].value * target.factor});
+        }
+        break;
+      }
+    }
+    if (clip.end <= clip.begin) return;  // nothing to contribute (zero length, or cut away)
+    timeline.clips.push_back(std::move(clip));
+    if (leaf.shape == Leaf::Shape::fade && p.connect) {
+      connects_.emplace_back(p.connect->value ? std::optional<double>(p.connect->value->value) : std::nullopt);
+    } else {
+      connects_.emplace_back();
+    }
+  }
+
+  // connect: the fade ends at the value the same target's next clip (the first beginning at or
+  // after this one's end) has at its own begin; or at connect=x when given.
+  void resolve_connects(Timeline& timeline) {
+    std::map<std::string, std::vector<std::size_t>> by_target;
+    for (std::size_t i = 0; i < timeline.clips.size(); ++i) by_target[timeline.clips[i].target].push_back(i);
+    for (auto& [target, indices] : by_target) {
+      std::stable_sort(indices.begin(), indices.end(), [&](std::size_t a, std::size_t b) {
+        return timeline.clips[a].begin < timeline.clips[b].begin;
+      });
+      for (const std::size_t i : indices) {
+        if (!connects_[i]) continue;
+        Clip& clip = timeline.clips[i];
+        double end_value = 0;
+        if (const std::optional<double> given = *connects_[i]) {
+          end_value = *given;
+        } else {
+          const auto next = std::lower_bound(indices.begin(), indices.end(), clip.end, [&](std::size_t c, double t) {
+            return timeline.clips[c].begin < t;
+          });
+          if (next != indices.end()) {
+            const Clip& following = timeline.clips[*next];
+            end_value = following.curve.value_at(following.curve_offset);
+          }
+        }
+        clip.curve.keys.back().value = end_value;
+      }
+    }
+  }
+};
+
+}  // namespace
+}  // namespace mimic
+
+Result<MimicProgram> compile_mimic(std::string_view source, const std::string& file_name,
+                                   const MimicOptions& options) {
+  Result<mimic::Program> program = mimic::parse_program(source, file_name);
+  if (!program) return program.error();
+  return mimic::Compiler(*program, source, file_name, options).run();
+}
+
+}  // namespace fapc

@@ -1,0 +1,238 @@
+#include "mimic_parser.hpp"
+
+#include <array>
+#include <set>
+
+#include "fapc/codec/fap_table.hpp"
+#include "mimic_lexer.hpp"
+
+namespace fapc::mimic {
+namespace {
+
+// Table 1: pname (no value), pname-arg (value), and left/right/connect which take either form.
+const std::set<std::string, std::less<>> kWithoutValue = {"linear", "sin", "log", "exp",
+                                                          "average", "add", "overwrite"};
+const std::set<std::string, std::less<>> kWithValue = {"in", "hold", "out", "value", "duration",
+                                                       "freq", "period", "min", "max"};
+const std::set<std::string, std::less<>> kValueOptional = {"left", "right", "connect"};
+
+bool is_keyword(std::string_view name) {
+  return name == "main" || name == "def" || name == "defxpr";
+}
+
+class Parser {
+ public:
+  Parser(std::vector<Token> tokens, std::string_view source, const std::string& file)
+      : tokens_(std::move(tokens)), source_(source), file_(file) {}
+
+  Result<Program> program() {
+    Program program;
+    while (peek().kind == TokenKind::identifier &&
+           (peek().text == "def" || peek().text == "defxpr")) {
+      Result<Definition> definition = define();
+      if (!definition) return definition.error();
+      program.definitions.push_back(std::move(*definition));
+    }
+    if (peek().kind != TokenKind::identifier || peek().text != "main") {
+      return unexpected("'def', 'defxpr' or 'main'");
+    }
+    next();
+    if (peek().kind == TokenKind::less) {
+      Result<std::vector<Param>> params = parameters();
+      if (!params) return params.error();
+      program.main_params = std::move(*params);
+    }
+    Result<Action> group = action_group();
+    if (!group) return group.error();
+    program.main = std::move(*group);
+    if (peek().kind != TokenKind::end_of_input) return unexpected("the end of the program after main's group");
+    return program;
+  }
+
+ private:
+  std::vector<Token> tokens_;
+  std::size_t at_ = 0;
+  std::string_view source_;
+  const std::string& file_;
+
+  const Token& peek() const { return tokens_[at_]; }
+  const Token& next() { return tokens_[at_ < tokens_.size() - 1 ? at_++ : at_]; }
+  static Position position(const Token& t) { return Position{t.line, t.column}; }
+
+  Diagnostic error_at(const Token& t, std::string message) const {
+    return make_error(Location::text(file_, t.line, t.column), std::move(message),
+                      source_line(source_, t.line));
+  }
+  Diagnostic unexpected(const std::string& wanted) const {
+    const Token& t = peek();
+    const std::string found = t.kind == TokenKind::end_of_input ? "the end of the program"
+                              : t.kind == TokenKind::string     ? "\"" + t.text + "\""
+                                                                : "'" + t.text + "'";
+    return error_at(t, "expected " + wanted + ", found " + found);
+  }
+
+  Result<Token> expect(TokenKind kind, const std::string& wanted) {
+    if (peek().kind != kind) return unexpected(wanted);
+    return next();
+  }
+
+  Result<Definition> define() {
+    Definition definition;
+    definition.expression = next().text == "defxpr";
+    Result<Token> name = expect(TokenKind::identifier, "a name to define");
+    if (!name) return name.error();
+    if (is_keyword(name->text)) return error_at(*name, "'" + name->text + "' is a keyword, not a name");
+    definition.name = name->text;
+    definition.at = position(*name);
+    if (definition.expression) {
+      Result<Token> file = expect(TokenKind::string, "a quoted expression file name (\"smile.xpr\")");
+      if (!file) return file.error();
+      definition.file = file->text;
+      definition.file_at = position(*file);
+      return definition;
+    }
+    Result<Action> group = action_group();
+    if (!group) return group.error();
+    definition.group = std::move(*group);
+    return definition;
+  }
+
+  Result<Action> action_group() {
+    const Token& open = peek();
+    if (open.kind != TokenKind::left_brace && open.kind != TokenKind::left_bracket) {
+      return unexpected("'{' (a sequence) or '[' (a parallel)");
+    }
+    Action group;
+    group.kind = open.kind == TokenKind::left_brace ? Action::Kind::sequence : Action::Kind::parallel;
+    group.at = position(open);
+    const TokenKind close =
+        group.kind == Action::Kind::sequence ? TokenKind::right_brace : TokenKind::right_bracket;
+    next();
+    if (peek().kind == close) {
+      return error_at(peek(), std::string("an empty ") +
+                                  (group.kind == Action::Kind::sequence ? "sequence" : "parallel") +
+                                  ": a group needs at least one action");
+    }
+    while (peek().kind != close) {
+      if (peek().kind == TokenKind::end_of_input) {
+        return error_at(open, std::string("this '") + (close == TokenKind::right_brace ? "{" : "[") +
+                                  "' is never closed");
+      }
+      Result<Action> child = action(close);
+      if (!child) return child.error();
+      group.children.push_back(std::move(*child));
+    }
+    next();
+    return group;
+  }
+
+  Result<Action> action(TokenKind close) {
+    if (peek().kind == TokenKind::less) {  // < params > group
+      Result<std::vector<Param>> params = parameters();
+      if (!params) return params.error();
+      Result<Action> group = action_group();
+      if (!group) return group.error();
+      group->params = std::move(*params);
+      return group;
+    }
+    if (peek().kind == TokenKind::left_brace || peek().kind == TokenKind::left_bracket) {
+      return action_group();
+    }
+    Result<Token> name = expect(TokenKind::identifier, "an action (a name, '{', '[' or '<')");
+    if (!name) return name.error();
+    if (is_keyword(name->text)) {
+      return error_at(*name, "'" + name->text + "' must come before main, at the top of the program");
+    }
+    Action atomic;
+    atomic.kind = Action::Kind::named;
+    atomic.name = name->text;
+    atomic.at = position(*name);
+    if (peek().kind == TokenKind::less) {
+      Result<std::vector<Param>> params = parameters();
+      if (!params) return params.error();
+      atomic.params = std::move(*params);
+    }
+    if (peek().kind == TokenKind::left_paren) {
+      if (auto list = time_value_list(atomic); !list) return list.error();
+      if (peek().kind == TokenKind::semicolon) next();
+      return atomic;
+    }
+    // `;` ends an atomic action; it may be left out before the group's closing bracket.
+    if (peek().kind == TokenKind::semicolon) {
+      next();
+    } else if (peek().kind != close) {
+      return unexpected("';' after the action '" + atomic.name + "'");
+    }
+    return atomic;
+  }
+
+  Status time_value_list(Action& atomic) {
+    atomic.has_list = true;
+    atomic.list_at = position(next());
+    for (std::vector<Number>* list : {&atomic.times, &atomic.values}) {
+      while (peek().kind == TokenKind::number) {
+        const Token& t = next();
+        list->push_back(Number{t.number, position(t)});
+      }
+      const char* wanted = list == &atomic.times ? "a time or ';' ending the times"
+                                                 : "a value or ';' ending the values";
+      if (auto semicolon = expect(TokenKind::semicolon, wanted); !semicolon) return semicolon.error();
+    }
+    if (auto close = expect(TokenKind::right_paren, "')' closing the time-value list"); !close) {
+      return close.error();
+    }
+    return ok_status();
+  }
+
+  Result<std::vector<Param>> parameters() {
+    next();  // <
+    std::vector<Param> params;
+    for (;;) {
+      Result<Token> name = expect(TokenKind::identifier, "a parameter name");
+      if (!name) return name.error();
+      Param param{name->text, position(*name), std::nullopt};
+      const bool known = kWithoutValue.contains(param.name) || kWithValue.contains(param.name) ||
+                         kValueOptional.contains(param.name);
+      if (!known) {
+        return error_at(*name, "unknown parameter '" + param.name +
+                                   "' (expected left, right, in, hold, out, value, connect, "
+                                   "duration, freq, period, min, max, linear, sin, log, exp, "
+                                   "average, add or overwrite)");
+      }
+      if (peek().kind == TokenKind::equals) {
+        if (kWithoutValue.contains(param.name)) {
+          return error_at(peek(), "'" + param.name + "' takes no value");
+        }
+        next();
+        if (peek().kind == TokenKind::identifier) {
+          return error_at(peek(), "'" + param.name + "' takes a number, not the name '" +
+                                      peek().text + "'");
+        }
+        Result<Token> value = expect(TokenKind::number, "a number after '" + param.name + "='");
+        if (!value) return value.error();
+        param.value = Number{value->number, position(*value)};
+      } else if (kWithValue.contains(param.name)) {
+        return error_at(*name, "'" + param.name + "' needs a value ('" + param.name + "=...')");
+      }
+      params.push_back(std::move(param));
+      if (peek().kind == TokenKind::comma) {
+        next();
+        continue;
+      }
+      if (auto close = expect(TokenKind::greater, "',' or '>' in the parameter list"); !close) {
+        return close.error();
+      }
+      return params;
+    }
+  }
+};
+
+}  // namespace
+
+Result<Program> parse_program(std::string_view source, const std::string& file_name) {
+  Result<std::vector<Token>> tokens = tokenize(source, file_name);
+  if (!tokens) return tokens.error();
+  return Parser(std::move(*tokens), source, file_name).program();
+}
+
+}  // namespace fapc::mimic

@@ -1,0 +1,14 @@
+// Private: recursive descent over the grammar of Table 1.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "fapc/codec/diagnostic.hpp"
+#include "mimic_ast.hpp"
+
+namespace fapc::mimic {
+
+Result<Program> parse_program(std::string_view source, const std::string& file_name);
+
+}  // namespace fapc::mimic
