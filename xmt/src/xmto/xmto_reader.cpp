@@ -108,9 +108,12 @@ class DocumentReader {
     if (!error_) error_ = std::move(d);
   }
 
-  // The scheduler's messages start with a verb ("starts before time 0"): name the element.
+  // The scheduler speaks of "the action" or starts with a verb ("has no duration"): name the
+  // element instead.
   Diagnostic scheduler_error(Diagnostic d) const {
     if (const auto found = element_at_.find({d.where.line, d.where.column}); found != element_at_.end()) {
+      constexpr std::string_view kAction = "the action ";
+      if (d.message.starts_with(kAction)) d.message.erase(0, kAction.size());
       d.message = found->second.name + ' ' + d.message;
       if (found->second.repeats_indefinitely)
         d.message += " (repeatCount=\"indefinite\" needs an end: from a par with dur, end, repeatDur or --duration)";
