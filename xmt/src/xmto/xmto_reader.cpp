@@ -159,15 +159,18 @@ class DocumentReader {
     }
   }
 
-  // Text in XMT-O elements carries nothing for face animation: report it rather than drop it.
+  // Text in XMT-O elements carries nothing for face animation, and entities are not expanded
+  // (no DTD is trusted): report both rather than drop them.
   void check_text(const xmlNode* element) {
+    const std::string name(xml::local_name(element));
     for (const xmlNode* child = element->children; child; child = child->next) {
       const bool text = child->type == XML_TEXT_NODE || child->type == XML_CDATA_SECTION_NODE;
-      if ((text && child->content && !is_blank(reinterpret_cast<const char*>(child->content))) ||
-          child->type == XML_ENTITY_REF_NODE) {
-        const std::string name(xml::local_name(element));
+      if (text && child->content && !is_blank(reinterpret_cast<const char*>(child->content))) {
         once_.report("text " + name, doc_.warning(element, "text inside " + name + " is ignored"));
-        return;
+      } else if (child->type == XML_ENTITY_REF_NODE) {
+        const std::string entity = "&" + std::string(xml::local_name(child)) + ";";
+        once_.report("entity " + entity, doc_.warning(element, "entity reference " + entity + " inside " + name +
+                                                                   " is not expanded and was ignored"));
       }
     }
   }
