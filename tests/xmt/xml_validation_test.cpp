@@ -91,7 +91,7 @@ TEST(XmlValidation, DocumentsWithoutASchemaAreAnError) {
   ASSERT_FALSE(report.ok());
   EXPECT_EQ(format_diagnostic(report.error()),
             "x.fml:1:1: error: no schema for root element 'fml'; fapc validates XMT-A "
-            "(urn:mpeg:mpeg4:xmta:schema:2002)");
+            "(urn:mpeg:mpeg4:xmta:schema:2002), XMT-Omega (urn:mpeg:mpeg4:xmto:schema:2002)");
   // XMT-A without its namespace is not XMT-A.
   EXPECT_FALSE(validate_xml("<XMT-A/>", "x.xmt").ok());
 }

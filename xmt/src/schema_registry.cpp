@@ -1,6 +1,7 @@
 #include "schema_registry.hpp"
 
 #include "fapc/xmt/xmta_writer.hpp"
+#include "fapc/xmt/xmto.hpp"
 
 namespace fapc::xmt {
 
@@ -8,6 +9,9 @@ namespace {
 
 constexpr SchemaBinding kSchemaBindings[] = {
     {"XMT-A", "XMT-A", kXmtaNamespace, "xmt-a.xsd"},
+    // Only documents in the XMT-Omega namespace: a schema has one target namespace, and the
+    // reader's own checks cover documents without one.
+    {"XMT-Omega", "XMT-O", kXmtoNamespace, "xmt-o.xsd"},
 };
 
 }  // namespace
