@@ -64,19 +64,22 @@ std::string slurp_and_remove(const std::string& path) {
 }
 }  // namespace
 
-CommandRun run_fapc(const std::string& args) {
+CommandRun run_shell(const std::string& command) {
   static int counter = 0;
   const std::string stem = (fs::temp_directory_path() / ("fapc-test-" + std::to_string(::getpid()) +
                                                          "-" + std::to_string(counter++)))
                                .string();
-  const std::string command = "cd '" + source_dir() + "' && '" + fapc_program() + "' " + args +
-                              " >'" + stem + ".out' 2>'" + stem + ".err'";
-  const int status = std::system(command.c_str());
+  const std::string full = "{ " + command + " ; } >'" + stem + ".out' 2>'" + stem + ".err'";
+  const int status = std::system(full.c_str());
   CommandRun run;
   run.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   run.out = slurp_and_remove(stem + ".out");
   run.err = slurp_and_remove(stem + ".err");
   return run;
+}
+
+CommandRun run_fapc(const std::string& args) {
+  return run_shell("cd '" + source_dir() + "' && '" + fapc_program() + "' " + args);
 }
 
 }  // namespace fapc::test

@@ -25,6 +25,8 @@ struct CommandRun {
   std::string out;
   std::string err;
 };
+// Runs a shell command line and captures its exit status and output.
+CommandRun run_shell(const std::string& command);
 // Runs the built fapc with `args` (a shell-quoted string) from the source folder.
 CommandRun run_fapc(const std::string& args);
 

@@ -109,8 +109,9 @@ Curves render_curves(const Timeline& timeline, const CurveOptions& options) {
     add_frame_times(target_index.span_begin, last, options.fps, times);
     times.push_back(last);
     sort_unique(times);
-    Points points = sample(times, [&](double t, bool from_left) {
-      return index.value_at(target_index, t, from_left).value;
+    // Captured by name: clang 14 cannot capture a structured binding.
+    Points points = sample(times, [&, &targets = target_index](double t, bool from_left) {
+      return index.value_at(targets, t, from_left).value;
     });
     out.curves[entry.first] = thin_points(std::move(points), options.tolerance);
   }

@@ -1,0 +1,84 @@
+// .xmt as an input: XMT-Omega documents (docs/xmt-omega.md). `animation src` loads any other
+// registered input through the registry, so a document composes .fap, .fba, Mimic and FML files.
+// (.xmt as an output, XMT-A, is format_xmta.cpp's.)
+#include <algorithm>
+#include <vector>
+
+#include "fapc/registry.hpp"
+#include "fapc/timeline_input.hpp"
+#include "fapc/transcoder/timeline_from_frames.hpp"
+#include "fapc/xmt/xmto.hpp"
+
+namespace fapc::cli {
+
+namespace {
+
+// The XMT-Omega documents being read, outermost first: a nested `animation` that names one of
+// them is a cycle (the reader reports it with this chain). Loading is single-threaded.
+std::vector<std::string>& documents_being_read() {
+  static std::vector<std::string> stack;
+  return stack;
+}
+
+struct ReadingDocument {
+  explicit ReadingDocument(const std::string& path) { documents_being_read().push_back(path); }
+  ~ReadingDocument() { documents_being_read().pop_back(); }
+  ReadingDocument(const ReadingDocument&) = delete;
+  ReadingDocument& operator=(const ReadingDocument&) = delete;
+};
+
+// Included inputs get their own length: --duration ends the outer document only.
+Result<xmt::IncludedAnimation> load_animation(const std::string& path, const Location& where,
+                                              const ConvertOptions& options) {
+  ConvertOptions inner = options;
+  inner.duration.reset();
+  Result<Loaded> loaded = load_input(path, inner);
+  if (!loaded) {
+    // A file that cannot be opened or has no known kind is reported at the element naming it.
+    const Diagnostic& error = loaded.error();
+    if (error.where.line > 0 || error.where.byte_offset >= 0) return error;
+    return make_error(where, "cannot place '" + path + "': " + error.message);
+  }
+  xmt::IncludedAnimation included;
+  included.timeline = loaded->timeline ? std::move(*loaded->timeline)
+                                       : timeline_from_frames(loaded->frames, 0, Location{path, 0, 0, -1});
+  included.warnings = std::move(loaded->warnings);
+  return included;
+}
+
+Result<xmt::XmtoDocument> read_document(const std::string& path, const ConvertOptions& options) {
+  xmt::XmtoOptions xmto;
+  xmto.including = documents_being_read();
+  xmto.duration = options.duration;
+  xmto.load_animation = [&options](const std::string& included, const Location& where) {
+    return load_animation(included, where, options);
+  };
+  const ReadingDocument reading(path);
+  return xmt::load_xmto(path, xmto);
+}
+
+Result<Loaded> load_xmto(const std::string& path, const ConvertOptions& options) {
+  Result<xmt::XmtoDocument> document = read_document(path, options);
+  if (!document) return document.error();
+  Result<Profile> profile = profile_for(options);
+  if (!profile) return profile.error();
+  return loaded_from_timeline(std::move(document->timeline), path, *profile, options,
+                              std::move(document->warnings));
+}
+
+Result<nlohmann::ordered_json> describe_xmto(const std::string& path, const ConvertOptions& options) {
+  Result<xmt::XmtoDocument> document = read_document(path, options);
+  if (!document) return document.error();
+  nlohmann::ordered_json out;
+  out["format"] = "XMT-Omega";
+  for (const auto& [name, content] : document->meta) out["meta " + name] = content;
+  out["clips"] = document->timeline.clips.size();
+  if (!document->included.empty()) out["included"] = document->included;
+  return out;
+}
+
+const RegisterInput xmto_input{InputFormat{"xmt", {".xmt"}, load_xmto, describe_xmto}};
+
+}  // namespace
+
+}  // namespace fapc::cli

@@ -1,0 +1,23 @@
+// Finds the start tags of an XML text and the attributes in each, by byte offset. Meant for text
+// that libxml2 has already accepted as well-formed: it only has to skip what can hide a '<' (comments,
+// CDATA sections, processing instructions, the DOCTYPE with its internal subset) and does not
+// check anything.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fapc::xml {
+
+struct ScannedTag {
+  std::size_t offset = 0;  // the '<'
+  std::string name;        // qualified name as written
+  std::vector<std::pair<std::string, std::size_t>> attributes;  // name as written, offset of it
+};
+
+// Start tags (and empty-element tags) in document order.
+std::vector<ScannedTag> scan_start_tags(std::string_view text);
+
+}  // namespace fapc::xml

@@ -1,0 +1,42 @@
+#include "xml_out.hpp"
+
+#include <libxml/entities.h>
+
+namespace fapc::xmt {
+
+namespace {
+
+std::string escaped(const std::string& value) {
+  xmlChar* encoded = xmlEncodeSpecialChars(nullptr, reinterpret_cast<const xmlChar*>(value.c_str()));
+  std::string out(reinterpret_cast<const char*>(encoded));
+  xmlFree(encoded);
+  return out;
+}
+
+}  // namespace
+
+void XmlOut::start_tag(const std::string& name, const XmlAttributes& attributes) {
+  text_.append(2 * open_.size(), ' ');
+  text_ += '<' + name;
+  for (const auto& [key, value] : attributes) text_ += ' ' + key + "=\"" + escaped(value) + '"';
+}
+
+void XmlOut::open(const std::string& name, const XmlAttributes& attributes) {
+  start_tag(name, attributes);
+  text_ += ">\n";
+  open_.push_back(name);
+}
+
+void XmlOut::empty(const std::string& name, const XmlAttributes& attributes) {
+  start_tag(name, attributes);
+  text_ += "/>\n";
+}
+
+void XmlOut::close() {
+  const std::string name = open_.back();
+  open_.pop_back();
+  text_.append(2 * open_.size(), ' ');
+  text_ += "</" + name + ">\n";
+}
+
+}  // namespace fapc::xmt

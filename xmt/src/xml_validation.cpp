@@ -1,0 +1,236 @@
+// Xerces-C validation: a progressive SAX2 parse finds the root element, then a full parse
+// validates against the one cached grammar the root selects. Xerces stays inside this file.
+#include "fapc/xmt/xml_validation.hpp"
+
+#include <algorithm>
+#include <memory>
+#include <mutex>
+
+#include <xercesc/framework/MemBufInputSource.hpp>
+#include <xercesc/framework/XMLPScanToken.hpp>
+#include <xercesc/sax/EntityResolver.hpp>
+#include <xercesc/sax/SAXParseException.hpp>
+#include <xercesc/sax2/DefaultHandler.hpp>
+#include <xercesc/sax2/SAX2XMLReader.hpp>
+#include <xercesc/sax2/XMLReaderFactory.hpp>
+#include <xercesc/util/PlatformUtils.hpp>
+#include <xercesc/util/SecurityManager.hpp>
+#include <xercesc/util/XMLString.hpp>
+#include <xercesc/validators/common/Grammar.hpp>
+
+#include "schema_registry.hpp"
+
+namespace fapc::xmt {
+
+namespace {
+
+namespace xc = XERCES_CPP_NAMESPACE;
+
+// Xerces must be initialised once per process before any use; it is never terminated, because
+// other parts of the program may still use it at exit.
+void initialise_xerces() {
+  static std::once_flag once;
+  std::call_once(once, [] { xc::XMLPlatformUtils::Initialize(); });
+}
+
+std::string text(const XMLCh* s) {
+  if (!s) return {};
+  char* chars = xc::XMLString::transcode(s);
+  std::string out(chars);
+  xc::XMLString::release(&chars);
+  return out;
+}
+
+class XmlCh {  // an owned Xerces string
+ public:
+  explicit XmlCh(const std::string& s) : value_(xc::XMLString::transcode(s.c_str())) {}
+  ~XmlCh() { xc::XMLString::release(&value_); }
+  XmlCh(const XmlCh&) = delete;
+  XmlCh& operator=(const XmlCh&) = delete;
+  const XMLCh* get() const { return value_; }
+
+ private:
+  XMLCh* value_;
+};
+
+// Collects problems with their positions; remembers the root element when asked to.
+class Collector : public xc::DefaultHandler {
+ public:
+  explicit Collector(const std::string& file) : file_(file) {}
+
+  void startElement(const XMLCh* uri, const XMLCh* local, const XMLCh*, const xc::Attributes&) override {
+    if (!root_seen) {
+      root_seen = true;
+      root_ns = text(uri);
+      root_name = text(local);
+    }
+  }
+  void warning(const xc::SAXParseException& e) override { add(Severity::warning, e); }
+  void error(const xc::SAXParseException& e) override { add(Severity::error, e); }
+  void fatalError(const xc::SAXParseException& e) override { add(Severity::error, e); }
+
+  // Nothing outside the document is ever read: DTDs and entities named by it resolve to nothing.
+  xc::InputSource* resolveEntity(const XMLCh*, const XMLCh*) override {
+    static const XMLByte nothing[] = "";
+    return new xc::MemBufInputSource(nothing, 0, "", false);
+  }
+
+  bool root_seen = false;
+  std::string root_ns, root_name;
+  Diagnostics problems;
+
+ private:
+  void add(Severity severity, const xc::SAXParseException& e) {
+    problems.push_back(Diagnostic{severity,
+                                  Location::text(file_, static_cast<int>(e.getLineNumber()),
+                                                 static_cast<int>(e.getColumnNumber())),
+                                  text(e.getMessage()), {}});
+  }
+  const std::string& file_;
+};
+
+struct ReaderDeleter {
+  void operator()(xc::SAX2XMLReader* r) const { delete r; }
+};
+using Reader = std::unique_ptr<xc::SAX2XMLReader, ReaderDeleter>;
+
+Reader make_reader(Collector& collector, xc::SecurityManager& security, bool validate) {
+  Reader reader(xc::XMLReaderFactory::createXMLReader());
+  reader->setFeature(xc::XMLUni::fgSAX2CoreNameSpaces, true);
+  reader->setFeature(xc::XMLUni::fgXercesLoadExternalDTD, false);
+  reader->setFeature(xc::XMLUni::fgXercesDisableDefaultEntityResolution, true);
+  reader->setFeature(xc::XMLUni::fgXercesLoadSchema, false);  // never follow xsi:schemaLocation
+  reader->setFeature(xc::XMLUni::fgSAX2CoreValidation, validate);
+  reader->setFeature(xc::XMLUni::fgXercesDynamic, false);
+  reader->setFeature(xc::XMLUni::fgXercesSchema, validate);
+  reader->setFeature(xc::XMLUni::fgXercesSchemaFullChecking, validate);
+  reader->setFeature(xc::XMLUni::fgXercesIdentityConstraintChecking, validate);
+  reader->setFeature(xc::XMLUni::fgXercesUseCachedGrammarInParse, validate);
+  reader->setProperty(xc::XMLUni::fgXercesSecurityManager, &security);
+  reader->setContentHandler(&collector);
+  reader->setErrorHandler(&collector);
+  reader->setEntityResolver(&collector);
+  return reader;
+}
+
+// Xerces places attribute errors at the end of the start tag and unresolved IDREFs at the end of
+// the document. This moves such a diagnostic to the attribute (or value) its message quotes, when
+// that can be found, and attaches the source line for the caret.
+class Positions {
+ public:
+  explicit Positions(std::string_view text) : text_(text) {
+    starts_.push_back(0);
+    for (std::size_t i = 0; i < text.size(); ++i)
+      if (text[i] == '\n') starts_.push_back(i + 1);
+  }
+
+  void refine(Diagnostic& d) const {
+    const std::string quoted = quoted_token(d.message);
+    if (!quoted.empty()) {
+      if (d.message.find("is referenced but was never declared") != std::string::npos) {
+        move_to(d, text_.find("=\"" + quoted + "\""), 2);
+      } else if (d.where.line >= 1 && static_cast<std::size_t>(d.where.line) <= starts_.size()) {
+        const std::string_view line = line_text(d.where.line);
+        const std::size_t before = std::min<std::size_t>(line.size(), static_cast<std::size_t>(std::max(d.where.column, 1)));
+        std::size_t at = line.rfind(" " + quoted + "=", before);
+        if (at != std::string_view::npos) ++at;
+        else if ((at = line.rfind("\"" + quoted + "\"", before)) != std::string_view::npos) ++at;
+        if (at != std::string_view::npos) d.where.column = static_cast<int>(at) + 1;
+      }
+    }
+    if (d.where.line >= 1 && static_cast<std::size_t>(d.where.line) <= starts_.size())
+      d.source_line = std::string(line_text(d.where.line));
+  }
+
+ private:
+  static std::string quoted_token(const std::string& message) {
+    const std::size_t open = message.find('\'');
+    const std::size_t close = open == std::string::npos ? open : message.find('\'', open + 1);
+    return close == std::string::npos ? std::string{} : message.substr(open + 1, close - open - 1);
+  }
+  std::string_view line_text(int line) const {
+    const std::size_t begin = starts_[static_cast<std::size_t>(line - 1)];
+    std::size_t end = text_.find('\n', begin);
+    if (end == std::string_view::npos) end = text_.size();
+    if (end > begin && text_[end - 1] == '\r') --end;
+    return text_.substr(begin, end - begin);
+  }
+  // Points `d` at file offset `offset + skip`, when found.
+  void move_to(Diagnostic& d, std::size_t offset, std::size_t skip) const {
+    if (offset == std::string_view::npos) return;
+    offset += skip;
+    const auto line = std::upper_bound(starts_.begin(), starts_.end(), offset) - starts_.begin();
+    d.where.line = static_cast<int>(line);
+    d.where.column = static_cast<int>(offset - starts_[static_cast<std::size_t>(line - 1)]) + 1;
+  }
+  std::string_view text_;
+  std::vector<std::size_t> starts_;
+};
+
+}  // namespace
+
+bool ValidationReport::valid() const {
+  for (const Diagnostic& d : problems)
+    if (d.severity == Severity::error) return false;
+  return true;
+}
+
+std::vector<std::string> validated_document_kinds() {
+  std::vector<std::string> out;
+  for (const SchemaBinding& b : schema_bindings())
+    out.push_back(std::string(b.kind) + (b.ns.empty() ? "" : " (" + std::string(b.ns) + ")"));
+  return out;
+}
+
+Result<ValidationReport> validate_xml(std::string_view text_in, const std::string& file) {
+  initialise_xerces();
+  const XmlCh id(file);
+  xc::SecurityManager security;
+  security.setEntityExpansionLimit(10000);  // entity bombs stop here
+
+  // Pass 1: the root element, parsing only as far as it.
+  Collector first(file);
+  {
+    Reader reader = make_reader(first, security, false);
+    xc::MemBufInputSource in(reinterpret_cast<const XMLByte*>(text_in.data()), text_in.size(), id.get(), false);
+    xc::XMLPScanToken token;
+    if (reader->parseFirst(in, token))
+      while (!first.root_seen && first.problems.empty() && reader->parseNext(token)) {
+      }
+    reader->parseReset(token);
+  }
+  if (!first.root_seen) {
+    if (!first.problems.empty()) return first.problems.front();
+    return make_error(Location::text(file, 1, 1), "no root element");
+  }
+  const SchemaBinding* binding = schema_for_root(first.root_name, first.root_ns);
+  if (!binding) {
+    std::string known;
+    for (const std::string& k : validated_document_kinds()) known += (known.empty() ? "" : ", ") + k;
+    return make_error(Location::text(file, 1, 1),
+                      "no schema for root element '" + first.root_name + "'" +
+                          (first.root_ns.empty() ? "" : " in namespace " + first.root_ns) +
+                          "; fapc validates " + known);
+  }
+  const auto schema = embedded_schemas().find(std::string(binding->schema));
+  if (schema == embedded_schemas().end())
+    return make_error(Location{file, 0, 0, -1}, "schema " + std::string(binding->schema) + " was not built in");
+
+  // Pass 2: validate against the cached grammar.
+  Collector collector(file);
+  Reader reader = make_reader(collector, security, true);
+  const XmlCh schema_id(std::string(binding->schema));
+  xc::MemBufInputSource grammar(reinterpret_cast<const XMLByte*>(schema->second.data()),
+                                schema->second.size(), schema_id.get(), false);
+  if (!reader->loadGrammar(grammar, xc::Grammar::SchemaGrammarType, true) || !collector.problems.empty()) {
+    const std::string why = collector.problems.empty() ? "" : ": " + collector.problems.front().message;
+    return make_error(Location{file, 0, 0, -1}, "built-in schema " + std::string(binding->schema) + " does not load" + why);
+  }
+  xc::MemBufInputSource in(reinterpret_cast<const XMLByte*>(text_in.data()), text_in.size(), id.get(), false);
+  reader->parse(in);
+  const Positions positions(text_in);
+  for (Diagnostic& d : collector.problems) positions.refine(d);
+  return ValidationReport{std::string(binding->kind), std::string(binding->schema), std::move(collector.problems)};
+}
+
+}  // namespace fapc::xmt

@@ -1,0 +1,71 @@
+#include "xmto/animation_include.hpp"
+
+#include <filesystem>
+
+namespace fapc::xmt {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  return s;
+}
+
+// Two names for one file compare equal when both exist; otherwise by their normal form.
+bool same_file(const std::string& a, const std::string& b) {
+  std::error_code error;
+  if (fs::equivalent(a, b, error)) return true;
+  return fs::path(a).lexically_normal() == fs::path(b).lexically_normal();
+}
+
+std::string chain_text(const std::vector<std::string>& chain, const std::string& last) {
+  std::string out;
+  for (const std::string& link : chain) out += link + " -> ";
+  return out + last;
+}
+
+}  // namespace
+
+Result<Included> load_included(const xml::XmlDocument& doc, const xmlNode* element,
+                               const XmtoOptions& options, Diagnostics& warnings) {
+  const auto src = xml::attribute(element, "src");
+  const auto ref = xml::attribute(element, "ref");
+  const char* used = src ? "src" : "ref";
+  if (!src && !ref) return doc.error(element, "animation needs src (or ref) naming the input to place");
+  if (src && ref) warnings.push_back(doc.warning(element, "ref", "ref is ignored: src is given"));
+  std::string_view name = trim(src ? *src : *ref);
+  if (name.starts_with("file:")) name.remove_prefix(5);
+  if (name.empty()) return doc.error(element, used, std::string(used) + " is empty");
+  if (name.find("://") != std::string_view::npos) {
+    return doc.error(element, used, std::string(used) + " '" + std::string(name) +
+                                        "': only local files can be placed, not URLs");
+  }
+  fs::path path(name);
+  if (path.is_relative()) path = fs::path(doc.file()).parent_path() / path;
+  Included included;
+  included.path = path.lexically_normal().string();
+
+  std::vector<std::string> chain = options.including;
+  chain.push_back(doc.file());
+  for (const std::string& open : chain) {
+    if (same_file(open, included.path)) {
+      return doc.error(element, used, "animation includes a document that is being read: " +
+                                          chain_text(chain, included.path));
+    }
+  }
+  if (chain.size() > kMaxIncludeDepth) {
+    return doc.error(element, used, "animations nested more than " + std::to_string(kMaxIncludeDepth) +
+                                        " documents deep: " + chain_text(chain, included.path));
+  }
+  if (!options.load_animation) {
+    return doc.error(element, "animation elements need a loader for other inputs (none was given)");
+  }
+  auto loaded = options.load_animation(included.path, doc.where(element, used));
+  if (!loaded) return loaded.error();
+  included.animation = std::move(*loaded);
+  return included;
+}
+
+}  // namespace fapc::xmt

@@ -1,0 +1,92 @@
+#include <algorithm>
+#include <map>
+
+#include "fapc/transcoder/render.hpp"
+#include "xmto/xmto_tree.hpp"
+
+namespace fapc::xmt {
+namespace {
+
+struct TaggedClip {
+  std::size_t leaf;
+  Clip clip;
+};
+
+// The included animation's clips for one run: shifted to the run's begin, cut at its end.
+void place_included(const Leaf& leaf, std::size_t id, const Occurrence& run,
+                    std::vector<TaggedClip>& out) {
+  const double shift = run.begin - run.curve_offset;
+  for (const Clip& inner : leaf.included->clips) {
+    Clip clip = inner;
+    clip.begin = std::max(inner.begin + shift, run.begin);
+    clip.end = std::min(inner.end + shift, run.end);
+    if (clip.end <= clip.begin) continue;
+    clip.curve_offset = inner.curve_offset + (clip.begin - (inner.begin + shift));
+    if (leaf.fill == Fill::freeze) clip.fill = Fill::freeze;
+    out.push_back(TaggedClip{id, std::move(clip)});
+  }
+}
+
+Clip animate_clip(const Leaf& leaf, const Occurrence& run, double underlying) {
+  Clip clip;
+  clip.target = leaf.target;
+  clip.begin = run.begin;
+  clip.end = run.end;
+  clip.curve_offset = run.curve_offset;
+  clip.curve = leaf.function.curve(underlying, run.iteration);
+  clip.blend = leaf.function.blend;
+  clip.fill = leaf.fill;
+  clip.source = leaf.where;
+  return clip;
+}
+
+// To-animations start from the value their target has without them when each run begins, so
+// they are placed after everything else, element by element in order of their first begin.
+void place_to_animations(const XmtoTree& tree, const std::map<std::size_t, std::vector<Occurrence>>& runs,
+                         std::vector<TaggedClip>& clips) {
+  std::vector<std::size_t> order;
+  for (const auto& [id, list] : runs) order.push_back(id);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return runs.at(a).front().begin < runs.at(b).front().begin;
+  });
+  for (const std::size_t id : order) {
+    const Leaf& leaf = tree.leaves[id];
+    Timeline underneath;
+    for (const TaggedClip& tagged : clips)
+      if (tagged.clip.target == leaf.target) underneath.clips.push_back(tagged.clip);
+    const TimelineEvaluator evaluator(underneath);
+    for (const Occurrence& run : runs.at(id)) {
+      clips.push_back(TaggedClip{id, animate_clip(leaf, run, evaluator.value_at(leaf.target, run.begin))});
+    }
+  }
+}
+
+}  // namespace
+
+Timeline lower_to_timeline(const XmtoTree& tree, const Schedule& schedule) {
+  std::vector<TaggedClip> clips;
+  std::map<std::size_t, std::vector<Occurrence>> to_runs;
+  for (const Occurrence& run : schedule.occurrences) {
+    // A run cut to nothing (its parent ended first) contributes nothing, frozen or not.
+    if (run.end <= run.begin) continue;
+    const Leaf& leaf = tree.leaves[run.leaf_id];
+    if (leaf.included) {
+      place_included(leaf, run.leaf_id, run, clips);
+    } else if (leaf.function.to_animation) {
+      to_runs[run.leaf_id].push_back(run);
+    } else {
+      clips.push_back(TaggedClip{run.leaf_id, animate_clip(leaf, run, 0)});
+    }
+  }
+  place_to_animations(tree, to_runs, clips);
+  // Document order of the elements, then time: the order overwrite ties are decided by.
+  std::stable_sort(clips.begin(), clips.end(), [](const TaggedClip& a, const TaggedClip& b) {
+    return a.leaf != b.leaf ? a.leaf < b.leaf : a.clip.begin < b.clip.begin;
+  });
+  Timeline timeline;
+  for (TaggedClip& tagged : clips) timeline.clips.push_back(std::move(tagged.clip));
+  timeline.explicit_end = schedule.end;
+  return timeline;
+}
+
+}  // namespace fapc::xmt
