@@ -182,7 +182,9 @@ Result<SceneNode> decode_scene_replace(const Bytes& bytes, const BifsConfig& con
   if (in.get_bit()) return decoder.fail("ROUTEs are not decoded by fapc");
   if (in.get_bit()) return decoder.fail("more than one command in the scene access unit");
   if (in.failed()) return decoder.cut_short();
-  if (in.bits_left() >= 8) return decoder.fail("bytes after the SceneReplace command");
+  // Zero bytes may follow the command frame (the project's writer adds one, see mp4_writer.cpp).
+  while (in.bits_left() > 0)
+    if (in.get_bit()) return decoder.fail("data after the SceneReplace command");
   return std::move(*top);
 }
 
