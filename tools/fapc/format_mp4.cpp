@@ -59,12 +59,12 @@ std::string hex_byte(unsigned v) {
   return s.str();
 }
 
-std::string track_line(const xmt::Mp4Track& t, std::uint32_t fba_id) {
+std::string track_line(const xmt::Mp4Track& t, const xmt::Mp4Track* fba) {
   std::ostringstream s;
   s << t.handler << ' ' << t.sample_entry;
   if (t.es) {
     const xmt::DecoderConfig& c = t.es->config;
-    const char* role = t.id == fba_id                                   ? "FBA stream"
+    const char* role = &t == fba                                   ? "FBA stream"
                        : c.stream_type == xmt::kSceneDescriptionStream ? "scene description"
                        : c.stream_type == xmt::kObjectDescriptorStream ? "object descriptors"
                                                                         : "stream";
@@ -94,9 +94,9 @@ Result<nlohmann::ordered_json> describe_mp4(const std::string& path, const Conve
   out["brand"] = mp4->major_brand + " (" + brands + ")";
   out["movie duration"] = mp4->timescale ? static_cast<double>(mp4->duration) / mp4->timescale : 0.0;
   if (mp4->iod) out["profile-levels"] = profiles_text(mp4->iod->profiles);
-  const std::uint32_t fba_id = xmt::fba_track_id(*mp4);
+  const xmt::Mp4Track* fba = xmt::find_fba_track(*mp4);
   // Flat keys, one line each in `fapc info`'s text output.
-  for (const xmt::Mp4Track& t : mp4->tracks) out["track " + std::to_string(t.id)] = track_line(t, fba_id);
+  for (const xmt::Mp4Track& t : mp4->tracks) out["track " + std::to_string(t.id)] = track_line(t, fba);
   // A scene or descriptors outside what fapc decodes are shown as the reason, not as a failure.
   auto scene = xmt::read_scene(*mp4);
   out["scene"] = scene ? xmt::scene_text(scene->scene) : "not shown: " + format_diagnostic(scene.error());
@@ -112,20 +112,20 @@ Result<nlohmann::ordered_json> describe_mp4(const std::string& path, const Conve
   } else {
     out["object descriptors"] = "not shown: " + format_diagnostic(objects.error());
   }
-  if (auto fba = xmt::read_fba_track(*mp4)) {
-    const std::uint8_t level = *xmt::fba_profile_level(fba->decoder_specific_info);
+  if (auto stream = xmt::read_fba_track(*mp4)) {
+    const std::uint8_t level = *xmt::fba_profile_level(stream->decoder_specific_info);
     std::uint64_t bytes = 0, ticks = 0;
     std::size_t intra = 0;
-    for (const xmt::FbaSample& s : fba->samples) {
+    for (const xmt::FbaSample& s : stream->samples) {
       bytes += s.bytes.size();
       ticks += s.duration;
       intra += s.sync ? 1 : 0;
     }
     out["fba profile-level"] = hex_byte(level) + " " + std::string(xmt::fba_profile_name(level));
-    out["fba planes"] = fba->samples.size();
+    out["fba planes"] = stream->samples.size();
     out["fba intra planes"] = intra;
     out["fba bytes"] = bytes;
-    out["fba duration"] = static_cast<double>(ticks) / fba->timescale;
+    out["fba duration"] = static_cast<double>(ticks) / stream->timescale;
   }
   return out;
 }
