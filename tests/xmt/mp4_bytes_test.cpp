@@ -8,6 +8,7 @@
 #include "fapc/xmt/mp4_reader.hpp"
 #include "fapc/xmt/mp4_writer.hpp"
 #include "fapc/xmt/object_descriptors.hpp"
+#include "fapc/xmt/scene.hpp"
 #include "test_tracks.hpp"
 
 namespace fapc::xmt {
@@ -82,6 +83,23 @@ TEST(Mp4Bytes, BifsConfigMatchesGpac) {
   auto back = decode_bifs_config(gpac, 0, "gpac");
   ASSERT_TRUE(back.ok());
   EXPECT_EQ(*back, BifsConfig{});
+}
+
+TEST(Mp4Bytes, SceneAccessUnitMatchesGpacsEncoder) {
+  // GPAC (master of August 2026) BIFS-encodes the same scene, read from the project's own XMT-A
+  // (`MP4Box -mp4` on corpus/golden/xmta/face-fba.xmt), to exactly these 21 bytes.
+  const Bytes gpac = {0xC0, 0x85, 0xA1, 0xD1, 0x19, 0x05, 0x0D, 0x14, 0x03, 0x6A, 0x82,
+                      0x0A, 0x92, 0x0A, 0x6A, 0x98, 0x02, 0x29, 0x32, 0xA0, 0x70};
+  auto au = encode_scene_replace(face_scene(), BifsConfig{});
+  ASSERT_TRUE(au.ok());
+  EXPECT_EQ(*au, gpac);
+  // The file carries one zero byte more, which GPAC's decoder needs to read this scene back
+  // (mp4_writer.cpp says why); `MP4Box -xmt` then dumps the scene and the FBA object descriptor.
+  auto mp4 = read_mp4(*write_mp4(test::hand_made_track()), "t.mp4");
+  ASSERT_TRUE(mp4.ok());
+  Bytes padded = gpac;
+  padded.push_back(0);
+  EXPECT_EQ(mp4->sample_bytes(mp4->track(kSceneTrackId)->samples.at(0)), padded);
 }
 
 TEST(Mp4Bytes, SampleTableTimingAndSync) {

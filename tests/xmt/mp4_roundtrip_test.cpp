@@ -3,6 +3,7 @@
 
 #include "fapc/xmt/mp4_reader.hpp"
 #include "fapc/xmt/mp4_writer.hpp"
+#include "support/test_support.hpp"
 #include "test_tracks.hpp"
 
 namespace fapc::xmt {
@@ -53,6 +54,36 @@ TEST(Mp4RoundTrip, SceneAndObjectDescriptors) {
   ASSERT_EQ(ods->size(), 1U);
   EXPECT_EQ((*ods)[0].od.od_id, kFbaObjectDescriptorId);
   EXPECT_EQ((*ods)[0].track_ids, std::vector<std::uint32_t>{kFbaTrackId});
+}
+
+TEST(Mp4RoundTrip, CommandsSceneWithWiderNodeIds) {
+  BifsConfig config;
+  config.node_id_bits = 3;
+  const SceneNode scene = face_scene(&test::frame_with_viseme());
+  auto au = encode_scene_replace(scene, config);
+  ASSERT_TRUE(au.ok()) << au.error().message;
+  auto back = decode_scene_replace(*au, config, 0, "s");
+  ASSERT_TRUE(back.ok()) << format_diagnostic(back.error());
+  EXPECT_EQ(*back, scene);
+}
+
+TEST(Mp4RoundTrip, ReadsTheFileGpacBuildsFromOurXmt) {
+  // corpus/mp4/gpac-three-tracks.mp4: `MP4Box -mp4` (GPAC, August 2026) on the FBA-mode XMT-A,
+  // importing the FBA track from a file written from test::hand_made_track().
+  const std::string path = fapc::test::corpus_dir() + "/mp4/gpac-three-tracks.mp4";
+  const std::string text = fapc::test::read_text(path);
+  auto mp4 = read_mp4(Bytes(text.begin(), text.end()), path);
+  ASSERT_TRUE(mp4.ok()) << format_diagnostic(mp4.error());
+  auto scene = read_scene(*mp4);
+  ASSERT_TRUE(scene.ok()) << format_diagnostic(scene.error());
+  EXPECT_EQ(scene->scene, face_scene());
+  auto ods = read_object_descriptors(*mp4);
+  ASSERT_TRUE(ods.ok());
+  ASSERT_EQ(ods->size(), 1U);
+  EXPECT_EQ((*ods)[0].track_ids, std::vector<std::uint32_t>{kFbaTrackId});
+  auto track = read_fba_track(*mp4);
+  ASSERT_TRUE(track.ok());
+  EXPECT_EQ(*track, test::hand_made_track());
 }
 
 }  // namespace

@@ -54,7 +54,7 @@ void check_with_outside_readers(const std::string& path) {
   ASSERT_TRUE(bytes.ok());
   auto mp4 = read_mp4(Bytes(bytes->begin(), bytes->end()), path);
   ASSERT_TRUE(mp4.ok()) << format_diagnostic(mp4.error());
-  const Mp4Track* fba = mp4->track(fba_track_id(*mp4));
+  const Mp4Track* fba = find_fba_track(*mp4);
   ASSERT_NE(fba, nullptr);
 
   const auto probe = fapc::test::run_shell("ffprobe -v error -show_streams '" + path + "'");
@@ -92,8 +92,9 @@ TEST(OutsideReaders, AcceptAWrittenFile) {
 }
 
 TEST(OutsideReaders, AcceptEveryMp4InTheCorpus) {
+  // Every .mp4 except the deliberately broken ones of corpus/*-bad/ folders.
   for (const std::string& path : fapc::test::files_under(fapc::test::corpus_dir(), ".mp4"))
-    check_with_outside_readers(path);
+    if (path.find("-bad/") == std::string::npos) check_with_outside_readers(path);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // which never decode the planes.
 #pragma once
 
+#include "fapc/codec/fap_sequence.hpp"
 #include "fapc/xmt/fba_track.hpp"
 
 namespace fapc::xmt::test {
@@ -21,6 +22,19 @@ inline FbaTrackInput hand_made_track(int samples = 10, std::uint32_t timescale =
     t.samples.push_back(std::move(s));
   }
   return t;
+}
+
+// A frame at time 0 with a viseme, open_jaw and head_yaw: the initial state of a commands scene.
+inline const FapFrame& frame_with_viseme() {
+  static const FapFrame frame = [] {
+    FapFrame f;
+    f.mask.set(0);
+    f.viseme.select1 = 4;
+    f.set(3, 120);
+    f.set(49, 1700);
+    return f;
+  }();
+  return frame;
 }
 
 }  // namespace fapc::xmt::test

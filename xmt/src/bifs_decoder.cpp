@@ -71,9 +71,9 @@ class SceneDecoder {
     auto read_one = [&](std::uint32_t index) -> Status {
       for (const auto& [i, f] : found)
         if (i == index) return fail("field " + std::string(spec.fields[index].name) + " of " + n.type + " coded twice");
-      auto v = value(spec.fields[index], depth);
-      if (!v) return v.error();
-      found.emplace_back(index, SceneField{std::string(spec.fields[index].name), std::move(*v)});
+      SceneField field{std::string(spec.fields[index].name), 0};
+      if (Status s = value(spec.fields[index], depth, field.value); !s) return s;
+      found.emplace_back(index, std::move(field));
       return ok_status();
     };
     if (in_.get_bit()) {  // mask
@@ -96,42 +96,45 @@ class SceneDecoder {
     return ok_status();
   }
 
-  Result<FieldValue> value(const FieldSpec& spec, int depth) {
+  // Reads one field's value into `out`.
+  Status value(const FieldSpec& spec, int depth, FieldValue& out) {
     switch (spec.kind) {
       case FieldKind::sf_int32:
-        return FieldValue{static_cast<std::int32_t>(in_.get(32))};
+        out = static_cast<std::int32_t>(in_.get(32));
+        return ok_status();
       case FieldKind::sf_bool:
-        return FieldValue{in_.get_bit()};
+        out = in_.get_bit();
+        return ok_status();
       case FieldKind::sf_float:
-        return FieldValue{std::bit_cast<float>(in_.get(32))};
-      case FieldKind::sf_node: {
-        auto child = node(spec.ndt, depth + 1);
-        if (!child) return child.error();
-        return FieldValue{std::vector<SceneNode>{std::move(*child)}};
-      }
+        out = std::bit_cast<float>(in_.get(32));
+        return ok_status();
+      case FieldKind::sf_node:
       case FieldKind::mf_node:
         break;
     }
     std::vector<SceneNode> nodes;
-    in_.get_bit();  // reserved
-    if (in_.get_bit()) {  // list
+    auto read_child = [&]() -> Status {
+      auto child = node(spec.ndt, depth + 1);
+      if (!child) return child.error();
+      nodes.push_back(std::move(*child));
+      return ok_status();
+    };
+    if (spec.kind == FieldKind::sf_node) {
+      if (Status s = read_child(); !s) return s;
+    } else if (in_.get_bit(), in_.get_bit()) {  // reserved bit, then list (1) or vector (0)
       while (!in_.get_bit()) {
         if (in_.failed()) return cut_short();
-        auto child = node(spec.ndt, depth + 1);
-        if (!child) return child.error();
-        nodes.push_back(std::move(*child));
+        if (Status s = read_child(); !s) return s;
       }
-    } else {  // vector
+    } else {
       const int length_bits = static_cast<int>(in_.get(5));
       const std::uint32_t length = in_.get(length_bits);
-      for (std::uint32_t i = 0; i < length && !in_.failed(); ++i) {
-        auto child = node(spec.ndt, depth + 1);
-        if (!child) return child.error();
-        nodes.push_back(std::move(*child));
-      }
+      for (std::uint32_t i = 0; i < length && !in_.failed(); ++i)
+        if (Status s = read_child(); !s) return s;
     }
     if (in_.failed()) return cut_short();
-    return FieldValue{std::move(nodes)};
+    out = std::move(nodes);
+    return ok_status();
   }
 
   BitReader in_;
@@ -182,7 +185,9 @@ Result<SceneNode> decode_scene_replace(const Bytes& bytes, const BifsConfig& con
   if (in.get_bit()) return decoder.fail("ROUTEs are not decoded by fapc");
   if (in.get_bit()) return decoder.fail("more than one command in the scene access unit");
   if (in.failed()) return decoder.cut_short();
-  if (in.bits_left() >= 8) return decoder.fail("bytes after the SceneReplace command");
+  // Zero bytes may follow the command frame (the project's writer adds one, see mp4_writer.cpp).
+  while (in.bits_left() > 0)
+    if (in.get_bit()) return decoder.fail("data after the SceneReplace command");
   return std::move(*top);
 }
 

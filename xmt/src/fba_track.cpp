@@ -37,6 +37,16 @@ Result<std::uint8_t> fba_profile_level(const Bytes& dsi, const std::string& file
   return dsi[4];
 }
 
+std::string_view fba_profile_name(std::uint8_t profile_level) {
+  switch (profile_level) {
+    case kSimpleFaceAnimationL1: return "Simple Face Animation @ L1";
+    case kSimpleFaceAnimationL2: return "Simple Face Animation @ L2";
+    case kSimpleFbaL1: return "Simple FBA @ L1";
+    case kSimpleFbaL2: return "Simple FBA @ L2";
+    default: return "";
+  }
+}
+
 bool declares_fba_object(const Bytes& dsi) {
   constexpr std::uint32_t kFbaObjectType = 4;
   for (std::size_t i = 0; i + 5 < dsi.size(); ++i) {

@@ -22,6 +22,8 @@ struct SampleTables {
   std::vector<std::uint32_t> sizes;
   std::vector<std::uint64_t> chunks;
   bool have_stsz = false, have_stco = false, have_stts = false, have_stsc = false;
+  // Where each table box starts, so errors found while resolving samples point at their table.
+  std::uint64_t stts_at = 0, stss_at = 0, stsc_at = 0, stsz_at = 0, stco_at = 0;
 };
 
 class Mp4Parser {
@@ -209,6 +211,11 @@ class Mp4Parser {
         }
       }
       if (type == "stss" && !t.stss) t.stss.emplace();
+      (type == "stts"   ? t.stts_at
+       : type == "stss" ? t.stss_at
+       : type == "stsc" ? t.stsc_at
+       : type == "stsz" ? t.stsz_at
+                        : t.stco_at) = child.offset;
       t.have_stts |= type == "stts";
       t.have_stsc |= type == "stsc";
       t.have_stco |= type == "stco" || type == "co64";
@@ -262,19 +269,19 @@ class Mp4Parser {
     std::size_t i = 0;
     std::uint64_t time = 0;
     for (const auto& [count, duration] : t.stts) {
-      if (count > n - i) return error(at, id + ": 'stts' describes more samples than 'stsz' (" + std::to_string(n) + ")");
+      if (count > n - i) return error(t.stts_at, id + ": 'stts' describes more samples than 'stsz' (" + std::to_string(n) + ")");
       for (std::uint32_t k = 0; k < count; ++k, ++i) {
         track.samples[i].decode_time = time;
         track.samples[i].duration = duration;
         time += duration;
       }
     }
-    if (i != n) return error(at, id + ": 'stts' describes " + std::to_string(i) + " samples, 'stsz' " + std::to_string(n));
+    if (i != n) return error(t.stts_at, id + ": 'stts' describes " + std::to_string(i) + " samples, 'stsz' " + std::to_string(n));
     if (t.stss) {
       for (Mp4Sample& s : track.samples) s.sync = false;
       for (std::uint32_t number : *t.stss) {
         if (number == 0 || number > n)
-          return error(at, id + ": 'stss' names sample " + std::to_string(number) + " of " + std::to_string(n));
+          return error(t.stss_at, id + ": 'stss' names sample " + std::to_string(number) + " of " + std::to_string(n));
         track.samples[number - 1].sync = true;
       }
     }
@@ -291,12 +298,12 @@ class Mp4Parser {
         s.offset = offset;
         s.size = t.sizes[i];
         if (offset > out_.data.size() || s.size > out_.data.size() - offset)
-          return error(at, id + ": sample " + std::to_string(i + 1) + " (" + std::to_string(s.size) +
+          return error(t.stco_at, id + ": sample " + std::to_string(i + 1) + " (" + std::to_string(s.size) +
                                " bytes at offset " + std::to_string(offset) + ") lies outside the file");
         offset += s.size;
       }
     }
-    if (i != n) return error(at, id + ": 'stsc' and 'stco' place " + std::to_string(i) + " of " + std::to_string(n) + " samples");
+    if (i != n) return error(t.stsc_at, id + ": 'stsc' and 'stco' place " + std::to_string(i) + " of " + std::to_string(n) + " samples");
     return ok_status();
   }
 

@@ -61,16 +61,16 @@ Result<std::vector<Mp4ObjectView>> read_object_descriptors(const Mp4File& mp4) {
   return out;
 }
 
-std::uint32_t fba_track_id(const Mp4File& mp4) {
+const Mp4Track* find_fba_track(const Mp4File& mp4) {
   for (const Mp4Track& t : mp4.tracks)
     if (t.es && t.es->config.stream_type == kVisualStream &&
         t.es->config.object_type == kVisual14496_2Object && declares_fba_object(t.es->config.specific_info))
-      return t.id;
-  return 0;
+      return &t;
+  return nullptr;
 }
 
 Result<FbaTrackInput> read_fba_track(const Mp4File& mp4) {
-  const Mp4Track* t = mp4.track(fba_track_id(mp4));
+  const Mp4Track* t = find_fba_track(mp4);
   if (!t)
     return file_error(mp4, 0, "no FBA track (a visual stream, objectTypeIndication 0x20, whose "
                               "configuration declares visual object type 4)");

@@ -276,6 +276,11 @@ Result<Bytes> write_mp4(const FbaTrackInput& fba) {
   const BifsConfig config;
   auto scene_au = encode_scene_replace(face_scene(), config);
   if (!scene_au) return scene_au.error();
+  // One zero byte after the command frame. GPAC's BIFS decoder stops reading a node's field list
+  // or an MFNode list early when the bits left lie in the last byte of the access unit (it counts
+  // whole bytes left), and then fails on this scene; with the padding it decodes it. A decoder
+  // that follows the syntax stops at the last command's continue flag and never reads the byte.
+  scene_au->push_back(0);
   TrackPlan scene = system_track(kSceneTrackId, "sdsm", "fapc scene", kSceneDescriptionStream,
                                  std::move(*scene_au), span);
   scene.es.config.specific_info = encode_bifs_config(config);

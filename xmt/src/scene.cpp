@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "bifs_nodes.hpp"
 #include "fapc/codec/fap_table.hpp"
 
 namespace fapc::xmt {
@@ -19,6 +20,14 @@ SceneNode node(std::string type, std::string def_name = {}, std::vector<SceneFie
   return SceneNode{std::move(type), std::move(def_name), std::move(fields)};
 }
 
+bool is_mf_node_field(const std::string& type, const std::string& field) {
+  const bifs::NodeSpec* spec = bifs::find_node(type);
+  if (!spec) return false;
+  for (const bifs::FieldSpec& f : spec->fields)
+    if (f.name == field) return f.kind == bifs::FieldKind::mf_node;
+  return false;
+}
+
 SceneField children(std::string name, std::vector<SceneNode> nodes) {
   return SceneField{std::move(name), std::move(nodes)};
 }
@@ -29,6 +38,27 @@ const SceneField* SceneNode::field(std::string_view name) const {
   for (const SceneField& f : fields)
     if (f.name == name) return &f;
   return nullptr;
+}
+
+std::string scene_text(const SceneNode& node) {
+  std::string out = node.type + (node.def_name.empty() ? "" : " DEF " + node.def_name) + " {";
+  for (const SceneField& f : node.fields) {
+    out += ' ' + f.name + ' ';
+    if (const auto* nodes = std::get_if<std::vector<SceneNode>>(&f.value)) {
+      const bool list = is_mf_node_field(node.type, f.name);
+      if (list) out += "[ ";
+      for (const SceneNode& child : *nodes) out += scene_text(child) + ' ';
+      if (list) out += ']';
+      else out.pop_back();
+    } else if (const auto* i = std::get_if<std::int32_t>(&f.value)) {
+      out += std::to_string(*i);
+    } else if (const auto* b = std::get_if<bool>(&f.value)) {
+      out += *b ? "TRUE" : "FALSE";
+    } else {
+      out += std::to_string(std::get<float>(f.value));
+    }
+  }
+  return out + " }";
 }
 
 std::string_view fap_field_name(int fap) {

@@ -9,12 +9,14 @@
 #include <xercesc/framework/MemBufInputSource.hpp>
 #include <xercesc/framework/XMLPScanToken.hpp>
 #include <xercesc/sax/EntityResolver.hpp>
+#include <xercesc/sax/SAXException.hpp>
 #include <xercesc/sax/SAXParseException.hpp>
 #include <xercesc/sax2/DefaultHandler.hpp>
 #include <xercesc/sax2/SAX2XMLReader.hpp>
 #include <xercesc/sax2/XMLReaderFactory.hpp>
 #include <xercesc/util/PlatformUtils.hpp>
 #include <xercesc/util/SecurityManager.hpp>
+#include <xercesc/util/XMLException.hpp>
 #include <xercesc/util/XMLString.hpp>
 #include <xercesc/validators/common/Grammar.hpp>
 
@@ -167,23 +169,7 @@ class Positions {
   std::vector<std::size_t> starts_;
 };
 
-}  // namespace
-
-bool ValidationReport::valid() const {
-  for (const Diagnostic& d : problems)
-    if (d.severity == Severity::error) return false;
-  return true;
-}
-
-std::vector<std::string> validated_document_kinds() {
-  std::vector<std::string> out;
-  for (const SchemaBinding& b : schema_bindings())
-    out.push_back(std::string(b.kind) + (b.ns.empty() ? "" : " (" + std::string(b.ns) + ")"));
-  return out;
-}
-
-Result<ValidationReport> validate_xml(std::string_view text_in, const std::string& file) {
-  initialise_xerces();
+Result<ValidationReport> validate_with_xerces(std::string_view text_in, const std::string& file) {
   const XmlCh id(file);
   xc::SecurityManager security;
   security.setEntityExpansionLimit(10000);  // entity bombs stop here
@@ -194,10 +180,9 @@ Result<ValidationReport> validate_xml(std::string_view text_in, const std::strin
     Reader reader = make_reader(first, security, false);
     xc::MemBufInputSource in(reinterpret_cast<const XMLByte*>(text_in.data()), text_in.size(), id.get(), false);
     xc::XMLPScanToken token;
-    if (reader->parseFirst(in, token))
-      while (!first.root_seen && first.problems.empty() && reader->parseNext(token)) {
-      }
-    reader->parseReset(token);
+    bool more = reader->parseFirst(in, token);
+    while (more && !first.root_seen && first.problems.empty()) more = reader->parseNext(token);
+    if (more) reader->parseReset(token);  // stop the scan early; illegal once it has ended
   }
   if (!first.root_seen) {
     if (!first.problems.empty()) return first.problems.front();
@@ -231,6 +216,34 @@ Result<ValidationReport> validate_xml(std::string_view text_in, const std::strin
   const Positions positions(text_in);
   for (Diagnostic& d : collector.problems) positions.refine(d);
   return ValidationReport{std::string(binding->kind), std::string(binding->schema), std::move(collector.problems)};
+}
+
+}  // namespace
+
+bool ValidationReport::valid() const {
+  for (const Diagnostic& d : problems)
+    if (d.severity == Severity::error) return false;
+  return true;
+}
+
+std::vector<std::string> validated_document_kinds() {
+  std::vector<std::string> out;
+  for (const SchemaBinding& b : schema_bindings())
+    out.push_back(std::string(b.kind) + (b.ns.empty() ? "" : " (" + std::string(b.ns) + ")"));
+  return out;
+}
+
+Result<ValidationReport> validate_xml(std::string_view text_in, const std::string& file) {
+  initialise_xerces();
+  // Xerces reports some failures (unreadable encodings, input that is not XML at all) by
+  // throwing; they become an error at the start of the document.
+  try {
+    return validate_with_xerces(text_in, file);
+  } catch (const xc::XMLException& e) {
+    return make_error(Location::text(file, 1, 1), text(e.getMessage()));
+  } catch (const xc::SAXException& e) {
+    return make_error(Location::text(file, 1, 1), text(e.getMessage()));
+  }
 }
 
 }  // namespace fapc::xmt

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "fapc/codec/diagnostic.hpp"
@@ -48,6 +49,9 @@ Bytes fba_decoder_specific_info(std::uint8_t profile_level = kSimpleFbaL1);
 // sequence header; an error naming the byte offset when it does not.
 Result<std::uint8_t> fba_profile_level(const Bytes& decoder_specific_info,
                                        const std::string& file = {});
+
+// "Simple FBA @ L1" for 0x63, and the other face animation profile-levels; "" for any other.
+std::string_view fba_profile_name(std::uint8_t profile_level);
 
 // Whether a visual decoder configuration declares an FBA object: its visual object header has
 // visual_object_type 4 (14496-2 §6.2.2). MPEG-4 video uses the same 'mp4v' sample entry.

@@ -72,7 +72,7 @@ Result<Mp4SceneView> read_scene(const Mp4File& mp4);
 Result<std::vector<Mp4ObjectView>> read_object_descriptors(const Mp4File& mp4);
 // The FBA track (mp4v, stream type 4, object type 0x20) as the writer took it.
 Result<FbaTrackInput> read_fba_track(const Mp4File& mp4);
-// Its track ID, or 0 when the file has none.
-std::uint32_t fba_track_id(const Mp4File& mp4);
+// The FBA track, or nullptr when the file has none.
+const Mp4Track* find_fba_track(const Mp4File& mp4);
 
 }  // namespace fapc::xmt

@@ -48,6 +48,9 @@ inline constexpr std::string_view kExpressionDefName = "EXPRESSION";
 // Replace commands animate); without it, the FAP node is empty (an FBA stream drives it).
 SceneNode face_scene(const FapFrame* initial = nullptr);
 
+// A one-line, VRML-like rendering for `fapc info`: "Group { children [ Face DEF FACE { ... } ] }".
+std::string scene_text(const SceneNode& node);
+
 // The BIFS `FAP` node's field name for FAPs 3..68. Six differ from the 14496-2 names used
 // elsewhere in the project (xmt-and-mp4.md §2.2): 6, 7, 10, 11, 53 and 54.
 std::string_view fap_field_name(int fap);

@@ -1,0 +1,46 @@
+// fapc validate FILE...: checks XML documents against the project's schemas (the root element
+// picks the schema; see xmt/src/schema_registry.cpp). Problems go to standard error with line and
+// column; a valid file gets one line on standard output. Exit 1 when any file has an error.
+#include <iostream>
+
+#include "fapc/args.hpp"
+#include "fapc/codec/file_io.hpp"
+#include "fapc/registry.hpp"
+#include "fapc/report.hpp"
+#include "fapc/xmt/xml_validation.hpp"
+
+namespace fapc::cli {
+
+namespace {
+
+bool validate_one(const std::string& path) {
+  auto bytes = read_file_bytes(path);
+  if (!bytes) {
+    report(bytes.error());
+    return false;
+  }
+  auto checked = xmt::validate_xml(*bytes, path);
+  if (!checked) {
+    report(checked.error());
+    return false;
+  }
+  report_all(checked->problems);
+  if (!checked->valid()) return false;
+  std::cout << path << ": valid " << checked->kind << " (" << checked->schema << ")\n";
+  return true;
+}
+
+int run_validate(const std::vector<std::string>& argv) {
+  Args args(argv, {}, {});
+  if (!args.ok()) return usage_error("validate", args.error());
+  if (args.positionals().empty()) return usage_error("validate", "expected at least one FILE");
+  bool all_valid = true;
+  for (const std::string& path : args.positionals()) all_valid = validate_one(path) && all_valid;
+  return all_valid ? kExitOk : kExitBadInput;
+}
+
+const RegisterCommand validate_command{"validate", "fapc validate FILE...", run_validate};
+
+}  // namespace
+
+}  // namespace fapc::cli
