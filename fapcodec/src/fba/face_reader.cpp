@@ -1,11 +1,16 @@
 #include "fba/face_reader.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <string>
 
 #include "fba/fba_quant.hpp"
 
 namespace fapc::fba {
+
+namespace {
+constexpr std::int32_t kLargestBlend = 63;  // viseme_blend and the expression intensities
+}  // namespace
 
 Status FaceReader::read_masks() {
   state_.mask.reset();
@@ -74,7 +79,9 @@ int FaceReader::read_field(int field, bool intra) {
     model.update(s);
     state_.previous_fields[f] += static_cast<std::int32_t>(dequantise(s - limit, step));
   }
-  return state_.previous_fields[f];
+  // An even step rounds 63 up to 64; prediction goes on from 64, but the frame gets the field's
+  // largest legal value, which is also the input's nearest (and re-encodes to the same symbol).
+  return std::min(state_.previous_fields[f], kLargestBlend);
 }
 
 Status FaceReader::read_values(bool intra, FapFrame& frame) {

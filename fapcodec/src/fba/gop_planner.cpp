@@ -70,8 +70,16 @@ bool GopPlanner::quantise_predictive(std::size_t k, Gop& gop) {
   for (const int fap : gop.faps) {
     const std::int64_t step = quant_.step(fap);
     const std::size_t i = FaceState::index(fap);
-    const std::int64_t q = quantise(frame.value(fap) - recon[i], step);
-    if (q > limit_ || q < -limit_) return false;
+    // Reconstructions stay on the lattice step * Z, so the intra-style level of the value gives
+    // the symbol that reaches it exactly. Whether a range can carry the frame is judged on that
+    // symbol: it is what re-encoding the decoded frames sees, so the same frames become intra
+    // planes again. Quantising the difference (the reference's rule) differs from it only at an
+    // exact tie, where it picks the smaller difference; both stay within half a step.
+    const std::int64_t value = frame.value(fap);
+    const std::int64_t exact = step == 0 ? value - recon[i] : quantise(value, step) - recon[i] / step;
+    if (exact > limit_ || exact < -limit_) return false;
+    std::int64_t q = quantise(value - recon[i], step);
+    if (q > limit_ || q < -limit_) q = exact;
     scratch_.push_back(static_cast<std::int16_t>(q));
     recon[i] += dequantise(q, step);
   }
