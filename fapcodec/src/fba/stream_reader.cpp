@@ -202,13 +202,23 @@ Status StreamReader::read_plane() {
   return ok_status();
 }
 
+Diagnostic StreamReader::explain(const Diagnostic& error) const {
+  // Past the last byte the reader sees zeros, which trip other checks first (a marker bit of 0,
+  // 23 zero bits); the real problem is the missing data.
+  const auto size = static_cast<std::int64_t>(c_.in.size_bits() / 8);
+  if (error.message.rfind("stream ends", 0) == 0) return error;
+  if (c_.in.overrun() || error.where.byte_offset > size)
+    return c_.error_at(size, "stream ends inside a plane (truncated?)");
+  return error;
+}
+
 Result<DecodedFba> StreamReader::run() {
-  if (auto status = read_stream_headers(); !status) return status.error();
+  if (auto status = read_stream_headers(); !status) return explain(status.error());
   for (;;) {
     auto next = next_part();
-    if (!next) return next.error();
+    if (!next) return explain(next.error());
     if (*next == Next::end) break;
-    if (auto status = read_plane(); !status) return status.error();
+    if (auto status = read_plane(); !status) return explain(status.error());
   }
   if (!c_.in.at_end())
     out_.warnings.push_back(make_warning(Location::binary(c_.file, c_.in.byte_offset()),

@@ -34,6 +34,7 @@ class StreamReader {
   Status read_plane();
   Status read_temporal_header(bool intra, TemporalHeader& header);
   void set_frame_rate(double rate);
+  Diagnostic explain(const Diagnostic& error) const;
   void note_ranges(std::int64_t frame, std::int64_t byte, std::size_t bits);
 
   FbaDecodeOptions options_;
