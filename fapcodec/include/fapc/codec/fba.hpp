@@ -1,0 +1,131 @@
+// MPEG-4 face animation streams (the face part of the FBA object of ISO/IEC 14496-2, Simple FBA
+// profile): FAP frames in, bytes out, and back. The encoder writes what the reference decoder
+// reads (docs/fba.md); the decoder reads any such stream, parses past body animation data, and
+// reports every problem as a Diagnostic with the byte offset. Nothing here prints.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "fapc/codec/diagnostic.hpp"
+#include "fapc/codec/fap_sequence.hpp"
+
+namespace fapc {
+
+// ---- encoding ----------------------------------------------------------------------------------
+
+enum class FbaRangeMode {
+  fit,  // each intra plane signals the smallest ranges that cover its group of planes
+  max,  // every range at its largest, +-1860 quantised units
+};
+
+struct FbaEncodeOptions {
+  int quant = 1;          // fap_quant 0..31: step = FAP quantiser (QP) x quant; 0 is lossless
+  int intra_period = 0;   // >0: at most this many planes from one intra plane to the next;
+                          // 0: intra planes only where needed (first frame, mask changes)
+  FbaRangeMode ranges = FbaRangeMode::fit;
+  bool align_planes = false;  // start every plane with its start code and end it byte-aligned,
+                              // so each plane is one MP4 sample (xmt-and-mp4.md 4.3)
+  bool list_every_mask = false;  // mask type 01 (bits listed) for every group, the layout of the
+                                 // test vector (fba-bitstream.md 11); by default empty groups
+                                 // get type 00 and full ones 11, which needs no mask bits
+};
+
+// Where one plane (one frame, plus the frames it skips) sits in the output.
+struct CodedPlane {
+  std::size_t offset = 0;      // first byte holding the plane's bits
+  std::size_t size = 0;        // bytes from offset to the last byte holding its bits
+  std::size_t bit_offset = 0;  // exact position and length in bits (planes share bytes unless
+  std::size_t bit_size = 0;    //   align_planes is set)
+  bool intra = false;
+  std::int64_t first_frame = 0;  // the frame number it carries
+  int frames = 1;                // frames it covers: 1 + number_of_frames_to_skip
+};
+
+struct EncodedFba {
+  std::vector<std::uint8_t> bytes;  // the raw stream: 0x000001BA, planes, stuffing, 0x000001B1
+  std::size_t header_size = 0;      // bytes before the first plane (start code, and the 0x7F
+                                    // stuffing byte when planes are aligned)
+  std::vector<CodedPlane> planes;
+};
+
+// Frame numbers are coded relative to the first frame; gaps become skip counts. Errors (a value
+// no range can carry, a frame rate above 255, bad FAP 1/2 fields) carry no file name: the caller
+// knows which input the sequence came from.
+Result<EncodedFba> encode_fba(const FapSequence& sequence, const FbaEncodeOptions& options = {});
+
+// The decoder configuration an MP4 track carries (xmt-and-mp4.md 4.2): visual object sequence
+// header with profile-level 0x63 (Simple FBA L1), visual object header of type FBA, and the FBA
+// object start code. 14 bytes.
+std::array<std::uint8_t, 14> fba_decoder_specific_info();
+
+// The largest error the round trip may introduce on a FAP (3..68): half its quantiser step.
+std::int64_t fba_tolerance(int fap, int quant);
+
+// ---- decoding ----------------------------------------------------------------------------------
+
+struct FbaDecodeOptions {
+  std::string file = "stream.fba";  // names the input in diagnostics
+  std::size_t max_frames = std::size_t{1} << 22;  // refuse streams with more face planes
+};
+
+// A signalled range of one FAP, in quantised units.
+struct FbaRange {
+  std::int32_t min = 0;
+  std::int32_t max = 0;
+};
+
+struct FbaIntraPlane {
+  std::int64_t frame = 0;        // frame number
+  std::int64_t byte_offset = 0;  // where the plane starts
+  std::size_t bits = 0;          // its length
+  int fap_quant = 0;
+  int faps = 0;                  // FAPs in its mask
+};
+
+struct FbaStreamInfo {
+  std::size_t bytes = 0;
+  int profile_and_level = -1;           // from a visual object sequence header, -1 without
+  bool visual_object_header = false;
+  std::size_t planes = 0;               // face and body planes
+  std::size_t face_planes = 0;
+  std::size_t body_planes = 0;          // planes that carry body (BAP) data, parsed and ignored
+  std::size_t plane_start_codes = 0;    // planes introduced by 0x000001BB
+  std::int64_t frames = 0;              // frames the face planes cover, skips included
+  std::int64_t skipped_frames = 0;
+  double frame_rate = 30.0;             // 30 when the stream never says (the reference's rule)
+  bool frame_rate_sent = false;
+  std::vector<FbaIntraPlane> intra_planes;
+  // Per FAP (index fap - 1), the widest ranges signalled for it; `ranged` says whether any was.
+  std::array<bool, kFapCount> ranged{};
+  std::array<FbaRange, kFapCount> intra_range{};
+  std::array<FbaRange, kFapCount> pred_range{};
+
+  double bits_per_frame() const {
+    return frames > 0 ? static_cast<double>(bytes) * 8.0 / static_cast<double>(frames) : 0.0;
+  }
+};
+
+struct DecodedFba {
+  FapSequence sequence;  // one frame per face plane, numbered by the stream's timing
+  FbaStreamInfo info;
+  Diagnostics warnings;  // body data ignored, rounded frame rate, bytes after the end code ...
+};
+
+Result<DecodedFba> decode_fba(std::span<const std::uint8_t> bytes, const FbaDecodeOptions& options = {});
+
+// ---- verification ------------------------------------------------------------------------------
+
+// Decodes `encoded` and checks it against `input`: the same frames, masks and numbers (relative
+// to the first), every FAP within fba_tolerance() (exact at quant 0), viseme and expression
+// fields exact but for blends and intensities (within half of quant); then re-encodes the
+// decoded frames with the same options and checks the bytes are identical. The error's message
+// starts with "verification failed" and names the frame and FAP.
+Status verify_fba(const FapSequence& input, const EncodedFba& encoded, const FbaEncodeOptions& options,
+                  const std::string& file = "stream.fba");
+
+}  // namespace fapc

@@ -1,0 +1,11 @@
+#include "fapc/codec/fba.hpp"
+#include "fba/stream_reader.hpp"
+
+namespace fapc {
+
+Result<DecodedFba> decode_fba(std::span<const std::uint8_t> bytes, const FbaDecodeOptions& options) {
+  fba::StreamReader reader(bytes, options);
+  return reader.run();
+}
+
+}  // namespace fapc

@@ -1,0 +1,80 @@
+// verify_fba: the encoder checks itself by decoding what it wrote (the libFLAC habit).
+#include <cstdlib>
+#include <string>
+
+#include "fapc/codec/fba.hpp"
+
+namespace fapc {
+
+namespace {
+
+Diagnostic failure(const std::string& file, const std::string& message) {
+  return make_error(Location{file, 0, 0, -1}, "verification failed: " + message);
+}
+
+std::string at_frame(const FapFrame& frame) { return "frame " + std::to_string(frame.number) + ": "; }
+
+// Within `tolerance` of each other.
+bool close(std::int64_t a, std::int64_t b, std::int64_t tolerance) { return std::llabs(a - b) <= tolerance; }
+
+std::string compare_fields(const FapFrame& in, const FapFrame& out, int quant) {
+  const int half = quant / 2;  // blends and intensities are quantised by fap_quant itself
+  if (in.has(1)) {
+    const VisemeFields& a = in.viseme;
+    const VisemeFields& b = out.viseme;
+    if (a.select1 != b.select1 || a.select2 != b.select2 || a.def != b.def || !close(a.blend, b.blend, half))
+      return "viseme fields differ";
+  }
+  if (in.has(2)) {
+    const ExpressionFields& a = in.expression;
+    const ExpressionFields& b = out.expression;
+    if (a.select1 != b.select1 || a.select2 != b.select2 || a.init_face != b.init_face || a.def != b.def ||
+        !close(a.intensity1, b.intensity1, half) || !close(a.intensity2, b.intensity2, half))
+      return "expression fields differ";
+  }
+  return {};
+}
+
+}  // namespace
+
+Status verify_fba(const FapSequence& input, const EncodedFba& encoded, const FbaEncodeOptions& options,
+                  const std::string& file) {
+  FbaDecodeOptions decode_options;
+  decode_options.file = file;
+  auto decoded = decode_fba(encoded.bytes, decode_options);
+  if (!decoded) return failure(file, "the stream does not decode: " + format_diagnostic(decoded.error()));
+  const auto& in = input.frames;
+  const auto& out = decoded->sequence.frames;
+  if (in.size() != out.size())
+    return failure(file, std::to_string(out.size()) + " frames decoded, " + std::to_string(in.size()) + " encoded");
+  // The rate travels in intra planes, so a stream without planes has none.
+  if (!in.empty() && decoded->sequence.fps != input.fps)
+    return failure(file, "frame rate " + std::to_string(decoded->sequence.fps) + " decoded, " +
+                             std::to_string(input.fps) + " encoded");
+  for (std::size_t k = 0; k < in.size(); ++k) {
+    if (out[k].number != in[k].number - in.front().number)
+      return failure(file, at_frame(in[k]) + "decoded as frame " + std::to_string(out[k].number));
+    if (out[k].mask != in[k].mask) return failure(file, at_frame(in[k]) + "the mask differs");
+    if (auto differs = compare_fields(in[k], out[k], options.quant); !differs.empty())
+      return failure(file, at_frame(in[k]) + differs);
+    for (int fap = 3; fap <= kFapCount; ++fap) {
+      if (!in[k].has(fap)) continue;
+      const std::int64_t tolerance = fba_tolerance(fap, options.quant);
+      if (!close(in[k].value(fap), out[k].value(fap), tolerance))
+        return failure(file, at_frame(in[k]) + "FAP " + std::to_string(fap) + " (" +
+                                 std::string(fap_table()[static_cast<std::size_t>(fap - 1)].name) + ") decoded " +
+                                 std::to_string(out[k].value(fap)) + ", encoded " + std::to_string(in[k].value(fap)) +
+                                 " (tolerance " + std::to_string(tolerance) + ")");
+    }
+  }
+  auto again = encode_fba(decoded->sequence, options);
+  if (!again) return failure(file, "the decoded frames do not encode again: " + again.error().message);
+  if (again->bytes != encoded.bytes) {
+    std::size_t at = 0;
+    while (at < again->bytes.size() && at < encoded.bytes.size() && again->bytes[at] == encoded.bytes[at]) ++at;
+    return failure(file, "re-encoding the decoded frames gives different bytes from byte " + std::to_string(at));
+  }
+  return ok_status();
+}
+
+}  // namespace fapc

@@ -1,0 +1,39 @@
+// Writes the syntax of a face-only FBA stream (fba-bitstream.md sections 5 and 6.7) from the
+// planner's decisions: object start code, planes (plane header, temporal header, masks, the four
+// range lists, arithmetic-coded segments), stuffing and end code. Private to fapcodec.
+#pragma once
+
+#include <vector>
+
+#include "fapc/codec/fba.hpp"
+#include "fba/arith_encoder.hpp"
+#include "fba/face_state.hpp"
+#include "fba/gop_planner.hpp"
+
+namespace fapc::fba {
+
+class PlaneWriter {
+ public:
+  PlaneWriter(const FapSequence& sequence, const FbaEncodeOptions& options);
+
+  // Every plane of the group, in order.
+  void write(const Gop& gop);
+  // Stuffing and the end code; the stream and where each plane went.
+  EncodedFba finish();
+
+ private:
+  void write_plane(const Gop& gop, std::size_t k);
+  void write_temporal_header(bool intra, std::int64_t skip);
+  void write_intra_face_header(const Gop& gop);
+  void write_segments(const Gop& gop, std::size_t k, bool intra);
+
+  const std::vector<FapFrame>& frames_;
+  FbaEncodeOptions options_;
+  int fps_;
+  BitWriter out_;
+  ArithEncoder coder_{out_};
+  FaceState state_;
+  EncodedFba result_;
+};
+
+}  // namespace fapc::fba

@@ -1,0 +1,187 @@
+// Property tests: random sequences with random masks, ranges, quantisers and intra periods come
+// back within half a quantiser step (exactly at fap_quant 0), and decoding then re-encoding gives
+// the same bytes. The comparison here is written out again rather than trusting verify_fba alone.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include "fapc/codec/fba.hpp"
+#include "fba_sequences.hpp"
+
+namespace fapc {
+namespace {
+
+// Checks `decoded` against `input` frame by frame; returns a description of the first mismatch.
+std::string first_mismatch(const FapSequence& input, const FapSequence& decoded, int quant) {
+  if (input.frames.size() != decoded.frames.size()) return "frame count";
+  if (!input.frames.empty() && input.fps != decoded.fps) return "fps";
+  for (std::size_t k = 0; k < input.frames.size(); ++k) {
+    const FapFrame& a = input.frames[k];
+    const FapFrame& b = decoded.frames[k];
+    const std::string at = "frame " + std::to_string(k) + ": ";
+    if (b.number != a.number - input.frames.front().number) return at + "number";
+    if (a.mask != b.mask) return at + "mask";
+    const int half = quant / 2;
+    if (a.has(1) && (a.viseme.select1 != b.viseme.select1 || a.viseme.select2 != b.viseme.select2 ||
+                     a.viseme.def != b.viseme.def || std::abs(a.viseme.blend - b.viseme.blend) > half ||
+                     b.viseme.blend > 63))
+      return at + "viseme";
+    if (a.has(2) && (a.expression.select1 != b.expression.select1 || a.expression.select2 != b.expression.select2 ||
+                     a.expression.init_face != b.expression.init_face || a.expression.def != b.expression.def ||
+                     std::abs(a.expression.intensity1 - b.expression.intensity1) > half ||
+                     std::abs(a.expression.intensity2 - b.expression.intensity2) > half))
+      return at + "expression";
+    for (int fap = 3; fap <= kFapCount; ++fap) {
+      if (!a.has(fap)) continue;
+      const std::int64_t tolerance = static_cast<std::int64_t>(fap_table()[static_cast<std::size_t>(fap - 1)].quant_step) * quant / 2;
+      if (std::llabs(static_cast<std::int64_t>(a.value(fap)) - b.value(fap)) > tolerance)
+        return at + "FAP " + std::to_string(fap) + " " + std::to_string(a.value(fap)) + " -> " + std::to_string(b.value(fap));
+    }
+  }
+  return {};
+}
+
+void expect_round_trip(const FapSequence& input, const FbaEncodeOptions& options, const std::string& label) {
+  auto encoded = encode_fba(input, options);
+  ASSERT_TRUE(encoded.ok()) << label << ": " << format_diagnostic(encoded.error());
+  auto decoded = decode_fba(encoded->bytes);
+  ASSERT_TRUE(decoded.ok()) << label << ": " << format_diagnostic(decoded.error());
+  EXPECT_EQ(first_mismatch(input, decoded->sequence, options.quant), "") << label;
+  auto again = encode_fba(decoded->sequence, options);
+  ASSERT_TRUE(again.ok()) << label;
+  EXPECT_EQ(again->bytes, encoded->bytes) << label << ": re-encoding differs";
+  EXPECT_TRUE(verify_fba(input, *encoded, options).ok()) << label;
+
+  // Planes: one per frame; intra at the start, at every mask change and within the period.
+  const auto& planes = encoded->planes;
+  ASSERT_EQ(planes.size(), input.frames.size()) << label;
+  std::size_t last_intra = 0, intra_count = 0;
+  for (std::size_t k = 0; k < planes.size(); ++k) {
+    if (k == 0 || input.frames[k].mask != input.frames[k - 1].mask) {
+      EXPECT_TRUE(planes[k].intra) << label << " plane " << k;
+    }
+    if (planes[k].intra) {
+      last_intra = k;
+      ++intra_count;
+    }
+    if (options.intra_period > 0) {
+      EXPECT_LT(k - last_intra, static_cast<std::size_t>(options.intra_period)) << label;
+    }
+    const std::int64_t next = k + 1 < planes.size() ? input.frames[k + 1].number : input.frames[k].number + 1;
+    EXPECT_EQ(planes[k].frames, next - input.frames[k].number) << label << " plane " << k;
+    if (k > 0) {
+      EXPECT_EQ(planes[k].bit_offset, planes[k - 1].bit_offset + planes[k - 1].bit_size) << label;
+    }
+  }
+  EXPECT_EQ(decoded->info.intra_planes.size(), intra_count) << label;
+  EXPECT_EQ(decoded->info.face_planes, planes.size()) << label;
+}
+
+TEST(FbaRoundTrip, RandomSequencesAtEveryQuantiser) {
+  std::mt19937 rng(2024);
+  for (int quant = 0; quant <= 31; ++quant) {
+    for (int trial = 0; trial < 6; ++trial) {
+      test::SequenceShape shape;
+      shape.quant = quant;
+      shape.frames = static_cast<int>(rng() % 50);
+      const FapSequence input = test::random_sequence(rng, shape);
+      FbaEncodeOptions options;
+      options.quant = quant;
+      options.intra_period = trial % 3 == 0 ? static_cast<int>(1 + rng() % 10) : 0;
+      options.ranges = trial % 2 ? FbaRangeMode::max : FbaRangeMode::fit;
+      options.align_planes = trial % 4 == 1;
+      options.list_every_mask = trial == 5;
+      expect_round_trip(input, options, "quant " + std::to_string(quant) + " trial " + std::to_string(trial));
+      if (testing::Test::HasFatalFailure()) return;
+    }
+  }
+}
+
+TEST(FbaRoundTrip, LosslessAtQuantZero) {
+  std::mt19937 rng(5);
+  test::SequenceShape shape;
+  shape.quant = 0;
+  shape.frames = 120;
+  const FapSequence input = test::random_sequence(rng, shape);
+  FbaEncodeOptions options;
+  options.quant = 0;
+  auto encoded = encode_fba(input, options);
+  ASSERT_TRUE(encoded.ok()) << format_diagnostic(encoded.error());
+  auto decoded = decode_fba(encoded->bytes);
+  ASSERT_TRUE(decoded.ok());
+  for (std::size_t k = 0; k < input.frames.size(); ++k)
+    EXPECT_TRUE(input.frames[k].same_content(decoded->sequence.frames[k])) << "frame " << k;
+}
+
+TEST(FbaRoundTrip, LongGopsGoThroughModelRescaling) {
+  // 3,000 planes in one group: every adaptive model's total passes 16383 and is halved.
+  std::mt19937 rng(9);
+  test::SequenceShape shape;
+  shape.frames = 3000;
+  shape.gaps = false;
+  shape.mask_changes = false;
+  expect_round_trip(test::random_sequence(rng, shape), FbaEncodeOptions{}, "long");
+}
+
+TEST(FbaRoundTrip, EmptySequenceAndEmptyMasks) {
+  FapSequence empty;
+  expect_round_trip(empty, FbaEncodeOptions{}, "empty");
+  FapSequence blank;
+  for (int k = 0; k < 5; ++k) blank.frames.push_back(FapFrame{k, {}, {}, {}, {}});
+  expect_round_trip(blank, FbaEncodeOptions{}, "no FAPs");
+  FbaEncodeOptions aligned;
+  aligned.align_planes = true;
+  expect_round_trip(blank, aligned, "no FAPs, aligned");
+  expect_round_trip(empty, aligned, "empty, aligned");
+}
+
+TEST(FbaRoundTrip, DifferencesBeyondTheLargestRangeStartAnIntraPlane) {
+  // FAP 14 (QP 1) jumps by 3000, more than the +-1860 a predictive range carries; the value
+  // itself fits, so the encoder starts a new group there.
+  FapSequence input;
+  for (int k = 0; k < 4; ++k) {
+    FapFrame frame;
+    frame.number = k;
+    frame.set(14, k == 2 ? 1500 : -1500);
+    input.frames.push_back(frame);
+  }
+  auto encoded = encode_fba(input, FbaEncodeOptions{});
+  ASSERT_TRUE(encoded.ok());
+  EXPECT_TRUE(encoded->planes[2].intra);
+  EXPECT_TRUE(encoded->planes[3].intra);
+  EXPECT_FALSE(encoded->planes[1].intra);
+  expect_round_trip(input, FbaEncodeOptions{}, "jump");
+}
+
+TEST(FbaEncode, RejectsWhatTheBitstreamCannotCarry) {
+  FapSequence input;
+  FapFrame frame;
+  frame.set(3, 4 * 1861 + 2);  // FAP 3 (QP 4) beyond 1860 steps
+  input.frames.push_back(frame);
+  auto encoded = encode_fba(input, FbaEncodeOptions{});
+  ASSERT_FALSE(encoded.ok());
+  EXPECT_EQ(encoded.error().message,
+            "frame 0: FAP 3 (open_jaw) value 7446 is beyond the largest range the bitstream carries "
+            "(+-7440 at fap_quant 1)");
+
+  input.frames[0] = FapFrame{};
+  input.frames[0].mask.set(0);
+  input.frames[0].viseme.select1 = 15;
+  encoded = encode_fba(input, FbaEncodeOptions{});
+  ASSERT_FALSE(encoded.ok());
+  EXPECT_EQ(encoded.error().message, "frame 0: viseme_select1 is 15, outside 0..14");
+
+  input.frames[0] = FapFrame{};
+  input.fps = 256;
+  encoded = encode_fba(input, FbaEncodeOptions{});
+  ASSERT_FALSE(encoded.ok());
+  EXPECT_EQ(encoded.error().message, "frame rate 256 cannot be coded (the stream carries 1 to 255 frames per second)");
+
+  input.fps = 25;
+  FbaEncodeOptions bad_quant;
+  bad_quant.quant = 32;
+  EXPECT_FALSE(encode_fba(input, bad_quant).ok());
+}
+
+}  // namespace
+}  // namespace fapc
