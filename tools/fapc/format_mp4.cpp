@@ -1,9 +1,11 @@
 // .mp4 in and out: an MPEG-4 file with a BIFS face scene, an OD track and the FBA track
 // (docs/mp4-and-xmta.md). The container work is the xmt library's; the FBA coding is the
-// codec's, reached only through the two functions of the "codec glue" section below.
+// codec's.
+#include <filesystem>
 #include <sstream>
 
 #include "fapc/codec/file_io.hpp"
+#include "fapc/fba_cli.hpp"
 #include "fapc/registry.hpp"
 #include "fapc/xmt/mp4_reader.hpp"
 #include "fapc/xmt/mp4_writer.hpp"
@@ -12,22 +14,48 @@ namespace fapc::cli {
 
 namespace {
 
-// ---- codec glue: TO BE FINISHED when the FBA encoder and decoder land (branch `codec`) -------
-// encode_planes: the frames as byte-aligned fba_object_planes, one per sample (each starting
-// 00 00 01 BB), with its intra flag and the number of frames it covers, and the decoder
-// configuration xmt::fba_decoder_specific_info(). decode_stream: the frames of the raw stream
-// that xmt::fba_stream_from_track rebuilds from the track. Until then, writing fails with this
-// message and reading lists the file without its frames (with a warning saying so).
-const char* const kCodecMissing = "the FBA codec is not part of this build yet";
-
-Result<xmt::FbaTrackInput> encode_planes(const Loaded&, const std::string& path, const ConvertOptions&) {
-  return make_error(Location{path, 0, 0, -1}, std::string("cannot write MP4: ") + kCodecMissing);
+// The FBA track: the encoder's planes, each started by its start code and byte-aligned, become
+// the samples; the timescale is the frame rate, so a sample lasts the frames it covers.
+Result<xmt::FbaTrackInput> encode_planes(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
+  auto encoded = encode_checked(loaded.frames, options, path, /*align_planes=*/true);
+  if (!encoded) return encoded.error();
+  xmt::FbaTrackInput track;
+  const auto dsi = fba_decoder_specific_info();
+  track.decoder_specific_info.assign(dsi.begin(), dsi.end());
+  track.timescale = static_cast<std::uint32_t>(loaded.frames.fps);
+  for (const CodedPlane& plane : encoded->planes) {
+    const auto first = encoded->bytes.begin() + static_cast<std::ptrdiff_t>(plane.offset);
+    track.samples.push_back(xmt::FbaSample{xmt::Bytes(first, first + static_cast<std::ptrdiff_t>(plane.size)),
+                                           static_cast<std::uint32_t>(plane.frames), plane.intra});
+  }
+  return track;
 }
 
-Result<FapSequence> decode_stream(const xmt::Bytes&, const std::string& path) {
-  return make_error(Location{path, 0, 0, -1}, std::string("FBA track not decoded: ") + kCodecMissing);
+// The decoder reads the raw stream rebuilt from the track (configuration, one stuffing byte, the
+// samples); a byte offset in it is turned back into the file's offset of that sample byte, so an
+// error points into the .mp4 the user has.
+Diagnostic in_file(Diagnostic d, const xmt::Mp4Track& track, const xmt::FbaTrackInput& input) {
+  if (d.where.byte_offset < 0) return d;
+  auto at = static_cast<std::uint64_t>(d.where.byte_offset);
+  const std::uint64_t header = input.decoder_specific_info.size() + 1;
+  if (at < header) {
+    d.where.byte_offset = -1;
+    d.message = "FBA decoder configuration, byte " + std::to_string(at) + ": " + d.message;
+    return d;
+  }
+  at -= header;
+  for (std::size_t k = 0; k < track.samples.size(); ++k) {
+    if (at < track.samples[k].size) {
+      d.where.byte_offset = static_cast<std::int64_t>(track.samples[k].offset + at);
+      d.message = "FBA track sample " + std::to_string(k + 1) + ": " + d.message;
+      return d;
+    }
+    at -= track.samples[k].size;
+  }
+  d.where.byte_offset = -1;
+  d.message = "end of the FBA track: " + d.message;
+  return d;
 }
-// ---- end of codec glue ------------------------------------------------------------------------
 
 Result<xmt::Mp4File> read_mp4_path(const std::string& path) {
   auto bytes = read_file_bytes(path);
@@ -42,14 +70,13 @@ Result<Loaded> load_mp4(const std::string& path, const ConvertOptions&) {
   if (!track) return track.error();
   Loaded loaded;
   loaded.warnings = mp4->warnings;
-  auto frames = decode_stream(xmt::fba_stream_from_track(*track), path);
-  if (frames) {
-    loaded.frames = std::move(*frames);
-  } else {
-    // Codec glue, temporary: keep `fapc info` useful until the decoder exists.
-    loaded.frames.fps = static_cast<int>(track->timescale);
-    loaded.warnings.push_back(make_warning(frames.error().where, frames.error().message));
-  }
+  FbaDecodeOptions options;
+  options.file = path;
+  auto decoded = decode_fba(xmt::fba_stream_from_track(*track), options);
+  if (!decoded) return in_file(decoded.error(), *xmt::find_fba_track(*mp4), *track);
+  loaded.frames = std::move(decoded->sequence);
+  loaded.frames.name = std::filesystem::path(path).stem().string();
+  for (Diagnostic& w : decoded->warnings) loaded.warnings.push_back(std::move(w));
   return loaded;
 }
 

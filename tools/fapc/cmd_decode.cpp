@@ -1,0 +1,29 @@
+// fapc decode IN.fba|IN.mp4 -o OUT.fap: a stream back to frames, written as any output kind
+// (normally .fap).
+#include "fapc/convert.hpp"
+#include "fapc/report.hpp"
+
+namespace fapc::cli {
+
+namespace {
+
+int run_decode(const std::vector<std::string>& argv) {
+  Args args(argv, {"output", "to"}, {"strict"});
+  ConvertOptions options = convert_options(args);
+  if (!args.ok()) return usage_error("decode", args.error());
+  if (args.positionals().size() != 1) return usage_error("decode", "expected one input stream");
+  const auto output = args.value("output");
+  if (!output) return usage_error("decode", "missing -o OUT.fap");
+  const std::string& input = args.positionals().front();
+  const InputFormat* format = input_format_for(input);
+  if (format && format->kind != "fba" && format->kind != "mp4")
+    return usage_error("decode", "decode reads .fba or .mp4 streams; use compile for '" + input + "'");
+  return convert(input, *output, options, args.value("to").value_or("")).exit_status;
+}
+
+const RegisterCommand decode_command{"decode", "fapc decode IN.fba|IN.mp4 -o OUT.fap [--strict] [--to KIND]",
+                                     run_decode};
+
+}  // namespace
+
+}  // namespace fapc::cli

@@ -1,0 +1,52 @@
+// fapc encode IN -o OUT.fba [--quant Q] [--intra-period N] [--ranges fit|max] [--align-planes]
+// [--verify]: any input to a raw FBA stream, with the encoder's settings in view.
+#include <iostream>
+
+#include "fapc/codec/file_io.hpp"
+#include "fapc/convert.hpp"
+#include "fapc/fba_cli.hpp"
+#include "fapc/report.hpp"
+
+namespace fapc::cli {
+
+namespace {
+
+int run_encode(const std::vector<std::string>& argv) {
+  Args args(argv, {"output", "quant", "intra-period", "ranges"}, {"verify", "align-planes"});
+  const ConvertOptions options = convert_options(args);
+  if (!args.ok()) return usage_error("encode", args.error());
+  if (args.positionals().size() != 1) return usage_error("encode", "expected one input file");
+  const auto output = args.value("output");
+  if (!output) return usage_error("encode", "missing -o OUT.fba");
+  if (auto fba = fba_encode_options(options); !fba) return usage_error("encode", fba.error().message);
+  const std::string& input = args.positionals().front();
+
+  auto loaded = load_input(input, options);
+  if (!loaded) {
+    report(loaded.error());
+    return kExitBadInput;
+  }
+  report_all(loaded->warnings);
+  auto encoded = encode_checked(loaded->frames, options, input, args.flag("align-planes"));
+  if (!encoded) {
+    report(encoded.error());
+    return encoded.error().message.rfind("verification failed", 0) == 0 ? kExitVerifyFailed : kExitBadInput;
+  }
+  const std::string bytes(encoded->bytes.begin(), encoded->bytes.end());
+  if (*output == "-") {
+    std::cout << bytes << std::flush;
+  } else if (auto written = write_file_atomic(*output, bytes); !written) {
+    report(written.error());
+    return kExitBadInput;
+  }
+  return kExitOk;
+}
+
+const RegisterCommand encode_command{
+    "encode",
+    "fapc encode IN.fap -o OUT.fba [--quant Q] [--intra-period N] [--ranges fit|max] [--align-planes] [--verify]",
+    run_encode};
+
+}  // namespace
+
+}  // namespace fapc::cli

@@ -1,0 +1,46 @@
+#include "fapc/fba_cli.hpp"
+
+#include "fapc/codec/file_io.hpp"
+
+namespace fapc::cli {
+
+Result<FbaEncodeOptions> fba_encode_options(const ConvertOptions& options) {
+  FbaEncodeOptions fba;
+  fba.quant = options.quant;
+  fba.intra_period = options.intra_period;
+  if (options.ranges == "fit") {
+    fba.ranges = FbaRangeMode::fit;
+  } else if (options.ranges == "max") {
+    fba.ranges = FbaRangeMode::max;
+  } else {
+    return make_error(Location{}, "--ranges takes fit or max, not '" + options.ranges + "'");
+  }
+  return fba;
+}
+
+Result<DecodedFba> read_fba_file(const std::string& path) {
+  auto bytes = read_file_bytes(path);
+  if (!bytes) return bytes.error();
+  FbaDecodeOptions options;
+  options.file = path;
+  const auto* data = reinterpret_cast<const std::uint8_t*>(bytes->data());
+  return decode_fba(std::span<const std::uint8_t>(data, bytes->size()), options);
+}
+
+Result<EncodedFba> encode_checked(const FapSequence& sequence, const ConvertOptions& options, const std::string& input,
+                                  bool align_planes) {
+  auto fba = fba_encode_options(options);
+  if (!fba) return fba.error();
+  fba->align_planes = align_planes;
+  auto encoded = encode_fba(sequence, *fba);
+  if (!encoded) {
+    Diagnostic error = encoded.error();
+    error.where.file = input;
+    return error;
+  }
+  if (options.verify)
+    if (auto verified = verify_fba(sequence, *encoded, *fba, input); !verified) return verified.error();
+  return encoded;
+}
+
+}  // namespace fapc::cli
