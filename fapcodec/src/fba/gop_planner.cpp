@@ -67,22 +67,37 @@ bool GopPlanner::quantise_predictive(std::size_t k, Gop& gop) {
   const FapFrame& frame = frames_[k];
   scratch_.clear();
   auto recon = recon_;
-  for (const int fap : gop.faps) {
+  for (std::size_t j = 0; j < gop.faps.size(); ++j) {
+    const int fap = gop.faps[j];
     const std::int64_t step = quant_.step(fap);
     const std::size_t i = FaceState::index(fap);
-    // Reconstructions stay on the lattice step * Z, so the intra-style level of the value gives
-    // the symbol that reaches it exactly. Whether a range can carry the frame is judged on that
-    // symbol: it is what re-encoding the decoded frames sees, so the same frames become intra
-    // planes again. Quantising the difference (the reference's rule) differs from it only at an
-    // exact tie, where it picks the smaller difference; both stay within half a step.
+    // Reconstructions stay on the lattice step * Z. Every lattice point within half a step of
+    // the value is a correct reconstruction: one, or two when the value lies exactly half way
+    // (even steps only). Of two, the planner takes the difference this group has coded more
+    // often so far, which the adaptive model codes in fewer bits; on a tie, the reference's
+    // rule: the quantised difference, which rounds half away from zero (half a step down to 0).
+    // Decoded frames sit on the lattice and leave no choice, so re-encoding them takes the same
+    // path. Whether a range can carry the frame is judged on these differences too.
     const std::int64_t value = frame.value(fap);
-    const std::int64_t exact = step == 0 ? value - recon[i] : quantise(value, step) - recon[i] / step;
-    if (exact > limit_ || exact < -limit_) return false;
-    std::int64_t q = quantise(value - recon[i], step);
-    if (q > limit_ || q < -limit_) q = exact;
+    std::int64_t low = value, high = value, base = recon[i];
+    if (step != 0) {
+      const std::int64_t half = step / 2;
+      low = floor_div(value - half + step - 1, step);
+      high = floor_div(value + half, step);
+      base = recon[i] / step;
+    }
+    std::int64_t q = low - base;
+    if (high != low) {
+      std::int64_t other = high - base;
+      if (quantise(value - recon[i], step) == other) std::swap(q, other);
+      if (history_.count(j, other) > history_.count(j, q)) std::swap(q, other);
+      if (!within(q)) q = other;
+    }
+    if (!within(q)) return false;
     scratch_.push_back(static_cast<std::int16_t>(q));
     recon[i] += dequantise(q, step);
   }
+  for (std::size_t j = 0; j < scratch_.size(); ++j) history_.add(j, scratch_[j]);
   recon_ = recon;
   gop.symbols.insert(gop.symbols.end(), scratch_.begin(), scratch_.end());
   const auto fields = coded_fields(frame);
@@ -136,6 +151,7 @@ Result<Gop> GopPlanner::next() {
   gop.mask = frames_[next_].mask;
   for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap)
     if (gop.mask.test(FaceState::index(fap))) gop.faps.push_back(fap);
+  history_.clear(gop.faps.size());
   if (auto status = quantise_intra(next_, gop); !status) return status.error();
   std::size_t k = next_ + 1;
   while (k < frames_.size() && !needs_intra(k, gop.first) && quantise_predictive(k, gop)) ++k;
