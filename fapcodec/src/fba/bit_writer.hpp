@@ -12,16 +12,15 @@ class BitWriter {
  public:
   // The low `count` bits of `value`, most significant first; count is 0..32.
   void put_bits(std::uint32_t value, int count) {
-    for (int i = count - 1; i >= 0; --i) put_bit(static_cast<int>((value >> i) & 1u));
-  }
-  void put_bit(int bit) {
-    current_ = static_cast<std::uint8_t>((current_ << 1) | (bit & 1));
-    if (++used_ == 8) {
-      bytes_.push_back(current_);
-      current_ = 0;
-      used_ = 0;
+    if (count == 0) return;
+    pending_ = (pending_ << count) | (value & (~std::uint64_t{0} >> (64 - count)));
+    used_ += count;
+    while (used_ >= 8) {
+      used_ -= 8;
+      bytes_.push_back(static_cast<std::uint8_t>(pending_ >> used_));
     }
   }
+  void put_bit(int bit) { put_bits(static_cast<std::uint32_t>(bit & 1), 1); }
 
   // next_start_code(): a '0' then '1's up to the byte boundary, or a whole 0x7F when the position
   // is already aligned (section 5.9). Always 1 to 8 bits.
@@ -35,8 +34,8 @@ class BitWriter {
 
  private:
   std::vector<std::uint8_t> bytes_;
-  std::uint8_t current_ = 0;
-  int used_ = 0;  // bits in current_
+  std::uint64_t pending_ = 0;  // the last `used_` bits (fewer than 8 between calls) are unwritten
+  int used_ = 0;
 };
 
 }  // namespace fapc::fba
