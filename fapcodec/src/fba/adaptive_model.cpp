@@ -4,28 +4,10 @@ namespace fapc::fba {
 
 void AdaptiveModel::reset(int symbols) {
   symbols_ = symbols;
+  last_ = symbols / 2;
   const auto entries = static_cast<std::size_t>(symbols) + 1;
   cum_.assign(round_up(entries), 0);
   for (int j = 0; j < symbols; ++j) cum_[static_cast<std::size_t>(j)] = static_cast<std::int16_t>(symbols - j);
-  heads_.assign(round_up(cum_.size() / kLanes), 0);
-  copy_heads();
-}
-
-void AdaptiveModel::copy_heads() {
-  for (std::size_t b = 0; b * kLanes < cum_.size(); ++b) heads_[b] = cum_[b * kLanes];
-}
-
-int AdaptiveModel::binary_search(std::int32_t target) const {
-  int lo = 1, hi = symbols_;
-  while (lo < hi) {
-    const int mid = (lo + hi) >> 1;
-    if (cum_[static_cast<std::size_t>(mid)] <= target) {
-      hi = mid;
-    } else {
-      lo = mid + 1;
-    }
-  }
-  return lo - 1;
 }
 
 void AdaptiveModel::rescale() {
@@ -37,7 +19,6 @@ void AdaptiveModel::rescale() {
     above = cum_[k];
     cum_[k] = static_cast<std::int16_t>(cum_[k + 1] + (frequency + 1) / 2);
   }
-  copy_heads();
 }
 
 }  // namespace fapc::fba

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "fba/adaptive_model.hpp"
+#include "fba/reciprocal.hpp"
 #include "fba/bit_reader.hpp"
 
 namespace fapc::fba {
@@ -23,8 +24,8 @@ class ArithDecoder {
   void start();
 
   int decode(const AdaptiveModel& model) {
-    const std::int32_t t = target(model.total());
-    const int s = model.find(t);
+    // The target ((code - low + 1) * total - 1) / length of section 6.5, found without dividing.
+    const int s = model.find_scaled((code_ - low_ + 1) * model.total(), high_ - low_ + 1);
     narrow(model.cum(s), model.cum(s + 1), model.total());
     return s;
   }
@@ -56,8 +57,8 @@ class ArithDecoder {
   // steps, taking in one coded bit per step.
   void narrow(std::int32_t high_count, std::int32_t low_count, std::int32_t total) {
     const std::int32_t length = high_ - low_ + 1;
-    high_ = low_ - 1 + (length * high_count) / total;
-    low_ = low_ + (length * low_count) / total;
+    high_ = low_ - 1 + divide_by_total(length * high_count, total);
+    low_ = low_ + divide_by_total(length * low_count, total);
     const int a = std::countl_zero(static_cast<std::uint16_t>(low_ ^ high_));
     if (a > 0) {
       const std::uint32_t ones = (1u << a) - 1;

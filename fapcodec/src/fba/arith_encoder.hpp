@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "fba/adaptive_model.hpp"
+#include "fba/reciprocal.hpp"
 #include "fba/bit_writer.hpp"
 
 namespace fapc::fba {
@@ -23,8 +24,8 @@ class ArithEncoder {
   // opposite bits), then `b` middle-half steps, which only add to the pending count.
   void encode(std::int32_t high_count, std::int32_t low_count, std::int32_t total) {
     const std::int32_t length = high_ - low_ + 1;
-    high_ = low_ - 1 + (length * high_count) / total;
-    low_ = low_ + (length * low_count) / total;
+    high_ = low_ - 1 + divide_by_total(length * high_count, total);
+    low_ = low_ + divide_by_total(length * low_count, total);
     const int a = std::countl_zero(static_cast<std::uint16_t>(low_ ^ high_));
     if (a > 0) {
       const auto low = static_cast<std::uint32_t>(low_);
