@@ -6,8 +6,14 @@ void AdaptiveModel::reset(int symbols) {
   symbols_ = symbols;
   last_ = symbols / 2;
   const auto entries = static_cast<std::size_t>(symbols) + 1;
-  cum_.assign(round_up(entries), 0);
-  for (int j = 0; j < symbols; ++j) cum_[static_cast<std::size_t>(j)] = static_cast<std::int16_t>(symbols - j);
+  cum_.resize(round_up(entries));
+  // n - j, a vector at a time; 0 from j = n on (the padding).
+  constexpr Lanes kLane = {0, 1, 2, 3, 4, 5, 6, 7};
+  for (std::size_t j = 0; j < cum_.size(); j += kLanes) {
+    const auto first = static_cast<std::int16_t>(symbols - static_cast<int>(j));
+    const Lanes lanes = Lanes{first, first, first, first, first, first, first, first} - kLane;
+    store(cum_, j, lanes & (lanes > 0));
+  }
 }
 
 void AdaptiveModel::rescale() {

@@ -18,12 +18,6 @@ inline std::int64_t quantise(std::int64_t v, std::int64_t step) {
   return v < 0 ? -level : level;
 }
 
-// Division rounding toward minus infinity, for a positive divisor.
-inline std::int64_t floor_div(std::int64_t a, std::int64_t b) {
-  const std::int64_t q = a / b;
-  return q * b > a ? q - 1 : q;
-}
-
 inline std::int64_t dequantise(std::int64_t q, std::int64_t step) { return step == 0 ? q : q * step; }
 
 // The smallest 5-bit range value v whose range (v * 60) / scaler covers `magnitude` quantised

@@ -68,7 +68,8 @@ class GopPlanner {
   FaceState quant_;  // only fap_quant, steps and field limits are used
   std::int32_t limit_;  // the largest |q| any range can carry: 31 * 60 / scaler
   std::size_t next_ = 0;
-  std::array<std::int64_t, kFapCount> recon_{};
+  std::array<std::int64_t, kFapCount> levels_{};  // reconstructions as multiples of their step
+  std::vector<std::int64_t> steps_;                // of the group's FAPs, in coding order
   std::array<std::int32_t, kCodedFieldCount> recon_fields_{};
   std::vector<std::int16_t> scratch_;
   DifferenceCounts history_;  // of the current group
