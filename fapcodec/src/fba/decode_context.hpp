@@ -28,10 +28,9 @@ struct DecodeContext {
   Diagnostic error_here(const std::string& message) const { return error_at(in.byte_offset(), message); }
 
   // After reading a structure: did it run past the last byte?
-  Status check_inside(const char* what) const {
+  Status check_inside(const std::string& what) const {
     if (!in.overrun()) return ok_status();
-    return error_at(static_cast<std::int64_t>(in.size_bits() / 8),
-                    std::string("stream ends inside ") + what + " (truncated?)");
+    return error_at(static_cast<std::int64_t>(in.size_bits() / 8), "stream ends inside " + what + " (truncated?)");
   }
   // A marker bit that must be 1 (section 5.9).
   Status read_marker(const char* where) {
@@ -45,7 +44,7 @@ struct DecodeContext {
       return error_at(static_cast<std::int64_t>(coder.bad_bit_position() / 8),
                       std::string("23 zero bits in a row inside the ") + what +
                           " segment: a start code cannot appear there (corrupt stream?)");
-    return check_inside(what);
+    return check_inside(std::string("the ") + what + " segment");
   }
 };
 
