@@ -18,7 +18,6 @@ int run_encode(const std::vector<std::string>& argv) {
   if (args.positionals().size() != 1) return usage_error("encode", "expected one input file");
   const auto output = args.value("output");
   if (!output) return usage_error("encode", "missing -o OUT.fba");
-  if (auto fba = fba_encode_options(options); !fba) return usage_error("encode", fba.error().message);
   const std::string& input = args.positionals().front();
 
   auto loaded = load_input(input, options);

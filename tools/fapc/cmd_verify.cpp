@@ -111,7 +111,6 @@ int run_verify(const std::vector<std::string>& argv) {
   const ConvertOptions options = convert_options(args);
   if (!args.ok()) return usage_error("verify", args.error());
   if (args.positionals().empty()) return usage_error("verify", "expected at least one FILE");
-  if (auto fba = fba_encode_options(options); !fba) return usage_error("verify", fba.error().message);
   int status = kExitOk;
   nlohmann::ordered_json results = nlohmann::ordered_json::array();
   for (const std::string& path : args.positionals()) {

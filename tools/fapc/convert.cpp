@@ -16,7 +16,13 @@ ConvertOptions convert_options(Args& args) {
   options.duration = args.decimal("duration", 0, 1e7);
   options.strict = args.flag("strict");
   options.verify = args.flag("verify");
-  if (const auto ranges = args.value("ranges")) options.ranges = *ranges;
+  if (const auto ranges = args.value("ranges")) {
+    if (*ranges != "fit" && *ranges != "max") {
+      args.fail("--ranges takes fit or max, not '" + *ranges + "'");
+      return options;
+    }
+    options.ranges = *ranges;
+  }
   for (const std::string& event : args.values("event")) {
     const auto eq = event.find('=');
     if (eq == std::string::npos || eq == 0) {
