@@ -1,0 +1,83 @@
+#include <algorithm>
+#include <map>
+
+#include "fapc/codec/fap_table.hpp"
+#include "fml/fml_tree.hpp"
+
+namespace fapc::xmt {
+namespace {
+
+// The clip of one move run: a linear ramp over the run's simple duration, held afterwards.
+Clip ramp_clip(const std::string& target, double from, double to, const Occurrence& run, const Location& where) {
+  Clip clip;
+  clip.target = target;
+  clip.begin = run.begin;
+  clip.end = run.end;
+  clip.curve_offset = run.curve_offset;
+  clip.curve = Curve::ramp(from, to, run.simple_duration, Interpolation::linear);
+  clip.blend = BlendMode::overwrite;
+  clip.fill = Fill::freeze;
+  clip.source = where;
+  return clip;
+}
+
+// The value a target has at t, given the clips placed before (all overwrite and frozen, so the
+// one that began last decides, held at its end).
+double current_value(const std::map<std::string, Clip>& latest, const std::string& target, double t) {
+  const auto found = latest.find(target);
+  if (found == latest.end()) return 0;
+  const Clip& clip = found->second;
+  return clip.curve.value_at(clip.local_time(std::min(t, clip.end)));
+}
+
+void place_talk(const FmlLeaf& leaf, const Occurrence& run, std::vector<Clip>& out) {
+  if (leaf.speech.duration <= 0) return;
+  const double stretch = run.simple_duration / leaf.speech.duration;
+  for (const VisemeSpan& span : leaf.speech.visemes) {
+    Clip clip;
+    clip.target = "viseme." + std::string(viseme_name(span.viseme));
+    clip.begin = run.begin - run.curve_offset + span.begin * stretch;
+    clip.end = std::min(run.begin - run.curve_offset + span.end * stretch, run.end);
+    clip.begin = std::max(clip.begin, run.begin);
+    if (clip.end <= clip.begin) continue;
+    clip.curve = Curve::constant(63);
+    clip.source = leaf.where;
+    out.push_back(std::move(clip));
+  }
+}
+
+}  // namespace
+
+Timeline lower_fml(const FmlTree& tree, const Schedule& schedule, const std::vector<std::string>& expressions) {
+  std::vector<const Occurrence*> runs;
+  for (const Occurrence& run : schedule.occurrences)
+    if (run.end > run.begin) runs.push_back(&run);  // cut to nothing by an ancestor
+  std::stable_sort(runs.begin(), runs.end(), [](const Occurrence* a, const Occurrence* b) { return a->begin < b->begin; });
+  Timeline timeline;
+  std::map<std::string, Clip> latest;
+  const auto place_move = [&](const std::string& target, double to, const Occurrence& run, const Location& where) {
+    Clip clip = ramp_clip(target, current_value(latest, target, run.begin), to, run, where);
+    latest[target] = clip;
+    timeline.clips.push_back(std::move(clip));
+  };
+  for (const Occurrence* run : runs) {
+    const FmlLeaf& leaf = tree.leaves[run->leaf_id];
+    switch (leaf.kind) {
+      case FmlLeaf::Kind::move:
+        place_move(leaf.target, leaf.value, *run, leaf.where);
+        break;
+      case FmlLeaf::Kind::normal:
+        for (const std::string& target : expressions) place_move(target, 0, *run, leaf.where);
+        break;
+      case FmlLeaf::Kind::talk:
+        place_talk(leaf, *run, timeline.clips);
+        break;
+      case FmlLeaf::Kind::wait:
+        break;
+    }
+  }
+  timeline.explicit_end = schedule.end;
+  return timeline;
+}
+
+}  // namespace fapc::xmt
