@@ -142,7 +142,7 @@ class FmlReader {
     schedule_options.root_end = options_.duration;
     const Result<Schedule> scheduled = schedule(tree_.root, schedule_options);
     if (!scheduled) return scheduler_error(scheduled.error());
-    result_.timeline = lower_fml(tree_, *scheduled, {expressions_.begin(), expressions_.end()});
+    result_.timeline = lower_fml(tree_, *scheduled);
     once_.finish();
     return std::move(result_);
   }

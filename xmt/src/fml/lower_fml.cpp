@@ -2,6 +2,7 @@
 #include <map>
 
 #include "fapc/codec/fap_table.hpp"
+#include "fapc/transcoder/profile.hpp"
 #include "fml/fml_tree.hpp"
 
 namespace fapc::xmt {
@@ -48,7 +49,7 @@ void place_talk(const FmlLeaf& leaf, const Occurrence& run, std::vector<Clip>& o
 
 }  // namespace
 
-Timeline lower_fml(const FmlTree& tree, const Schedule& schedule, const std::vector<std::string>& expressions) {
+Timeline lower_fml(const FmlTree& tree, const Schedule& schedule) {
   std::vector<const Occurrence*> runs;
   for (const Occurrence& run : schedule.occurrences)
     if (run.end > run.begin) runs.push_back(&run);  // cut to nothing by an ancestor
@@ -66,9 +67,13 @@ Timeline lower_fml(const FmlTree& tree, const Schedule& schedule, const std::vec
       case FmlLeaf::Kind::move:
         place_move(leaf.target, leaf.value, *run, leaf.where);
         break;
-      case FmlLeaf::Kind::normal:
+      case FmlLeaf::Kind::normal: {
+        std::vector<std::string> expressions;
+        for (const auto& [target, clip] : latest)
+          if (weight_target(target) && weight_target(target)->fap == 2) expressions.push_back(target);
         for (const std::string& target : expressions) place_move(target, 0, *run, leaf.where);
         break;
+      }
       case FmlLeaf::Kind::talk:
         place_talk(leaf, *run, timeline.clips);
         break;
