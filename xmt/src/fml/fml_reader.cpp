@@ -12,6 +12,7 @@
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "fapc/xmt/fml.hpp"
+#include "fml/embedded_fml.hpp"
 #include "fml/fml_timing.hpp"
 #include "fml/fml_tree.hpp"
 #include "fml/other_formats.hpp"
@@ -104,11 +105,28 @@ class FmlReader {
  public:
   FmlReader(const xml::XmlDocument& doc, const FmlOptions& options)
       : doc_(doc), options_(options), once_(result_.warnings) {
-    result_.warnings = doc_.warnings();
     profile_ = options.profile ? options.profile : &default_profile();
   }
 
+  Result<EmbeddedFmlMove> run_embedded(const xmlNode* node) {
+    const std::string name(xml::local_name(node));
+    if (name != "talk" && name != "expr" && name != "hdmv" && name != "fap" && name != "param" && name != "wait") {
+      return doc_.error(node, "FML '" + name + "' inside XMT-Omega: only FML moves (talk, expr, hdmv, fap, param, "
+                                               "wait) are read here; use XMT-Omega's own time containers, or "
+                                               "place an FML document with animation src");
+    }
+    std::optional<ScheduleNode> placed = element(node);
+    if (error_) return *error_;
+    once_.finish();
+    EmbeddedFmlMove embedded;
+    embedded.leaf = tree_.leaves.at(placed->leaf_id);
+    embedded.timing = placed->timing;
+    embedded.warnings = std::move(result_.warnings);
+    return embedded;
+  }
+
   Result<FmlDocument> run() {
+    result_.warnings = doc_.warnings();
     const xmlNode* root = doc_.root();
     if (const std::string other = other_format_name(root); !other.empty()) {
       return doc_.error(root, "this is " + other + ", not FML (the Arya-DiPaola Face Modeling Language, "
@@ -742,6 +760,11 @@ Result<FmlDocument> read_fml(std::string_view text, const std::string& file_name
   Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name);
   if (!doc) return doc.error();
   return FmlReader(*doc, options).run();
+}
+
+Result<EmbeddedFmlMove> read_embedded_fml_move(const xml::XmlDocument& doc, const xmlNode* move,
+                                               const FmlOptions& options) {
+  return FmlReader(doc, options).run_embedded(move);
 }
 
 Result<FmlDocument> load_fml(const std::string& path, const FmlOptions& options) {

@@ -3,6 +3,7 @@
 
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/transcoder/profile.hpp"
+#include "fml/embedded_fml.hpp"
 #include "fml/fml_tree.hpp"
 
 namespace fapc::xmt {
@@ -31,23 +32,33 @@ double current_value(const std::map<std::string, Clip>& latest, const std::strin
   return clip.curve.value_at(clip.local_time(std::min(t, clip.end)));
 }
 
+// One run of a talk: its visemes from the run's (possibly cut) start, cut at the run's end.
 void place_talk(const FmlLeaf& leaf, const Occurrence& run, std::vector<Clip>& out) {
-  if (leaf.speech.duration <= 0) return;
-  const double stretch = run.simple_duration / leaf.speech.duration;
-  for (const VisemeSpan& span : leaf.speech.visemes) {
-    Clip clip;
-    clip.target = "viseme." + std::string(viseme_name(span.viseme));
-    clip.begin = run.begin - run.curve_offset + span.begin * stretch;
-    clip.end = std::min(run.begin - run.curve_offset + span.end * stretch, run.end);
-    clip.begin = std::max(clip.begin, run.begin);
-    if (clip.end <= clip.begin) continue;
-    clip.curve = Curve::constant(63);
-    clip.source = leaf.where;
-    out.push_back(std::move(clip));
+  const double shift = run.begin - run.curve_offset;
+  for (Clip clip : viseme_clips(leaf.speech, run.simple_duration, leaf.where)) {
+    clip.begin = std::max(clip.begin + shift, run.begin);
+    clip.end = std::min(clip.end + shift, run.end);
+    if (clip.end > clip.begin) out.push_back(std::move(clip));
   }
 }
 
 }  // namespace
+
+std::vector<Clip> viseme_clips(const Speech& speech, double duration, const Location& where) {
+  std::vector<Clip> clips;
+  if (speech.duration <= 0) return clips;
+  const double stretch = duration / speech.duration;
+  for (const VisemeSpan& span : speech.visemes) {
+    Clip clip;
+    clip.target = "viseme." + std::string(viseme_name(span.viseme));
+    clip.begin = span.begin * stretch;
+    clip.end = span.end * stretch;
+    clip.curve = Curve::constant(63);
+    clip.source = where;
+    clips.push_back(std::move(clip));
+  }
+  return clips;
+}
 
 Timeline lower_fml(const FmlTree& tree, const Schedule& schedule) {
   std::vector<const Occurrence*> runs;
