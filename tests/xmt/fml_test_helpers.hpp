@@ -1,4 +1,5 @@
-// Shared by the fml_*_test.cpp files: documents from snippets, and what the tests look at.
+// Shared by the fml_*_test.cpp files: documents from snippets, and what the tests look at (the
+// generic parts are the XMT-Omega tests').
 #pragma once
 
 #include <gtest/gtest.h>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "fapc/xmt/fml.hpp"
+#include "xmto_test_helpers.hpp"
 
 namespace fapc::xmt::fml_test {
 
@@ -33,20 +35,9 @@ inline std::string read_error(const std::string& text, const FmlOptions& options
   return read ? "no error" : format_diagnostic(read.error());
 }
 
-inline std::vector<std::string> messages(const Diagnostics& diagnostics) {
-  std::vector<std::string> out;
-  for (const Diagnostic& d : diagnostics) out.push_back(format_diagnostic(d));
-  return out;
-}
-
-using Spans = std::vector<std::tuple<std::string, double, double>>;
-
-// (target, begin, end) of every clip, in timeline order.
-inline Spans spans(const Timeline& timeline) {
-  Spans out;
-  for (const Clip& clip : timeline.clips) out.emplace_back(clip.target, clip.begin, clip.end);
-  return out;
-}
+using test::messages;
+using test::Spans;
+using test::spans;
 
 // Spans equal to within 1e-9 s (times like 5/12 s are not exact in binary).
 inline void expect_spans(const Timeline& timeline, const Spans& expected) {

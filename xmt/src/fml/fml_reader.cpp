@@ -17,7 +17,7 @@
 #include "fml/fml_tree.hpp"
 #include "fml/other_formats.hpp"
 #include "xml/xml_document.hpp"
-#include "xmto/once_per_name.hpp"
+#include "xml/once_per_name.hpp"
 
 namespace fapc::xmt {
 namespace {
@@ -29,10 +29,6 @@ constexpr double kAngleUnitsPerDegree = 1e5 * 3.14159265358979323846 / 180.0;
 constexpr double kMaxNodes = 1e6;  // elements after template expansion, and runs after repeats
 
 constexpr std::initializer_list<const char*> kTiming = {"begin", "duration", "dur", "end", "repeat"};
-
-bool is_blank(std::string_view text) {
-  return std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isspace(c); });
-}
 
 std::string trim(std::string_view s) {
   while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
@@ -225,19 +221,7 @@ class FmlReader {
     return std::nullopt;
   }
 
-  void check_text(const xmlNode* element) {
-    const std::string name(xml::local_name(element));
-    for (const xmlNode* child = element->children; child; child = child->next) {
-      const bool text = child->type == XML_TEXT_NODE || child->type == XML_CDATA_SECTION_NODE;
-      if (text && child->content && !is_blank(reinterpret_cast<const char*>(child->content))) {
-        once_.report("text " + name, doc_.warning(element, "text inside " + name + " is ignored"));
-      } else if (child->type == XML_ENTITY_REF_NODE) {
-        const std::string entity = "&" + std::string(xml::local_name(child)) + ";";
-        once_.report("entity " + entity, doc_.warning(element, "entity reference " + entity + " inside " + name +
-                                                                   " is not expanded and was ignored"));
-      }
-    }
-  }
+  void check_text(const xmlNode* element) { report_stray_text(doc_, element, once_); }
 
   // ---- model ---------------------------------------------------------------------------------
 

@@ -13,7 +13,7 @@
 #include "xmto/animation_function.hpp"
 #include "xmto/animation_include.hpp"
 #include "xmto/attribute_target.hpp"
-#include "xmto/once_per_name.hpp"
+#include "xml/once_per_name.hpp"
 #include "xmto/run_budget.hpp"
 #include "xmto/smil_timing.hpp"
 #include "xmto/xmto_tree.hpp"
@@ -27,12 +27,6 @@ constexpr std::initializer_list<const char*> kTimingAttributes = {"begin", "dur"
                                                                   "repeatDur", "fill"};
 constexpr std::string_view kXmlNamespace = "http://www.w3.org/XML/1998/namespace";
 constexpr std::string_view kSchemaInstanceNamespace = "http://www.w3.org/2001/XMLSchema-instance";
-
-bool is_blank(std::string_view text) {
-  for (const char c : text)
-    if (!std::isspace(static_cast<unsigned char>(c))) return false;
-  return true;
-}
 
 class DocumentReader {
  public:
@@ -172,19 +166,7 @@ class DocumentReader {
 
   // Text in XMT-O elements carries nothing for face animation, and entities are not expanded
   // (no DTD is trusted): report both rather than drop them.
-  void check_text(const xmlNode* element) {
-    const std::string name(xml::local_name(element));
-    for (const xmlNode* child = element->children; child; child = child->next) {
-      const bool text = child->type == XML_TEXT_NODE || child->type == XML_CDATA_SECTION_NODE;
-      if (text && child->content && !is_blank(reinterpret_cast<const char*>(child->content))) {
-        once_.report("text " + name, doc_.warning(element, "text inside " + name + " is ignored"));
-      } else if (child->type == XML_ENTITY_REF_NODE) {
-        const std::string entity = "&" + std::string(xml::local_name(child)) + ";";
-        once_.report("entity " + entity, doc_.warning(element, "entity reference " + entity + " inside " + name +
-                                                                   " is not expanded and was ignored"));
-      }
-    }
-  }
+  void check_text(const xmlNode* element) { report_stray_text(doc_, element, once_); }
 
   void read_head(const xmlNode* head) {
     check_attributes(head, {});
