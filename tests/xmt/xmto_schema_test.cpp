@@ -69,7 +69,7 @@ TEST(XmtoSchema, DocumentsWithoutTheNamespaceAreNotValidated) {
   ASSERT_FALSE(report.ok());
   EXPECT_EQ(format_diagnostic(report.error()),
             "s.xmt:1:1: error: no schema for root element 'XMT-O'; fapc validates XMT-A "
-            "(urn:mpeg:mpeg4:xmta:schema:2002), XMT-Omega (urn:mpeg:mpeg4:xmto:schema:2002)");
+            "(urn:mpeg:mpeg4:xmta:schema:2002), XMT-Omega (urn:mpeg:mpeg4:xmto:schema:2002), FML");
 }
 
 }  // namespace
