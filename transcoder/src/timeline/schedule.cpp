@@ -54,6 +54,11 @@ class Scheduler {
       place_runs(node.leaf_id, start, simple, *active, std::min(cut, start + *active), out);
       return start + *active;
     }
+    if (!active && node.timing.repeat_indefinite) {
+      // Repeating without end would never stop laying out iterations.
+      fail(node, "repeats indefinitely and nothing around it ends: give it or a parent an end");
+      return start;
+    }
     // A group: lay out one iteration, then repeat its occurrences shifted. A group of unknown
     // length with nothing around it to end it still places its children: the open one among
     // them reports the error at its own position.

@@ -12,11 +12,12 @@
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "fapc/xmt/fml.hpp"
+#include "fml/embedded_fml.hpp"
 #include "fml/fml_timing.hpp"
 #include "fml/fml_tree.hpp"
 #include "fml/other_formats.hpp"
 #include "xml/xml_document.hpp"
-#include "xmto/once_per_name.hpp"
+#include "xml/once_per_name.hpp"
 
 namespace fapc::xmt {
 namespace {
@@ -28,10 +29,6 @@ constexpr double kAngleUnitsPerDegree = 1e5 * 3.14159265358979323846 / 180.0;
 constexpr double kMaxNodes = 1e6;  // elements after template expansion, and runs after repeats
 
 constexpr std::initializer_list<const char*> kTiming = {"begin", "duration", "dur", "end", "repeat"};
-
-bool is_blank(std::string_view text) {
-  return std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isspace(c); });
-}
 
 std::string trim(std::string_view s) {
   while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
@@ -104,11 +101,28 @@ class FmlReader {
  public:
   FmlReader(const xml::XmlDocument& doc, const FmlOptions& options)
       : doc_(doc), options_(options), once_(result_.warnings) {
-    result_.warnings = doc_.warnings();
     profile_ = options.profile ? options.profile : &default_profile();
   }
 
+  Result<EmbeddedFmlMove> run_embedded(const xmlNode* node) {
+    const std::string name(xml::local_name(node));
+    if (name != "talk" && name != "expr" && name != "hdmv" && name != "fap" && name != "param" && name != "wait") {
+      return doc_.error(node, "FML '" + name + "' inside XMT-Omega: only FML moves (talk, expr, hdmv, fap, param, "
+                                               "wait) are read here; use XMT-Omega's own time containers, or "
+                                               "place an FML document with animation src");
+    }
+    std::optional<ScheduleNode> placed = element(node);
+    if (error_) return *error_;
+    once_.finish();
+    EmbeddedFmlMove embedded;
+    embedded.leaf = tree_.leaves.at(placed->leaf_id);
+    embedded.timing = placed->timing;
+    embedded.warnings = std::move(result_.warnings);
+    return embedded;
+  }
+
   Result<FmlDocument> run() {
+    result_.warnings = doc_.warnings();
     const xmlNode* root = doc_.root();
     if (const std::string other = other_format_name(root); !other.empty()) {
       return doc_.error(root, "this is " + other + ", not FML (the Arya-DiPaola Face Modeling Language, "
@@ -142,7 +156,7 @@ class FmlReader {
     schedule_options.root_end = options_.duration;
     const Result<Schedule> scheduled = schedule(tree_.root, schedule_options);
     if (!scheduled) return scheduler_error(scheduled.error());
-    result_.timeline = lower_fml(tree_, *scheduled, {expressions_.begin(), expressions_.end()});
+    result_.timeline = lower_fml(tree_, *scheduled);
     once_.finish();
     return std::move(result_);
   }
@@ -207,19 +221,7 @@ class FmlReader {
     return std::nullopt;
   }
 
-  void check_text(const xmlNode* element) {
-    const std::string name(xml::local_name(element));
-    for (const xmlNode* child = element->children; child; child = child->next) {
-      const bool text = child->type == XML_TEXT_NODE || child->type == XML_CDATA_SECTION_NODE;
-      if (text && child->content && !is_blank(reinterpret_cast<const char*>(child->content))) {
-        once_.report("text " + name, doc_.warning(element, "text inside " + name + " is ignored"));
-      } else if (child->type == XML_ENTITY_REF_NODE) {
-        const std::string entity = "&" + std::string(xml::local_name(child)) + ";";
-        once_.report("entity " + entity, doc_.warning(element, "entity reference " + entity + " inside " + name +
-                                                                   " is not expanded and was ignored"));
-      }
-    }
-  }
+  void check_text(const xmlNode* element) { report_stray_text(doc_, element, once_); }
 
   // ---- model ---------------------------------------------------------------------------------
 
@@ -749,6 +751,11 @@ Result<FmlDocument> read_fml(std::string_view text, const std::string& file_name
   Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name);
   if (!doc) return doc.error();
   return FmlReader(*doc, options).run();
+}
+
+Result<EmbeddedFmlMove> read_embedded_fml_move(const xml::XmlDocument& doc, const xmlNode* move,
+                                               const FmlOptions& options) {
+  return FmlReader(doc, options).run_embedded(move);
 }
 
 Result<FmlDocument> load_fml(const std::string& path, const FmlOptions& options) {

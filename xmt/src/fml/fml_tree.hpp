@@ -14,7 +14,7 @@ namespace fapc::xmt {
 struct FmlLeaf {
   enum class Kind {
     move,    // expr, hdmv, fap, param: `target` ramps from its current value to `value`
-    normal,  // expr type="normal": every expression of the document ramps to 0
+    normal,  // expr type="normal": every expression placed before ramps to 0
     talk,    // `speech`, stretched over each run
     wait,    // nothing
   };
@@ -32,7 +32,6 @@ struct FmlTree {
 
 // Move runs are placed in order of their begin (document order on ties), each starting from the
 // value its target has just before: the latest placed clip of that target, frozen at its end.
-// `expressions` are the targets a `normal` run returns to 0.
-Timeline lower_fml(const FmlTree& tree, const Schedule& schedule, const std::vector<std::string>& expressions);
+Timeline lower_fml(const FmlTree& tree, const Schedule& schedule);
 
 }  // namespace fapc::xmt

@@ -2,6 +2,8 @@
 #include <map>
 
 #include "fapc/codec/fap_table.hpp"
+#include "fapc/transcoder/profile.hpp"
+#include "fml/embedded_fml.hpp"
 #include "fml/fml_tree.hpp"
 
 namespace fapc::xmt {
@@ -30,25 +32,35 @@ double current_value(const std::map<std::string, Clip>& latest, const std::strin
   return clip.curve.value_at(clip.local_time(std::min(t, clip.end)));
 }
 
+// One run of a talk: its visemes from the run's (possibly cut) start, cut at the run's end.
 void place_talk(const FmlLeaf& leaf, const Occurrence& run, std::vector<Clip>& out) {
-  if (leaf.speech.duration <= 0) return;
-  const double stretch = run.simple_duration / leaf.speech.duration;
-  for (const VisemeSpan& span : leaf.speech.visemes) {
-    Clip clip;
-    clip.target = "viseme." + std::string(viseme_name(span.viseme));
-    clip.begin = run.begin - run.curve_offset + span.begin * stretch;
-    clip.end = std::min(run.begin - run.curve_offset + span.end * stretch, run.end);
-    clip.begin = std::max(clip.begin, run.begin);
-    if (clip.end <= clip.begin) continue;
-    clip.curve = Curve::constant(63);
-    clip.source = leaf.where;
-    out.push_back(std::move(clip));
+  const double shift = run.begin - run.curve_offset;
+  for (Clip clip : viseme_clips(leaf.speech, run.simple_duration, leaf.where)) {
+    clip.begin = std::max(clip.begin + shift, run.begin);
+    clip.end = std::min(clip.end + shift, run.end);
+    if (clip.end > clip.begin) out.push_back(std::move(clip));
   }
 }
 
 }  // namespace
 
-Timeline lower_fml(const FmlTree& tree, const Schedule& schedule, const std::vector<std::string>& expressions) {
+std::vector<Clip> viseme_clips(const Speech& speech, double duration, const Location& where) {
+  std::vector<Clip> clips;
+  if (speech.duration <= 0) return clips;
+  const double stretch = duration / speech.duration;
+  for (const VisemeSpan& span : speech.visemes) {
+    Clip clip;
+    clip.target = "viseme." + std::string(viseme_name(span.viseme));
+    clip.begin = span.begin * stretch;
+    clip.end = span.end * stretch;
+    clip.curve = Curve::constant(63);
+    clip.source = where;
+    clips.push_back(std::move(clip));
+  }
+  return clips;
+}
+
+Timeline lower_fml(const FmlTree& tree, const Schedule& schedule) {
   std::vector<const Occurrence*> runs;
   for (const Occurrence& run : schedule.occurrences)
     if (run.end > run.begin) runs.push_back(&run);  // cut to nothing by an ancestor
@@ -66,9 +78,13 @@ Timeline lower_fml(const FmlTree& tree, const Schedule& schedule, const std::vec
       case FmlLeaf::Kind::move:
         place_move(leaf.target, leaf.value, *run, leaf.where);
         break;
-      case FmlLeaf::Kind::normal:
+      case FmlLeaf::Kind::normal: {
+        std::vector<std::string> expressions;
+        for (const auto& [target, clip] : latest)
+          if (weight_target(target) && weight_target(target)->fap == 2) expressions.push_back(target);
         for (const std::string& target : expressions) place_move(target, 0, *run, leaf.where);
         break;
+      }
       case FmlLeaf::Kind::talk:
         place_talk(leaf, *run, timeline.clips);
         break;
