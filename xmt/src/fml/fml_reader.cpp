@@ -693,7 +693,13 @@ class FmlReader {
   // ---- scheduling ----------------------------------------------------------------------------
 
   // Runs the tree would make (repeats of repeats, indefinite ones over --duration) against
-  // kMaxNodes, before the scheduler makes them. `shortest` is a lower bound of a node's length.
+  // kMaxNodes, before the scheduler makes them. `shortest` is a lower bound of a node's active
+  // length, so that available / (one iteration) bounds an indefinite repeat's iterations. It
+  // counts the children's begin offsets, takes an end as given and is 0 for an indefinite
+  // repeat (an ancestor or a sibling's end may cut it anywhere). A lower bound of 0 means one
+  // iteration: its length is 0 (not repeated) or the whole limit. (An earlier estimate floored
+  // iterations at 1 ms and ignored offsets and ends: <seq repeat="indefinite"><par
+  // end="0.000001">... scheduled millions of runs; tests/fuzz/corpus/fml_reader/runs-*.fml.)
   double runs(const ScheduleNode& node, double available, double& shortest) const {
     const Timing& t = node.timing;
     double own = 0;
@@ -709,12 +715,13 @@ class FmlReader {
       for (const ScheduleNode& child : node.children) {
         double child_shortest = 0;
         children_runs += runs(child, inner, child_shortest);
-        own = node.kind == Kind::sequence ? own + child_shortest : std::max(own, child_shortest);
+        const double reach = child.timing.offset + child_shortest;
+        own = node.kind == Kind::sequence ? own + reach : std::max(own, reach);
       }
       if (t.duration) own = *t.duration;
     }
-    const double repeats = t.repeat_indefinite ? available / std::max(own, 1e-3) : std::max(t.repeat, 1.0);
-    shortest = t.repeat_indefinite ? own : own * t.repeat;
+    const double repeats = !t.repeat_indefinite ? std::max(t.repeat, 1.0) : own > 0 ? available / own : 1.0;
+    shortest = t.end ? std::max(0.0, *t.end - t.offset) : t.repeat_indefinite ? 0 : own * t.repeat;
     return children_runs * std::max(repeats, 1.0);
   }
 
