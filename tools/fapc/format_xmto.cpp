@@ -51,6 +51,7 @@ Result<xmt::XmtoDocument> read_document(const std::string& path, const ConvertOp
   xmt::XmtoOptions xmto;
   xmto.fml.events = options.events;
   xmto.fml.profile = &profile;
+  xmto.fml.visemes_per_second = options.visemes_per_second;
   xmto.including = documents_being_read();
   xmto.duration = options.duration;
   xmto.load_animation = [&options](const std::string& included, const Location& where) {
