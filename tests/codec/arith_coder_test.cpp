@@ -8,6 +8,7 @@
 
 #include "fba/arith_decoder.hpp"
 #include "fba/arith_encoder.hpp"
+#include "fba/reciprocal.hpp"
 
 namespace fapc::fba {
 namespace {
@@ -124,6 +125,34 @@ TEST(AdaptiveModel, HalvesRoundingUpWhenTheTotalReachesTheLimit) {
   EXPECT_EQ(m.cum(2), 1);
   EXPECT_EQ(m.cum(1), 8192);
   EXPECT_EQ(m.cum(0), 8194);
+}
+
+TEST(AdaptiveModel, UpdatesAcrossWholeVectorsLeaveLaterCountsAlone) {
+  // 20 symbols: cum spans three vectors of eight; counting symbol 9 touches cum[0..9] only.
+  AdaptiveModel m;
+  m.reset(20);
+  m.update(9);
+  for (int j = 0; j <= 9; ++j) EXPECT_EQ(m.cum(j), 21 - j) << j;
+  for (int j = 10; j <= 20; ++j) EXPECT_EQ(m.cum(j), 20 - j) << j;
+  for (int t = 0; t < m.total(); ++t) {
+    const int s = m.find(t);
+    EXPECT_TRUE(m.cum(s + 1) <= t && t < m.cum(s)) << t;
+  }
+}
+
+TEST(Reciprocal, DividesLikeTheDivideInstructionForEveryTotal) {
+  // Checked against the compiler's division: every divisor, numerators at and around each of
+  // its multiples up to the largest the coder forms, plus random ones.
+  std::mt19937 rng(17);
+  for (std::int32_t d = 1; d <= kMaxFrequency; ++d) {
+    const std::int32_t largest = (1 << 30) - 1;
+    for (const std::int32_t n : {0, 1, d - 1, d, d + 1, 65536 * d - 1, 65536 * d, largest - 1, largest})
+      ASSERT_EQ(divide_by_total(n, d), n / d) << n << " / " << d;
+    for (int i = 0; i < 8; ++i) {
+      const auto n = static_cast<std::int32_t>(rng() % (1u << 30));
+      ASSERT_EQ(divide_by_total(n, d), n / d) << n << " / " << d;
+    }
+  }
 }
 
 TEST(ArithCoder, EmptySegmentCostsTheTwoBitsZeroOne) {

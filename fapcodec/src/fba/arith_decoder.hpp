@@ -1,16 +1,17 @@
 // The decoder half of the FBA arithmetic coder (fba-bitstream.md sections 6.4 to 6.6). It reads
 // 16 bits ahead; at the end of a segment it puts the reader back just after the encoder's flush
-// bits, robustly: it remembers where each of the last 16 coded bits ended in the raw stream and
-// returns to the end of coded bit L - 14 (L = coded bits read), so a stuffing bit inside the
-// look-ahead cannot desynchronise it (the reference's fixed 14-bit step back can, D9).
-// Private to fapcodec.
+// bits, robustly: it knows where every stuffing bit of the segment was, so it returns to the end
+// of coded bit L - 14 (L = coded bits read) even when a stuffing bit lies inside the look-ahead
+// (the reference's fixed 14-bit step back cannot, D9). Private to fapcodec.
 #pragma once
 
-#include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "fba/adaptive_model.hpp"
+#include "fba/reciprocal.hpp"
 #include "fba/bit_reader.hpp"
 
 namespace fapc::fba {
@@ -23,8 +24,8 @@ class ArithDecoder {
   void start();
 
   int decode(const AdaptiveModel& model) {
-    const std::int32_t t = target(model.total());
-    const int s = model.find(t);
+    // The target ((code - low + 1) * total - 1) / length of section 6.5, found without dividing.
+    const int s = model.find_scaled((code_ - low_ + 1) * model.total(), high_ - low_ + 1);
     narrow(model.cum(s), model.cum(s + 1), model.total());
     return s;
   }
@@ -43,53 +44,48 @@ class ArithDecoder {
 
  private:
   // code stays inside [low, high] for any input bits (t < cum[s] bounds code from above, cum[s+1]
-  // <= t from below, and renormalising doubles all three), so 0 <= t < total always holds.
+  // <= t from below, and renormalising maps all three alike), so 0 <= t < total always holds.
   std::int32_t target(std::int32_t total) const {
     const std::int32_t length = high_ - low_ + 1;
     return ((code_ - low_ + 1) * total - 1) / length;
   }
+  // The interval of the decoded symbol, then renormalisation (section 6.5) done in two strides
+  // rather than bit by bit. While low and high share their top bit, each step drops it: that is
+  // `a` steps, the run of equal leading bits. After those, low starts 0 and high 1, so only the
+  // middle-half step can follow, which drops bit 14 of each while low has it 1 and high 0: `b`
+  // steps. No step of the first kind can follow one of the second. `code` goes through the same
+  // steps, taking in one coded bit per step: a + b bits, read at once.
   void narrow(std::int32_t high_count, std::int32_t low_count, std::int32_t total) {
     const std::int32_t length = high_ - low_ + 1;
-    high_ = low_ - 1 + (length * high_count) / total;
-    low_ = low_ + (length * low_count) / total;
-    for (;;) {
-      if (high_ < kCoderHalf) {
-        // nothing to subtract
-      } else if (low_ >= kCoderHalf) {
-        code_ -= kCoderHalf;
-        low_ -= kCoderHalf;
-        high_ -= kCoderHalf;
-      } else if (low_ >= kCoderQ1 && high_ < kCoderQ3) {
-        code_ -= kCoderQ1;
-        low_ -= kCoderQ1;
-        high_ -= kCoderQ1;
-      } else {
-        break;
-      }
-      low_ = 2 * low_;
-      high_ = 2 * high_ + 1;
-      code_ = 2 * code_ + get_coded_bit();
-    }
+    auto high = static_cast<std::uint32_t>(low_ - 1 + divide_by_total(length * high_count, total));
+    auto low = static_cast<std::uint32_t>(low_ + divide_by_total(length * low_count, total));
+    const int a = std::countl_zero(static_cast<std::uint16_t>(low ^ high));
+    low = (low << a) & 0xFFFF;
+    high = ((high << a) | ((1u << a) - 1)) & 0xFFFF;
+    const int b = std::countl_one(static_cast<std::uint16_t>((low & ~high) << 1));
+    const std::int32_t scale = 1 << b;
+    low_ = (static_cast<std::int32_t>(low) - kCoderHalf) * scale + kCoderHalf;
+    high_ = (static_cast<std::int32_t>(high) - kCoderHalf) * scale + kCoderHalf + scale - 1;
+    const std::uint32_t bits = get_coded_bits(a + b);
+    const auto code = static_cast<std::int32_t>(((static_cast<std::uint32_t>(code_) << a) | (bits >> b)) & 0xFFFF);
+    code_ = (code - kCoderHalf) * scale + kCoderHalf + static_cast<std::int32_t>(bits & static_cast<std::uint32_t>(scale - 1));
   }
-  int get_coded_bit() {
-    int bit = in_.read_bit();
-    if (zero_run_ == kStuffAfterZeros) {
-      if (bit == 1) {
-        bit = in_.read_bit();  // that was a stuffing bit: the run starts again
-        zero_run_ = 0;
-      } else {
-        // 23 zeros: legal only in the look-ahead past the flush, which is judged in finish().
-        if (bad_coded_bit_ == 0) {
-          bad_coded_bit_ = coded_bits_ + 1;
-          bad_position_ = in_.position();
-        }
-      }
+  // `count` (0..31) coded bits as a number, first bit highest, stuffing bits removed.
+  std::uint32_t get_coded_bits(int count) {
+    // A stuffing bit can only come where 22 zeros precede it; short of that, the raw bits are
+    // the coded bits.
+    if (zero_run_ + count <= kStuffAfterZeros) {
+      const std::uint32_t bits = in_.read_bits(count);
+      zero_run_ = bits == 0 ? zero_run_ + count : std::countr_zero(bits);
+      coded_bits_ += static_cast<std::uint64_t>(count);
+      return bits;
     }
-    zero_run_ = bit == 0 ? zero_run_ + 1 : 0;
-    ++coded_bits_;
-    coded_bit_ends_[coded_bits_ & 15] = in_.position();
-    return bit;
+    std::uint32_t bits = 0;
+    for (int i = 0; i < count; ++i) bits = (bits << 1) | static_cast<std::uint32_t>(get_coded_bit());
+    return bits;
   }
+  int get_coded_bit();
+
   static constexpr int kStuffAfterZeros = 22;
   static constexpr int kLookAheadBits = 14;
 
@@ -98,8 +94,10 @@ class ArithDecoder {
   std::int32_t high_ = kCoderTop;
   std::int32_t code_ = 0;
   int zero_run_ = 0;
-  std::uint64_t coded_bits_ = 0;  // L: coded bits read in this segment
-  std::array<std::size_t, 16> coded_bit_ends_{};
+  std::size_t segment_start_ = 0;  // raw bit position of the segment's first bit
+  std::uint64_t coded_bits_ = 0;   // L: coded bits read in this segment
+  // For each stuffing bit removed in this segment, how many coded bits came before it.
+  std::vector<std::uint64_t> stuffing_after_;
   std::uint64_t bad_coded_bit_ = 0;  // first coded bit that broke a rule (1-based), 0 if none
   std::size_t bad_position_ = 0;
 };

@@ -3,9 +3,12 @@
 // that a segment never emulates a start code. Private to fapcodec.
 #pragma once
 
+#include <algorithm>
+#include <bit>
 #include <cstdint>
 
 #include "fba/adaptive_model.hpp"
+#include "fba/reciprocal.hpp"
 #include "fba/bit_writer.hpp"
 
 namespace fapc::fba {
@@ -16,26 +19,28 @@ class ArithEncoder {
 
   // Codes the sub-interval [low_count, high_count) of `total`. Invariant between calls:
   // 0 <= low <= high <= 65535 and high - low >= 16384 (the interval straddles a quarter).
+  // Renormalisation goes in two strides, as in the decoder (arith_decoder.hpp): first the `a`
+  // leading bits low and high share, which go out (the first of them followed by the pending
+  // opposite bits), then `b` middle-half steps, which only add to the pending count.
   void encode(std::int32_t high_count, std::int32_t low_count, std::int32_t total) {
     const std::int32_t length = high_ - low_ + 1;
-    high_ = low_ - 1 + (length * high_count) / total;
-    low_ = low_ + (length * low_count) / total;
-    for (;;) {
-      if (high_ < kCoderHalf) {
-        emit(0);
-      } else if (low_ >= kCoderHalf) {
-        emit(1);
-        low_ -= kCoderHalf;
-        high_ -= kCoderHalf;
-      } else if (low_ >= kCoderQ1 && high_ < kCoderQ3) {
-        ++pending_;
-        low_ -= kCoderQ1;
-        high_ -= kCoderQ1;
-      } else {
-        break;
-      }
-      low_ = 2 * low_;
-      high_ = 2 * high_ + 1;
+    high_ = low_ - 1 + divide_by_total(length * high_count, total);
+    low_ = low_ + divide_by_total(length * low_count, total);
+    const int a = std::countl_zero(static_cast<std::uint16_t>(low_ ^ high_));
+    if (a > 0) {
+      const auto low = static_cast<std::uint32_t>(low_);
+      const std::uint32_t shared = low >> (16 - a);  // the top a bits
+      emit(static_cast<int>(shared >> (a - 1)));
+      put_coded_bits(shared, a - 1);
+      low_ = static_cast<std::int32_t>((low << a) & 0xFFFF);
+      high_ = static_cast<std::int32_t>(((static_cast<std::uint32_t>(high_) << a) | ((1u << a) - 1)) & 0xFFFF);
+    }
+    const int b = std::countl_one(static_cast<std::uint16_t>((low_ & ~high_) << 1));
+    if (b > 0) {
+      const std::int32_t scale = 1 << b;
+      pending_ += b;
+      low_ = (low_ - kCoderHalf) * scale + kCoderHalf;
+      high_ = (high_ - kCoderHalf) * scale + kCoderHalf + scale - 1;
     }
   }
   void encode(const AdaptiveModel& model, int symbol) {
@@ -50,9 +55,24 @@ class ArithEncoder {
   void flush();
 
  private:
+  // One bit, then the pending bits, all of the opposite value.
   void emit(int bit) {
-    put_coded_bit(bit);
-    for (; pending_ > 0; --pending_) put_coded_bit(1 - bit);
+    put_coded_bits(static_cast<std::uint32_t>(bit), 1);
+    const std::uint32_t opposite = bit ? 0u : ~0u;
+    for (; pending_ > 0; pending_ -= std::min(pending_, 16)) put_coded_bits(opposite, std::min(pending_, 16));
+  }
+  // The low `count` (0..16) bits of `bits`, first bit highest, with a stuffing '1' after every 22
+  // zeros (section 6.4).
+  void put_coded_bits(std::uint32_t bits, int count) {
+    if (count == 0) return;
+    bits &= (1u << count) - 1;
+    // Short of 22 zeros in a row nothing needs stuffing.
+    if (zero_run_ + count <= kStuffAfterZeros) {
+      out_.put_bits(bits, count);
+      zero_run_ = bits == 0 ? zero_run_ + count : std::countr_zero(bits);
+      return;
+    }
+    for (int i = count - 1; i >= 0; --i) put_coded_bit(static_cast<int>((bits >> i) & 1));
   }
   void put_coded_bit(int bit) {
     if (zero_run_ == kStuffAfterZeros) {

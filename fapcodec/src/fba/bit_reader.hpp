@@ -5,8 +5,10 @@
 // it rewinds (fba-bitstream.md section 6.6). Private to fapcodec.
 #pragma once
 
+#include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <span>
 
 namespace fapc::fba {
@@ -23,13 +25,15 @@ class BitReader {
   }
   // count is 0..32.
   std::uint32_t read_bits(int count) {
-    std::uint32_t value = 0;
-    for (int i = 0; i < count; ++i) value = (value << 1) | static_cast<std::uint32_t>(read_bit());
+    const std::uint32_t value = peek_bits(count);
+    position_ += static_cast<std::size_t>(count);
     return value;
   }
   std::uint32_t peek_bits(int count) const {
-    BitReader copy = *this;
-    return copy.read_bits(count);
+    if (count == 0) return 0;
+    // The 64 bits from the byte holding the next bit: at most 7 are already used, so 32 remain.
+    const std::uint64_t window = load_window(position_ >> 3) << (position_ & 7);
+    return static_cast<std::uint32_t>(window >> (64 - count));
   }
 
   std::size_t position() const { return position_; }  // in bits from the start
@@ -43,6 +47,17 @@ class BitReader {
   std::int64_t byte_offset() const { return static_cast<std::int64_t>(position_ / 8); }
 
  private:
+  // Eight bytes from `byte` on, big-endian, zeros past the end.
+  std::uint64_t load_window(std::size_t byte) const {
+    std::uint64_t window = 0;
+    if (byte + 8 <= data_.size()) {
+      std::memcpy(&window, data_.data() + byte, sizeof window);
+      return std::endian::native == std::endian::big ? window : __builtin_bswap64(window);
+    }
+    for (std::size_t i = 0; i < 8; ++i) window = (window << 8) | (byte + i < data_.size() ? data_[byte + i] : 0u);
+    return window;
+  }
+
   std::span<const std::uint8_t> data_;
   std::size_t size_bits_;
   std::size_t position_ = 0;

@@ -1,5 +1,6 @@
 // Writes bits most significant first into a growing byte buffer: the output side of the FBA
-// bitstream (fba-bitstream.md section 0.2). Private to fapcodec.
+// bitstream (fba-bitstream.md section 0.2). Bits gather in a 64-bit word and go out four bytes
+// at a time. Private to fapcodec.
 #pragma once
 
 #include <cstddef>
@@ -12,31 +13,33 @@ class BitWriter {
  public:
   // The low `count` bits of `value`, most significant first; count is 0..32.
   void put_bits(std::uint32_t value, int count) {
-    for (int i = count - 1; i >= 0; --i) put_bit(static_cast<int>((value >> i) & 1u));
-  }
-  void put_bit(int bit) {
-    current_ = static_cast<std::uint8_t>((current_ << 1) | (bit & 1));
-    if (++used_ == 8) {
-      bytes_.push_back(current_);
-      current_ = 0;
-      used_ = 0;
+    if (count == 0) return;
+    pending_ = (pending_ << count) | (value & (~std::uint32_t{0} >> (32 - count)));
+    used_ += count;  // at most 31 + 32
+    if (used_ >= 32) {
+      used_ -= 32;
+      const auto word = static_cast<std::uint32_t>(pending_ >> used_);
+      const std::uint8_t bytes[4] = {static_cast<std::uint8_t>(word >> 24), static_cast<std::uint8_t>(word >> 16),
+                                     static_cast<std::uint8_t>(word >> 8), static_cast<std::uint8_t>(word)};
+      bytes_.insert(bytes_.end(), bytes, bytes + 4);
     }
   }
+  void put_bit(int bit) { put_bits(static_cast<std::uint32_t>(bit & 1), 1); }
 
   // next_start_code(): a '0' then '1's up to the byte boundary, or a whole 0x7F when the position
   // is already aligned (section 5.9). Always 1 to 8 bits.
   void put_start_code_stuffing();
 
   std::size_t bit_count() const { return bytes_.size() * 8 + static_cast<std::size_t>(used_); }
-  bool aligned() const { return used_ == 0; }
+  bool aligned() const { return used_ % 8 == 0; }
 
   // The bytes written so far; a partial last byte is padded with zeros (callers align first).
   std::vector<std::uint8_t> take();
 
  private:
   std::vector<std::uint8_t> bytes_;
-  std::uint8_t current_ = 0;
-  int used_ = 0;  // bits in current_
+  std::uint64_t pending_ = 0;  // its last `used_` bits (fewer than 32 between calls) are unwritten
+  int used_ = 0;
 };
 
 }  // namespace fapc::fba

@@ -107,18 +107,16 @@ Status FaceReader::read_values(bool intra, FapFrame& frame) {
   const std::int64_t segment_byte = c_.in.byte_offset();
   c_.coder.start();
   bool overflow = false;
-  for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap) {
-    const std::size_t i = FaceState::index(fap);
-    if (!state_.mask.test(i)) continue;
+  for (const std::size_t i : state_.coded) {
     std::int64_t& value = state_.previous[i];
     if (intra) {
-      const std::int32_t low = state_.intra_min(fap);
-      value = dequantise(c_.coder.decode_uniform(state_.intra_max(fap) - low + 1) + low, state_.step(fap));
+      const std::int32_t low = state_.range[kIntraMin][i];
+      value = dequantise(c_.coder.decode_uniform(state_.range[kIntraMax][i] - low + 1) + low, state_.steps[i]);
     } else {
       AdaptiveModel& model = state_.pred_models[i];
       const int s = c_.coder.decode(model);
       model.update(s);
-      value += dequantise(s + state_.pred_min(fap), state_.step(fap));
+      value += dequantise(s + state_.range[kPredMin][i], state_.steps[i]);
     }
     // Predictions accumulate; only a corrupt or hostile stream walks them out of 32 bits.
     if (value > std::numeric_limits<std::int32_t>::max() || value < std::numeric_limits<std::int32_t>::min()) {

@@ -29,8 +29,13 @@ void FaceState::set_range(RangeList list, int fap, int code) {
 }
 
 void FaceState::reset_models() {
-  for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap)
-    if (mask.test(index(fap))) pred_models[index(fap)].reset(pred_max(fap) - pred_min(fap) + 1);
+  coded.clear();
+  for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap) {
+    steps[index(fap)] = step(fap);
+    if (!mask.test(index(fap))) continue;
+    coded.push_back(static_cast<std::uint8_t>(index(fap)));
+    pred_models[index(fap)].reset(pred_max(fap) - pred_min(fap) + 1);
+  }
   for (int field = 0; field < kCodedFieldCount; ++field) {
     const int fap = field < kVisemeFields ? 1 : 2;
     if (mask.test(index(fap)))

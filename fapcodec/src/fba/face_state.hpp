@@ -8,6 +8,7 @@
 #include <array>
 #include <bitset>
 #include <cstdint>
+#include <vector>
 
 #include "fapc/codec/fap_table.hpp"
 #include "fba/adaptive_model.hpp"
@@ -29,11 +30,15 @@ struct FaceState {
   std::array<AdaptiveModel, kCodedFieldCount> field_pred_models;
   std::array<std::int64_t, kFapCount> previous{};                // reconstructed values
   std::array<std::int32_t, kCodedFieldCount> previous_fields{};  // reconstructed fields
+  // Set with the models at every intra plane, for the planes' inner loops: the masked FAPs
+  // 3..68 (index fap - 1, ascending) and the quantiser step of every FAP.
+  std::vector<std::uint8_t> coded;
+  std::array<std::int64_t, kFapCount> steps{};
 
   // fap_quant as the range lists divide by it (1 when fap_quant is 0).
   int range_scaler() const { return fap_quant == 0 ? 1 : fap_quant; }
   std::int64_t step(int fap) const {
-    return static_cast<std::int64_t>(fap_table()[static_cast<std::size_t>(fap - 1)].quant_step) * fap_quant;
+    return static_cast<std::int64_t>(fap_table()[index(fap)].quant_step) * fap_quant;
   }
   std::int32_t intra_min(int fap) const { return range[kIntraMin][index(fap)]; }
   std::int32_t intra_max(int fap) const { return range[kIntraMax][index(fap)]; }
@@ -50,7 +55,8 @@ struct FaceState {
   void set_default_ranges();
   // One entry of a range list: v * 60 / scaler, negated for the minimum lists.
   void set_range(RangeList list, int fap, int code);
-  // At every intra plane, after its ranges: fresh P models for the masked FAPs and the fields.
+  // At every intra plane, after its ranges: fresh P models for the masked FAPs and the fields,
+  // and the coded list and steps.
   void reset_models();
 
   static std::size_t index(int fap) { return static_cast<std::size_t>(fap - 1); }

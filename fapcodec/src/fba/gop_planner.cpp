@@ -34,8 +34,9 @@ bool GopPlanner::needs_intra(std::size_t k, std::size_t gop_first) const {
 
 Status GopPlanner::quantise_intra(std::size_t k, Gop& gop) {
   const FapFrame& frame = frames_[k];
-  for (const int fap : gop.faps) {
-    const std::int64_t step = quant_.step(fap);
+  for (std::size_t j = 0; j < gop.faps.size(); ++j) {
+    const int fap = gop.faps[j];
+    const std::int64_t step = steps_[j];
     const std::int64_t q = quantise(frame.value(fap), step);
     if (q > limit_ || q < -limit_) {
       const FapInfo& info = fap_table()[FaceState::index(fap)];
@@ -47,7 +48,7 @@ Status GopPlanner::quantise_intra(std::size_t k, Gop& gop) {
                                         " at fap_quant " + std::to_string(options_.quant) + ")");
     }
     gop.symbols.push_back(static_cast<std::int16_t>(q));
-    recon_[FaceState::index(fap)] = dequantise(q, step);
+    levels_[FaceState::index(fap)] = q;
   }
   const auto fields = coded_fields(frame);
   for (int field = 0; field < kCodedFieldCount; ++field) {
@@ -66,24 +67,34 @@ Status GopPlanner::quantise_intra(std::size_t k, Gop& gop) {
 bool GopPlanner::quantise_predictive(std::size_t k, Gop& gop) {
   const FapFrame& frame = frames_[k];
   scratch_.clear();
-  auto recon = recon_;
-  for (const int fap : gop.faps) {
-    const std::int64_t step = quant_.step(fap);
-    const std::size_t i = FaceState::index(fap);
-    // Reconstructions stay on the lattice step * Z, so the intra-style level of the value gives
-    // the symbol that reaches it exactly. Whether a range can carry the frame is judged on that
-    // symbol: it is what re-encoding the decoded frames sees, so the same frames become intra
-    // planes again. Quantising the difference (the reference's rule) differs from it only at an
-    // exact tie, where it picks the smaller difference; both stay within half a step.
-    const std::int64_t value = frame.value(fap);
-    const std::int64_t exact = step == 0 ? value - recon[i] : quantise(value, step) - recon[i] / step;
-    if (exact > limit_ || exact < -limit_) return false;
-    std::int64_t q = quantise(value - recon[i], step);
-    if (q > limit_ || q < -limit_) q = exact;
+  const auto& levels = levels_;  // changed only once the whole frame fits
+  for (std::size_t j = 0; j < gop.faps.size(); ++j) {
+    const std::size_t i = FaceState::index(gop.faps[j]);
+    const std::int64_t step = steps_[j];
+    const std::int64_t value = frame.values[i];
+    // Reconstructions stay on the lattice step * Z (the level is the multiple). Every lattice
+    // point within half a step of the value is a correct reconstruction: one, or two when the
+    // value lies exactly half way (even steps only). Of two, the planner takes the difference
+    // this group has coded more often so far, which the adaptive model codes in fewer bits; on a
+    // tie, the reference's rule: the quantised difference, which rounds half away from zero (half
+    // a step down to 0). Decoded frames sit on the lattice and leave no choice, so re-encoding
+    // them takes the same path. Whether a range can carry the frame is judged on these
+    // differences too.
+    const std::int64_t level = step <= 1 ? value : quantise(value, step);
+    std::int64_t q = level - levels[i];
+    if (step % 2 == 0 && step != 0 && 2 * std::llabs(value - level * step) == step) {
+      std::int64_t other = (value > level * step ? level + 1 : level - 1) - levels[i];
+      if (quantise(value - levels[i] * step, step) == other) std::swap(q, other);
+      if (history_.count(j, other) > history_.count(j, q)) std::swap(q, other);
+      if (!within(q)) q = other;
+    }
+    if (!within(q)) return false;
     scratch_.push_back(static_cast<std::int16_t>(q));
-    recon[i] += dequantise(q, step);
   }
-  recon_ = recon;
+  for (std::size_t j = 0; j < scratch_.size(); ++j) {
+    levels_[FaceState::index(gop.faps[j])] += scratch_[j];
+    history_.add(j, scratch_[j]);
+  }
   gop.symbols.insert(gop.symbols.end(), scratch_.begin(), scratch_.end());
   const auto fields = coded_fields(frame);
   for (int field = 0; field < kCodedFieldCount; ++field) {
@@ -136,6 +147,9 @@ Result<Gop> GopPlanner::next() {
   gop.mask = frames_[next_].mask;
   for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap)
     if (gop.mask.test(FaceState::index(fap))) gop.faps.push_back(fap);
+  steps_.clear();
+  for (const int fap : gop.faps) steps_.push_back(quant_.step(fap));
+  history_.clear(gop.faps.size());
   if (auto status = quantise_intra(next_, gop); !status) return status.error();
   std::size_t k = next_ + 1;
   while (k < frames_.size() && !needs_intra(k, gop.first) && quantise_predictive(k, gop)) ++k;

@@ -29,6 +29,24 @@ struct Gop {
   RangeCodes codes{};  // the four range lists the intra plane signals
 };
 
+// How often each FAP of a group has coded each small difference, to choose between two equally
+// good reconstructions. Differences beyond +-64 count as never seen.
+class DifferenceCounts {
+ public:
+  void clear(std::size_t faps) { counts_.assign(faps * kWidth, 0); }
+  std::uint32_t count(std::size_t j, std::int64_t q) const {
+    return q >= -kSpan && q < kSpan ? counts_[j * kWidth + static_cast<std::size_t>(q + kSpan)] : 0;
+  }
+  void add(std::size_t j, std::int64_t q) {
+    if (q >= -kSpan && q < kSpan) ++counts_[j * kWidth + static_cast<std::size_t>(q + kSpan)];
+  }
+
+ private:
+  static constexpr std::int64_t kSpan = 64;
+  static constexpr std::size_t kWidth = 2 * kSpan;
+  std::vector<std::uint32_t> counts_;  // [fap position in the group][difference + kSpan]
+};
+
 class GopPlanner {
  public:
   GopPlanner(const FapSequence& sequence, const FbaEncodeOptions& options);
@@ -42,6 +60,7 @@ class GopPlanner {
   bool needs_intra(std::size_t k, std::size_t gop_first) const;
   Status quantise_intra(std::size_t k, Gop& gop);
   bool quantise_predictive(std::size_t k, Gop& gop);  // false: a difference needs a wider range
+  bool within(std::int64_t q) const { return q <= limit_ && q >= -limit_; }
   void fit_ranges(Gop& gop) const;
 
   const std::vector<FapFrame>& frames_;
@@ -49,9 +68,11 @@ class GopPlanner {
   FaceState quant_;  // only fap_quant, steps and field limits are used
   std::int32_t limit_;  // the largest |q| any range can carry: 31 * 60 / scaler
   std::size_t next_ = 0;
-  std::array<std::int64_t, kFapCount> recon_{};
+  std::array<std::int64_t, kFapCount> levels_{};  // reconstructions as multiples of their step
+  std::vector<std::int64_t> steps_;                // of the group's FAPs, in coding order
   std::array<std::int32_t, kCodedFieldCount> recon_fields_{};
   std::vector<std::int16_t> scratch_;
+  DifferenceCounts history_;  // of the current group
 };
 
 }  // namespace fapc::fba
