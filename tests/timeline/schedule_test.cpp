@@ -127,6 +127,18 @@ TEST(Schedule, AGroupRepeatingIndefinitelyWithNothingToEndItIsAnError) {
   EXPECT_EQ(s.error().message, "repeats indefinitely and nothing around it ends: give it or a parent an end");
 }
 
+TEST(Schedule, MoreRunsThanTheLimitIsAnErrorAtTheRepeatingNode) {
+  // A 1 s iteration repeated beside a 100 s sibling: 100 runs, over a limit of 10.
+  Timing forever;
+  forever.repeat_indefinite = true;
+  ScheduleOptions options;
+  options.max_runs = 10;
+  const auto s = schedule(group(Kind::parallel, {leaf(0, 100), group(Kind::sequence, {leaf(1, 1)}, forever)}), options);
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.error().where.line, 100);
+  EXPECT_EQ(s.error().message, "repeats to more than 10 runs: fapc refuses to schedule so many");
+}
+
 TEST(Schedule, GroupDurationCutsItsChildren) {
   Timing three;
   three.duration = 3;

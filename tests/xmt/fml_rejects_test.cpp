@@ -83,6 +83,11 @@ const std::map<std::string, std::string>& expected_errors() {
        "recursive-template.fml:4:24: error: template 'a' uses itself: a -> b -> a\n"
        "    <template name=\"b\"><behavior name=\"a\"/></template>\n"
        "                       ^"},
+      {"repeats-beside-a-long-sibling.fml",
+       "repeats-beside-a-long-sibling.fml:5:7: error: seq repeats to more than 2000000 runs: fapc refuses to "
+       "schedule so many\n"
+       "      <seq repeat=\"indefinite\"><wait dur=\"100\"/></seq>\n"
+       "      ^"},
       {"talk-empty.fml",
        "talk-empty.fml:2:18: error: talk needs text to say or a phoneme file (file=\"x.pho\")\n"
        "  <story><action><talk begin=\"1s\"/></action></story>\n"

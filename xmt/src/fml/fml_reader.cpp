@@ -149,6 +149,7 @@ class FmlReader {
     if (error_) return *error_;
     if (!story) return doc_.error(root, "fml has no story: nothing to animate");
     check_given_events();
+    check_attributes(story, {});
     tree_.root = container(story, Kind::sequence, Timing{});
     if (error_) return *error_;
     if (Status s = check_runs(); !s) return s.error();
@@ -479,6 +480,9 @@ class FmlReader {
       fail(doc_.error(node, "behavior needs name, the template it plays"));
       return std::nullopt;
     }
+    for (const xmlNode* child : xml::element_children(node)) {
+      unknown(child, "inside behavior is ignored: a behavior plays its template, which holds the content");
+    }
     const std::string t = trim(*name);
     const auto found = templates_.find(t);
     if (found == templates_.end()) {
@@ -637,6 +641,9 @@ class FmlReader {
 
   std::optional<ScheduleNode> talk(const xmlNode* node, const FmlTiming& timing) {
     check_attributes(node, kTiming, {"file", "ev_val", "event_value"});
+    for (const xmlNode* child : xml::element_children(node)) {
+      unknown(child, "inside talk is skipped with the text in it: talk says only its own text");
+    }
     const std::string text = trim(xml::text_content(node));
     const auto file = xml::attribute(node, "file");
     if (file && !text.empty()) {
@@ -737,8 +744,12 @@ class FmlReader {
     if (const auto found = element_at_.find({d.where.line, d.where.column}); found != element_at_.end()) {
       constexpr std::string_view kAction = "the action ";
       if (d.message.starts_with(kAction)) d.message.erase(0, kAction.size());
-      d.message = found->second + ' ' + d.message + " (repeat=\"indefinite\" and unset loop events need an end: "
-                                                   "a container's duration or end, or --duration)";
+      const bool endless = d.message.find("ends") != std::string::npos || d.message.find("no duration") != std::string::npos;
+      d.message = found->second + ' ' + d.message;
+      if (endless) {
+        d.message += " (repeat=\"indefinite\" and unset loop events need an end: a container's duration or end, "
+                     "or --duration)";
+      }
     }
     if (d.where.file == doc_.file() && d.source_line.empty()) d.source_line = doc_.line_text(d.where.line);
     return d;
