@@ -117,6 +117,28 @@ TEST(Schedule, IndefiniteRepeatFillsTheParentsDuration) {
   EXPECT_EQ(spans(*s), (Spans{{0, 0, 2}, {0, 2, 4}, {0, 4, 5}}));
 }
 
+TEST(Schedule, AGroupRepeatingIndefinitelyWithNothingToEndItIsAnError) {
+  // Found by the FML reader's tests: this used to lay out iterations forever.
+  Timing forever;
+  forever.repeat_indefinite = true;
+  const auto s = schedule(group(Kind::sequence, {group(Kind::sequence, {leaf(0, 1)}, forever)}));
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.error().where.line, 100);
+  EXPECT_EQ(s.error().message, "repeats indefinitely and nothing around it ends: give it or a parent an end");
+}
+
+TEST(Schedule, MoreRunsThanTheLimitIsAnErrorAtTheRepeatingNode) {
+  // A 1 s iteration repeated beside a 100 s sibling: 100 runs, over a limit of 10.
+  Timing forever;
+  forever.repeat_indefinite = true;
+  ScheduleOptions options;
+  options.max_runs = 10;
+  const auto s = schedule(group(Kind::parallel, {leaf(0, 100), group(Kind::sequence, {leaf(1, 1)}, forever)}), options);
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.error().where.line, 100);
+  EXPECT_EQ(s.error().message, "repeats to more than 10 runs: fapc refuses to schedule so many");
+}
+
 TEST(Schedule, GroupDurationCutsItsChildren) {
   Timing three;
   three.duration = 3;

@@ -97,5 +97,23 @@ TEST(OutsideReaders, AcceptEveryMp4InTheCorpus) {
     if (path.find("-bad/") == std::string::npos) check_with_outside_readers(path);
 }
 
+TEST(OutsideReaders, AcceptTheMp4OfEveryBundledExample) {
+  // The README's main job writes these: every example input, whatever its kind, as .mp4.
+  const fs::path folder = fs::temp_directory_path() / ("fapc-examples-" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  int checked = 0;
+  for (const std::string& input : fapc::test::files_under(fapc::test::corpus_dir() + "/examples", "")) {
+    const std::string extension = fs::path(input).extension().string();
+    if (extension == ".md" || extension == ".xpr" || extension == ".pho") continue;
+    const std::string output = (folder / (std::to_string(checked) + ".mp4")).string();
+    const auto run = fapc::test::run_fapc("compile '" + input + "' -o '" + output + "' --verify");
+    ASSERT_EQ(run.exit_status, 0) << input << ": " << run.err;
+    check_with_outside_readers(output);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 14);
+  fs::remove_all(folder);
+}
+
 }  // namespace
 }  // namespace fapc::xmt

@@ -87,11 +87,11 @@ TEST(XmlValidation, MalformedXmlHasALineAndColumn) {
 }
 
 TEST(XmlValidation, DocumentsWithoutASchemaAreAnError) {
-  auto report = validate_xml("<?xml version=\"1.0\"?>\n<fml/>\n", "x.fml");
+  auto report = validate_xml("<?xml version=\"1.0\"?>\n<bml/>\n", "x.bml");
   ASSERT_FALSE(report.ok());
   EXPECT_EQ(format_diagnostic(report.error()),
-            "x.fml:1:1: error: no schema for root element 'fml'; fapc validates XMT-A "
-            "(urn:mpeg:mpeg4:xmta:schema:2002), XMT-Omega (urn:mpeg:mpeg4:xmto:schema:2002)");
+            "x.bml:1:1: error: no schema for root element 'bml'; fapc validates XMT-A "
+            "(urn:mpeg:mpeg4:xmta:schema:2002), XMT-Omega (urn:mpeg:mpeg4:xmto:schema:2002), FML");
   // XMT-A without its namespace is not XMT-A.
   EXPECT_FALSE(validate_xml("<XMT-A/>", "x.xmt").ok());
 }

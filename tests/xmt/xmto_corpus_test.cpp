@@ -1,5 +1,5 @@
 // Every document of corpus/xmto/ read through the library, with a loader for the inputs the
-// library can reach on its own (.fap and nested XMT-Omega): its timeline dump must match the
+// library can reach on its own (.fap, .fba and nested XMT-Omega): its timeline dump must match the
 // golden corpus/golden/xmto/<name>.timeline. The command tests write the same golden through the
 // fapc program (tests/command/xmto_golden_test.cpp), so the two paths are held to one result.
 // Documents that place a Mimic program or an FML document are left to the program.
@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "fapc/codec/fap_file.hpp"
+#include "fapc/codec/fba.hpp"
 #include "fapc/transcoder/timeline_from_frames.hpp"
 #include "fapc/xmt/xmto.hpp"
 #include "support/test_support.hpp"
@@ -33,6 +34,14 @@ Result<IncludedAnimation> load(const std::string& path, std::vector<std::string>
     }());
     if (!nested) return nested.error();
     return IncludedAnimation{std::move(nested->timeline), std::move(nested->warnings)};
+  }
+  if (path.ends_with(".fba")) {
+    FbaDecodeOptions options;
+    options.file = path;
+    auto decoded = decode_fba(std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()), options);
+    if (!decoded) return decoded.error();
+    return IncludedAnimation{timeline_from_frames(decoded->sequence, 0, Location{path, 0, 0, -1}),
+                             std::move(decoded->warnings)};
   }
   auto frames = read_fap_text(text, path);
   if (!frames) return frames.error();

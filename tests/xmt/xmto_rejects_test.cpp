@@ -50,6 +50,11 @@ const std::map<std::string, std::string>& expected_errors() {
        "expression.<name> weights instead\n"
        "    <set attributeName=\"1\" to=\"3\" dur=\"1s\"/>\n"
        "         ^"},
+      {"fml-container.xmt",
+       "fml-container.xmt:6:7: error: FML 'seq' inside XMT-Omega: only FML moves (talk, expr, hdmv, fap, param, "
+       "wait) are read here; use XMT-Omega's own time containers, or place an FML document with animation src\n"
+       "      <fml:seq>\n"
+       "      ^"},
       {"from-only.xmt",
        "from-only.xmt:4:39: error: animate needs values, to or by (from alone animates nothing)\n"
        "    <animate attributeName=\"open_jaw\" from=\"0\" dur=\"1s\"/>\n"

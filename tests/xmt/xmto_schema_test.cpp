@@ -35,7 +35,7 @@ TEST(XmtoSchema, CorpusDocumentsAreValidExceptTheOneShowingWhatIsSkipped) {
 }
 
 TEST(XmtoSchema, ForeignElementsAndAttributesAreAllowed) {
-  // FML moves and other vocabularies: the reader reports and skips them; the schema lets them be.
+  // FML moves (read by the FML rules) and other vocabularies (reported and skipped): the schema lets them be.
   EXPECT_EQ(first_problem("<XMT-O xmlns=\"urn:mpeg:mpeg4:xmto:schema:2002\" xmlns:f=\"urn:example:fml\">\n"
                           "<body><par><f:expr type=\"smile\"/><set attributeName=\"3\" to=\"1\" dur=\"1s\" "
                           "f:note=\"x\"/></par></body>\n</XMT-O>\n"),
@@ -69,7 +69,7 @@ TEST(XmtoSchema, DocumentsWithoutTheNamespaceAreNotValidated) {
   ASSERT_FALSE(report.ok());
   EXPECT_EQ(format_diagnostic(report.error()),
             "s.xmt:1:1: error: no schema for root element 'XMT-O'; fapc validates XMT-A "
-            "(urn:mpeg:mpeg4:xmta:schema:2002), XMT-Omega (urn:mpeg:mpeg4:xmto:schema:2002)");
+            "(urn:mpeg:mpeg4:xmta:schema:2002), XMT-Omega (urn:mpeg:mpeg4:xmto:schema:2002), FML");
 }
 
 }  // namespace

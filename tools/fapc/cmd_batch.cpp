@@ -116,19 +116,25 @@ int run_batch(const std::vector<std::string>& argv) {
       const auto start = std::chrono::steady_clock::now();
       JobResult& result = results[i];
       std::ostringstream summary;
+      // The input is loaded (and its warnings printed) once, with the first output kind; the
+      // other kinds are written from what it became.
+      ConvertOutcome outcome;
       for (const std::string& kind : kinds) {
         const std::string output =
             (fs::path(*out_dir) / (jobs[i].relative + output_format_named(kind)->extensions.front()))
                 .string();
         fs::create_directories(fs::path(output).parent_path());
         std::lock_guard<std::mutex> lock(console);  // diagnostics of one file stay together
-        const ConvertOutcome outcome = convert(jobs[i].input, output, options, kind);
-        if (outcome.exit_status != kExitOk) {
-          result.status = outcome.exit_status;
+        const bool first = &kind == &kinds.front();
+        const int status = first ? (outcome = convert(jobs[i].input, output, options, kind)).exit_status
+                                 : write_output(outcome.loaded, output, options, kind);
+        if (status != kExitOk) {
+          result.status = status;
+          summary.str("");
           summary << "FAILED " << jobs[i].input;
           break;
         }
-        if (summary.tellp() == 0) {
+        if (first) {
           const FapSequence& seq = outcome.loaded.frames;
           std::size_t faps = 0;
           std::bitset<kFapCount> used;

@@ -1,9 +1,11 @@
 // fapc verify FILE... [--quant Q] [--intra-period N] [--ranges fit|max] [--json]
 // A .fba stream: it decodes, and encoding its frames again with the settings it shows gives the
-// same bytes (true of every stream fapc writes). Any other input: it encodes with the given
+// same bytes (true of every stream fapc writes). An .mp4: the same for its FBA track, sample by
+// sample, durations and sync flags included. Any other input: it encodes with the given
 // settings, the stream decodes to within half a quantiser step of it (exactly at quant 0), and
 // re-encodes to the same bytes. Exit 3 when a check fails, 1 when an input cannot be read.
 #include <algorithm>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -12,6 +14,7 @@
 #include "fapc/convert.hpp"
 #include "fapc/fba_cli.hpp"
 #include "fapc/report.hpp"
+#include "fapc/xmt/mp4_reader.hpp"
 
 namespace fapc::cli {
 
@@ -52,18 +55,12 @@ std::vector<int> intra_periods(const FapSequence& frames, const FbaStreamInfo& i
   return periods;
 }
 
-// The encoder settings a stream shows: its fap_quant and its plane alignment. The range mode,
-// the intra period and the mask layout are tried in turn, since the bits do not say which was used.
-Outcome verify_stream(const std::string& path) {
-  auto raw = read_file_bytes(path);
-  if (!raw) return failed(raw.error(), kExitBadInput);
-  const std::vector<std::uint8_t> bytes(raw->begin(), raw->end());
-  FbaDecodeOptions decode_options;
-  decode_options.file = path;
-  auto decoded = decode_fba(bytes, decode_options);
-  if (!decoded) return failed(decoded.error(), kExitBadInput);
-  report_all(decoded->warnings);
-  const FbaStreamInfo& info = decoded->info;
+// Finds the encoder settings that give back what was read: its fap_quant and plane alignment are
+// in the stream; the range mode, the intra period and the mask layout are tried in turn, since the
+// bits do not say which was used. `same` compares an encoding with the original.
+Outcome reencode_matches(const std::string& path, const DecodedFba& decoded, bool aligned,
+                         const std::function<bool(const EncodedFba&)>& same, std::size_t bytes) {
+  const FbaStreamInfo& info = decoded.info;
   const auto failure = [&](const std::string& why) {
     return failed(make_error(Location{path, 0, 0, -1}, "verification failed: " + why), kExitVerifyFailed);
   };
@@ -74,18 +71,66 @@ Outcome verify_stream(const std::string& path) {
       return failure("fap_quant changes within the stream, which fapc does not do");
     options.quant = intra.fap_quant;
   }
-  options.align_planes = info.planes > 0 && info.plane_start_codes == info.planes;
+  options.align_planes = aligned;
   for (const FbaRangeMode ranges : {FbaRangeMode::fit, FbaRangeMode::max})
-    for (const int period : intra_periods(decoded->sequence, info))
+    for (const int period : intra_periods(decoded.sequence, info))
       for (const bool listed : {false, true}) {
         options.ranges = ranges;
         options.intra_period = period;
         options.list_every_mask = listed;
-        auto again = encode_fba(decoded->sequence, options);
-        if (again && again->bytes == bytes)
-          return {kExitOk, summary(decoded->sequence.frames.size(), bytes.size(), info.bits_per_frame(), options.quant)};
+        auto again = encode_fba(decoded.sequence, options);
+        if (again && same(*again))
+          return {kExitOk, summary(decoded.sequence.frames.size(), bytes, info.bits_per_frame(), options.quant)};
       }
   return failure("re-encoding the decoded frames does not give the same bytes (a stream fapc did not write?)");
+}
+
+Outcome verify_stream(const std::string& path) {
+  auto raw = read_file_bytes(path);
+  if (!raw) return failed(raw.error(), kExitBadInput);
+  const std::vector<std::uint8_t> bytes(raw->begin(), raw->end());
+  FbaDecodeOptions decode_options;
+  decode_options.file = path;
+  auto decoded = decode_fba(bytes, decode_options);
+  if (!decoded) return failed(decoded.error(), kExitBadInput);
+  report_all(decoded->warnings);
+  const FbaStreamInfo& info = decoded->info;
+  const bool aligned = info.planes > 0 && info.plane_start_codes == info.planes;
+  return reencode_matches(path, *decoded, aligned, [&](const EncodedFba& again) { return again.bytes == bytes; },
+                          bytes.size());
+}
+
+// An MP4's FBA track: each sample must be the plane fapc writes for its frame, with its duration
+// and sync flag.
+Outcome verify_mp4(const std::string& path, const ConvertOptions& options) {
+  auto loaded = load_input(path, options);  // reports errors at the sample's byte in the file
+  if (!loaded) return failed(loaded.error(), kExitBadInput);
+  auto raw = read_file_bytes(path);
+  if (!raw) return failed(raw.error(), kExitBadInput);
+  auto mp4 = xmt::read_mp4(xmt::Bytes(raw->begin(), raw->end()), path);
+  if (!mp4) return failed(mp4.error(), kExitBadInput);
+  auto track = xmt::read_fba_track(*mp4);
+  if (!track) return failed(track.error(), kExitBadInput);
+  FbaDecodeOptions decode_options;
+  decode_options.file = path;
+  auto decoded = decode_fba(xmt::fba_stream_from_track(*track), decode_options);
+  if (!decoded) return failed(decoded.error(), kExitBadInput);
+  report_all(loaded->warnings);
+  std::size_t bytes = 0;
+  for (const xmt::FbaSample& sample : track->samples) bytes += sample.bytes.size();
+  const auto same = [&](const EncodedFba& again) {
+    if (again.planes.size() != track->samples.size()) return false;
+    for (std::size_t k = 0; k < again.planes.size(); ++k) {
+      const CodedPlane& plane = again.planes[k];
+      const xmt::FbaSample& sample = track->samples[k];
+      const auto first = again.bytes.begin() + static_cast<std::ptrdiff_t>(plane.offset);
+      if (!std::equal(first, first + static_cast<std::ptrdiff_t>(plane.size), sample.bytes.begin(), sample.bytes.end()) ||
+          plane.intra != sample.sync || static_cast<std::uint32_t>(plane.frames) != sample.duration)
+        return false;
+    }
+    return true;
+  };
+  return reencode_matches(path, *decoded, true, same, bytes);
 }
 
 Outcome verify_input(const std::string& path, const ConvertOptions& options) {
@@ -115,7 +160,10 @@ int run_verify(const std::vector<std::string>& argv) {
   nlohmann::ordered_json results = nlohmann::ordered_json::array();
   for (const std::string& path : args.positionals()) {
     const InputFormat* format = input_format_for(path);
-    const Outcome outcome = format && format->kind == "fba" ? verify_stream(path) : verify_input(path, options);
+    const std::string kind = format ? format->kind : "";
+    const Outcome outcome = kind == "fba"   ? verify_stream(path)
+                            : kind == "mp4" ? verify_mp4(path, options)
+                                            : verify_input(path, options);
     if (outcome.status == kExitBadInput || (outcome.status == kExitVerifyFailed && status == kExitOk))
       status = outcome.status;
     if (args.flag("json")) {

@@ -14,6 +14,7 @@ ConvertOptions convert_options(Args& args) {
   options.intra_period = args.integer("intra-period", 0, 0, 1 << 20);
   options.profile = args.value("profile");
   options.duration = args.decimal("duration", 0, 1e7);
+  if (const auto rate = args.decimal("speech-rate", 0.1, 100)) options.visemes_per_second = *rate;
   options.strict = args.flag("strict");
   options.verify = args.flag("verify");
   if (const auto ranges = args.value("ranges")) {

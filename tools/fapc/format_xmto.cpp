@@ -46,8 +46,12 @@ Result<xmt::IncludedAnimation> load_animation(const std::string& path, const Loc
   return included;
 }
 
-Result<xmt::XmtoDocument> read_document(const std::string& path, const ConvertOptions& options) {
+Result<xmt::XmtoDocument> read_document(const std::string& path, const ConvertOptions& options,
+                                        const Profile& profile) {
   xmt::XmtoOptions xmto;
+  xmto.fml.events = options.events;
+  xmto.fml.profile = &profile;
+  xmto.fml.visemes_per_second = options.visemes_per_second;
   xmto.including = documents_being_read();
   xmto.duration = options.duration;
   xmto.load_animation = [&options](const std::string& included, const Location& where) {
@@ -58,16 +62,18 @@ Result<xmt::XmtoDocument> read_document(const std::string& path, const ConvertOp
 }
 
 Result<Loaded> load_xmto(const std::string& path, const ConvertOptions& options) {
-  Result<xmt::XmtoDocument> document = read_document(path, options);
-  if (!document) return document.error();
   Result<Profile> profile = profile_for(options);
   if (!profile) return profile.error();
+  Result<xmt::XmtoDocument> document = read_document(path, options, *profile);
+  if (!document) return document.error();
   return loaded_from_timeline(std::move(document->timeline), path, *profile, options,
                               std::move(document->warnings));
 }
 
 Result<nlohmann::ordered_json> describe_xmto(const std::string& path, const ConvertOptions& options) {
-  Result<xmt::XmtoDocument> document = read_document(path, options);
+  Result<Profile> profile = profile_for(options);
+  if (!profile) return profile.error();
+  Result<xmt::XmtoDocument> document = read_document(path, options, *profile);
   if (!document) return document.error();
   nlohmann::ordered_json out;
   out["format"] = "XMT-Omega";

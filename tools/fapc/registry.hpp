@@ -48,6 +48,7 @@ struct ConvertOptions {
   std::optional<std::string> profile;
   std::optional<double> duration;             // --duration: the end of timelines that give none
   std::map<std::string, std::string> events;  // --event NAME=VALUE
+  double visemes_per_second = 12;             // --speech-rate: FML talk text
   int quant = 1;                             // fap_quant for .fba/.mp4 outputs
   int intra_period = 0;                      // 0: encoder decides
   std::string ranges = "fit";                // fit | max

@@ -20,7 +20,11 @@ Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
   render.profile = &profile;
   render.name = std::filesystem::path(name).stem().string();
   Result<Rendered> rendered = render_frames(timeline, render);
-  if (!rendered) return rendered.error();
+  if (!rendered) {
+    Diagnostic error = rendered.error();
+    if (error.where.file.empty()) error.where.file = name;  // a whole-animation problem
+    return error;
+  }
   Loaded loaded;
   loaded.frames = std::move(rendered->frames);
   loaded.curves = render_curves(timeline, CurveOptions{options.fps, 1e-6});

@@ -12,6 +12,8 @@ constexpr SchemaBinding kSchemaBindings[] = {
     // Only documents in the XMT-Omega namespace: a schema has one target namespace, and the
     // reader's own checks cover documents without one.
     {"XMT-Omega", "XMT-O", kXmtoNamespace, "xmt-o.xsd"},
+    // FML has no namespace; a root fml in one gets the schema's "no declaration" error.
+    {"FML", "fml", "", "fml.xsd"},
 };
 
 }  // namespace

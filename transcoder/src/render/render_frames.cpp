@@ -2,6 +2,7 @@
 // FAP, round halves away from zero, clamp to the legal range with one warning per clip.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <sstream>
 
@@ -122,6 +123,13 @@ class FrameRenderer {
 
 Result<Rendered> render_frames(const Timeline& timeline, const RenderOptions& options) {
   if (options.fps <= 0) return make_error(Location{}, "the frame rate must be positive");
+  if (const double frames = std::ceil(timeline.end() * options.fps); !(frames <= kMaxRenderedFrames)) {
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%g", timeline.end());
+    return make_error(Location{}, std::string("the animation lasts ") + seconds + " s: at " + std::to_string(options.fps) +
+                                      " fps that is more than the " + std::to_string(static_cast<long>(kMaxRenderedFrames)) +
+                                      " frames fapc renders");
+  }
   const Profile& profile = options.profile ? *options.profile : default_profile();
   const TimelineIndex index(timeline);
   std::vector<Driver> drivers;

@@ -24,6 +24,7 @@ std::string seconds(double t) {
 class Scheduler {
  public:
   std::optional<Diagnostic> error;
+  std::size_t max_runs = 0;
 
   // The active duration of `node` when it is known without a parent end.
   std::optional<double> measure(const ScheduleNode& node) {
@@ -51,8 +52,13 @@ class Scheduler {
         return start;
       }
       const double simple = node.timing.duration.value_or(*active);
-      place_runs(node.leaf_id, start, simple, *active, std::min(cut, start + *active), out);
+      place_runs(node, start, simple, *active, std::min(cut, start + *active), out);
       return start + *active;
+    }
+    if (!active && node.timing.repeat_indefinite) {
+      // Repeating without end would never stop laying out iterations.
+      fail(node, "repeats indefinitely and nothing around it ends: give it or a parent an end");
+      return start;
     }
     // A group: lay out one iteration, then repeat its occurrences shifted. A group of unknown
     // length with nothing around it to end it still places its children: the open one among
@@ -67,12 +73,20 @@ class Scheduler {
     const double children_end = place_children(node, start, own_limit, iteration_cut, out);
     if (error) return start;
     const double simple = node.timing.duration.value_or(children_end - start);
-    repeat_group(first, start, simple, inner_cut, out);
+    repeat_group(node, first, start, simple, inner_cut, out);
     return active ? start + *active : children_end;
   }
 
  private:
   std::unordered_map<const ScheduleNode*, std::optional<double>> measured_;
+
+  // Repeats of repeats can ask for more runs than memory holds (an indefinite repeat of a tiny
+  // group beside a very long sibling): past max_runs the schedule is an error at the node.
+  bool too_many(const ScheduleNode& node, const std::vector<Occurrence>& out) {
+    if (out.size() < max_runs) return error.has_value();
+    fail(node, "repeats to more than " + std::to_string(max_runs) + " runs: fapc refuses to schedule so many");
+    return true;
+  }
 
   void fail(const ScheduleNode& node, const std::string& message) {
     if (!error) error = make_error(node.source, message);
@@ -137,8 +151,9 @@ class Scheduler {
     return latest;
   }
 
-  void place_runs(std::size_t leaf, double start, double simple, double active, double cut,
+  void place_runs(const ScheduleNode& node, double start, double simple, double active, double cut,
                   std::vector<Occurrence>& out) {
+    const std::size_t leaf = node.leaf_id;
     // A leaf wholly after the end of an ancestor (a group's dur, --duration) does not run.
     if (start > cut || (start == cut && simple > 0)) return;
     if (simple <= 0) {
@@ -148,7 +163,7 @@ class Scheduler {
     const double active_end = std::min(start + active, cut);
     for (int i = 0;; ++i) {
       const double begin = start + i * simple;
-      if (begin >= active_end) break;
+      if (begin >= active_end || too_many(node, out)) break;
       out.push_back(Occurrence{leaf, begin, simple, std::min(begin + simple, active_end), 0, i});
     }
   }
@@ -222,11 +237,11 @@ class Scheduler {
     }
   }
 
-  static void repeat_group(std::size_t first, double start, double simple, double cut,
-                           std::vector<Occurrence>& out) {
+  void repeat_group(const ScheduleNode& node, std::size_t first, double start, double simple, double cut,
+                    std::vector<Occurrence>& out) {
     const std::size_t last = out.size();
     if (simple <= 0) return;
-    for (int i = 1; start + i * simple < cut; ++i) {
+    for (int i = 1; start + i * simple < cut && !too_many(node, out); ++i) {
       const double shift = i * simple;
       for (std::size_t k = first; k < last; ++k) {
         Occurrence copy = out[k];
@@ -260,6 +275,7 @@ ScheduleNode ScheduleNode::group(Kind kind, Timing timing, Location source) {
 
 Result<Schedule> schedule(const ScheduleNode& root, const ScheduleOptions& options) {
   Scheduler scheduler;
+  scheduler.max_runs = options.max_runs;
   Schedule result;
   const double cut = options.root_end.value_or(kForever);
   result.end = scheduler.place(root, root.timing.offset, options.root_end, cut, result.occurrences);

@@ -3,15 +3,17 @@
 #include <algorithm>
 #include <initializer_list>
 #include <map>
+#include <set>
 #include <string>
 
 #include "fapc/codec/file_io.hpp"
 #include "fapc/xmt/xmto.hpp"
+#include "fml/embedded_fml.hpp"
 #include "xml/xml_document.hpp"
 #include "xmto/animation_function.hpp"
 #include "xmto/animation_include.hpp"
 #include "xmto/attribute_target.hpp"
-#include "xmto/once_per_name.hpp"
+#include "xml/once_per_name.hpp"
 #include "xmto/run_budget.hpp"
 #include "xmto/smil_timing.hpp"
 #include "xmto/xmto_tree.hpp"
@@ -25,12 +27,6 @@ constexpr std::initializer_list<const char*> kTimingAttributes = {"begin", "dur"
                                                                   "repeatDur", "fill"};
 constexpr std::string_view kXmlNamespace = "http://www.w3.org/XML/1998/namespace";
 constexpr std::string_view kSchemaInstanceNamespace = "http://www.w3.org/2001/XMLSchema-instance";
-
-bool is_blank(std::string_view text) {
-  for (const char c : text)
-    if (!std::isspace(static_cast<unsigned char>(c))) return false;
-  return true;
-}
 
 class DocumentReader {
  public:
@@ -94,8 +90,9 @@ class DocumentReader {
     std::string name;
     bool repeats_indefinitely = false;
   };
-  std::map<std::pair<int, int>, ElementFacts> element_at_;
-  double planned_clips_ = 0;  // upper bound, see run_budget.hpp  // by line, column: for schedule errors
+  std::map<std::pair<int, int>, ElementFacts> element_at_;  // by line, column: for schedule errors
+  double planned_clips_ = 0;  // upper bound, see run_budget.hpp
+  std::set<std::string> fml_expressions_;  // FAP 2 targets of the FML moves read so far
 
   ScheduleNode scheduled_node(ScheduleNode node, const xmlNode* element) {
     element_at_[{node.source.line, node.source.column}] =
@@ -131,8 +128,8 @@ class DocumentReader {
     return ns.empty() || ns == root_namespace_ || ns == kXmtoNamespace;
   }
 
-  // FML moves embedded in an XMT-O document ("FML documents can work as XMT-Omega code") wait for
-  // the FML front end's lowering; until then they are reported like any unsupported element.
+  // FML moves embedded in an XMT-O document ("FML documents can work as XMT-Omega code"): any
+  // element whose namespace URI mentions fml.
   static bool is_fml(const xmlNode* node) {
     std::string ns(xml::namespace_uri(node));
     std::transform(ns.begin(), ns.end(), ns.begin(), [](unsigned char c) { return std::tolower(c); });
@@ -140,13 +137,6 @@ class DocumentReader {
   }
 
   void unsupported(const xmlNode* node, const std::string& why = "is not supported and was skipped") {
-    if (is_fml(node)) {
-      const std::string name(xml::local_name(node));
-      once_.report("fml " + name, doc_.warning(node, "FML move '" + name + "' embedded in XMT-Omega is not "
-                                                     "supported yet and was skipped (place an FML document "
-                                                     "with animation src instead)"));
-      return;
-    }
     std::string name(xml::local_name(node));
     if (!is_xmto(node)) name += "' in namespace '" + std::string(xml::namespace_uri(node));
     once_.report("element " + name, doc_.warning(node, "element '" + name + "' " + why));
@@ -176,19 +166,7 @@ class DocumentReader {
 
   // Text in XMT-O elements carries nothing for face animation, and entities are not expanded
   // (no DTD is trusted): report both rather than drop them.
-  void check_text(const xmlNode* element) {
-    const std::string name(xml::local_name(element));
-    for (const xmlNode* child = element->children; child; child = child->next) {
-      const bool text = child->type == XML_TEXT_NODE || child->type == XML_CDATA_SECTION_NODE;
-      if (text && child->content && !is_blank(reinterpret_cast<const char*>(child->content))) {
-        once_.report("text " + name, doc_.warning(element, "text inside " + name + " is ignored"));
-      } else if (child->type == XML_ENTITY_REF_NODE) {
-        const std::string entity = "&" + std::string(xml::local_name(child)) + ";";
-        once_.report("entity " + entity, doc_.warning(element, "entity reference " + entity + " inside " + name +
-                                                                   " is not expanded and was ignored"));
-      }
-    }
-  }
+  void check_text(const xmlNode* element) { report_stray_text(doc_, element, once_); }
 
   void read_head(const xmlNode* head) {
     check_attributes(head, {});
@@ -208,6 +186,7 @@ class DocumentReader {
   std::optional<ScheduleNode> element(const xmlNode* node, Fill inherited, bool in_excl,
                                       const RunBudget& budget) {
     if (error_) return std::nullopt;
+    if (is_fml(node)) return fml_move(node, budget);
     if (!is_xmto(node)) {
       unsupported(node);
       return std::nullopt;
@@ -318,6 +297,57 @@ class DocumentReader {
     leaf.function = std::move(*function);
     if (!within_budget(node, budget.inside(timing, std::nullopt).repeats)) return std::nullopt;
     return add_leaf(node, std::move(leaf), to_schedule_timing(timing, std::nullopt));
+  }
+
+  // An FML move: expr, hdmv, fap and param become to-animations that hold (from the value their
+  // target has when they begin, so they compose with the document's other animations); normal
+  // returns the expressions of the FML moves before it to 0; talk and wait are placed like an
+  // included animation of their length.
+  std::optional<ScheduleNode> fml_move(const xmlNode* node, const RunBudget& budget) {
+    Result<EmbeddedFmlMove> move = read_embedded_fml_move(doc_, node, options_.fml);
+    if (!move) {
+      fail(move.error());
+      return std::nullopt;
+    }
+    result_.warnings.insert(result_.warnings.end(), move->warnings.begin(), move->warnings.end());
+    const double length = move->timing.duration.value_or(0);
+    const double runs = budget.repeats * (move->timing.repeat_indefinite ? budget.available / std::max(length, 1e-3)
+                                                                         : move->timing.repeat);
+    const auto hold = [&](const std::string& target, double value) {
+      Leaf leaf;
+      leaf.fill = Fill::freeze;
+      leaf.target = target;
+      leaf.function.values = {0, value};
+      leaf.function.to_animation = true;
+      leaf.function.simple_duration = length;
+      return leaf;
+    };
+    const FmlLeaf& fml = move->leaf;
+    Leaf leaf;
+    switch (fml.kind) {
+      case FmlLeaf::Kind::move:
+        if (weight_target(fml.target)) fml_expressions_.insert(fml.target);
+        if (!within_budget(node, runs)) return std::nullopt;
+        return add_leaf(node, hold(fml.target, fml.value), move->timing);
+      case FmlLeaf::Kind::normal: {
+        if (!within_budget(node, runs * std::max<double>(1, static_cast<double>(fml_expressions_.size()))))
+          return std::nullopt;
+        ScheduleNode group = ScheduleNode::group(Kind::parallel, move->timing, doc_.where(node));
+        Timing child;
+        child.duration = length;
+        for (const std::string& target : fml_expressions_) group.children.push_back(add_leaf(node, hold(target, 0), child));
+        return scheduled_node(std::move(group), node);
+      }
+      case FmlLeaf::Kind::talk:
+        leaf.included = Timeline{viseme_clips(fml.speech, length, doc_.where(node)), length};
+        break;
+      case FmlLeaf::Kind::wait:
+        leaf.included = Timeline{{}, length};
+        break;
+    }
+    const double clips = std::max<double>(1, static_cast<double>(leaf.included->clips.size()));
+    if (!within_budget(node, runs * clips)) return std::nullopt;
+    return add_leaf(node, std::move(leaf), move->timing);
   }
 
   std::optional<ScheduleNode> animation(const xmlNode* node, const SmilTiming& timing, Fill fill,

@@ -44,7 +44,12 @@ struct Rendered {
   Diagnostics warnings;  // clamps, once per clip, at the clip's source
 };
 
-// Frames k = 0 .. ceil(end * fps) - 1 at time k / fps. Errors: a target no profile maps.
+// The most frames one rendering makes (about 23 hours at 25 fps, some 600 MB of frames): a longer
+// timeline is an error, not an allocation failure.
+inline constexpr double kMaxRenderedFrames = 2097152;
+
+// Frames k = 0 .. ceil(end * fps) - 1 at time k / fps. Errors: a target no profile maps, more
+// than kMaxRenderedFrames frames.
 Result<Rendered> render_frames(const Timeline& timeline, const RenderOptions& options);
 
 struct CurveOptions {

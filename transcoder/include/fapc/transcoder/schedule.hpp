@@ -62,6 +62,8 @@ struct ScheduleOptions {
   // The root's end when the source gives none (--duration): lets indefinite repeats and periodic
   // leaves without duration at the top level end.
   std::optional<double> root_end;
+  // The most runs (occurrences) a schedule may have; more is an error at the node that repeats.
+  std::size_t max_runs = 2000000;
 };
 
 struct Schedule {
@@ -70,7 +72,7 @@ struct Schedule {
 };
 
 // Errors (with the node's source position): a start before 0, align_right outside a parallel, a
-// leaf or repeat with no duration and no parent end.
+// leaf or repeat with no duration and no parent end, more than max_runs runs.
 Result<Schedule> schedule(const ScheduleNode& root, const ScheduleOptions& options = {});
 
 }  // namespace fapc

@@ -13,6 +13,7 @@
 
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/transcoder/timeline.hpp"
+#include "fapc/xmt/fml.hpp"
 
 namespace fapc::xmt {
 
@@ -37,6 +38,9 @@ struct XmtoOptions {
   // Documents being read around this one, outermost first (their paths as given): an `animation`
   // that names one of them, or this document, is an inclusion cycle and an error.
   std::vector<std::string> including;
+  // FML moves written in the document (semantics.md §4): event values for repeat, the profile for
+  // param. Their visemes_per_second is the talk rate.
+  FmlOptions fml;
 };
 
 struct XmtoDocument {

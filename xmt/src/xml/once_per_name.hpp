@@ -6,6 +6,7 @@
 #include <string>
 
 #include "fapc/codec/diagnostic.hpp"
+#include "xml/xml_document.hpp"
 
 namespace fapc::xmt {
 
@@ -26,5 +27,9 @@ class OncePerName {
   Diagnostics& out_;
   std::map<std::string, Seen> seen_;
 };
+
+// Text (other than blanks) and entity references directly inside `element` carry nothing for the
+// readers, and entities are never expanded: both are reported once per element name.
+void report_stray_text(const xml::XmlDocument& doc, const xmlNode* element, OncePerName& once);
 
 }  // namespace fapc::xmt

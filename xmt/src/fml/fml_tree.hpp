@@ -1,0 +1,37 @@
+// What the FML reader builds before scheduling: the time tree for fapc::schedule() and, per leaf,
+// what its runs become on the timeline. lower_fml() turns the scheduled runs into clips.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "fapc/transcoder/schedule.hpp"
+#include "fapc/transcoder/timeline.hpp"
+#include "fml/speech_visemes.hpp"
+
+namespace fapc::xmt {
+
+struct FmlLeaf {
+  enum class Kind {
+    move,    // expr, hdmv, fap, param: `target` ramps from its current value to `value`
+    normal,  // expr type="normal": every expression placed before ramps to 0
+    talk,    // `speech`, stretched over each run
+    wait,    // nothing
+  };
+  Kind kind = Kind::wait;
+  Location where;
+  std::string target;
+  double value = 0;
+  Speech speech;
+};
+
+struct FmlTree {
+  ScheduleNode root;
+  std::vector<FmlLeaf> leaves;  // indexed by ScheduleNode::leaf_id, in document order
+};
+
+// Move runs are placed in order of their begin (document order on ties), each starting from the
+// value its target has just before: the latest placed clip of that target, frozen at its end.
+Timeline lower_fml(const FmlTree& tree, const Schedule& schedule);
+
+}  // namespace fapc::xmt
