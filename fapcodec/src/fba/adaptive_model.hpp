@@ -72,8 +72,10 @@ class AdaptiveModel {
   }
 
   // After coding symbol s: rescale if the total has reached kMaxFrequency, then count s:
-  // cum[0..s] += 1, whole vectors with later lanes masked off.
+  // cum[0..s] += 1, whole vectors with later lanes masked off. The counts of a one-symbol
+  // alphabet never matter (its symbol always owns the whole interval), so they are left alone.
   void update(int s) {
+    if (symbols_ == 1) return;
     if (cum_[0] == kMaxFrequency) rescale();
     last_ = s;
     increment_prefix(cum_, static_cast<std::size_t>(s));

@@ -23,13 +23,17 @@ class ArithDecoder {
   // decoder_reset(): fresh registers, then 16 coded bits into `code`.
   void start();
 
+  // A one-symbol alphabet (a FAP whose range is 0..0) leaves the interval as it is and takes no
+  // bits: such symbols are skipped outright, on both sides.
   int decode(const AdaptiveModel& model) {
+    if (model.symbols() == 1) return 0;
     // The target ((code - low + 1) * total - 1) / length of section 6.5, found without dividing.
     const int s = model.find_scaled((code_ - low_ + 1) * model.total(), high_ - low_ + 1);
     narrow(model.cum(s), model.cum(s + 1), model.total());
     return s;
   }
   int decode_uniform(int symbols) {
+    if (symbols == 1) return 0;
     const std::int32_t t = target(symbols);
     const int s = symbols - t - 1;  // cum[k] = n - k
     narrow(symbols - s, symbols - s - 1, symbols);

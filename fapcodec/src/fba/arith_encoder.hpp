@@ -43,12 +43,13 @@ class ArithEncoder {
       high_ = (high_ - kCoderHalf) * scale + kCoderHalf + scale - 1;
     }
   }
+  // A one-symbol alphabet leaves the interval as it is and emits nothing: skipped.
   void encode(const AdaptiveModel& model, int symbol) {
-    encode(model.cum(symbol), model.cum(symbol + 1), model.total());
+    if (model.symbols() > 1) encode(model.cum(symbol), model.cum(symbol + 1), model.total());
   }
   // A fresh model of n symbols that is never updated (the intra models, section 6.7).
   void encode_uniform(int symbols, int symbol) {
-    encode(symbols - symbol, symbols - symbol - 1, symbols);
+    if (symbols > 1) encode(symbols - symbol, symbols - symbol - 1, symbols);
   }
 
   // Ends the segment: (pending + 2) bits that pin the final interval, then a fresh state.
