@@ -4,19 +4,18 @@
 
 namespace fapc::cli {
 
-Result<FbaEncodeOptions> fba_encode_options(const ConvertOptions& options) {
+namespace {
+
+// --quant, --intra-period and --ranges fit|max (values already checked by convert_options).
+FbaEncodeOptions fba_encode_options(const ConvertOptions& options) {
   FbaEncodeOptions fba;
   fba.quant = options.quant;
   fba.intra_period = options.intra_period;
-  if (options.ranges == "fit") {
-    fba.ranges = FbaRangeMode::fit;
-  } else if (options.ranges == "max") {
-    fba.ranges = FbaRangeMode::max;
-  } else {
-    return make_error(Location{}, "--ranges takes fit or max, not '" + options.ranges + "'");
-  }
+  fba.ranges = options.ranges == "max" ? FbaRangeMode::max : FbaRangeMode::fit;
   return fba;
 }
+
+}  // namespace
 
 Result<DecodedFba> read_fba_file(const std::string& path) {
   auto bytes = read_file_bytes(path);
@@ -29,17 +28,16 @@ Result<DecodedFba> read_fba_file(const std::string& path) {
 
 Result<EncodedFba> encode_checked(const FapSequence& sequence, const ConvertOptions& options, const std::string& input,
                                   bool align_planes) {
-  auto fba = fba_encode_options(options);
-  if (!fba) return fba.error();
-  fba->align_planes = align_planes;
-  auto encoded = encode_fba(sequence, *fba);
+  FbaEncodeOptions fba = fba_encode_options(options);
+  fba.align_planes = align_planes;
+  auto encoded = encode_fba(sequence, fba);
   if (!encoded) {
     Diagnostic error = encoded.error();
     error.where.file = input;
     return error;
   }
   if (options.verify)
-    if (auto verified = verify_fba(sequence, *encoded, *fba, input); !verified) return verified.error();
+    if (auto verified = verify_fba(sequence, *encoded, fba, input); !verified) return verified.error();
   return encoded;
 }
 

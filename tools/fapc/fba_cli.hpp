@@ -9,9 +9,6 @@
 
 namespace fapc::cli {
 
-// --quant, --intra-period and --ranges fit|max; an unknown --ranges is an error.
-Result<FbaEncodeOptions> fba_encode_options(const ConvertOptions& options);
-
 // Reads and decodes a .fba file (gzip inflated transparently).
 Result<DecodedFba> read_fba_file(const std::string& path);
 
