@@ -1,7 +1,6 @@
 // The FML reader: walks the model and the story, builds the time tree (fml_tree.hpp), schedules it
 // and lowers the runs to clips. What it does not read is reported, never dropped silently.
 #include <algorithm>
-#include <charconv>
 #include <cstdio>
 #include <cmath>
 #include <filesystem>
@@ -16,8 +15,9 @@
 #include "fml/fml_timing.hpp"
 #include "fml/fml_tree.hpp"
 #include "fml/other_formats.hpp"
-#include "xml/xml_document.hpp"
+#include "xml/text.hpp"
 #include "xml/once_per_name.hpp"
+#include "xml/xml_document.hpp"
 
 namespace fapc::xmt {
 namespace {
@@ -30,19 +30,9 @@ constexpr double kMaxNodes = 1e6;  // elements after template expansion, and run
 
 constexpr std::initializer_list<const char*> kTiming = {"begin", "duration", "dur", "end", "repeat"};
 
-std::string trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  return std::string(s);
-}
+std::string trim(std::string_view s) { return std::string(xml::trim(s)); }
 
-std::optional<double> number(std::string_view text) {
-  const std::string t = trim(text);
-  double value = 0;
-  const auto [end, error] = std::from_chars(t.data(), t.data() + t.size(), value);
-  if (error != std::errc() || end != t.data() + t.size() || t.empty() || !std::isfinite(value)) return std::nullopt;
-  return value;
-}
+std::optional<double> number(std::string_view text) { return xml::decimal(xml::trim(text)); }
 
 std::string format_number(double v) {
   char buffer[32];

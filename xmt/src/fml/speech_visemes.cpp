@@ -1,8 +1,9 @@
 #include "fml/speech_visemes.hpp"
 
-#include <charconv>
 #include <set>
 #include <utility>
+
+#include "xml/text.hpp"
 
 namespace fapc::xmt {
 namespace {
@@ -105,10 +106,6 @@ std::string_view next_field(std::string_view line, std::size_t& at) {
   return line.substr(start, at - start);
 }
 
-bool parse_number(std::string_view field, double& out) {
-  const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), out);
-  return error == std::errc() && end == field.data() + field.size();
-}
 
 }  // namespace
 
@@ -161,8 +158,9 @@ Result<Speech> visemes_from_pho(std::string_view text, const std::string& file_n
     if (phoneme.empty()) continue;
     const auto column = [&](std::string_view field) { return static_cast<int>(field.data() - line.data()) + 1; };
     const std::string_view length = next_field(line, at);
-    double ms = 0;
-    if (length.empty() || !parse_number(length, ms) || ms < 0 || ms > 60000) {
+    const std::optional<double> parsed = xml::decimal(length);
+    const double ms = parsed.value_or(-1);
+    if (!parsed || ms < 0 || ms > 60000) {
       const int col = length.empty() ? static_cast<int>(line.size()) + 1 : column(length);
       return make_error(Location::text(file_name, line_number, col),
                         "phoneme '" + std::string(phoneme) + "' needs a duration in milliseconds (0 to 60000)",
@@ -170,8 +168,7 @@ Result<Speech> visemes_from_pho(std::string_view text, const std::string& file_n
     }
     // The pitch points (position %, Hz) are the voice's, not the face's: checked, then unused.
     for (std::string_view field = next_field(line, at); !field.empty(); field = next_field(line, at)) {
-      double number = 0;
-      if (!parse_number(field, number)) {
+      if (!xml::decimal(field)) {
         return make_error(Location::text(file_name, line_number, column(field)),
                           "'" + std::string(field) + "' is not a number (pitch points are position% and Hz)",
                           std::string(line));

@@ -1,4 +1,5 @@
 #include "xmto/animation_function.hpp"
+#include "xml/text.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -8,20 +9,11 @@
 namespace fapc::xmt {
 namespace {
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  return s;
-}
-
+// SMIL values may carry a '+' sign.
 std::optional<double> number(std::string_view s) {
-  s = trim(s);
+  s = xml::trim(s);
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);
-  double value = 0;
-  const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
-  if (s.empty() || error != std::errc() || end != s.data() + s.size() || !std::isfinite(value))
-    return std::nullopt;
-  return value;
+  return xml::decimal(s);
 }
 
 // "a; b; c" (a trailing ';' allowed, as SVG writers produce it). Empty on a bad item.
@@ -31,7 +23,7 @@ std::optional<std::vector<double>> number_list(std::string_view text) {
   while (start <= text.size()) {
     std::size_t stop = text.find(';', start);
     if (stop == std::string_view::npos) stop = text.size();
-    const std::string_view item = trim(text.substr(start, stop - start));
+    const std::string_view item = xml::trim(text.substr(start, stop - start));
     const bool last = stop == text.size();
     if (!(item.empty() && last && !out.empty())) {
       const auto value = number(item);
@@ -68,7 +60,7 @@ class Reader {
   std::string keyword(const char* name, std::initializer_list<const char*> allowed) {
     const auto text = xml::attribute(element_, name);
     if (!text || error) return *allowed.begin();
-    const std::string_view s = trim(*text);
+    const std::string_view s = xml::trim(*text);
     for (const char* word : allowed)
       if (s == word) return word;
     std::string expected;

@@ -2,16 +2,12 @@
 
 #include <filesystem>
 
+#include "xml/text.hpp"
+
 namespace fapc::xmt {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  return s;
-}
 
 // Two names for one file compare equal when both exist; otherwise by their normal form.
 bool same_file(const std::string& a, const std::string& b) {
@@ -35,7 +31,7 @@ Result<Included> load_included(const xml::XmlDocument& doc, const xmlNode* eleme
   const char* used = src ? "src" : "ref";
   if (!src && !ref) return doc.error(element, "animation needs src (or ref) naming the input to place");
   if (src && ref) warnings.push_back(doc.warning(element, "ref", "ref is ignored: src is given"));
-  std::string_view name = trim(src ? *src : *ref);
+  std::string_view name = xml::trim(src ? *src : *ref);
   if (name.starts_with("file:")) name.remove_prefix(5);
   if (name.empty()) return doc.error(element, used, std::string(used) + " is empty");
   if (name.find("://") != std::string_view::npos) {

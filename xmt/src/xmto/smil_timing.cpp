@@ -6,15 +6,10 @@
 #include <string>
 
 #include "fapc/xmt/xmto.hpp"
+#include "xml/text.hpp"
 
 namespace fapc::xmt {
 namespace {
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  return s;
-}
 
 constexpr const char* kClockForms = "a clock value such as 3, 3s, 250ms or 00:00:03.5";
 
@@ -38,7 +33,7 @@ class Reader {
   void offset(const char* name, std::optional<double>& value, bool& indefinite) {
     const auto text = xml::attribute(element_, name);
     if (!text || error) return;
-    std::string_view s = trim(*text);
+    std::string_view s = xml::trim(*text);
     if (s == "indefinite") {
       indefinite = true;
       return;
@@ -46,7 +41,7 @@ class Reader {
     double sign = 1;
     if (!s.empty() && (s.front() == '+' || s.front() == '-')) {
       sign = s.front() == '-' ? -1 : 1;
-      s = trim(s.substr(1));
+      s = xml::trim(s.substr(1));
     }
     if (const auto seconds = parse_clock_value(s)) {
       value = sign * *seconds;
@@ -59,7 +54,7 @@ class Reader {
   void duration(const char* name, std::optional<double>& value, bool& indefinite, bool allow_media) {
     const auto text = xml::attribute(element_, name);
     if (!text || error) return;
-    const std::string_view s = trim(*text);
+    const std::string_view s = xml::trim(*text);
     if (s == "indefinite") {
       indefinite = true;
       return;
@@ -79,7 +74,7 @@ class Reader {
   void repeat_count(std::optional<double>& value, bool& indefinite) {
     const auto text = xml::attribute(element_, "repeatCount");
     if (!text || error) return;
-    const std::string_view s = trim(*text);
+    const std::string_view s = xml::trim(*text);
     if (s == "indefinite") {
       indefinite = true;
       return;
@@ -97,7 +92,7 @@ class Reader {
   void fill(SmilTiming& timing) {
     const auto text = xml::attribute(element_, "fill");
     if (!text || error) return;
-    const std::string_view s = trim(*text);
+    const std::string_view s = xml::trim(*text);
     if (s == "freeze" || s == "hold") {
       timing.fill = Fill::freeze;
     } else if (s == "remove" || s == "transition") {
