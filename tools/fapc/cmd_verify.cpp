@@ -14,7 +14,6 @@
 #include "fapc/convert.hpp"
 #include "fapc/fba_cli.hpp"
 #include "fapc/report.hpp"
-#include "fapc/xmt/mp4_reader.hpp"
 
 namespace fapc::cli {
 
@@ -102,27 +101,18 @@ Outcome verify_stream(const std::string& path) {
 
 // An MP4's FBA track: each sample must be the plane fapc writes for its frame, with its duration
 // and sync flag.
-Outcome verify_mp4(const std::string& path, const ConvertOptions& options) {
-  auto loaded = load_input(path, options);  // reports errors at the sample's byte in the file
-  if (!loaded) return failed(loaded.error(), kExitBadInput);
-  auto raw = read_file_bytes(path);
-  if (!raw) return failed(raw.error(), kExitBadInput);
-  auto mp4 = xmt::read_mp4(xmt::Bytes(raw->begin(), raw->end()), path);
-  if (!mp4) return failed(mp4.error(), kExitBadInput);
-  auto track = xmt::read_fba_track(*mp4);
-  if (!track) return failed(track.error(), kExitBadInput);
-  FbaDecodeOptions decode_options;
-  decode_options.file = path;
-  auto decoded = decode_fba(xmt::fba_stream_from_track(*track), decode_options);
-  if (!decoded) return failed(decoded.error(), kExitBadInput);
-  report_all(loaded->warnings);
+Outcome verify_mp4(const std::string& path) {
+  auto fba = read_mp4_fba(path);
+  if (!fba) return failed(fba.error(), kExitBadInput);
+  report_all(fba->decoded.warnings);
+  const std::vector<xmt::FbaSample>& samples = fba->track.samples;
   std::size_t bytes = 0;
-  for (const xmt::FbaSample& sample : track->samples) bytes += sample.bytes.size();
+  for (const xmt::FbaSample& sample : samples) bytes += sample.bytes.size();
   const auto same = [&](const EncodedFba& again) {
-    if (again.planes.size() != track->samples.size()) return false;
+    if (again.planes.size() != samples.size()) return false;
     for (std::size_t k = 0; k < again.planes.size(); ++k) {
       const CodedPlane& plane = again.planes[k];
-      const xmt::FbaSample& sample = track->samples[k];
+      const xmt::FbaSample& sample = samples[k];
       const auto first = again.bytes.begin() + static_cast<std::ptrdiff_t>(plane.offset);
       if (!std::equal(first, first + static_cast<std::ptrdiff_t>(plane.size), sample.bytes.begin(), sample.bytes.end()) ||
           plane.intra != sample.sync || static_cast<std::uint32_t>(plane.frames) != sample.duration)
@@ -130,7 +120,7 @@ Outcome verify_mp4(const std::string& path, const ConvertOptions& options) {
     }
     return true;
   };
-  return reencode_matches(path, *decoded, true, same, bytes);
+  return reencode_matches(path, fba->decoded, true, same, bytes);
 }
 
 Outcome verify_input(const std::string& path, const ConvertOptions& options) {
@@ -162,7 +152,7 @@ int run_verify(const std::vector<std::string>& argv) {
     const InputFormat* format = input_format_for(path);
     const std::string kind = format ? format->kind : "";
     const Outcome outcome = kind == "fba"   ? verify_stream(path)
-                            : kind == "mp4" ? verify_mp4(path, options)
+                            : kind == "mp4" ? verify_mp4(path)
                                             : verify_input(path, options);
     if (outcome.status == kExitBadInput || (outcome.status == kExitVerifyFailed && status == kExitOk))
       status = outcome.status;

@@ -6,6 +6,7 @@
 
 #include "fapc/codec/fba.hpp"
 #include "fapc/registry.hpp"
+#include "fapc/xmt/fba_track.hpp"
 
 namespace fapc::cli {
 
@@ -16,5 +17,14 @@ Result<DecodedFba> read_fba_file(const std::string& path);
 // stream is decoded and checked too (a failure's message starts with "verification failed").
 Result<EncodedFba> encode_checked(const FapSequence& sequence, const ConvertOptions& options, const std::string& input,
                                   bool align_planes = false);
+
+// An .mp4's FBA track and what it decodes to (format_mp4.cpp). Errors inside the track point at
+// the byte in the .mp4 ("FBA track sample N"); decoded.warnings holds the container's warnings,
+// then the decoder's.
+struct Mp4Fba {
+  xmt::FbaTrackInput track;
+  DecodedFba decoded;
+};
+Result<Mp4Fba> read_mp4_fba(const std::string& path);
 
 }  // namespace fapc::cli

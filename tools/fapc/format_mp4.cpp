@@ -64,19 +64,12 @@ Result<xmt::Mp4File> read_mp4_path(const std::string& path) {
 }
 
 Result<Loaded> load_mp4(const std::string& path, const ConvertOptions&) {
-  auto mp4 = read_mp4_path(path);
-  if (!mp4) return mp4.error();
-  auto track = xmt::read_fba_track(*mp4);
-  if (!track) return track.error();
+  auto fba = read_mp4_fba(path);
+  if (!fba) return fba.error();
   Loaded loaded;
-  loaded.warnings = mp4->warnings;
-  FbaDecodeOptions options;
-  options.file = path;
-  auto decoded = decode_fba(xmt::fba_stream_from_track(*track), options);
-  if (!decoded) return in_file(decoded.error(), *xmt::find_fba_track(*mp4), *track);
-  loaded.frames = std::move(decoded->sequence);
+  loaded.frames = std::move(fba->decoded.sequence);
   loaded.frames.name = std::filesystem::path(path).stem().string();
-  for (Diagnostic& w : decoded->warnings) loaded.warnings.push_back(std::move(w));
+  loaded.warnings = std::move(fba->decoded.warnings);
   return loaded;
 }
 
@@ -169,5 +162,18 @@ const RegisterInput mp4_input{InputFormat{"mp4", {".mp4"}, load_mp4, describe_mp
 const RegisterOutput mp4_output{OutputFormat{"mp4", {".mp4"}, write_mp4_file}};
 
 }  // namespace
+
+Result<Mp4Fba> read_mp4_fba(const std::string& path) {
+  auto mp4 = read_mp4_path(path);
+  if (!mp4) return mp4.error();
+  auto track = xmt::read_fba_track(*mp4);
+  if (!track) return track.error();
+  FbaDecodeOptions options;
+  options.file = path;
+  auto decoded = decode_fba(xmt::fba_stream_from_track(*track), options);
+  if (!decoded) return in_file(decoded.error(), *xmt::find_fba_track(*mp4), *track);
+  decoded->warnings.insert(decoded->warnings.begin(), mp4->warnings.begin(), mp4->warnings.end());
+  return Mp4Fba{std::move(*track), std::move(*decoded)};
+}
 
 }  // namespace fapc::cli
