@@ -19,6 +19,18 @@ bool field_masked(const std::bitset<kFapCount>& mask, int field) {
   return mask.test(field < kVisemeFields ? 0 : 1);
 }
 
+// Every lattice point within half a step of the value is a correct reconstruction: one, or two
+// when the value lies exactly half way (even steps only); level_chooser.hpp picks between two. A
+// value within half a step of 0 is always sent as 0, so that a FAP the mask fitter leaves out of
+// the next group shows 0 to players either way (mask_fitter.hpp).
+LevelOptions level_options(std::int64_t value, std::int64_t step) {
+  const std::int64_t nearest = step <= 1 ? value : quantise(value, step);
+  LevelOptions options{nearest, nearest};
+  if (step % 2 == 0 && step != 0 && 2 * std::llabs(value - nearest * step) == step && std::llabs(value) > step / 2)
+    options.other = value > nearest * step ? nearest + 1 : nearest - 1;
+  return options;
+}
+
 }  // namespace
 
 GopPlanner::GopPlanner(const FapSequence& sequence, const FbaEncodeOptions& options)
@@ -32,83 +44,55 @@ bool GopPlanner::needs_intra(std::size_t k, std::size_t gop_first) const {
   return options_.intra_period > 0 && k - gop_first >= static_cast<std::size_t>(options_.intra_period);
 }
 
-Status GopPlanner::quantise_intra(std::size_t k, Gop& gop) {
-  const FapFrame& frame = frames_[k];
+void GopPlanner::nearest_levels(std::size_t k, const Gop& gop, std::vector<std::int64_t>& levels) const {
+  levels.clear();
+  for (std::size_t j = 0; j < gop.faps.size(); ++j)
+    levels.push_back(level_options(frames_[k].value(gop.faps[j]), steps_[j]).nearest);
+}
+
+Status GopPlanner::check_intra(const Gop& gop) const {
+  const FapFrame& frame = frames_[gop.first];
   for (std::size_t j = 0; j < gop.faps.size(); ++j) {
+    if (within(nearest_[j])) continue;
     const int fap = gop.faps[j];
-    const std::int64_t step = steps_[j];
-    const std::int64_t q = quantise(frame.value(fap), step);
-    if (q > limit_ || q < -limit_) {
-      const FapInfo& info = fap_table()[FaceState::index(fap)];
-      return make_error(Location{}, "frame " + std::to_string(frame.number) + ": FAP " +
-                                        std::to_string(fap) + " (" + std::string(info.name) +
-                                        ") value " + std::to_string(frame.value(fap)) +
-                                        " is beyond the largest range the bitstream carries (+-" +
-                                        std::to_string(limit_ * std::max<std::int64_t>(step, 1)) +
-                                        " at fap_quant " + std::to_string(options_.quant) + ")");
-    }
-    gop.symbols.push_back(static_cast<std::int16_t>(q));
-    levels_[FaceState::index(fap)] = q;
-  }
-  const auto fields = coded_fields(frame);
-  for (int field = 0; field < kCodedFieldCount; ++field) {
-    const auto f = static_cast<std::size_t>(field);
-    if (!field_masked(gop.mask, field)) {
-      gop.fields.push_back(0);
-      continue;
-    }
-    const std::int64_t q = quantise(fields[f], quant_.field_step(field));
-    gop.fields.push_back(static_cast<std::int16_t>(q));
-    recon_fields_[f] = static_cast<std::int32_t>(dequantise(q, quant_.field_step(field)));
+    const FapInfo& info = fap_table()[FaceState::index(fap)];
+    return make_error(Location{}, "frame " + std::to_string(frame.number) + ": FAP " + std::to_string(fap) + " (" +
+                                      std::string(info.name) + ") value " + std::to_string(frame.value(fap)) +
+                                      " is beyond the largest range the bitstream carries (+-" +
+                                      std::to_string(limit_ * std::max<std::int64_t>(steps_[j], 1)) +
+                                      " at fap_quant " + std::to_string(options_.quant) + ")");
   }
   return ok_status();
 }
 
-bool GopPlanner::quantise_predictive(std::size_t k, Gop& gop) {
-  const FapFrame& frame = frames_[k];
-  scratch_.clear();
-  const auto& levels = levels_;  // changed only once the whole frame fits
-  for (std::size_t j = 0; j < gop.faps.size(); ++j) {
-    const std::size_t i = FaceState::index(gop.faps[j]);
-    const std::int64_t step = steps_[j];
-    const std::int64_t value = frame.values[i];
-    // Reconstructions stay on the lattice step * Z (the level is the multiple). Every lattice
-    // point within half a step of the value is a correct reconstruction: one, or two when the
-    // value lies exactly half way (even steps only). Of two, the planner takes the difference
-    // this group has coded more often so far, which the adaptive model codes in fewer bits; on a
-    // tie, the reference's rule: the quantised difference, which rounds half away from zero (half
-    // a step down to 0). Decoded frames sit on the lattice and leave no choice, so re-encoding
-    // them takes the same path. Whether a range can carry the frame is judged on these
-    // differences too.
-    const std::int64_t level = step <= 1 ? value : quantise(value, step);
-    std::int64_t q = level - levels[i];
-    if (step % 2 == 0 && step != 0 && 2 * std::llabs(value - level * step) == step) {
-      std::int64_t other = (value > level * step ? level + 1 : level - 1) - levels[i];
-      if (quantise(value - levels[i] * step, step) == other) std::swap(q, other);
-      if (history_.count(j, other) > history_.count(j, q)) std::swap(q, other);
-      if (!within(q)) q = other;
-    }
-    if (!within(q)) return false;
-    scratch_.push_back(static_cast<std::int16_t>(q));
+void GopPlanner::choose_levels(Gop& gop, std::size_t frames) {
+  const std::size_t n = gop.faps.size();
+  gop.symbols.resize(frames * n);
+  column_.resize(frames);
+  levels_.resize(frames);
+  for (std::size_t j = 0; j < n; ++j) {
+    for (std::size_t t = 0; t < frames; ++t) column_[t] = level_options(frames_[gop.first + t].value(gop.faps[j]), steps_[j]);
+    chooser_.choose(column_, limit_, quant_.range_scaler(), levels_);
+    gop.symbols[j] = static_cast<std::int16_t>(levels_[0]);
+    for (std::size_t t = 1; t < frames; ++t)
+      gop.symbols[t * n + j] = static_cast<std::int16_t>(levels_[t] - levels_[t - 1]);
   }
-  for (std::size_t j = 0; j < scratch_.size(); ++j) {
-    levels_[FaceState::index(gop.faps[j])] += scratch_[j];
-    history_.add(j, scratch_[j]);
-  }
-  gop.symbols.insert(gop.symbols.end(), scratch_.begin(), scratch_.end());
-  const auto fields = coded_fields(frame);
+}
+
+void GopPlanner::quantise_fields(std::size_t k, bool intra, Gop& gop) {
+  const auto fields = coded_fields(frames_[k]);
   for (int field = 0; field < kCodedFieldCount; ++field) {
     const auto f = static_cast<std::size_t>(field);
     if (!field_masked(gop.mask, field)) {
       gop.fields.push_back(0);
       continue;
     }
-    // Blends and intensities stay within -B..B: both values lie in 0..63 (B * step >= 63).
-    const std::int64_t q = quantise(fields[f] - recon_fields_[f], quant_.field_step(field));
+    // Predictive blends and intensities stay within -B..B: both values lie in 0..63 (B * step >= 63).
+    const std::int32_t base = intra ? 0 : recon_fields_[f];
+    const std::int64_t q = quantise(fields[f] - base, quant_.field_step(field));
     gop.fields.push_back(static_cast<std::int16_t>(q));
-    recon_fields_[f] += static_cast<std::int32_t>(dequantise(q, quant_.field_step(field)));
+    recon_fields_[f] = base + static_cast<std::int32_t>(dequantise(q, quant_.field_step(field)));
   }
-  return true;
 }
 
 void GopPlanner::fit_ranges(Gop& gop) const {
@@ -149,10 +133,20 @@ Result<Gop> GopPlanner::next() {
     if (gop.mask.test(FaceState::index(fap))) gop.faps.push_back(fap);
   steps_.clear();
   for (const int fap : gop.faps) steps_.push_back(quant_.step(fap));
-  history_.clear(gop.faps.size());
-  if (auto status = quantise_intra(next_, gop); !status) return status.error();
+  nearest_levels(next_, gop, nearest_);
+  if (auto status = check_intra(gop); !status) return status.error();
+  // The group ends where the next intra plane must go. Whether a range can carry each difference
+  // is judged on the nearest levels; the chooser then keeps to the same bound.
   std::size_t k = next_ + 1;
-  while (k < frames_.size() && !needs_intra(k, gop.first) && quantise_predictive(k, gop)) ++k;
+  for (; k < frames_.size() && !needs_intra(k, gop.first); ++k) {
+    previous_nearest_.swap(nearest_);
+    nearest_levels(k, gop, nearest_);
+    bool fits = true;
+    for (std::size_t j = 0; j < nearest_.size(); ++j) fits = fits && within(nearest_[j] - previous_nearest_[j]);
+    if (!fits) break;
+  }
+  choose_levels(gop, k - next_);
+  for (std::size_t f = next_; f < k; ++f) quantise_fields(f, f == next_, gop);
   gop.end = next_ = k;
   fit_ranges(gop);
   return gop;

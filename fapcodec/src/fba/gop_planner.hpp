@@ -12,6 +12,7 @@
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/fba.hpp"
 #include "fba/face_state.hpp"
+#include "fba/level_chooser.hpp"
 
 namespace fapc::fba {
 
@@ -29,50 +30,37 @@ struct Gop {
   RangeCodes codes{};  // the four range lists the intra plane signals
 };
 
-// How often each FAP of a group has coded each small difference, to choose between two equally
-// good reconstructions. Differences beyond +-64 count as never seen.
-class DifferenceCounts {
- public:
-  void clear(std::size_t faps) { counts_.assign(faps * kWidth, 0); }
-  std::uint32_t count(std::size_t j, std::int64_t q) const {
-    return q >= -kSpan && q < kSpan ? counts_[j * kWidth + static_cast<std::size_t>(q + kSpan)] : 0;
-  }
-  void add(std::size_t j, std::int64_t q) {
-    if (q >= -kSpan && q < kSpan) ++counts_[j * kWidth + static_cast<std::size_t>(q + kSpan)];
-  }
-
- private:
-  static constexpr std::int64_t kSpan = 64;
-  static constexpr std::size_t kWidth = 2 * kSpan;
-  std::vector<std::uint32_t> counts_;  // [fap position in the group][difference + kSpan]
-};
-
 class GopPlanner {
  public:
   GopPlanner(const FapSequence& sequence, const FbaEncodeOptions& options);
 
   bool has_next() const { return next_ < frames_.size(); }
-  // The next group, from the current frame up to the next frame that needs an intra plane.
-  // Fails when an intra value lies beyond the largest range the bitstream can carry.
+  // The next group, from the current frame up to the next frame that needs an intra plane: a
+  // mask change, the intra period, or a difference no range can carry. Fails when an intra value
+  // lies beyond the largest range the bitstream can carry.
   Result<Gop> next();
 
  private:
   bool needs_intra(std::size_t k, std::size_t gop_first) const;
-  Status quantise_intra(std::size_t k, Gop& gop);
-  bool quantise_predictive(std::size_t k, Gop& gop);  // false: a difference needs a wider range
-  bool within(std::int64_t q) const { return q <= limit_ && q >= -limit_; }
+  // The standard's rounding of every FAP of the group in frame k, into `levels`.
+  void nearest_levels(std::size_t k, const Gop& gop, std::vector<std::int64_t>& levels) const;
+  Status check_intra(const Gop& gop) const;
+  void choose_levels(Gop& gop, std::size_t frames);
+  void quantise_fields(std::size_t k, bool intra, Gop& gop);
   void fit_ranges(Gop& gop) const;
+  bool within(std::int64_t q) const { return q <= limit_ && q >= -limit_; }
 
   const std::vector<FapFrame>& frames_;
   FbaEncodeOptions options_;
   FaceState quant_;  // only fap_quant, steps and field limits are used
   std::int32_t limit_;  // the largest |q| any range can carry: 31 * 60 / scaler
   std::size_t next_ = 0;
-  std::array<std::int64_t, kFapCount> levels_{};  // reconstructions as multiples of their step
-  std::vector<std::int64_t> steps_;                // of the group's FAPs, in coding order
+  std::vector<std::int64_t> steps_;  // of the group's FAPs, in coding order
+  std::vector<std::int64_t> nearest_, previous_nearest_;  // nearest levels of two frames
+  std::vector<LevelOptions> column_;  // one FAP's choices over the group
+  std::vector<std::int64_t> levels_;  // and its chosen levels
+  LevelChooser chooser_;
   std::array<std::int32_t, kCodedFieldCount> recon_fields_{};
-  std::vector<std::int16_t> scratch_;
-  DifferenceCounts history_;  // of the current group
 };
 
 }  // namespace fapc::fba

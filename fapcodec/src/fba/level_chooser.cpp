@@ -1,0 +1,141 @@
+#include "fba/level_chooser.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "fba/fba_quant.hpp"
+
+namespace fapc::fba {
+
+namespace {
+
+// Re-planning converges in two or three rounds on real files; the bound only caps the work.
+constexpr int kMaxReplans = 4;
+constexpr double kInfinite = std::numeric_limits<double>::infinity();
+
+std::int64_t side(std::int64_t magnitude, int scaler) {
+  return range_value_for(magnitude, scaler) * kRangeDelta / scaler;
+}
+
+// What the uniform intra model costs for `level`: log2 of its fitted intra alphabet.
+double intra_bits(std::int64_t level, int scaler) {
+  return std::log2(static_cast<double>(fitted_alphabet(std::min<std::int64_t>(level, 0), level, scaler)));
+}
+
+std::int64_t level_of(const LevelOptions& option, int state) { return state == 0 ? option.nearest : option.other; }
+
+// log2(n!) and log2(n + 1/2) for counts up to n, grown on demand: the chooser needs them for every
+// count of every chain, and the logarithms would otherwise dominate the encoder's time.
+class CountLogs {
+ public:
+  double factorial(std::uint32_t n) { return grow(n), factorial_[n]; }
+  double half_more(std::uint32_t n) { return grow(n), half_more_[n]; }
+
+ private:
+  void grow(std::uint32_t n) {
+    while (factorial_.size() <= n) {
+      const auto k = static_cast<double>(factorial_.size());
+      factorial_.push_back(factorial_.empty() ? 0.0 : factorial_.back() + std::log2(k));
+      half_more_.push_back(std::log2(k + 0.5));
+    }
+  }
+  std::vector<double> factorial_, half_more_;
+};
+
+thread_local CountLogs count_logs;
+
+}  // namespace
+
+std::int64_t fitted_alphabet(std::int64_t low, std::int64_t high, int range_scaler) {
+  return side(std::max<std::int64_t>(high, 0), range_scaler) + side(std::max<std::int64_t>(-low, 0), range_scaler) + 1;
+}
+
+void LevelChooser::choose(std::span<const LevelOptions> options, std::int64_t limit, int range_scaler,
+                          std::span<std::int64_t> levels) {
+  scaler_ = range_scaler;
+  bool free = false;
+  for (std::size_t t = 0; t < options.size(); ++t) {
+    levels[t] = options[t].nearest;
+    free = free || options[t].other != options[t].nearest;
+  }
+  if (!free || options.size() < 2) return;
+  double cost = exact_cost(levels);  // leaves the counts of `levels` for the first replan
+  trial_.assign(levels.begin(), levels.end());
+  for (int round = 0; round < kMaxReplans; ++round) {
+    if (!replan(options, limit, trial_)) break;
+    const double trial_cost = exact_cost(trial_);  // and those of the trial for the next
+    if (!(trial_cost < cost)) break;
+    cost = trial_cost;
+    std::copy(trial_.begin(), trial_.end(), levels.begin());
+  }
+}
+
+void LevelChooser::count(std::span<const std::int64_t> levels) {
+  std::int64_t low = 0, high = 0;
+  for (std::size_t t = 1; t < levels.size(); ++t) {
+    low = std::min(low, levels[t] - levels[t - 1]);
+    high = std::max(high, levels[t] - levels[t - 1]);
+  }
+  low_ = low;
+  counts_.assign(static_cast<std::size_t>(high - low + 1), 0);
+  for (std::size_t t = 1; t < levels.size(); ++t) ++counts_[static_cast<std::size_t>(levels[t] - levels[t - 1] - low)];
+  alphabet_ = fitted_alphabet(low, high, scaler_);
+}
+
+double LevelChooser::exact_cost(std::span<const std::int64_t> levels) {
+  count(levels);
+  const auto symbols = static_cast<double>(levels.size() - 1);
+  const auto alphabet = static_cast<double>(alphabet_);
+  double bits = (std::lgamma(symbols + alphabet) - std::lgamma(alphabet)) / std::log(2.0);
+  for (const std::uint32_t n : counts_)
+    if (n > 1) bits -= count_logs.factorial(n);
+  return bits + intra_bits(levels[0], scaler_);
+}
+
+bool LevelChooser::replan(std::span<const LevelOptions> options, std::int64_t limit, std::span<std::int64_t> levels) {
+  // Prices from the counts count() left: the adaptive model's long-run cost of each difference,
+  // with half a count for differences not seen yet (a Krichevsky-Trofimov style estimate).
+  const double log_total = std::log2(static_cast<double>(levels.size() - 1) + 0.5 * static_cast<double>(alphabet_));
+  price_.resize(counts_.size());
+  for (std::size_t i = 0; i < counts_.size(); ++i) price_[i] = log_total - count_logs.half_more(counts_[i]);
+  const double unseen = log_total + 1;
+  const auto price = [&](std::int64_t d) {
+    if (d > limit || d < -limit) return kInfinite;
+    const std::int64_t i = d - low_;
+    return i >= 0 && i < static_cast<std::int64_t>(price_.size()) ? price_[static_cast<std::size_t>(i)] : unseen;
+  };
+
+  const std::size_t n = options.size();
+  from_.assign(2 * n, 0);
+  double best[2];
+  for (int s = 0; s < 2; ++s) {
+    const std::int64_t level = level_of(options[0], s);
+    best[s] = level > limit || level < -limit ? kInfinite : intra_bits(level, scaler_);
+  }
+  if (options[0].other == options[0].nearest) best[1] = kInfinite;
+  for (std::size_t t = 1; t < n; ++t) {
+    double next[2] = {kInfinite, kInfinite};
+    for (int s = 0; s < 2; ++s) {
+      if (s == 1 && options[t].other == options[t].nearest) continue;
+      for (int p = 0; p < 2; ++p) {
+        const double c = best[p] + price(level_of(options[t], s) - level_of(options[t - 1], p));
+        if (c < next[s]) {
+          next[s] = c;
+          from_[2 * t + static_cast<std::size_t>(s)] = static_cast<std::uint8_t>(p);
+        }
+      }
+    }
+    best[0] = next[0];
+    best[1] = next[1];
+  }
+  int s = best[1] < best[0] ? 1 : 0;
+  if (best[s] == kInfinite) return false;
+  for (std::size_t t = n; t-- > 0;) {
+    levels[t] = level_of(options[t], s);
+    s = from_[2 * t + static_cast<std::size_t>(s)];
+  }
+  return true;
+}
+
+}  // namespace fapc::fba
