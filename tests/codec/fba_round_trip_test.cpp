@@ -1,6 +1,7 @@
-// Property tests: random sequences with random masks, ranges, quantisers and intra periods come
-// back within half a quantiser step (exactly at fap_quant 0), and decoding then re-encoding gives
-// the same bytes. The comparison here is written out again rather than trusting verify_fba alone.
+// Property tests: random sequences with random masks, ranges, quantisers, intra periods and mask
+// modes come back within half a quantiser step (exactly at fap_quant 0), and decoding then
+// re-encoding gives the same bytes. The comparison here is written out again rather than trusting
+// verify_fba alone: with fitted masks, what three kinds of player show (docs/fba.md 2, "Masks").
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -11,8 +12,35 @@
 namespace fapc {
 namespace {
 
+// What a player shows of each FAP 3..68 in each frame: kHolds keeps an absent FAP's last value,
+// kZero shows it at 0, kPartner copies its present left/right partner (else 0).
+enum Player { kHolds, kZero, kPartner };
+
+std::vector<std::array<std::int64_t, kFapCount>> shown(const FapSequence& sequence, Player player) {
+  std::vector<std::array<std::int64_t, kFapCount>> frames;
+  std::array<std::int64_t, kFapCount> held{};
+  for (const FapFrame& frame : sequence.frames) {
+    std::array<std::int64_t, kFapCount> now{};
+    for (int fap = 3; fap <= kFapCount; ++fap) {
+      const auto i = static_cast<std::size_t>(fap - 1);
+      if (frame.has(fap)) held[i] = frame.value(fap);
+      // Left/right partners, as the FAP table pairs them: 6/7 ... 12/13, 19/20 ... 41/42,
+      // 53/54 ... 61/62, 65/66, 67/68 (checked against the names by hand).
+      const bool paired = (fap >= 6 && fap <= 13) || (fap >= 19 && fap <= 42) || (fap >= 53 && fap <= 62) || fap >= 65;
+      const bool lower = fap <= 13 ? fap % 2 == 0 : fap % 2 == 1;
+      const int partner = !paired ? 0 : lower ? fap + 1 : fap - 1;
+      if (frame.has(fap)) now[i] = frame.value(fap);
+      else if (player == kHolds) now[i] = held[i];
+      else if (player == kPartner && partner != 0 && frame.has(partner)) now[i] = frame.value(partner);
+    }
+    frames.push_back(now);
+  }
+  return frames;
+}
+
 // Checks `decoded` against `input` frame by frame; returns a description of the first mismatch.
-std::string first_mismatch(const FapSequence& input, const FapSequence& decoded, int quant) {
+std::string first_mismatch(const FapSequence& input, const FapSequence& decoded, const FbaEncodeOptions& options) {
+  const int quant = options.quant;
   if (input.frames.size() != decoded.frames.size()) return "frame count";
   if (!input.frames.empty() && input.fps != decoded.fps) return "fps";
   for (std::size_t k = 0; k < input.frames.size(); ++k) {
@@ -20,7 +48,8 @@ std::string first_mismatch(const FapSequence& input, const FapSequence& decoded,
     const FapFrame& b = decoded.frames[k];
     const std::string at = "frame " + std::to_string(k) + ": ";
     if (b.number != a.number - input.frames.front().number) return at + "number";
-    if (a.mask != b.mask) return at + "mask";
+    if (options.masks == FbaMaskMode::keep ? a.mask != b.mask : a.has(1) != b.has(1) || a.has(2) != b.has(2))
+      return at + "mask";
     const int half = quant / 2;
     if (a.has(1) && (a.viseme.select1 != b.viseme.select1 || a.viseme.select2 != b.viseme.select2 ||
                      a.viseme.def != b.viseme.def || std::abs(a.viseme.blend - b.viseme.blend) > half ||
@@ -31,12 +60,18 @@ std::string first_mismatch(const FapSequence& input, const FapSequence& decoded,
                      std::abs(a.expression.intensity1 - b.expression.intensity1) > half ||
                      std::abs(a.expression.intensity2 - b.expression.intensity2) > half))
       return at + "expression";
-    for (int fap = 3; fap <= kFapCount; ++fap) {
-      if (!a.has(fap)) continue;
-      const std::int64_t tolerance = static_cast<std::int64_t>(fap_table()[static_cast<std::size_t>(fap - 1)].quant_step) * quant / 2;
-      if (std::llabs(static_cast<std::int64_t>(a.value(fap)) - b.value(fap)) > tolerance)
-        return at + "FAP " + std::to_string(fap) + " " + std::to_string(a.value(fap)) + " -> " + std::to_string(b.value(fap));
-    }
+  }
+  for (const Player player : {kHolds, kZero, kPartner}) {
+    const auto want = shown(input, player);
+    const auto got = shown(decoded, player);
+    for (std::size_t k = 0; k < want.size(); ++k)
+      for (int fap = 3; fap <= kFapCount; ++fap) {
+        const auto i = static_cast<std::size_t>(fap - 1);
+        const std::int64_t tolerance = static_cast<std::int64_t>(fap_table()[i].quant_step) * quant / 2;
+        if (std::llabs(want[k][i] - got[k][i]) > tolerance)
+          return "frame " + std::to_string(k) + ": FAP " + std::to_string(fap) + " " + std::to_string(want[k][i]) +
+                 " -> " + std::to_string(got[k][i]) + " (player " + std::to_string(player) + ")";
+      }
   }
   return {};
 }
@@ -46,18 +81,20 @@ void expect_round_trip(const FapSequence& input, const FbaEncodeOptions& options
   ASSERT_TRUE(encoded.ok()) << label << ": " << format_diagnostic(encoded.error());
   auto decoded = decode_fba(encoded->bytes);
   ASSERT_TRUE(decoded.ok()) << label << ": " << format_diagnostic(decoded.error());
-  EXPECT_EQ(first_mismatch(input, decoded->sequence, options.quant), "") << label;
+  EXPECT_EQ(first_mismatch(input, decoded->sequence, options), "") << label;
   auto again = encode_fba(decoded->sequence, options);
   ASSERT_TRUE(again.ok()) << label;
   EXPECT_EQ(again->bytes, encoded->bytes) << label << ": re-encoding differs";
   EXPECT_TRUE(verify_fba(input, *encoded, options).ok()) << label;
 
-  // Planes: one per frame; intra at the start, at every mask change and within the period.
+  // Planes: one per frame; intra at the start, at every change of the coded mask and within the
+  // period.
   const auto& planes = encoded->planes;
+  const auto& coded = decoded->sequence.frames;
   ASSERT_EQ(planes.size(), input.frames.size()) << label;
   std::size_t last_intra = 0, intra_count = 0;
   for (std::size_t k = 0; k < planes.size(); ++k) {
-    if (k == 0 || input.frames[k].mask != input.frames[k - 1].mask) {
+    if (k == 0 || coded[k].mask != coded[k - 1].mask) {
       EXPECT_TRUE(planes[k].intra) << label << " plane " << k;
     }
     if (planes[k].intra) {
@@ -91,6 +128,7 @@ TEST(FbaRoundTrip, RandomSequencesAtEveryQuantiser) {
       options.ranges = trial % 2 ? FbaRangeMode::max : FbaRangeMode::fit;
       options.align_planes = trial % 4 == 1;
       options.list_every_mask = trial == 5;
+      options.masks = trial % 3 == 1 ? FbaMaskMode::keep : FbaMaskMode::fit;
       expect_round_trip(input, options, "quant " + std::to_string(quant) + " trial " + std::to_string(trial));
       if (testing::Test::HasFatalFailure()) return;
     }
@@ -105,6 +143,7 @@ TEST(FbaRoundTrip, LosslessAtQuantZero) {
   const FapSequence input = test::random_sequence(rng, shape);
   FbaEncodeOptions options;
   options.quant = 0;
+  options.masks = FbaMaskMode::keep;  // with fitted masks, FAPs at 0 may come and go
   auto encoded = encode_fba(input, options);
   ASSERT_TRUE(encoded.ok()) << format_diagnostic(encoded.error());
   auto decoded = decode_fba(encoded->bytes);

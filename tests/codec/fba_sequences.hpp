@@ -1,6 +1,7 @@
 // Deterministic synthetic FAP sequences for the codec tests (the libFLAC habit: generate inputs
 // instead of committing binaries): random masks that change now and then, random walks with
-// occasional jumps, gaps in the numbering, FAP 1/2 fields.
+// occasional jumps, rests at 0 (where the encoder may fit masks), gaps in the numbering, FAP 1/2
+// fields.
 #pragma once
 
 #include <algorithm>
@@ -49,6 +50,7 @@ inline FapSequence random_sequence(std::mt19937& rng, const SequenceShape& shape
       const std::int64_t bound = shape.quant == 0 ? 1800 : 1800 * qp;
       std::int64_t& v = walk[i];
       v += pick(0, 20) == 0 ? pick(-900, 900) * qp : pick(-3, 3) * qp + pick(-2, 2);
+      if (pick(0, 15) == 0) v = pick(-1, 1) * qp / 2;  // back to rest, within half a step of 0
       v = std::clamp<std::int64_t>(v, -bound, bound);
       if (mask.test(i)) frame.values[i] = static_cast<std::int32_t>(v);
     }

@@ -3,6 +3,7 @@
 
 #include "fapc/codec/fba.hpp"
 #include "fba/gop_planner.hpp"
+#include "fba/mask_fitter.hpp"
 #include "fba/plane_writer.hpp"
 
 namespace fapc {
@@ -70,8 +71,11 @@ Status check_input(const FapSequence& sequence, const FbaEncodeOptions& options)
 
 Result<EncodedFba> encode_fba(const FapSequence& sequence, const FbaEncodeOptions& options) {
   if (auto status = check_input(sequence, options); !status) return status.error();
-  fba::GopPlanner planner(sequence, options);
-  fba::PlaneWriter writer(sequence, options);
+  FapSequence fitted;
+  if (options.masks == FbaMaskMode::fit) fitted = {sequence.name, sequence.fps, fba::fit_masks(sequence.frames, options.quant)};
+  const FapSequence& coded = options.masks == FbaMaskMode::fit ? fitted : sequence;
+  fba::GopPlanner planner(coded, options);
+  fba::PlaneWriter writer(coded, options);
   while (planner.has_next()) {
     auto gop = planner.next();
     if (!gop) return gop.error();

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "fapc/codec/fba.hpp"
+#include "fba/shown_values.hpp"
 
 namespace fapc {
 
@@ -51,20 +52,32 @@ Status verify_fba(const FapSequence& input, const EncodedFba& encoded, const Fba
   if (!in.empty() && decoded->sequence.fps != input.fps)
     return failure(file, "frame rate " + std::to_string(decoded->sequence.fps) + " decoded, " +
                              std::to_string(input.fps) + " encoded");
+  fba::HeldValues held_in, held_out;
   for (std::size_t k = 0; k < in.size(); ++k) {
     if (out[k].number != in[k].number - in.front().number)
       return failure(file, at_frame(in[k]) + "decoded as frame " + std::to_string(out[k].number));
-    if (out[k].mask != in[k].mask) return failure(file, at_frame(in[k]) + "the mask differs");
+    const bool masks_differ = options.masks == FbaMaskMode::keep ? out[k].mask != in[k].mask
+                                                                 : out[k].has(1) != in[k].has(1) || out[k].has(2) != in[k].has(2);
+    if (masks_differ) return failure(file, at_frame(in[k]) + "the mask differs");
     if (auto differs = compare_fields(in[k], out[k], options.quant); !differs.empty())
       return failure(file, at_frame(in[k]) + differs);
+    held_in.advance(in[k]);
+    held_out.advance(out[k]);
     for (int fap = 3; fap <= kFapCount; ++fap) {
-      if (!in[k].has(fap)) continue;
       const std::int64_t tolerance = fba_tolerance(fap, options.quant);
-      if (!close(in[k].value(fap), out[k].value(fap), tolerance))
-        return failure(file, at_frame(in[k]) + "FAP " + std::to_string(fap) + " (" +
-                                 std::string(fap_table()[static_cast<std::size_t>(fap - 1)].name) + ") decoded " +
-                                 std::to_string(out[k].value(fap)) + ", encoded " + std::to_string(in[k].value(fap)) +
-                                 " (tolerance " + std::to_string(tolerance) + ")");
+      const auto check = [&](std::int64_t got, std::int64_t wanted, const char* player) -> std::string {
+        if (close(got, wanted, tolerance)) return {};
+        return at_frame(in[k]) + "FAP " + std::to_string(fap) + " (" +
+               std::string(fap_table()[static_cast<std::size_t>(fap - 1)].name) + ") decoded " +
+               std::to_string(got) + ", encoded " + std::to_string(wanted) + " (tolerance " +
+               std::to_string(tolerance) + ", as " + player + " shows it)";
+      };
+      for (const std::string& differs :
+           {check(fba::shown_as_zero(out[k], fap), fba::shown_as_zero(in[k], fap), "a player that shows absent FAPs at 0"),
+            check(held_out.held(fap), held_in.held(fap), "a player that holds absent FAPs"),
+            check(fba::shown_with_partner(out[k], fap), fba::shown_with_partner(in[k], fap),
+                  "the reference decoder, which copies a FAP into its absent partner,")})
+        if (!differs.empty()) return failure(file, differs);
     }
   }
   auto again = encode_fba(decoded->sequence, options);

@@ -23,11 +23,18 @@ enum class FbaRangeMode {
   max,  // every range at its largest, +-1860 quantised units
 };
 
+enum class FbaMaskMode {
+  fit,   // the encoder may send a FAP the input leaves out (as 0), or leave out one it sends,
+         // wherever no player shows a difference, to save intra planes (docs/fba.md 2, "Masks")
+  keep,  // every plane carries exactly its frame's mask
+};
+
 struct FbaEncodeOptions {
   int quant = 1;          // fap_quant 0..31: step = FAP quantiser (QP) x quant; 0 is lossless
   int intra_period = 0;   // >0: at most this many planes from one intra plane to the next;
                           // 0: intra planes only where needed (first frame, mask changes)
   FbaRangeMode ranges = FbaRangeMode::fit;
+  FbaMaskMode masks = FbaMaskMode::fit;
   bool align_planes = false;  // start every plane with its start code and end it byte-aligned,
                               // so each plane is one MP4 sample (xmt-and-mp4.md 4.3)
   bool list_every_mask = false;  // mask type 01 (bits listed) for every group, the layout of the
@@ -120,11 +127,13 @@ Result<DecodedFba> decode_fba(std::span<const std::uint8_t> bytes, const FbaDeco
 
 // ---- verification ------------------------------------------------------------------------------
 
-// Decodes `encoded` and checks it against `input`: the same frames, masks and numbers (relative
-// to the first), every FAP within fba_tolerance() (exact at quant 0), viseme and expression
-// fields exact but for blends and intensities (within half of quant); then re-encodes the
-// decoded frames with the same options and checks the bytes are identical. The error's message
-// starts with "verification failed" and names the frame and FAP.
+// Decodes `encoded` and checks it against `input`: the same frames and numbers (relative to the
+// first); every FAP 3..68 shows within fba_tolerance() of the input (exact at quant 0) to a player
+// that holds absent FAPs, to one that shows them at 0, and to one that copies them from their
+// left/right partner, and with FbaMaskMode::keep the masks are the same; viseme and expression
+// fields exact but for blends and intensities (within half of quant); then re-encodes the decoded
+// frames with the same options and checks the bytes are identical. The error's message starts
+// with "verification failed" and names the frame and FAP.
 Status verify_fba(const FapSequence& input, const EncodedFba& encoded, const FbaEncodeOptions& options,
                   const std::string& file = "stream.fba");
 

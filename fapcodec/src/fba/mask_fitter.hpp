@@ -1,0 +1,26 @@
+// The masks the encoder codes (docs/fba.md 2, "Masks"). Masks travel only in intra planes, so a
+// change of mask costs an intra plane: four range lists and fresh adaptive models, some 1,500 to
+// 2,500 bits in the Xface files, whose eyelids appear in the mask only while they blink. Where it
+// changes nothing a player shows, the encoder may send a FAP the input leaves out (as 0) or leave
+// out one the input sends: the fitter uses that freedom to change the mask as seldom as it can,
+// and leaves out FAPs that stay at 0.
+//
+// A FAP is free in frame k when 0 is within half a step of what every player shows of it
+// (shown_values.hpp) in frames k - 1 and k, and of its left/right partner in frame k. So a player
+// that holds values shows 0 either way (the FAP was 0 before), one that shows absent FAPs at 0
+// does too, and so does the reference decoder, which would copy the partner into it. Where a FAP
+// is not free, the input's mask bit stands. Private to fapcodec.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "fapc/codec/fap_sequence.hpp"
+
+namespace fapc::fba {
+
+// The frames as coded: the masks fitted, FAPs sent where the input leaves them out carry 0.
+// `quant` is fap_quant, which sets the tolerance (half a step).
+std::vector<FapFrame> fit_masks(std::span<const FapFrame> frames, int quant);
+
+}  // namespace fapc::fba
