@@ -1,4 +1,4 @@
-// fapc encode IN -o OUT.fba [--quant Q] [--intra-period N] [--ranges fit|max] [--align-planes]
+// fapc encode IN -o OUT.fba [--quant Q] [--intra-period N] [--ranges fit|max] [--masks fit|keep] [--align-planes]
 // [--verify]: any input to a raw FBA stream, with the encoder's settings in view.
 #include <iostream>
 
@@ -12,7 +12,7 @@ namespace fapc::cli {
 namespace {
 
 int run_encode(const std::vector<std::string>& argv) {
-  Args args(argv, {"output", "quant", "intra-period", "ranges"}, {"verify", "align-planes"});
+  Args args(argv, {"output", "quant", "intra-period", "ranges", "masks"}, {"verify", "align-planes"});
   const ConvertOptions options = convert_options(args);
   if (!args.ok()) return usage_error("encode", args.error());
   if (args.positionals().size() != 1) return usage_error("encode", "expected one input file");
@@ -43,7 +43,7 @@ int run_encode(const std::vector<std::string>& argv) {
 
 const RegisterCommand encode_command{
     "encode",
-    "fapc encode IN.fap -o OUT.fba [--quant Q] [--intra-period N] [--ranges fit|max] [--align-planes] [--verify]",
+    "fapc encode IN.fap -o OUT.fba [--quant Q] [--intra-period N] [--ranges fit|max] [--masks fit|keep] [--align-planes] [--verify]",
     run_encode};
 
 }  // namespace

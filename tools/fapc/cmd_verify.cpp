@@ -1,4 +1,4 @@
-// fapc verify FILE... [--quant Q] [--intra-period N] [--ranges fit|max] [--json]
+// fapc verify FILE... [--quant Q] [--intra-period N] [--ranges fit|max] [--masks fit|keep] [--json]
 // A .fba stream: it decodes, and encoding its frames again with the settings it shows gives the
 // same bytes (true of every stream fapc writes). An .mp4: the same for its FBA track, sample by
 // sample, durations and sync flags included. Any other input: it encodes with the given
@@ -71,16 +71,18 @@ Outcome reencode_matches(const std::string& path, const DecodedFba& decoded, boo
     options.quant = intra.fap_quant;
   }
   options.align_planes = aligned;
-  for (const FbaRangeMode ranges : {FbaRangeMode::fit, FbaRangeMode::max})
-    for (const int period : intra_periods(decoded.sequence, info))
-      for (const bool listed : {false, true}) {
-        options.ranges = ranges;
-        options.intra_period = period;
-        options.list_every_mask = listed;
-        auto again = encode_fba(decoded.sequence, options);
-        if (again && same(*again))
-          return {kExitOk, summary(decoded.sequence.frames.size(), bytes, info.bits_per_frame(), options.quant)};
-      }
+  for (const FbaMaskMode masks : {FbaMaskMode::fit, FbaMaskMode::keep})
+    for (const FbaRangeMode ranges : {FbaRangeMode::fit, FbaRangeMode::max})
+      for (const int period : intra_periods(decoded.sequence, info))
+        for (const bool listed : {false, true}) {
+          options.masks = masks;
+          options.ranges = ranges;
+          options.intra_period = period;
+          options.list_every_mask = listed;
+          auto again = encode_fba(decoded.sequence, options);
+          if (again && same(*again))
+            return {kExitOk, summary(decoded.sequence.frames.size(), bytes, info.bits_per_frame(), options.quant)};
+        }
   return failure("re-encoding the decoded frames does not give the same bytes (a stream fapc did not write?)");
 }
 
@@ -142,7 +144,7 @@ Outcome verify_input(const std::string& path, const ConvertOptions& options) {
 }
 
 int run_verify(const std::vector<std::string>& argv) {
-  Args args(argv, {"quant", "intra-period", "ranges"}, {"json"});
+  Args args(argv, {"quant", "intra-period", "ranges", "masks"}, {"json"});
   const ConvertOptions options = convert_options(args);
   if (!args.ok()) return usage_error("verify", args.error());
   if (args.positionals().empty()) return usage_error("verify", "expected at least one FILE");
@@ -168,7 +170,7 @@ int run_verify(const std::vector<std::string>& argv) {
 }
 
 const RegisterCommand verify_command{
-    "verify", "fapc verify FILE... [--quant Q] [--intra-period N] [--ranges fit|max] [--json]", run_verify};
+    "verify", "fapc verify FILE... [--quant Q] [--intra-period N] [--ranges fit|max] [--masks fit|keep] [--json]", run_verify};
 
 }  // namespace
 

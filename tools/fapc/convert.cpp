@@ -17,13 +17,18 @@ ConvertOptions convert_options(Args& args) {
   if (const auto rate = args.decimal("speech-rate", 0.1, 100)) options.visemes_per_second = *rate;
   options.strict = args.flag("strict");
   options.verify = args.flag("verify");
-  if (const auto ranges = args.value("ranges")) {
-    if (*ranges != "fit" && *ranges != "max") {
-      args.fail("--ranges takes fit or max, not '" + *ranges + "'");
-      return options;
+  // Two-way choices: the option's value must be one of the two words.
+  const auto choose = [&args](const char* name, const char* first, const char* second, std::string& into) {
+    const auto value = args.value(name);
+    if (!value) return true;
+    if (*value != first && *value != second) {
+      args.fail(std::string("--") + name + " takes " + first + " or " + second + ", not '" + *value + "'");
+      return false;
     }
-    options.ranges = *ranges;
-  }
+    into = *value;
+    return true;
+  };
+  if (!choose("ranges", "fit", "max", options.ranges) || !choose("masks", "fit", "keep", options.masks)) return options;
   for (const std::string& event : args.values("event")) {
     const auto eq = event.find('=');
     if (eq == std::string::npos || eq == 0) {

@@ -11,7 +11,7 @@ namespace fapc::cli {
 
 // Option names shared by compile and batch.
 inline const std::set<std::string> kConvertValued = {"fps", "profile", "event", "quant",
-                                                      "intra-period", "ranges", "from", "to",
+                                                      "intra-period", "ranges", "masks", "from", "to",
                                                       "duration", "speech-rate"};
 inline const std::set<std::string> kConvertFlags = {"strict", "verify"};
 

@@ -6,12 +6,14 @@ namespace fapc::cli {
 
 namespace {
 
-// --quant, --intra-period and --ranges fit|max (values already checked by convert_options).
+// --quant, --intra-period, --ranges fit|max and --masks fit|keep (values already checked by
+// convert_options).
 FbaEncodeOptions fba_encode_options(const ConvertOptions& options) {
   FbaEncodeOptions fba;
   fba.quant = options.quant;
   fba.intra_period = options.intra_period;
   fba.ranges = options.ranges == "max" ? FbaRangeMode::max : FbaRangeMode::fit;
+  fba.masks = options.masks == "keep" ? FbaMaskMode::keep : FbaMaskMode::fit;
   return fba;
 }
 

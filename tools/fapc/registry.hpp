@@ -52,6 +52,7 @@ struct ConvertOptions {
   int quant = 1;                             // fap_quant for .fba/.mp4 outputs
   int intra_period = 0;                      // 0: encoder decides
   std::string ranges = "fit";                // fit | max
+  std::string masks = "fit";                 // fit | keep
   bool strict = false;
   bool verify = false;
 };
