@@ -26,25 +26,6 @@ double intra_bits(std::int64_t level, int scaler) {
 
 std::int64_t level_of(const LevelOptions& option, int state) { return state == 0 ? option.nearest : option.other; }
 
-// log2(n!) and log2(n + 1/2) for counts up to n, grown on demand: the chooser needs them for every
-// count of every chain, and the logarithms would otherwise dominate the encoder's time.
-class CountLogs {
- public:
-  double factorial(std::uint32_t n) { return grow(n), factorial_[n]; }
-  double half_more(std::uint32_t n) { return grow(n), half_more_[n]; }
-
- private:
-  void grow(std::uint32_t n) {
-    while (factorial_.size() <= n) {
-      const auto k = static_cast<double>(factorial_.size());
-      factorial_.push_back(factorial_.empty() ? 0.0 : factorial_.back() + std::log2(k));
-      half_more_.push_back(std::log2(k + 0.5));
-    }
-  }
-  std::vector<double> factorial_, half_more_;
-};
-
-thread_local CountLogs count_logs;
 
 }  // namespace
 
@@ -90,7 +71,7 @@ double LevelChooser::exact_cost(std::span<const std::int64_t> levels) {
   const auto alphabet = static_cast<double>(alphabet_);
   double bits = (std::lgamma(symbols + alphabet) - std::lgamma(alphabet)) / std::log(2.0);
   for (const std::uint32_t n : counts_)
-    if (n > 1) bits -= count_logs.factorial(n);
+    if (n > 1) bits -= logs_.factorial(n);
   return bits + intra_bits(levels[0], scaler_);
 }
 
@@ -99,7 +80,7 @@ bool LevelChooser::replan(std::span<const LevelOptions> options, std::int64_t li
   // with half a count for differences not seen yet (a Krichevsky-Trofimov style estimate).
   const double log_total = std::log2(static_cast<double>(levels.size() - 1) + 0.5 * static_cast<double>(alphabet_));
   price_.resize(counts_.size());
-  for (std::size_t i = 0; i < counts_.size(); ++i) price_[i] = log_total - count_logs.half_more(counts_[i]);
+  for (std::size_t i = 0; i < counts_.size(); ++i) price_[i] = log_total - logs_.half_more(counts_[i]);
   const double unseen = log_total + 1;
   const auto price = [&](std::int64_t d) {
     if (d > limit || d < -limit) return kInfinite;

@@ -14,6 +14,7 @@
 // Private to fapcodec.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -23,6 +24,24 @@ namespace fapc::fba {
 struct LevelOptions {
   std::int64_t nearest = 0;  // the standard's rounding: quantise(value, step)
   std::int64_t other = 0;    // the second choice; equal to nearest when there is none
+};
+
+// log2(n!) and log2(n + 1/2) for counts up to n, grown on demand: the chooser needs them for every
+// count of every chain, and computing the logarithms each time would dominate its work.
+class CountLogs {
+ public:
+  double factorial(std::uint32_t n) { return grow(n), factorial_[n]; }
+  double half_more(std::uint32_t n) { return grow(n), half_more_[n]; }
+
+ private:
+  void grow(std::uint32_t n) {
+    while (factorial_.size() <= n) {
+      const auto k = static_cast<double>(factorial_.size());
+      factorial_.push_back(factorial_.empty() ? 0.0 : factorial_.back() + std::log2(k));
+      half_more_.push_back(std::log2(k + 0.5));
+    }
+  }
+  std::vector<double> factorial_, half_more_;
 };
 
 class LevelChooser {
@@ -47,6 +66,7 @@ class LevelChooser {
   std::vector<std::uint8_t> from_;     // Viterbi back pointers: 2 per frame
   std::vector<std::int64_t> trial_;
   std::int64_t alphabet_ = 1;
+  CountLogs logs_;
 };
 
 // The predictive alphabet the fitted ranges give differences from `low` to `high` (section 5.6:
