@@ -102,6 +102,7 @@ struct Row {
   std::size_t frames = 0;
   std::size_t intra = 0;                     // intra planes at fap_quant 1
   double bits[kQuantCount] = {};             // bits per frame
+  double kept_bits = 0;                      // at fap_quant 1 with the input's masks kept
   std::int64_t max_error[kQuantCount] = {};  // largest |decoded - input|
   SymbolCost symbols;                        // at fap_quant 1, bits per frame
   double encode_fps = 0;
@@ -122,12 +123,16 @@ fapc::FapSequence load(const std::string& name) {
   return std::move(read->sequence);
 }
 
+// The largest |decoded - input| over the input's FAPs; one the encoder left out at rest counts as
+// decoded 0.
 std::int64_t max_error(const fapc::FapSequence& in, const fapc::FapSequence& out) {
   std::int64_t worst = 0;
   for (std::size_t k = 0; k < in.frames.size(); ++k)
     for (int fap = 3; fap <= fapc::kFapCount; ++fap)
-      if (in.frames[k].has(fap))
-        worst = std::max<std::int64_t>(worst, std::llabs(std::int64_t{in.frames[k].value(fap)} - out.frames[k].value(fap)));
+      if (in.frames[k].has(fap)) {
+        const std::int64_t decoded = out.frames[k].has(fap) ? out.frames[k].value(fap) : 0;
+        worst = std::max<std::int64_t>(worst, std::llabs(in.frames[k].value(fap) - decoded));
+      }
   return worst;
 }
 
@@ -175,6 +180,12 @@ Row measure(const std::string& name, double seconds) {
     row.bits[q] = 8.0 * static_cast<double>(encoded->bytes.size()) / frames;
     row.max_error[q] = max_error(input, decoded->sequence);
     if (kQuants[q] != 1) continue;
+    options.masks = fapc::FbaMaskMode::keep;
+    auto kept = fapc::encode_fba(input, options);
+    if (!kept) fail(name, kept.error());
+    if (auto verified = fapc::verify_fba(input, *kept, options, name); !verified) fail(name, verified.error());
+    row.kept_bits = 8.0 * static_cast<double>(kept->bytes.size()) / frames;
+    options.masks = fapc::FbaMaskMode::fit;
     row.intra = decoded->info.intra_planes.size();
     row.symbols = symbol_cost(*decoded, kQuants[q]);
     row.symbols.entropy /= frames;
@@ -193,8 +204,8 @@ Row measure(const std::string& name, double seconds) {
 }
 
 void print(const Row& r) {
-  std::printf("%-10s %6zu %5zu  %7.1f %7.1f %7.1f  %5lld %5lld %5lld  %7.1f %8.1f  %9.0f %9.0f\n", r.name.c_str(),
-              r.frames, r.intra, r.bits[0], r.bits[1], r.bits[2], static_cast<long long>(r.max_error[0]),
+  std::printf("%-10s %6zu %5zu  %7.1f %7.1f %7.1f %7.1f  %5lld %5lld %5lld  %7.1f %8.1f  %9.0f %9.0f\n",
+              r.name.c_str(), r.frames, r.intra, r.bits[0], r.bits[1], r.bits[2], r.kept_bits, static_cast<long long>(r.max_error[0]),
               static_cast<long long>(r.max_error[1]), static_cast<long long>(r.max_error[2]), r.symbols.entropy,
               r.symbols.adaptive, r.encode_fps, r.decode_fps);
 }
@@ -204,13 +215,14 @@ void print(const Row& r) {
 int main(int argc, char** argv) {
   const double seconds = argc > 1 ? std::atof(argv[1]) : 0.1;
   std::printf("FBA codec on the Xface emotion files, fitted ranges. bits: stream bits per frame (start, stuffing\n"
-              "and end codes included) at fap_quant 1, 2, 4; err: largest |decoded - input|. At fap_quant 1:\n"
+              "and end codes included) at fap_quant 1, 2, 4, and at 1 with the input's masks kept (--masks keep);\n"
+              "intra: intra planes at fap_quant 1; err: largest |decoded - input|. At fap_quant 1:\n"
               "entropy: order-0 entropy of the coded symbols (each FAP's intra and predictive symbols apart), a\n"
               "lower bound for the arithmetic-coded part; adaptive: what the decoder's adaptive models, starting\n"
               "flat over the fitted alphabets, cost for the predictive symbols. Speeds: frames per second in memory,\n"
               "CPU time of one core, each file coded over and over.\n\n");
-  std::printf("%-10s %6s %5s  %7s %7s %7s  %5s %5s %5s  %7s %8s  %9s %9s\n", "file", "frames", "intra", "bits q1", "q2",
-              "q4", "err1", "err2", "err4", "entropy", "adaptive", "enc fps", "dec fps");
+  std::printf("%-10s %6s %5s  %7s %7s %7s %7s  %5s %5s %5s  %7s %8s  %9s %9s\n", "file", "frames", "intra", "bits q1",
+              "q2", "q4", "keep q1", "err1", "err2", "err4", "entropy", "adaptive", "enc fps", "dec fps");
   Row mean;
   mean.name = "average";
   std::vector<fapc::FapSequence> inputs;
@@ -224,6 +236,7 @@ int main(int argc, char** argv) {
       mean.bits[q] += row.bits[q] / std::size(kFiles);
       mean.max_error[q] = std::max(mean.max_error[q], row.max_error[q]);
     }
+    mean.kept_bits += row.kept_bits / std::size(kFiles);
     mean.symbols.entropy += row.symbols.entropy / std::size(kFiles);
     mean.symbols.adaptive += row.symbols.adaptive / std::size(kFiles);
     mean.encode_fps += row.encode_fps / std::size(kFiles);
