@@ -10,7 +10,9 @@ void ArithDecoder::start() {
   coded_bits_ = 0;
   stuffing_after_.clear();
   bad_coded_bit_ = 0;
-  code_ = static_cast<std::int32_t>(get_coded_bits(16));
+  Registers r = load();
+  r.code = static_cast<std::int32_t>(get_coded_bits(r, 16));
+  save(r);
 }
 
 int ArithDecoder::get_coded_bit() {

@@ -8,6 +8,7 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "fba/adaptive_model.hpp"
@@ -26,18 +27,32 @@ class ArithDecoder {
   // A one-symbol alphabet (a FAP whose range is 0..0) leaves the interval as it is and takes no
   // bits: such symbols are skipped outright, on both sides.
   int decode(const AdaptiveModel& model) {
-    if (model.symbols() == 1) return 0;
-    // The target ((code - low + 1) * total - 1) / length of section 6.5, found without dividing.
-    const int s = model.find_scaled((code_ - low_ + 1) * model.total(), high_ - low_ + 1);
-    narrow(model.cum(s), model.cum(s + 1), model.total());
+    Registers r = load();
+    const int s = decode(r, model);
+    save(r);
     return s;
   }
   int decode_uniform(int symbols) {
-    if (symbols == 1) return 0;
-    const std::int32_t t = target(symbols);
-    const int s = symbols - t - 1;  // cum[k] = n - k
-    narrow(symbols - s, symbols - s - 1, symbols);
+    Registers r = load();
+    const int s = decode_uniform(r, symbols);
+    save(r);
     return s;
+  }
+  // For each index i of `which` in turn: decodes a symbol with models[i], counts it there, and
+  // hands it to visit(i, symbol). The same as decode() then update() for each, but the coder's
+  // registers stay in processor registers for the whole run: kept in the object, they are stored
+  // and loaded again around every symbol (the compiler cannot tell that the caller's stores of
+  // decoded values leave them alone), on the chain of operations every symbol waits for.
+  template <class Visit>
+  void decode_and_count(std::span<const std::uint8_t> which, std::span<AdaptiveModel> models, Visit visit) {
+    Registers r = load();
+    for (const std::uint8_t i : which) {
+      AdaptiveModel& model = models[i];
+      const int s = decode(r, model);
+      model.update(s);
+      visit(i, s);
+    }
+    save(r);
   }
 
   // Ends the segment: the reader moves back to just after the encoder's flush bits. Returns false
@@ -47,11 +62,41 @@ class ArithDecoder {
   std::size_t bad_bit_position() const { return bad_position_; }
 
  private:
-  // code stays inside [low, high] for any input bits (t < cum[s] bounds code from above, cum[s+1]
-  // <= t from below, and renormalising maps all three alike), so 0 <= t < total always holds.
-  std::int32_t target(std::int32_t total) const {
-    const std::int32_t length = high_ - low_ + 1;
-    return ((code_ - low_ + 1) * total - 1) / length;
+  // What every symbol reads and changes: the coder's state and the reader's position, copied
+  // into a local for the length of a call or a run.
+  struct Registers {
+    std::int32_t low;
+    std::int32_t high;
+    std::int32_t code;
+    int zero_run;
+    std::uint64_t coded_bits;
+    std::size_t position;
+  };
+  Registers load() const { return {low_, high_, code_, zero_run_, coded_bits_, in_.position()}; }
+  void save(const Registers& r) {
+    low_ = r.low;
+    high_ = r.high;
+    code_ = r.code;
+    zero_run_ = r.zero_run;
+    coded_bits_ = r.coded_bits;
+    in_.seek(r.position);
+  }
+
+  int decode(Registers& r, const AdaptiveModel& model) {
+    if (model.symbols() == 1) return 0;
+    // The target ((code - low + 1) * total - 1) / length of section 6.5, found without dividing.
+    const int s = model.find_scaled((r.code - r.low + 1) * model.total(), r.high - r.low + 1);
+    narrow(r, model.cum(s), model.cum(s + 1), model.total());
+    return s;
+  }
+  int decode_uniform(Registers& r, int symbols) {
+    if (symbols == 1) return 0;
+    // code stays inside [low, high] for any input bits (t < cum[s] bounds code from above,
+    // cum[s+1] <= t from below, and renormalising maps all three alike), so 0 <= t < total.
+    const std::int32_t t = ((r.code - r.low + 1) * symbols - 1) / (r.high - r.low + 1);
+    const int s = symbols - t - 1;  // cum[k] = n - k
+    narrow(r, symbols - s, symbols - s - 1, symbols);
+    return s;
   }
   // The interval of the decoded symbol, then renormalisation (section 6.5) done in two strides
   // rather than bit by bit. While low and high share their top bit, each step drops it: that is
@@ -59,33 +104,36 @@ class ArithDecoder {
   // middle-half step can follow, which drops bit 14 of each while low has it 1 and high 0: `b`
   // steps. No step of the first kind can follow one of the second. `code` goes through the same
   // steps, taking in one coded bit per step: a + b bits, read at once.
-  void narrow(std::int32_t high_count, std::int32_t low_count, std::int32_t total) {
-    const std::int32_t length = high_ - low_ + 1;
-    auto high = static_cast<std::uint32_t>(low_ - 1 + divide_by_total(length * high_count, total));
-    auto low = static_cast<std::uint32_t>(low_ + divide_by_total(length * low_count, total));
+  void narrow(Registers& r, std::int32_t high_count, std::int32_t low_count, std::int32_t total) {
+    const std::int32_t length = r.high - r.low + 1;
+    auto high = static_cast<std::uint32_t>(r.low - 1 + divide_by_total(length * high_count, total));
+    auto low = static_cast<std::uint32_t>(r.low + divide_by_total(length * low_count, total));
     const int a = std::countl_zero(static_cast<std::uint16_t>(low ^ high));
     low = (low << a) & 0xFFFF;
     high = ((high << a) | ((1u << a) - 1)) & 0xFFFF;
     const int b = std::countl_one(static_cast<std::uint16_t>((low & ~high) << 1));
     const std::int32_t scale = 1 << b;
-    low_ = (static_cast<std::int32_t>(low) - kCoderHalf) * scale + kCoderHalf;
-    high_ = (static_cast<std::int32_t>(high) - kCoderHalf) * scale + kCoderHalf + scale - 1;
-    const std::uint32_t bits = get_coded_bits(a + b);
-    const auto code = static_cast<std::int32_t>(((static_cast<std::uint32_t>(code_) << a) | (bits >> b)) & 0xFFFF);
-    code_ = (code - kCoderHalf) * scale + kCoderHalf + static_cast<std::int32_t>(bits & static_cast<std::uint32_t>(scale - 1));
+    r.low = (static_cast<std::int32_t>(low) - kCoderHalf) * scale + kCoderHalf;
+    r.high = (static_cast<std::int32_t>(high) - kCoderHalf) * scale + kCoderHalf + scale - 1;
+    const std::uint32_t bits = get_coded_bits(r, a + b);
+    const auto code = static_cast<std::int32_t>(((static_cast<std::uint32_t>(r.code) << a) | (bits >> b)) & 0xFFFF);
+    r.code = (code - kCoderHalf) * scale + kCoderHalf + static_cast<std::int32_t>(bits & static_cast<std::uint32_t>(scale - 1));
   }
   // `count` (0..31) coded bits as a number, first bit highest, stuffing bits removed.
-  std::uint32_t get_coded_bits(int count) {
+  std::uint32_t get_coded_bits(Registers& r, int count) {
     // A stuffing bit can only come where 22 zeros precede it; short of that, the raw bits are
     // the coded bits.
-    if (zero_run_ + count <= kStuffAfterZeros) {
-      const std::uint32_t bits = in_.read_bits(count);
-      zero_run_ = bits == 0 ? zero_run_ + count : std::countr_zero(bits);
-      coded_bits_ += static_cast<std::uint64_t>(count);
+    if (r.zero_run + count <= kStuffAfterZeros) {
+      const std::uint32_t bits = in_.peek_bits_at(r.position, count);
+      r.position += static_cast<std::size_t>(count);
+      r.zero_run = bits == 0 ? r.zero_run + count : std::countr_zero(bits);
+      r.coded_bits += static_cast<std::uint64_t>(count);
       return bits;
     }
+    save(r);
     std::uint32_t bits = 0;
     for (int i = 0; i < count; ++i) bits = (bits << 1) | static_cast<std::uint32_t>(get_coded_bit());
+    r = load();
     return bits;
   }
   int get_coded_bit();

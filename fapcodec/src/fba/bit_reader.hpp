@@ -29,10 +29,12 @@ class BitReader {
     position_ += static_cast<std::size_t>(count);
     return value;
   }
-  std::uint32_t peek_bits(int count) const {
+  std::uint32_t peek_bits(int count) const { return peek_bits_at(position_, count); }
+  // The same from any position, for a caller that keeps the position in a register meanwhile.
+  std::uint32_t peek_bits_at(std::size_t position, int count) const {
     if (count == 0) return 0;
     // The 64 bits from the byte holding the next bit: at most 7 are already used, so 32 remain.
-    const std::uint64_t window = load_window(position_ >> 3) << (position_ & 7);
+    const std::uint64_t window = load_window(position >> 3) << (position & 7);
     return static_cast<std::uint32_t>(window >> (64 - count));
   }
 

@@ -107,23 +107,24 @@ Status FaceReader::read_values(bool intra, FapFrame& frame) {
   const std::int64_t segment_byte = c_.in.byte_offset();
   c_.coder.start();
   bool overflow = false;
-  for (const std::size_t i : state_.coded) {
-    std::int64_t& value = state_.previous[i];
-    if (intra) {
-      const std::int32_t low = state_.range[kIntraMin][i];
-      value = dequantise(c_.coder.decode_uniform(state_.range[kIntraMax][i] - low + 1) + low, state_.steps[i]);
-    } else {
-      AdaptiveModel& model = state_.pred_models[i];
-      const int s = c_.coder.decode(model);
-      model.update(s);
-      value += dequantise(s + state_.range[kPredMin][i], state_.steps[i]);
-    }
+  const auto store = [&](std::size_t i, std::int64_t value) {
     // Predictions accumulate; only a corrupt or hostile stream walks them out of 32 bits.
     if (value > std::numeric_limits<std::int32_t>::max() || value < std::numeric_limits<std::int32_t>::min()) {
       overflow = true;
       value = 0;
     }
+    state_.previous[i] = value;
     frame.values[i] = static_cast<std::int32_t>(value);
+  };
+  if (intra) {
+    for (const std::size_t i : state_.coded) {
+      const std::int32_t low = state_.range[kIntraMin][i];
+      store(i, dequantise(c_.coder.decode_uniform(state_.range[kIntraMax][i] - low + 1) + low, state_.steps[i]));
+    }
+  } else {
+    c_.coder.decode_and_count(state_.coded, state_.pred_models, [&](std::size_t i, int s) {
+      store(i, state_.previous[i] + dequantise(s + state_.range[kPredMin][i], state_.steps[i]));
+    });
   }
   if (auto status = c_.finish_segment("FAP"); !status) return status;
   if (overflow) return c_.error_at(segment_byte, "a decoded FAP value overflows 32 bits (corrupt stream?)");
