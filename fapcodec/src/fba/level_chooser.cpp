@@ -14,6 +14,7 @@ namespace {
 // files); more rounds gain nothing measurable.
 constexpr int kMaxReplans = 2;
 constexpr double kInfinite = std::numeric_limits<double>::infinity();
+constexpr std::int64_t kReach = 4;
 
 std::int64_t side(std::int64_t magnitude, int scaler) {
   return range_value_for(magnitude, scaler) * kRangeDelta / scaler;
@@ -36,12 +37,16 @@ std::int64_t fitted_alphabet(std::int64_t low, std::int64_t high, int range_scal
 void LevelChooser::choose(std::span<const LevelOptions> options, std::int64_t limit, int range_scaler,
                           std::span<std::int64_t> levels) {
   scaler_ = range_scaler;
-  bool free = false;
+  // The steps a choice can change: into or out of a frame with two choices. Between two frames
+  // without a choice every plan takes the same step, which shifts all costs alike and so decides
+  // nothing.
+  steps_.clear();
   for (std::size_t t = 0; t < options.size(); ++t) {
     levels[t] = options[t].nearest;
-    free = free || options[t].other != options[t].nearest;
+    const bool free = options[t].other != options[t].nearest;
+    if (t > 0 && (free || options[t - 1].other != options[t - 1].nearest)) steps_.push_back(t);
   }
-  if (!free || options.size() < 2) return;
+  if (steps_.empty()) return;
   double cost = exact_cost(levels);  // leaves the counts of `levels` for the first replan
   trial_.assign(levels.begin(), levels.end());
   for (int round = 0; round < kMaxReplans; ++round) {
@@ -79,14 +84,17 @@ bool LevelChooser::replan(std::span<const LevelOptions> options, std::int64_t li
   // Prices from the counts count() left: the adaptive model's long-run cost of each difference,
   // with half a count for differences not seen yet (a Krichevsky-Trofimov style estimate).
   const double log_total = std::log2(static_cast<double>(levels.size() - 1) + 0.5 * static_cast<double>(alphabet_));
-  price_.resize(counts_.size());
-  for (std::size_t i = 0; i < counts_.size(); ++i) price_[i] = log_total - logs_.half_more(counts_[i]);
+  // Every level is within one of its nearest level, and so are those of the plan counted, so any
+  // step a plan can take lies within kReach of a counted one: prices cover that window, with
+  // steps no range can carry priced out.
   const double unseen = log_total + 1;
-  const auto price = [&](std::int64_t d) {
-    if (d > limit || d < -limit) return kInfinite;
-    const std::int64_t i = d - low_;
-    return i >= 0 && i < static_cast<std::int64_t>(price_.size()) ? price_[static_cast<std::size_t>(i)] : unseen;
-  };
+  price_.assign(counts_.size() + 2 * kReach, unseen);
+  for (std::size_t i = 0; i < price_.size(); ++i) {
+    const std::int64_t d = static_cast<std::int64_t>(i) - kReach + low_;
+    if (d > limit || d < -limit) price_[i] = kInfinite;
+    else if (i >= kReach && i - kReach < counts_.size()) price_[i] = log_total - logs_.half_more(counts_[i - kReach]);
+  }
+  const auto price = [&](std::int64_t d) { return price_[static_cast<std::size_t>(d - low_ + kReach)]; };
 
   const std::size_t n = options.size();
   from_.assign(2 * n, 0);
@@ -96,10 +104,7 @@ bool LevelChooser::replan(std::span<const LevelOptions> options, std::int64_t li
     best[s] = level > limit || level < -limit ? kInfinite : intra_bits(level, scaler_);
   }
   if (options[0].other == options[0].nearest) best[1] = kInfinite;
-  for (std::size_t t = 1; t < n; ++t) {
-    // Between two frames without a choice every plan takes the same step, which shifts all costs
-    // alike and so decides nothing: skip it.
-    if (options[t].other == options[t].nearest && options[t - 1].other == options[t - 1].nearest) continue;
+  for (const std::size_t t : steps_) {
     double next[2] = {kInfinite, kInfinite};
     for (int s = 0; s < 2; ++s) {
       if (s == 1 && options[t].other == options[t].nearest) continue;

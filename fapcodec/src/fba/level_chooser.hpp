@@ -65,6 +65,7 @@ class LevelChooser {
   std::vector<double> price_;          // the bits each difference costs under the current counts
   std::vector<std::uint8_t> from_;     // Viterbi back pointers: 2 per frame
   std::vector<std::int64_t> trial_;
+  std::vector<std::size_t> steps_;     // the frames whose step from the previous one can change
   std::int64_t alphabet_ = 1;
   CountLogs logs_;
 };
