@@ -27,7 +27,6 @@ double intra_bits(std::int64_t level, int scaler) {
 
 std::int64_t level_of(const LevelOptions& option, int state) { return state == 0 ? option.nearest : option.other; }
 
-
 }  // namespace
 
 std::int64_t fitted_alphabet(std::int64_t low, std::int64_t high, int range_scaler) {
