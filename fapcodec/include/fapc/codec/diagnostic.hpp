@@ -28,12 +28,28 @@ struct Location {
   }
 };
 
+// What went wrong, as a value callers decide by (the exit status, whether to retry, whether a
+// stream merely ends early). Behaviour never depends on a message's wording: only on this.
+enum class ErrorKind {
+  bad_input,            // the input breaks its format's rules (the default)
+  truncated,            // the input ends before its syntax does (a special case of bad input)
+  io,                   // a file cannot be opened, read or written
+  usage,                // the caller asked for something impossible (options, paths)
+  limit_exceeded,       // a resource limit (frames, depth, size...) would be passed
+  verification_failed,  // an output does not read back as it should
+  unsupported,          // valid input that fapc does not implement
+};
+
+// The stable lower-case name of a kind ("limit_exceeded"), for JSON and tests.
+const char* error_kind_name(ErrorKind kind);
+
 struct Diagnostic {
   Severity severity = Severity::error;
   Location where;
   std::string message;
   // The source line the diagnostic points into, when there is one, so a caret can be drawn.
   std::string source_line;
+  ErrorKind kind = ErrorKind::bad_input;  // meaningful for errors; warnings keep the default
 };
 
 using Diagnostics = std::vector<Diagnostic>;
@@ -47,6 +63,11 @@ std::string render_with_caret(const Diagnostic& d);
 
 inline Diagnostic make_error(Location where, std::string message, std::string source_line = {}) {
   return Diagnostic{Severity::error, std::move(where), std::move(message), std::move(source_line)};
+}
+inline Diagnostic make_error(ErrorKind kind, Location where, std::string message,
+                             std::string source_line = {}) {
+  return Diagnostic{Severity::error, std::move(where), std::move(message), std::move(source_line),
+                    kind};
 }
 inline Diagnostic make_warning(Location where, std::string message, std::string source_line = {}) {
   return Diagnostic{Severity::warning, std::move(where), std::move(message),
