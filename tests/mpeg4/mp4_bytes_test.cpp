@@ -4,11 +4,11 @@
 // profile 0x63 instead of GPAC's default 0x01, audio 0xFF instead of 0x00), the test says so.
 #include <gtest/gtest.h>
 
-#include "fapc/xmt/bifs.hpp"
-#include "fapc/xmt/mp4_reader.hpp"
-#include "fapc/xmt/mp4_writer.hpp"
-#include "fapc/xmt/object_descriptors.hpp"
-#include "fapc/xmt/scene.hpp"
+#include "fapc/mpeg4/bifs.hpp"
+#include "fapc/mpeg4/mp4_reader.hpp"
+#include "fapc/mpeg4/mp4_writer.hpp"
+#include "fapc/mpeg4/object_descriptors.hpp"
+#include "fapc/mpeg4/scene.hpp"
 #include "test_tracks.hpp"
 
 namespace fapc::xmt {

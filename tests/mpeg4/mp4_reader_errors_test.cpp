@@ -6,9 +6,9 @@
 
 #include <algorithm>
 
-#include "fapc/xmt/bifs.hpp"
-#include "fapc/xmt/mp4_reader.hpp"
-#include "fapc/xmt/mp4_writer.hpp"
+#include "fapc/mpeg4/bifs.hpp"
+#include "fapc/mpeg4/mp4_reader.hpp"
+#include "fapc/mpeg4/mp4_writer.hpp"
 #include "test_tracks.hpp"
 
 namespace fapc::xmt {

@@ -1,8 +1,8 @@
 // The MP4 reader gives back what the writer was given: tracks, descriptors, scene, samples.
 #include <gtest/gtest.h>
 
-#include "fapc/xmt/mp4_reader.hpp"
-#include "fapc/xmt/mp4_writer.hpp"
+#include "fapc/mpeg4/mp4_reader.hpp"
+#include "fapc/mpeg4/mp4_writer.hpp"
 #include "support/test_support.hpp"
 #include "test_tracks.hpp"
 

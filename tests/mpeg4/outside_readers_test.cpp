@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "fapc/codec/file_io.hpp"
-#include "fapc/xmt/mp4_reader.hpp"
-#include "fapc/xmt/mp4_writer.hpp"
+#include "fapc/mpeg4/mp4_reader.hpp"
+#include "fapc/mpeg4/mp4_writer.hpp"
 #include "support/test_support.hpp"
 #include "test_tracks.hpp"
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "fapc/codec/fap_sequence.hpp"
-#include "fapc/xmt/fba_track.hpp"
+#include "fapc/mpeg4/fba_track.hpp"
 
 namespace fapc::xmt::test {
 

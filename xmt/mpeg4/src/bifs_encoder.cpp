@@ -6,7 +6,7 @@
 
 #include "bifs_nodes.hpp"
 #include "bit_io.hpp"
-#include "fapc/xmt/bifs.hpp"
+#include "fapc/mpeg4/bifs.hpp"
 
 namespace fapc::xmt {
 

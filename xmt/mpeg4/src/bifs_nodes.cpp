@@ -3,7 +3,7 @@
 #include <string>
 
 #include "fapc/codec/fap_table.hpp"
-#include "fapc/xmt/scene.hpp"
+#include "fapc/mpeg4/scene.hpp"
 
 namespace fapc::xmt::bifs {
 

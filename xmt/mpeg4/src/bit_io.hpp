@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-#include "fapc/xmt/fba_track.hpp"
+#include "fapc/mpeg4/fba_track.hpp"
 
 namespace fapc::xmt {
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "fapc/xmt/fba_track.hpp"
+#include "fapc/mpeg4/fba_track.hpp"
 
 namespace fapc::xmt {
 

@@ -1,6 +1,6 @@
 // Object descriptor framework coding (14496-1 §7.2.6 and §7.2.2.3). Each descriptor is a tag, a
 // size in 7-bit groups with a continuation bit, and its payload.
-#include "fapc/xmt/object_descriptors.hpp"
+#include "fapc/mpeg4/object_descriptors.hpp"
 
 #include <optional>
 

@@ -1,4 +1,4 @@
-#include "fapc/xmt/fba_track.hpp"
+#include "fapc/mpeg4/fba_track.hpp"
 
 namespace fapc::xmt {
 

@@ -1,6 +1,6 @@
 // The MP4 reader: the box tree down to the sample tables, then each track's samples resolved to
 // file offsets, decode times and sync flags, every one checked to lie inside the file.
-#include "fapc/xmt/mp4_reader.hpp"
+#include "fapc/mpeg4/mp4_reader.hpp"
 
 #include <algorithm>
 

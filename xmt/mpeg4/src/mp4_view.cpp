@@ -1,6 +1,6 @@
 // The project's view of an MP4 file: which track is the scene, the object descriptors, the FBA
 // stream. Built on the generic reader; every "not found" names what was looked for.
-#include "fapc/xmt/mp4_reader.hpp"
+#include "fapc/mpeg4/mp4_reader.hpp"
 
 namespace fapc::xmt {
 

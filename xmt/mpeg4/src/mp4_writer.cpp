@@ -1,15 +1,15 @@
 // The MP4 writer: plans three tracks (scene, object descriptors, FBA), lays out moov before mdat
 // with one chunk per track, and writes the boxes. Times and creation dates are fixed (0) so the
 // same input always gives the same bytes.
-#include "fapc/xmt/mp4_writer.hpp"
+#include "fapc/mpeg4/mp4_writer.hpp"
 
 #include <algorithm>
 #include <limits>
 #include <string>
 
 #include "box_writer.hpp"
-#include "fapc/xmt/object_descriptors.hpp"
-#include "fapc/xmt/scene.hpp"
+#include "fapc/mpeg4/object_descriptors.hpp"
+#include "fapc/mpeg4/scene.hpp"
 
 namespace fapc::xmt {
 

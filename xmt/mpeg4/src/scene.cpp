@@ -1,4 +1,4 @@
-#include "fapc/xmt/scene.hpp"
+#include "fapc/mpeg4/scene.hpp"
 
 #include <utility>
 

@@ -1,15 +1,27 @@
 #include "xml_out.hpp"
 
-#include <libxml/entities.h>
-
 namespace fapc::xmt {
 
 namespace {
 
+// An attribute value between double quotes (XML 1.0 §2.4 and §3.3.3): '<' and '&' must be
+// escaped, '"' would end the value, '>' is escaped for symmetry; CR, LF and TAB become
+// character references because a parser would otherwise normalise them to spaces.
 std::string escaped(const std::string& value) {
-  xmlChar* encoded = xmlEncodeSpecialChars(nullptr, reinterpret_cast<const xmlChar*>(value.c_str()));
-  std::string out(reinterpret_cast<const char*>(encoded));
-  xmlFree(encoded);
+  std::string out;
+  out.reserve(value.size());
+  for (const char c : value) {
+    switch (c) {
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '&': out += "&amp;"; break;
+      case '"': out += "&quot;"; break;
+      case '\r': out += "&#13;"; break;
+      case '\n': out += "&#10;"; break;
+      case '\t': out += "&#9;"; break;
+      default: out += c;
+    }
+  }
   return out;
 }
 

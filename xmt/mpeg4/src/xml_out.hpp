@@ -1,5 +1,5 @@
-// A small indenting XML writer for the documents the project generates. Attribute values are
-// escaped with libxml2's own encoder, so no escaping code of our own is needed here.
+// A small indenting XML writer for the documents the project generates (XMT-A). It needs no XML
+// library: the MPEG-4 layer depends on the codec alone, so MP4 users do not pull in libxml2.
 #pragma once
 
 #include <string>

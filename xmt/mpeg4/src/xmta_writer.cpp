@@ -1,15 +1,15 @@
 // The XMT-A writer. The header mirrors what the MP4 writer puts in the iods and the system
 // tracks' esds boxes (same IDs, profile-levels and BIFSConfig), so that MP4Box builds the same
 // layout from this document as fapc writes directly.
-#include "fapc/xmt/xmta_writer.hpp"
+#include "fapc/mpeg4/xmta_writer.hpp"
 
 #include <charconv>
 #include <map>
 
-#include "fapc/xmt/bifs.hpp"
-#include "fapc/xmt/mp4_writer.hpp"
-#include "fapc/xmt/object_descriptors.hpp"
-#include "fapc/xmt/scene.hpp"
+#include "fapc/mpeg4/bifs.hpp"
+#include "fapc/mpeg4/mp4_writer.hpp"
+#include "fapc/mpeg4/object_descriptors.hpp"
+#include "fapc/mpeg4/scene.hpp"
 #include "xml_out.hpp"
 
 namespace fapc::xmt {

@@ -5,8 +5,9 @@
 // Minutes and Seconds are two digits, 00..59; a timecount without a metric is seconds.
 #include <charconv>
 #include <cmath>
+#include <string>
 
-#include "fapc/xmt/xmto.hpp"
+#include "fapc/xml/clock_value.hpp"
 
 namespace fapc::xmt {
 namespace {

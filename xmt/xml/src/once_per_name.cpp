@@ -1,4 +1,4 @@
-#include "xml/once_per_name.hpp"
+#include "fapc/xml/once_per_name.hpp"
 
 #include <cctype>
 

@@ -1,4 +1,4 @@
-#include "xml/text.hpp"
+#include "fapc/xml/text.hpp"
 
 #include <charconv>
 #include <cmath>

@@ -1,11 +1,11 @@
-#include "xml/xml_document.hpp"
+#include "fapc/xml/xml_document.hpp"
 
 #include <libxml/parser.h>
 
 #include <algorithm>
 #include <climits>
 
-#include "xml/xml_tag_scan.hpp"
+#include "xml_tag_scan.hpp"
 
 namespace fapc::xml {
 namespace {

@@ -1,4 +1,4 @@
-#include "xml/xml_tag_scan.hpp"
+#include "xml_tag_scan.hpp"
 
 namespace fapc::xml {
 namespace {

@@ -1,6 +1,6 @@
 // Xerces-C validation: a progressive SAX2 parse finds the root element, then a full parse
 // validates against the one cached grammar the root selects. Xerces stays inside this file.
-#include "fapc/xmt/xml_validation.hpp"
+#include "fapc/xml/xml_validation.hpp"
 
 #include <algorithm>
 #include <memory>

@@ -2,9 +2,9 @@
 // FML reader's own rules, for the host reader to place on its timeline.
 #pragma once
 
-#include "fapc/xmt/fml.hpp"
+#include "fapc/fml/fml.hpp"
 #include "fml/fml_tree.hpp"
-#include "xml/xml_document.hpp"
+#include "fapc/xml/xml_document.hpp"
 
 namespace fapc::xmt {
 

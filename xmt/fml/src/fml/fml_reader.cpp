@@ -10,14 +10,14 @@
 
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/codec/file_io.hpp"
-#include "fapc/xmt/fml.hpp"
+#include "fapc/fml/fml.hpp"
 #include "fml/embedded_fml.hpp"
 #include "fml/fml_timing.hpp"
 #include "fml/fml_tree.hpp"
 #include "fml/other_formats.hpp"
-#include "xml/text.hpp"
-#include "xml/once_per_name.hpp"
-#include "xml/xml_document.hpp"
+#include "fapc/xml/text.hpp"
+#include "fapc/xml/once_per_name.hpp"
+#include "fapc/xml/xml_document.hpp"
 
 namespace fapc::xmt {
 namespace {

@@ -1,6 +1,6 @@
 #include "fml/fml_timing.hpp"
 
-#include "fapc/xmt/xmto.hpp"
+#include "fapc/xml/clock_value.hpp"
 
 namespace fapc::xmt {
 

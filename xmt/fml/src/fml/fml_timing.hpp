@@ -7,7 +7,7 @@
 #include <string>
 
 #include "fapc/transcoder/schedule.hpp"
-#include "xml/xml_document.hpp"
+#include "fapc/xml/xml_document.hpp"
 
 namespace fapc::xmt {
 

@@ -2,7 +2,7 @@
 
 #include <string_view>
 
-#include "xml/xml_document.hpp"
+#include "fapc/xml/xml_document.hpp"
 
 namespace fapc::xmt {
 

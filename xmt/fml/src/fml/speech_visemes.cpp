@@ -3,7 +3,7 @@
 #include <set>
 #include <utility>
 
-#include "xml/text.hpp"
+#include "fapc/xml/text.hpp"
 
 namespace fapc::xmt {
 namespace {

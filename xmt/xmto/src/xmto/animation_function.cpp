@@ -1,5 +1,5 @@
 #include "xmto/animation_function.hpp"
-#include "xml/text.hpp"
+#include "fapc/xml/text.hpp"
 
 #include <charconv>
 #include <cmath>

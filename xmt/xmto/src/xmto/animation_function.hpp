@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "fapc/transcoder/timeline.hpp"
-#include "xml/xml_document.hpp"
+#include "fapc/xml/xml_document.hpp"
 
 namespace fapc::xmt {
 

@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "xml/text.hpp"
+#include "fapc/xml/text.hpp"
 
 namespace fapc::xmt {
 namespace {

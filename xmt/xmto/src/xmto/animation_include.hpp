@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "fapc/xmt/xmto.hpp"
-#include "xml/xml_document.hpp"
+#include "fapc/xmto/xmto.hpp"
+#include "fapc/xml/xml_document.hpp"
 
 namespace fapc::xmt {
 

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <string>
 
-#include "fapc/xmt/xmto.hpp"
-#include "xml/text.hpp"
+#include "fapc/xmto/xmto.hpp"
+#include "fapc/xml/text.hpp"
 
 namespace fapc::xmt {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "fapc/transcoder/schedule.hpp"
 #include "fapc/transcoder/timeline.hpp"
-#include "xml/xml_document.hpp"
+#include "fapc/xml/xml_document.hpp"
 
 namespace fapc::xmt {
 

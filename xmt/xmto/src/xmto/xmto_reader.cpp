@@ -7,13 +7,13 @@
 #include <string>
 
 #include "fapc/codec/file_io.hpp"
-#include "fapc/xmt/xmto.hpp"
+#include "fapc/xmto/xmto.hpp"
 #include "fml/embedded_fml.hpp"
-#include "xml/xml_document.hpp"
+#include "fapc/xml/xml_document.hpp"
 #include "xmto/animation_function.hpp"
 #include "xmto/animation_include.hpp"
 #include "xmto/attribute_target.hpp"
-#include "xml/once_per_name.hpp"
+#include "fapc/xml/once_per_name.hpp"
 #include "xmto/run_budget.hpp"
 #include "xmto/smil_timing.hpp"
 #include "xmto/xmto_tree.hpp"

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "fapc/codec/diagnostic.hpp"
-#include "fapc/xmt/fba_track.hpp"
-#include "fapc/xmt/scene.hpp"
+#include "fapc/mpeg4/fba_track.hpp"
+#include "fapc/mpeg4/scene.hpp"
 
 namespace fapc::xmt {
 

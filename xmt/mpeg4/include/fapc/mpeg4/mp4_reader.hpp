@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "fapc/codec/diagnostic.hpp"
-#include "fapc/xmt/bifs.hpp"
-#include "fapc/xmt/fba_track.hpp"
-#include "fapc/xmt/object_descriptors.hpp"
-#include "fapc/xmt/scene.hpp"
+#include "fapc/mpeg4/bifs.hpp"
+#include "fapc/mpeg4/fba_track.hpp"
+#include "fapc/mpeg4/object_descriptors.hpp"
+#include "fapc/mpeg4/scene.hpp"
 
 namespace fapc::xmt {
 

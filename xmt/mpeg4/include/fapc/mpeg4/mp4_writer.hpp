@@ -6,8 +6,8 @@
 #include <cstdint>
 
 #include "fapc/codec/diagnostic.hpp"
-#include "fapc/xmt/bifs.hpp"
-#include "fapc/xmt/fba_track.hpp"
+#include "fapc/mpeg4/bifs.hpp"
+#include "fapc/mpeg4/fba_track.hpp"
 
 namespace fapc::xmt {
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "fapc/codec/diagnostic.hpp"
-#include "fapc/xmt/fba_track.hpp"
+#include "fapc/mpeg4/fba_track.hpp"
 
 namespace fapc::xmt {
 

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "fapc/codec/fap_sequence.hpp"
-#include "fapc/xmt/fba_track.hpp"
+#include "fapc/mpeg4/fba_track.hpp"
 
 namespace fapc::xmt {
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "fapc/codec/diagnostic.hpp"
-#include "xml/xml_document.hpp"
+#include "fapc/xml/xml_document.hpp"
 
 namespace fapc::xmt {
 

@@ -12,8 +12,9 @@
 #include <vector>
 
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/fml/fml.hpp"
 #include "fapc/transcoder/timeline.hpp"
-#include "fapc/xmt/fml.hpp"
+#include "fapc/xml/clock_value.hpp"  // parse_clock_value, part of this reader's interface
 
 namespace fapc::xmt {
 
@@ -55,10 +56,6 @@ struct XmtoDocument {
 Result<XmtoDocument> read_xmto(std::string_view text, const std::string& file_name,
                                const XmtoOptions& options = {});
 Result<XmtoDocument> load_xmto(const std::string& path, const XmtoOptions& options = {});
-
-// SMIL clock values: "3", "3s", "250ms", "1.5min", "2h", "00:00:03.5", "01:30" (full and partial
-// clock), with optional surrounding spaces. Seconds, or nothing when the text is not one.
-std::optional<double> parse_clock_value(std::string_view text);
 
 // The XMT-Omega namespace (presumed by analogy with XMT-A; documents are recognised by the root
 // name, with or without it).
