@@ -5,7 +5,7 @@
 # for the xml component must then fail: the codec's package needs neither library.
 #   cmake -DCONSUMER=codec -DPROGRAM=fap_roundtrip -DBUILD_DIR=... -DSOURCE_DIR=...
 #         -DWORK_DIR=... -DGENERATOR=...
-#         -DCXX_COMPILER=... [-DCXX_LAUNCHER=...] "-DARGS=..." -P run.cmake
+#         -DCXX_COMPILER=... [-DCXX_LAUNCHER=...] [-DSAME_AS_FAPC=compile] "-DARGS=..." -P run.cmake
 foreach(required CONSUMER PROGRAM BUILD_DIR SOURCE_DIR WORK_DIR GENERATOR CXX_COMPILER)
   if(NOT DEFINED ${required})
     message(FATAL_ERROR "run.cmake needs -D${required}=...")
@@ -56,3 +56,18 @@ set(program_path ${consumer_build}/${PROGRAM})
 string(REPLACE "@WORK@" "${WORK_DIR}" ARGS "${ARGS}")
 run("running ${program_path}" ${program_path} ${ARGS})
 message(STATUS "${run_output}")
+
+# SAME_AS_FAPC: the consumer's output (the last argument) must be byte for byte what the installed
+# program writes when given the same arguments after that subcommand.
+if(SAME_AS_FAPC)
+  list(POP_BACK ARGS consumer_output)
+  set(fapc_output ${WORK_DIR}/by-fapc-${SAME_AS_FAPC})
+  get_filename_component(extension ${consumer_output} LAST_EXT)
+  string(APPEND fapc_output ${extension})
+  run("the installed fapc" ${prefix}/bin/fapc ${SAME_AS_FAPC} ${ARGS} -o ${fapc_output})
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${consumer_output} ${fapc_output}
+                  RESULT_VARIABLE differ)
+  if(differ)
+    message(FATAL_ERROR "${consumer_output} differs from what `fapc ${SAME_AS_FAPC}` wrote (${fapc_output})")
+  endif()
+endif()
