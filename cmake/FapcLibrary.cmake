@@ -12,7 +12,10 @@ function(fapc_library name component)
   endif()
   add_library(${name} ${sources})
   add_library(fapc::${component} ALIAS ${name})
-  set_target_properties(${name} PROPERTIES EXPORT_NAME ${component})
+  # Shared libraries are libfapc_<component>.so.0.1.0 with soname .so.0.1: before 1.0 a minor
+  # version may change the ABI (the package's version file says the same: SameMinorVersion).
+  set_target_properties(${name} PROPERTIES EXPORT_NAME ${component} VERSION ${PROJECT_VERSION}
+    SOVERSION ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR})
   # The public headers are C++20: a consumer's compiler is told so by the target, not by a guess.
   target_compile_features(${name} PUBLIC cxx_std_20)
   target_include_directories(${name}
