@@ -71,3 +71,6 @@ if(SAME_AS_FAPC)
     message(FATAL_ERROR "${consumer_output} differs from what `fapc ${SAME_AS_FAPC}` wrote (${fapc_output})")
   endif()
 endif()
+
+# The installed tree is large (libraries with debug information): kept only when a step failed.
+file(REMOVE_RECURSE ${prefix})
