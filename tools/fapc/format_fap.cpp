@@ -37,8 +37,10 @@ Result<nlohmann::ordered_json> describe_fap(const std::string& path, const Conve
   return out;
 }
 
-Result<std::string> write_fap(const Loaded& loaded, const std::string&, const ConvertOptions&) {
-  return write_fap_text(loaded.frames);
+Result<std::string> write_fap(const Loaded& loaded, const std::string&, const ConvertOptions& options) {
+  FapWriteOptions write;
+  write.flavour = options.fap_flavour;
+  return write_fap_flavour(loaded.frames, write);
 }
 
 const RegisterInput fap_input{InputFormat{"fap", {".fap", ".fap.gz", ".FAP"}, load_fap, describe_fap}};
