@@ -68,7 +68,7 @@ std::array<std::int64_t, kFapCount> largest_values(const FapSequence& sequence) 
 TEST(FbaCorpusPlayerSafe, EveryStreamIsReadTheSameByTheReferenceDecoder) {
   const auto files = corpus_fap_files();
   ASSERT_GE(files.size(), 196u);
-  std::size_t streams = 0, refused = 0, start_codes = 0, fields = 0, values = 0, files_swept = 0, padded = 0;
+  std::size_t streams = 0, refused = 0, start_codes = 0, fields = 0, values = 0, files_swept = 0, padded = 0, planes = 0;
   for (std::size_t f = 0; f < files.size(); f += kEveryNthFile) {
     const std::string& path = files[f];
     auto read = read_fap_text(test::read_text(path), path);
@@ -90,6 +90,7 @@ TEST(FbaCorpusPlayerSafe, EveryStreamIsReadTheSameByTheReferenceDecoder) {
         start_codes += runs.size();
         for (const std::size_t run : runs) EXPECT_LE(run, 8u) << label;
         // Planes that carry an empty skip count: where the encoder moved a plane's end.
+        planes += encoded->planes.size();
         for (const CodedPlane& plane : encoded->planes) {
           const auto skip = test::read_skip_field(bytes, plane.bit_offset, set.options.align_planes);
           padded += skip.flag == 1 && skip.chunks == std::vector<int>{0};
@@ -125,9 +126,9 @@ TEST(FbaCorpusPlayerSafe, EveryStreamIsReadTheSameByTheReferenceDecoder) {
     }
   }
   std::printf("swept %zu files: %zu streams (%zu refused as beyond the widest range), %zu start codes after the "
-              "object start code, %zu planes ended later by an empty skip count, %zu decoded blends and "
+              "object start code, %zu of %zu planes ended later by an empty skip count, %zu decoded blends and "
               "intensities, %zu decoded FAP values\n",
-              files_swept, streams, refused, start_codes, padded, fields, values);
+              files_swept, streams, refused, start_codes, padded, planes, fields, values);
   RecordProperty("files", static_cast<int>(files_swept));
   RecordProperty("streams", static_cast<int>(streams));
   RecordProperty("refused", static_cast<int>(refused));
