@@ -13,16 +13,10 @@
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/codec/fba.hpp"
 #include "stream_property_checks.hpp"
-#include "support/test_support.hpp"
+#include "support/corpus_sweep.hpp"
 
 namespace fapc {
 namespace {
-
-#ifdef FAPC_SANITIZED_BUILD
-constexpr std::size_t kEveryNthFile = 8;
-#else
-constexpr std::size_t kEveryNthFile = 1;
-#endif
 
 struct OptionSet {
   const char* name;
@@ -44,14 +38,6 @@ std::vector<OptionSet> option_sets(int quant) {
   return sets;
 }
 
-// Every .fap under corpus/ that reads, outside the folders of bad inputs.
-std::vector<std::string> corpus_fap_files() {
-  std::vector<std::string> files;
-  for (const std::string& path : test::files_under(test::corpus_dir(), ".fap"))
-    if (path.find("-bad/") == std::string::npos) files.push_back(path);
-  return files;
-}
-
 // The largest |value| of each FAP 3..68 in the input: a FAP never above its legal range there
 // must never be decoded above it.
 std::array<std::int64_t, kFapCount> largest_values(const FapSequence& sequence) {
@@ -66,11 +52,10 @@ std::array<std::int64_t, kFapCount> largest_values(const FapSequence& sequence) 
 }
 
 TEST(FbaCorpusPlayerSafe, EveryStreamIsReadTheSameByTheReferenceDecoder) {
-  const auto files = corpus_fap_files();
-  ASSERT_GE(files.size(), 196u);
+  ASSERT_GE(test::all_good_corpus_fap_files().size(), 196u);
+  const auto files = test::sweep_fap_files();
   std::size_t streams = 0, refused = 0, start_codes = 0, fields = 0, values = 0, files_swept = 0, padded = 0, planes = 0;
-  for (std::size_t f = 0; f < files.size(); f += kEveryNthFile) {
-    const std::string& path = files[f];
+  for (const std::string& path : files) {
     auto read = read_fap_text(test::read_text(path), path);
     ASSERT_TRUE(read.ok()) << path;
     ++files_swept;

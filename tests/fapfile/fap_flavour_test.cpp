@@ -10,16 +10,10 @@
 
 #include "fap_family_checkers.hpp"
 #include "fapc/codec/fap_file.hpp"
-#include "support/test_support.hpp"
+#include "support/corpus_sweep.hpp"
 
 namespace fapc {
 namespace {
-
-#ifdef FAPC_SANITIZED_BUILD
-constexpr std::size_t kEveryNthFile = 8;
-#else
-constexpr std::size_t kEveryNthFile = 1;
-#endif
 
 struct FlavourCase {
   FapFlavour flavour;
@@ -74,13 +68,8 @@ std::string differs(const test::SeenFrame& seen, const FapFrame& f, bool single)
 }
 
 TEST(FapFlavour, EveryCorpusFileSatisfiesEachFamilysChecker) {
-  std::vector<std::string> files;
-  for (const std::string& path : test::files_under(test::corpus_dir(), ".fap"))
-    if (path.find("-bad/") == std::string::npos) files.push_back(path);
-  ASSERT_GE(files.size(), 196u);
-  std::vector<std::string> sample;
-  for (std::size_t f = 0; f < files.size(); f += kEveryNthFile) sample.push_back(files[f]);
-  files.swap(sample);
+  ASSERT_GE(test::all_good_corpus_fap_files().size(), 196u);
+  const auto files = test::sweep_fap_files();
   std::array<std::size_t, std::size(kCases)> written{}, refused{};
   for (const std::string& path : files) {
     auto read = read_fap_text(test::read_text(path), path);
