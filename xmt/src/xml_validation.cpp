@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <memory>
 #include <mutex>
+#include <optional>
 
 #include <xercesc/framework/MemBufInputSource.hpp>
 #include <xercesc/framework/XMLPScanToken.hpp>
@@ -20,7 +21,9 @@
 #include <xercesc/util/XMLString.hpp>
 #include <xercesc/validators/common/Grammar.hpp>
 
+#include "fapc/codec/deep_stack.hpp"
 #include "schema_registry.hpp"
+#include "xml/xml_document.hpp"
 
 namespace fapc::xmt {
 
@@ -234,16 +237,25 @@ std::vector<std::string> validated_document_kinds() {
 }
 
 Result<ValidationReport> validate_xml(std::string_view text_in, const std::string& file) {
+  // The readers' depth limit holds here too: Xerces would take any depth, slowly.
+  if (Status depth = xml::check_element_depth(text_in, file); !depth) return depth.error();
   initialise_xerces();
-  // Xerces reports some failures (unreadable encodings, input that is not XML at all) by
-  // throwing; they become an error at the start of the document.
-  try {
-    return validate_with_xerces(text_in, file);
-  } catch (const xc::XMLException& e) {
-    return make_error(Location::text(file, 1, 1), text(e.getMessage()));
-  } catch (const xc::SAXException& e) {
-    return make_error(Location::text(file, 1, 1), text(e.getMessage()));
-  }
+  // Xerces recurses where fapc cannot bound it (its regular-expression matcher, once per item of
+  // a long list attribute): it runs on a stack of its own, large enough for any input that
+  // passes fapc's size limits.
+  std::optional<Result<ValidationReport>> outcome;
+  run_on_deep_stack([&] {
+    // Xerces reports some failures (unreadable encodings, input that is not XML at all) by
+    // throwing; they become an error at the start of the document.
+    try {
+      outcome.emplace(validate_with_xerces(text_in, file));
+    } catch (const xc::XMLException& e) {
+      outcome.emplace(make_error(Location::text(file, 1, 1), text(e.getMessage())));
+    } catch (const xc::SAXException& e) {
+      outcome.emplace(make_error(Location::text(file, 1, 1), text(e.getMessage())));
+    }
+  });
+  return std::move(*outcome);
 }
 
 }  // namespace fapc::xmt
