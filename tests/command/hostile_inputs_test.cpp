@@ -92,6 +92,28 @@ TEST_F(HostileInputs, MimicGroupsDeeperThanTheLimit) {
           "groups (with macros expanded) nested deeper than 256 levels (the depth limit)", at("out.fap"));
 }
 
+TEST_F(HostileInputs, MimicMacrosThatDoubleAreRefused) {
+  std::string program = "def m0 { open_jaw <in=1,value=100>; }\n";
+  for (int i = 1; i <= 40; ++i) {
+    program += "def m" + std::to_string(i) + " { m" + std::to_string(i - 1) + "; m" + std::to_string(i - 1) + "; }\n";
+  }
+  write("double.mimic", program + "main { m40; }\n");
+  refused("compile " + at("double.mimic") + " -o " + at("out.fap"),
+          "error: the program has more than 1000000 actions with macros expanded", at("out.fap"));
+}
+
+TEST_F(HostileInputs, FmlTemplateChainsDeeperThanTheLimit) {
+  // Each template one level deep, each using the one before: 20000 levels once expanded.
+  std::string model = "<template name=\"t0\"><expr type=\"smile\" val=\"60\" duration=\"0.5s\"/></template>";
+  for (int i = 1; i < 20000; ++i) {
+    model += "<template name=\"t" + std::to_string(i) + "\"><seq><behavior name=\"t" + std::to_string(i - 1) +
+             "\"/></seq></template>";
+  }
+  write("chain.fml", "<fml><model>" + model + "</model><story><action><behavior name=\"t19999\"/></action></story></fml>\n");
+  refused("compile " + at("chain.fml") + " -o " + at("out.fap"),
+          "error: elements (with templates expanded) nested deeper than 256 levels (the depth limit)", at("out.fap"));
+}
+
 TEST_F(HostileInputs, XmlElementsDeeperThanTheLimitInCompileAndValidate) {
   const std::string deep = "<?xml version=\"1.0\"?>\n<XMT-O xmlns=\"urn:mpeg:mpeg4:xmto:schema:2002\"><body>" +
                            repeat("<par>", 100000) + repeat("</par>", 100000) + "</body></XMT-O>\n";

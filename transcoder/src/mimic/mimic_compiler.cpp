@@ -25,6 +25,9 @@ namespace {
 
 using Kind = ScheduleNode::Kind;
 
+// As FML's bound on elements after template expansion (xmt/src/fml/fml_reader.cpp).
+constexpr std::size_t kMaxActions = 1000000;
+
 struct Target {
   std::string name;
   double factor = 1;  // a defxpr entry's value: the amplifier applied to the fade's value
@@ -104,6 +107,7 @@ class Compiler {
   std::map<std::string, algebra::FacialState> expressions_;
   std::vector<Leaf> leaves_;
   std::vector<std::string> stack_;  // macros being expanded, for recursion errors
+  std::size_t actions_built_ = 0;
   // Per clip of the timeline being built: empty when it does not connect, else the explicit end
   // value of `connect=x` (empty inside: take the next clip's value).
   std::vector<std::optional<std::optional<double>>> connects_;
@@ -180,6 +184,14 @@ class Compiler {
   Result<ScheduleNode> build(const Action& action, const Context& context) {
     if (context.depth >= kMaxNestingDepth) {
       return nesting_too_deep(location(action.at), "groups (with macros expanded)", source_line(source_, action.at.line));
+    }
+    // Macros that use each other twice double with every level: forty lines can ask for 2^40
+    // actions. Counted over the whole compilation (the macro bodies' own checks included).
+    if (++actions_built_ > kMaxActions) {
+      return make_error(ErrorKind::limit_exceeded, location(action.at),
+                        "the program has more than " + std::to_string(kMaxActions) +
+                            " actions with macros expanded: fapc refuses to schedule so many",
+                        source_line(source_, action.at.line));
     }
     Result<ActionParams> params = read(action.params);
     if (!params) return params.error();

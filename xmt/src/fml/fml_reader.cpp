@@ -11,6 +11,7 @@
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "fapc/codec/include_policy.hpp"
+#include "fapc/codec/nesting_limit.hpp"
 #include "fapc/xmt/fml.hpp"
 #include "fml/embedded_fml.hpp"
 #include "fml/fml_timing.hpp"
@@ -387,8 +388,25 @@ class FmlReader {
     return true;
   }
 
+  // Elements open around the one being read, templates expanded: a chain of templates nests as
+  // deep as all of them together, and so do the schedule tree and the recursion building it.
+  int depth_ = 0;
+
   std::optional<ScheduleNode> element(const xmlNode* node) {
     if (error_ || !count_node(node)) return std::nullopt;
+    if (depth_ >= kMaxNestingDepth) {
+      Diagnostic deep = nesting_too_deep(doc_.where(node), "elements (with templates expanded)");
+      deep.source_line = doc_.line_text(deep.where.line);
+      fail(std::move(deep));
+      return std::nullopt;
+    }
+    ++depth_;
+    std::optional<ScheduleNode> read = element_at_depth(node);
+    --depth_;
+    return read;
+  }
+
+  std::optional<ScheduleNode> element_at_depth(const xmlNode* node) {
     const std::string_view name = xml::local_name(node);
     Result<FmlTiming> timing = read_fml_timing(doc_, node);
     if (!timing) {
