@@ -51,6 +51,8 @@ class HostileInputs : public ::testing::Test {
     }
     return run.err;
   }
+
+  void refused_everywhere(const std::string& name, const std::string& why) const;
 };
 
 std::string repeat(const std::string& s, int n) {
@@ -245,39 +247,36 @@ TEST_F(HostileInputs, StandardInputIncludesFromTheWorkingFolder) {
 
 // ---- a folder or FIFO where a file is expected -------------------------------------------------
 
-TEST_F(HostileInputs, FoldersWhereAFileIsExpected) {
-  fs::create_directories(at("d.fap"));
-  fs::create_directories(at("d.xpr"));
-  fs::create_directories(at("d.pho"));
-  write("a.fap", fap_text());
-  refused("compile " + at("d.fap") + " -o " + at("out.fap"), at("d.fap") + ": error: is a directory", at("out.fap"));
+// NAME.fap, NAME.xpr and NAME.pho, made by the caller as something other than a file, given as
+// the input, as --profile and through every include mechanism: each refused with `why`, placed at
+// the include that names it.
+void HostileInputs::refused_everywhere(const std::string& name, const std::string& why) const {
+  const std::string out = at("out.fap");
+  refused("compile " + at(name + ".fap") + " -o " + out, at(name + ".fap") + ": error: " + why, out);
   write("ok.mimic", "main { open_jaw <in=1,value=100>; }\n");
-  refused("compile " + at("ok.mimic") + " -o " + at("out.fap") + " --profile " + at("d.fap"), "is a directory", at("out.fap"));
-  write("x.mimic", "defxpr e \"d.xpr\" main { e <in=1,value=1>; }\n");
-  refused("compile " + at("x.mimic") + " -o " + at("out.fap"), "x.mimic:1:10: error: cannot read the expression file 'd.xpr': is a directory", at("out.fap"));
-  write("x.xmt", "<XMT-O><body><animation src=\"d.fap\"/></body></XMT-O>\n");
-  refused("compile " + at("x.xmt") + " -o " + at("out.fap"), "x.xmt:1:25: error: cannot place '" + at("d.fap") + "': is a directory", at("out.fap"));
-  write("x.combine", "d.fap\n");
-  refused("compile " + at("x.combine") + " -o " + at("out.fap"), "is a directory", at("out.fap"));
-  write("x.fml", "<fml><story><talk file=\"d.pho\"/></story></fml>\n");
-  refused("compile " + at("x.fml") + " -o " + at("out.fap"), "x.fml:1:19: error: talk file 'd.pho': is a directory", at("out.fap"));
-  refused("validate " + at("d.fap"), "is a directory");
-  refused("combine " + at("d.fap") + " -o " + at("out.fap"), "is a directory", at("out.fap"));
+  refused("compile " + at("ok.mimic") + " -o " + out + " --profile " + at(name + ".fap"), why, out);
+  write("x.mimic", "defxpr e \"" + name + ".xpr\" main { e <in=1,value=1>; }\n");
+  refused("compile " + at("x.mimic") + " -o " + out,
+          "x.mimic:1:10: error: cannot read the expression file '" + name + ".xpr': " + why, out);
+  write("x.xmt", "<XMT-O><body><animation src=\"" + name + ".fap\"/></body></XMT-O>\n");
+  refused("compile " + at("x.xmt") + " -o " + out,
+          "x.xmt:1:25: error: cannot place '" + at(name + ".fap") + "': " + why, out);
+  write("x.combine", name + ".fap\n");
+  refused("compile " + at("x.combine") + " -o " + out, why, out);
+  write("x.fml", "<fml><story><talk file=\"" + name + ".pho\"/></story></fml>\n");
+  refused("compile " + at("x.fml") + " -o " + out, "x.fml:1:19: error: talk file '" + name + ".pho': " + why, out);
+  refused("validate " + at(name + ".fap"), why);
+  refused("combine " + at(name + ".fap") + " -o " + out, why, out);
+}
+
+TEST_F(HostileInputs, FoldersWhereAFileIsExpected) {
+  for (const char* name : {"d.fap", "d.xpr", "d.pho"}) fs::create_directories(at(name));
+  refused_everywhere("d", "is a directory");
 }
 
 TEST_F(HostileInputs, FifosNeverBlock) {
-  ASSERT_EQ(::mkfifo(at("f.fap").c_str(), 0600), 0);
-  ASSERT_EQ(::mkfifo(at("f.xpr").c_str(), 0600), 0);
-  write("a.fap", fap_text());
-  refused("compile " + at("f.fap") + " -o " + at("out.fap"), at("f.fap") + ": error: not a regular file (a FIFO)", at("out.fap"));
-  write("ok.mimic", "main { open_jaw <in=1,value=100>; }\n");
-  refused("compile " + at("ok.mimic") + " -o " + at("out.fap") + " --profile " + at("f.fap"), "not a regular file (a FIFO)", at("out.fap"));
-  write("x.mimic", "defxpr e \"f.xpr\" main { e <in=1,value=1>; }\n");
-  refused("compile " + at("x.mimic") + " -o " + at("out.fap"), "not a regular file (a FIFO)", at("out.fap"));
-  write("x.xmt", "<XMT-O><body><animation src=\"f.fap\"/></body></XMT-O>\n");
-  refused("compile " + at("x.xmt") + " -o " + at("out.fap"), "not a regular file (a FIFO)", at("out.fap"));
-  write("x.combine", "f.fap\n");
-  refused("compile " + at("x.combine") + " -o " + at("out.fap"), "not a regular file (a FIFO)", at("out.fap"));
+  for (const char* name : {"f.fap", "f.xpr", "f.pho"}) ASSERT_EQ(::mkfifo(at(name).c_str(), 0600), 0);
+  refused_everywhere("f", "not a regular file (a FIFO)");
 }
 
 TEST_F(HostileInputs, UnreadableFiles) {
