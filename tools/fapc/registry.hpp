@@ -106,9 +106,6 @@ Result<Loaded> load_input(const std::string& path, const ConvertOptions& options
 
 // ---- inputs that include inputs (docs/security.md) --------------------------------------------
 
-// Includes nest at most this deep (a .combine operand, an XMT-Omega animation...).
-inline constexpr std::size_t kMaxIncludeDepth = 16;
-
 // While alive, `path` is an input being read on this thread (load_input makes one; so does
 // anything that calls a format's load or describe itself). The top input puts its folder (for
 // standard input, includes.base_folder) among the folders includes may read; an included input

@@ -57,8 +57,10 @@ Result<Included> load_included(const xml::XmlDocument& doc, const xmlNode* eleme
     }
   }
   if (chain.size() > kMaxIncludeDepth) {
-    return doc.error(element, used, "animations nested more than " + std::to_string(kMaxIncludeDepth) +
-                                        " documents deep: " + chain_text(chain, included.path));
+    Diagnostic deep = doc.error(element, used, "animations nested more than " + std::to_string(kMaxIncludeDepth) +
+                                                   " documents deep: " + chain_text(chain, included.path));
+    deep.kind = ErrorKind::limit_exceeded;
+    return deep;
   }
   if (!options.load_animation) {
     return doc.error(element, "animation elements need a loader for other inputs (none was given)");

@@ -4,6 +4,7 @@
 // its names through resolve_include.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -11,6 +12,10 @@
 #include "fapc/codec/diagnostic.hpp"
 
 namespace fapc {
+
+// Inputs that include inputs nest at most this deep (a .combine operand that is a .combine, an
+// XMT-Omega animation of an XMT-Omega document...).
+inline constexpr std::size_t kMaxIncludeDepth = 16;
 
 struct IncludePolicy {
   // Folders whose trees includes may read. Empty: the including file's own folder. The command
