@@ -25,8 +25,9 @@ namespace {
 
 using Kind = ScheduleNode::Kind;
 
-// As FML's bound on elements after template expansion (xmt/src/fml/fml_reader.cpp).
-constexpr std::size_t kMaxActions = 1000000;
+// Far more than any hand-written program expands to (an hour of animation at eight actions a
+// second is 28800), and small enough to refuse within a second (an action costs a few µs).
+constexpr std::size_t kMaxActions = 200000;
 
 struct Target {
   std::string name;
