@@ -4,8 +4,9 @@
 
 #include <string>
 
-#include "fapc/xmto/xmto.hpp"
+#include "fapc/codec/include_policy.hpp"  // kMaxIncludeDepth
 #include "fapc/xml/xml_document.hpp"
+#include "fapc/xmto/xmto.hpp"
 
 namespace fapc::xmt {
 
@@ -19,7 +20,5 @@ struct Included {
 // error (returned as it is).
 Result<Included> load_included(const xml::XmlDocument& doc, const xmlNode* element,
                                const XmtoOptions& options, Diagnostics& warnings);
-
-inline constexpr std::size_t kMaxIncludeDepth = 16;
 
 }  // namespace fapc::xmt
