@@ -18,7 +18,7 @@ bool ends_with(std::string_view s, std::string_view suffix) {
 }
 
 Diagnostic io_error(const std::string& path, const std::string& what) {
-  return make_error(Location{path, 0, 0, -1}, what + ": " + std::strerror(errno));
+  return make_error(ErrorKind::io, Location{path, 0, 0, -1}, what + ": " + std::strerror(errno));
 }
 
 }  // namespace

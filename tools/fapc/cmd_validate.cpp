@@ -5,7 +5,7 @@
 
 #include "fapc/args.hpp"
 #include "fapc/codec/file_io.hpp"
-#include "fapc/registry.hpp"
+#include "fapc/commands.hpp"
 #include "fapc/report.hpp"
 #include "fapc/xmt/xml_validation.hpp"
 

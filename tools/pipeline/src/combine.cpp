@@ -1,11 +1,13 @@
-#include "fapc/combine_eval.hpp"
+#include "fapc/pipeline/combine.hpp"
 
 #include <filesystem>
 
 #include "fapc/codec/file_io.hpp"
-#include "fapc/timeline_input.hpp"
+#include "fapc/pipeline/registry.hpp"
+#include "fapc/transcoder/expression_file.hpp"
+#include "timeline_input.hpp"
 
-namespace fapc::cli {
+namespace fapc::pipeline {
 
 namespace {
 
@@ -22,7 +24,7 @@ Result<algebra::Value> load_operand(const std::string& path, const ConvertOption
     value.state = *state;
     return value;
   }
-  Result<Loaded> loaded = load_input(path, options);
+  Result<Loaded> loaded = load(path, options);
   if (!loaded) return loaded.error();
   warnings.insert(warnings.end(), loaded->warnings.begin(), loaded->warnings.end());
   value.animation = algebra::animation_from(loaded->frames);
@@ -36,13 +38,16 @@ Result<algebra::Value> evaluate_combination(const std::string& expression,
                                             const ConvertOptions& options, Diagnostics& warnings) {
   Result<Profile> profile = profile_for(options);
   if (!profile) return profile.error();
-  const auto load = [&](const std::string& name, int) {
+  ConvertOptions operands = options;  // operands are frames, whoever asks for the combination
+  operands.render = true;
+  operands.facts = false;
+  const auto load_file = [&](const std::string& name, int) {
     const std::filesystem::path path(name);
     const std::string resolved =
         path.is_absolute() || base_folder.empty() ? name : (std::filesystem::path(base_folder) / path).string();
-    return load_operand(resolved, options, *profile, warnings);
+    return load_operand(resolved, operands, *profile, warnings);
   };
-  return algebra::evaluate(expression, load);
+  return algebra::evaluate(expression, load_file);
 }
 
 FapSequence frames_of(const algebra::Value& value, int fps, const std::string& name) {
@@ -57,4 +62,4 @@ FapSequence frames_of(const algebra::Value& value, int fps, const std::string& n
   return algebra::sequence_from(animation, name);
 }
 
-}  // namespace fapc::cli
+}  // namespace fapc::pipeline

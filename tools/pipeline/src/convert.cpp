@@ -1,106 +1,88 @@
-#include "fapc/convert.hpp"
-
-#include <iostream>
+#include "fapc/pipeline/convert.hpp"
 
 #include "fapc/codec/file_io.hpp"
-#include "fapc/report.hpp"
 
-namespace fapc::cli {
+namespace fapc::pipeline {
 
-ConvertOptions convert_options(Args& args) {
-  ConvertOptions options;
-  options.fps = args.integer("fps", 25, 1, 1000);
-  options.quant = args.integer("quant", 1, 0, 31);
-  options.intra_period = args.integer("intra-period", 0, 0, 1 << 20);
-  options.profile = args.value("profile");
-  options.duration = args.decimal("duration", 0, 1e7);
-  if (const auto rate = args.decimal("speech-rate", 0.1, 100)) options.visemes_per_second = *rate;
-  options.strict = args.flag("strict");
-  options.verify = args.flag("verify");
-  // Two-way choices: the option's value must be one of the two words.
-  const auto choose = [&args](const char* name, const char* first, const char* second, std::string& into) {
-    const auto value = args.value(name);
-    if (!value) return true;
-    if (*value != first && *value != second) {
-      args.fail(std::string("--") + name + " takes " + first + " or " + second + ", not '" + *value + "'");
-      return false;
-    }
-    into = *value;
-    return true;
-  };
-  if (!choose("ranges", "fit", "max", options.ranges) || !choose("masks", "fit", "keep", options.masks)) return options;
-  for (const std::string& event : args.values("event")) {
-    const auto eq = event.find('=');
-    if (eq == std::string::npos || eq == 0) {
-      args.fail("--event takes NAME=VALUE, not '" + event + "'");
-      return options;
-    }
-    options.events[event.substr(0, eq)] = event.substr(eq + 1);
-  }
-  return options;
+Result<const OutputFormat*> writer_for(const OutputRequest& request) {
+  const OutputFormat* writer =
+      request.kind.empty() ? formats().output_for(request.path) : formats().output_named(request.kind);
+  if (!writer)
+    return make_error(ErrorKind::unsupported, Location{request.path, 0, 0, -1},
+                      "unknown output kind (expected .fap, .fap.gz, .fba, .mp4, .xmt, .json or .svg)");
+  return writer;
+}
+
+Result<std::string> render_output(const Loaded& loaded, const OutputRequest& request, const ConvertOptions& options) {
+  auto writer = writer_for(request);
+  if (!writer) return writer.error();
+  return (*writer)->write(loaded, request.path, options);
 }
 
 namespace {
 
-const OutputFormat* writer_for(const std::string& output, const std::string& to_kind) {
-  const OutputFormat* writer =
-      to_kind.empty() ? output_format_for(output) : output_format_named(to_kind);
-  if (!writer) {
-    report(make_error(Location{output, 0, 0, -1},
-                      "unknown output kind (expected .fap, .fap.gz, .fba, .mp4, .xmt, .json or .svg)"));
+// Writes every output, the writers having been found already.
+void write_all(ConvertResult& result, const std::vector<const OutputFormat*>& writers,
+               const std::vector<OutputRequest>& outputs, const ConvertOptions& options) {
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    auto bytes = writers[i]->write(result.loaded, outputs[i].path, options);
+    if (!bytes) {
+      result.error = bytes.error();
+      return;
+    }
+    if (outputs[i].path == "-") {
+      result.standard_output += *bytes;
+      continue;
+    }
+    if (auto written = write_file_atomic(outputs[i].path, *bytes); !written) {
+      result.error = written.error();
+      return;
+    }
+    result.written.push_back(outputs[i].path);
   }
-  return writer;
 }
 
-int write_with(const OutputFormat& writer, const Loaded& loaded, const std::string& output,
-               const ConvertOptions& options) {
-  auto bytes = writer.write(loaded, output, options);
-  if (!bytes) {
-    report(bytes.error());
-    return bytes.error().message.rfind("verification", 0) == 0 ? kExitVerifyFailed : kExitBadInput;
+// Every writer, or the first unknown kind: a typo in -o should not cost a long compile.
+std::optional<Diagnostic> find_writers(const std::vector<OutputRequest>& outputs,
+                                       std::vector<const OutputFormat*>& writers) {
+  for (const OutputRequest& request : outputs) {
+    auto writer = writer_for(request);
+    if (!writer) return writer.error();
+    writers.push_back(*writer);
   }
-  if (output == "-") {
-    std::cout << *bytes << std::flush;
-  } else if (auto written = write_file_atomic(output, *bytes); !written) {
-    report(written.error());
-    return kExitBadInput;
-  }
-  return kExitOk;
+  return std::nullopt;
 }
 
 }  // namespace
 
-int write_output(const Loaded& loaded, const std::string& output, const ConvertOptions& options,
-                 const std::string& to_kind) {
-  const OutputFormat* writer = writer_for(output, to_kind);
-  return writer ? write_with(*writer, loaded, output, options) : kExitBadInput;
+ConvertResult write_outputs(Loaded loaded, const std::vector<OutputRequest>& outputs, const ConvertOptions& options) {
+  ConvertResult result;
+  result.loaded = std::move(loaded);
+  std::vector<const OutputFormat*> writers;
+  if ((result.error = find_writers(outputs, writers))) return result;
+  write_all(result, writers, outputs, options);
+  return result;
 }
 
-ConvertOutcome convert(const std::string& input, const std::string& output,
-                       const ConvertOptions& options, const std::string& to_kind) {
-  ConvertOutcome outcome;
-  // The output kind is checked first: a typo in -o should not cost a long compile.
-  const OutputFormat* writer = writer_for(output, to_kind);
-  if (!writer) {
-    outcome.exit_status = kExitBadInput;
-    return outcome;
-  }
-  auto loaded = load_input(input, options);
+ConvertResult convert(const std::string& input, const std::vector<OutputRequest>& outputs, const ConvertOptions& options) {
+  ConvertResult result;
+  std::vector<const OutputFormat*> writers;
+  if ((result.error = find_writers(outputs, writers))) return result;
+  auto loaded = load(input, options);
   if (!loaded) {
-    report(loaded.error());
-    outcome.exit_status = kExitBadInput;
-    return outcome;
+    result.error = loaded.error();
+    return result;
   }
-  report_all(loaded->warnings);
-  if (options.strict && !loaded->warnings.empty()) {
-    std::cerr << input << ": error: " << loaded->warnings.size()
-              << " warning(s) treated as errors (--strict); nothing written\n";
-    outcome.exit_status = kExitBadInput;
-    return outcome;
+  result.loaded = std::move(*loaded);
+  result.warnings = result.loaded.warnings;
+  if (options.strict && !result.warnings.empty()) {
+    result.error = make_error(ErrorKind::bad_input, Location{input, 0, 0, -1},
+                              std::to_string(result.warnings.size()) +
+                                  " warning(s) treated as errors (--strict); nothing written");
+    return result;
   }
-  outcome.exit_status = write_with(*writer, *loaded, output, options);
-  if (outcome.exit_status == kExitOk) outcome.loaded = std::move(*loaded);
-  return outcome;
+  write_all(result, writers, outputs, options);
+  return result;
 }
 
-}  // namespace fapc::cli
+}  // namespace fapc::pipeline

@@ -1,27 +1,10 @@
-#include "fapc/registry.hpp"
+#include "fapc/pipeline/registry.hpp"
 
-namespace fapc::cli {
+#include "formats/formats.hpp"
+
+namespace fapc::pipeline {
 
 namespace {
-
-// Function-local statics: the registering objects of other files may run before this file's
-// globals are initialised.
-std::map<std::string, Command>& command_table() {
-  static std::map<std::string, Command> table;
-  return table;
-}
-std::vector<InputFormat>& input_table() {
-  static std::vector<InputFormat> table;
-  return table;
-}
-std::vector<OutputFormat>& output_table() {
-  static std::vector<OutputFormat> table;
-  return table;
-}
-
-bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
 
 template <class Format>
 const Format* by_extension(const std::vector<Format>& table, const std::string& path) {
@@ -29,7 +12,7 @@ const Format* by_extension(const std::vector<Format>& table, const std::string& 
   std::size_t best_length = 0;
   for (const Format& f : table)
     for (const std::string& ext : f.extensions)
-      if (ext.size() > best_length && ends_with(path, ext)) {
+      if (ext.size() > best_length && path.ends_with(ext)) {
         best = &f;
         best_length = ext.size();
       }
@@ -43,35 +26,57 @@ const Format* by_kind(const std::vector<Format>& table, const std::string& kind)
   return nullptr;
 }
 
+template <class Format>
+std::string extension_list(const std::vector<Format>& table) {
+  std::string out;
+  for (const Format& f : table)
+    for (const std::string& ext : f.extensions)
+      if (ext != ".FAP") out += (out.empty() ? "" : ", ") + ext;
+  return out;
+}
+
+// The one list of built-in formats. Order matters only between entries sharing an extension:
+// the longer one wins (".bifs.xmt" before ".xmt"), whatever its place.
+Registry built_in() {
+  Registry r;
+  r.add(builtin::fap_input());
+  r.add(builtin::fba_input());
+  r.add(builtin::mp4_input());
+  r.add(builtin::mimic_input());
+  r.add(builtin::fml_input());
+  r.add(builtin::xmto_input());
+  r.add(builtin::combine_input());
+  r.add(builtin::fap_output());
+  r.add(builtin::fba_output());
+  r.add(builtin::mp4_output());
+  r.add(builtin::xmta_scene_output());
+  r.add(builtin::xmta_commands_output());
+  r.add(builtin::curves_json_output());
+  r.add(builtin::svg_output());
+  r.add(builtin::timeline_output());
+  return r;
+}
+
 }  // namespace
 
-RegisterCommand::RegisterCommand(std::string name, std::string usage, CommandFn run) {
-  command_table()[name] = Command{name, std::move(usage), run};
-}
-const std::map<std::string, Command>& commands() { return command_table(); }
+const InputFormat* Registry::input_for(const std::string& path) const { return by_extension(inputs_, path); }
+const OutputFormat* Registry::output_for(const std::string& path) const { return by_extension(outputs_, path); }
+const InputFormat* Registry::input_named(const std::string& kind) const { return by_kind(inputs_, kind); }
+const OutputFormat* Registry::output_named(const std::string& kind) const { return by_kind(outputs_, kind); }
+std::string Registry::input_extensions() const { return extension_list(inputs_); }
+std::string Registry::output_extensions() const { return extension_list(outputs_); }
 
-RegisterInput::RegisterInput(InputFormat format) { input_table().push_back(std::move(format)); }
-RegisterOutput::RegisterOutput(OutputFormat format) { output_table().push_back(std::move(format)); }
-
-const InputFormat* input_format_for(const std::string& path) {
-  return by_extension(input_table(), path);
-}
-const OutputFormat* output_format_for(const std::string& path) {
-  return by_extension(output_table(), path);
-}
-const InputFormat* input_format_named(const std::string& kind) {
-  return by_kind(input_table(), kind);
-}
-const OutputFormat* output_format_named(const std::string& kind) {
-  return by_kind(output_table(), kind);
+const Registry& formats() {
+  static const Registry registry = built_in();  // initialised once, thread-safe (C++11 statics)
+  return registry;
 }
 
-Result<Loaded> load_input(const std::string& path, const ConvertOptions& options) {
-  const InputFormat* format = input_format_for(path);
+Result<Loaded> load(const std::string& path, const ConvertOptions& options) {
+  const InputFormat* format = formats().input_for(path);
   if (!format)
-    return make_error(Location{path, 0, 0, -1},
+    return make_error(ErrorKind::unsupported, Location{path, 0, 0, -1},
                       "unknown input kind (expected .fap, .fap.gz, .fba, .mp4, .mimic, .fml or .xmt)");
   return format->load(path, options);
 }
 
-}  // namespace fapc::cli
+}  // namespace fapc::pipeline

@@ -1,11 +1,12 @@
-#include "fapc/xml_text.hpp"
-#include "fapc/svg_plot.hpp"
+#include "fapc/pipeline/svg_plot.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-namespace fapc::cli {
+#include "xml_text.hpp"
+
+namespace fapc::pipeline {
 
 namespace {
 
@@ -125,4 +126,4 @@ std::string plot_svg(const Curves& blended, const Curves* per_clip, const std::s
   return svg.str();
 }
 
-}  // namespace fapc::cli
+}  // namespace fapc::pipeline

@@ -1,10 +1,10 @@
-#include "fapc/timeline_input.hpp"
+#include "timeline_input.hpp"
 
 #include <filesystem>
 
 #include "fapc/transcoder/render.hpp"
 
-namespace fapc::cli {
+namespace fapc::pipeline {
 
 Result<Profile> profile_for(const ConvertOptions& options) {
   if (!options.profile) return default_profile();
@@ -15,6 +15,12 @@ Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
                                     const Profile& profile, const ConvertOptions& options,
                                     Diagnostics warnings) {
   if (options.duration) timeline.explicit_end = *options.duration;
+  if (!options.render) {  // an XMT-Omega include: its clips are placed, its frames never used
+    Loaded loaded;
+    loaded.timeline = std::move(timeline);
+    loaded.warnings = std::move(warnings);
+    return loaded;
+  }
   RenderOptions render;
   render.fps = options.fps;
   render.profile = &profile;
@@ -34,4 +40,4 @@ Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
   return loaded;
 }
 
-}  // namespace fapc::cli
+}  // namespace fapc::pipeline

@@ -4,17 +4,19 @@
 
 #include <string>
 
-#include "fapc/registry.hpp"
+#include "fapc/pipeline/loaded.hpp"
+#include "fapc/pipeline/options.hpp"
 #include "fapc/transcoder/profile.hpp"
 
-namespace fapc::cli {
+namespace fapc::pipeline {
 
 // The profile of --profile, or the default one.
 Result<Profile> profile_for(const ConvertOptions& options);
 
-// Frames at options.fps (clamp warnings appended to `warnings`), curves, and the timeline itself.
+// Frames at options.fps (clamp warnings appended to `warnings`), curves, and the timeline itself;
+// the timeline alone when options.render is false.
 Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
                                     const Profile& profile, const ConvertOptions& options,
                                     Diagnostics warnings);
 
-}  // namespace fapc::cli
+}  // namespace fapc::pipeline

@@ -1,28 +1,19 @@
-// fapc verify FILE... [--quant Q] [--intra-period N] [--ranges fit|max] [--masks fit|keep] [--json]
-// A .fba stream: it decodes, and encoding its frames again with the settings it shows gives the
-// same bytes (true of every stream fapc writes). An .mp4: the same for its FBA track, sample by
-// sample, durations and sync flags included. Any other input: it encodes with the given
-// settings, the stream decodes to within half a quantiser step of it (exactly at quant 0), and
-// re-encodes to the same bytes. Exit 3 when a check fails, 1 when an input cannot be read.
+// The checks of `fapc verify` (see fapc/pipeline/verify.hpp), including the search for the
+// encoder settings a stream was written with.
+#include "fapc/pipeline/verify.hpp"
+
 #include <algorithm>
 #include <functional>
 #include <iomanip>
-#include <iostream>
 #include <sstream>
 
 #include "fapc/codec/file_io.hpp"
-#include "fapc/convert.hpp"
-#include "fapc/fba_cli.hpp"
-#include "fapc/report.hpp"
+#include "fapc/pipeline/fba_io.hpp"
+#include "fapc/pipeline/registry.hpp"
 
-namespace fapc::cli {
+namespace fapc::pipeline {
 
 namespace {
-
-struct Outcome {
-  int status = kExitOk;
-  std::string message;  // what was checked, or why it failed
-};
 
 std::string summary(std::size_t frames, std::size_t bytes, double bits_per_frame, int quant) {
   std::ostringstream out;
@@ -31,9 +22,18 @@ std::string summary(std::size_t frames, std::size_t bytes, double bits_per_frame
   return out.str();
 }
 
-Outcome failed(const Diagnostic& d, int status) {
-  report(d);
-  return {status, format_diagnostic(d)};
+VerifyResult failed(Diagnostic d, Diagnostics warnings = {}) {
+  VerifyResult result;
+  result.warnings = std::move(warnings);
+  result.error = std::move(d);
+  return result;
+}
+
+VerifyResult passed(std::string text, Diagnostics warnings) {
+  VerifyResult result;
+  result.warnings = std::move(warnings);
+  result.summary = std::move(text);
+  return result;
 }
 
 // Plane distances between intra planes that no mask change explains: candidates for the period.
@@ -57,11 +57,12 @@ std::vector<int> intra_periods(const FapSequence& frames, const FbaStreamInfo& i
 // Finds the encoder settings that give back what was read: its fap_quant and plane alignment are
 // in the stream; the range mode, the intra period and the mask layout are tried in turn, since the
 // bits do not say which was used. `same` compares an encoding with the original.
-Outcome reencode_matches(const std::string& path, const DecodedFba& decoded, bool aligned,
-                         const std::function<bool(const EncodedFba&)>& same, std::size_t bytes) {
+VerifyResult reencode_matches(const std::string& path, const DecodedFba& decoded, bool aligned,
+                             const std::function<bool(const EncodedFba&)>& same, std::size_t bytes) {
   const FbaStreamInfo& info = decoded.info;
   const auto failure = [&](const std::string& why) {
-    return failed(make_error(Location{path, 0, 0, -1}, "verification failed: " + why), kExitVerifyFailed);
+    return failed(make_error(ErrorKind::verification_failed, Location{path, 0, 0, -1}, "verification failed: " + why),
+                  decoded.warnings);
   };
   if (info.body_planes > 0) return failure("the stream carries body data, which fapc does not write");
   FbaEncodeOptions options;
@@ -81,20 +82,20 @@ Outcome reencode_matches(const std::string& path, const DecodedFba& decoded, boo
           options.list_every_mask = listed;
           auto again = encode_fba(decoded.sequence, options);
           if (again && same(*again))
-            return {kExitOk, summary(decoded.sequence.frames.size(), bytes, info.bits_per_frame(), options.quant)};
+            return passed(summary(decoded.sequence.frames.size(), bytes, info.bits_per_frame(), options.quant),
+                          decoded.warnings);
         }
   return failure("re-encoding the decoded frames does not give the same bytes (a stream fapc did not write?)");
 }
 
-Outcome verify_stream(const std::string& path) {
+VerifyResult verify_stream(const std::string& path) {
   auto raw = read_file_bytes(path);
-  if (!raw) return failed(raw.error(), kExitBadInput);
+  if (!raw) return failed(raw.error());
   const std::vector<std::uint8_t> bytes(raw->begin(), raw->end());
   FbaDecodeOptions decode_options;
   decode_options.file = path;
   auto decoded = decode_fba(bytes, decode_options);
-  if (!decoded) return failed(decoded.error(), kExitBadInput);
-  report_all(decoded->warnings);
+  if (!decoded) return failed(decoded.error());
   const FbaStreamInfo& info = decoded->info;
   const bool aligned = info.planes > 0 && info.plane_start_codes == info.planes;
   return reencode_matches(path, *decoded, aligned, [&](const EncodedFba& again) { return again.bytes == bytes; },
@@ -103,10 +104,9 @@ Outcome verify_stream(const std::string& path) {
 
 // An MP4's FBA track: each sample must be the plane fapc writes for its frame, with its duration
 // and sync flag.
-Outcome verify_mp4(const std::string& path) {
+VerifyResult verify_mp4(const std::string& path) {
   auto fba = read_mp4_fba(path);
-  if (!fba) return failed(fba.error(), kExitBadInput);
-  report_all(fba->decoded.warnings);
+  if (!fba) return failed(fba.error());
   const std::vector<xmt::FbaSample>& samples = fba->track.samples;
   std::size_t bytes = 0;
   for (const xmt::FbaSample& sample : samples) bytes += sample.bytes.size();
@@ -125,53 +125,28 @@ Outcome verify_mp4(const std::string& path) {
   return reencode_matches(path, fba->decoded, true, same, bytes);
 }
 
-Outcome verify_input(const std::string& path, const ConvertOptions& options) {
-  auto loaded = load_input(path, options);
-  if (!loaded) return failed(loaded.error(), kExitBadInput);
-  report_all(loaded->warnings);
+VerifyResult verify_input(const std::string& path, const ConvertOptions& options) {
+  auto loaded = load(path, options);
+  if (!loaded) return failed(loaded.error());
   ConvertOptions checked = options;
   checked.verify = true;
   auto encoded = encode_checked(loaded->frames, checked, path);
-  if (!encoded) {
-    const bool verification = encoded.error().message.rfind("verification failed", 0) == 0;
-    return failed(encoded.error(), verification ? kExitVerifyFailed : kExitBadInput);
-  }
+  if (!encoded) return failed(encoded.error(), loaded->warnings);
   const double bits = loaded->frames.frames.empty()
                           ? 0.0
                           : 8.0 * static_cast<double>(encoded->bytes.size()) /
                                 static_cast<double>(loaded->frames.frames.back().number - loaded->frames.frames.front().number + 1);
-  return {kExitOk, summary(loaded->frames.frames.size(), encoded->bytes.size(), bits, options.quant)};
+  return passed(summary(loaded->frames.frames.size(), encoded->bytes.size(), bits, options.quant), loaded->warnings);
 }
-
-int run_verify(const std::vector<std::string>& argv) {
-  Args args(argv, {"quant", "intra-period", "ranges", "masks"}, {"json"});
-  const ConvertOptions options = convert_options(args);
-  if (!args.ok()) return usage_error("verify", args.error());
-  if (args.positionals().empty()) return usage_error("verify", "expected at least one FILE");
-  int status = kExitOk;
-  nlohmann::ordered_json results = nlohmann::ordered_json::array();
-  for (const std::string& path : args.positionals()) {
-    const InputFormat* format = input_format_for(path);
-    const std::string kind = format ? format->kind : "";
-    const Outcome outcome = kind == "fba"   ? verify_stream(path)
-                            : kind == "mp4" ? verify_mp4(path)
-                                            : verify_input(path, options);
-    if (outcome.status == kExitBadInput || (outcome.status == kExitVerifyFailed && status == kExitOk))
-      status = outcome.status;
-    if (args.flag("json")) {
-      results.push_back({{"file", path}, {"ok", outcome.status == kExitOk}, {"status", outcome.status},
-                         {"message", outcome.message}});
-    } else if (outcome.status == kExitOk) {
-      std::cout << path << ": ok: " << outcome.message << '\n';
-    }
-  }
-  if (args.flag("json")) std::cout << results.dump(2) << '\n';
-  return status;
-}
-
-const RegisterCommand verify_command{
-    "verify", "fapc verify FILE... [--quant Q] [--intra-period N] [--ranges fit|max] [--masks fit|keep] [--json]", run_verify};
 
 }  // namespace
 
-}  // namespace fapc::cli
+VerifyResult verify(const std::string& path, const ConvertOptions& options) {
+  const InputFormat* format = formats().input_for(path);
+  const std::string kind = format ? format->kind : "";
+  if (kind == "fba") return verify_stream(path);
+  if (kind == "mp4") return verify_mp4(path);
+  return verify_input(path, options);
+}
+
+}  // namespace fapc::pipeline

@@ -3,7 +3,7 @@
 
 #include <string>
 
-namespace fapc::cli {
+namespace fapc::pipeline {
 
 inline std::string xml_escape(const std::string& text) {
   std::string out;
@@ -19,4 +19,4 @@ inline std::string xml_escape(const std::string& text) {
   return out;
 }
 
-}  // namespace fapc::cli
+}  // namespace fapc::pipeline

@@ -3,9 +3,10 @@
 #include <filesystem>
 
 #include "fapc/codec/file_io.hpp"
-#include "fapc/combine_eval.hpp"
+#include "fapc/pipeline/combine.hpp"
+#include "formats.hpp"
 
-namespace fapc::cli {
+namespace fapc::pipeline::builtin {
 
 namespace {
 
@@ -45,8 +46,8 @@ Result<Loaded> load_combine(const std::string& path, const ConvertOptions& optio
   return loaded;
 }
 
-const RegisterInput combine_input{InputFormat{"combine", {".combine"}, load_combine, {}}};
-
 }  // namespace
 
-}  // namespace fapc::cli
+InputFormat combine_input() { return {"combine", {".combine"}, load_combine}; }
+
+}  // namespace fapc::pipeline::builtin

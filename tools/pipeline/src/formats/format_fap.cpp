@@ -1,31 +1,13 @@
 // .fap and .fap.gz, in and out.
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/codec/file_io.hpp"
-#include "fapc/registry.hpp"
+#include "formats.hpp"
 
-namespace fapc::cli {
+namespace fapc::pipeline::builtin {
 
 namespace {
 
-Result<FapReadResult> read_fap_path(const std::string& path) {
-  auto bytes = read_file_bytes(path);
-  if (!bytes) return bytes.error();
-  return read_fap_text(*bytes, path);
-}
-
-Result<Loaded> load_fap(const std::string& path, const ConvertOptions&) {
-  auto read = read_fap_path(path);
-  if (!read) return read.error();
-  Loaded loaded;
-  loaded.frames = std::move(read->sequence);
-  loaded.warnings = std::move(read->warnings);
-  return loaded;
-}
-
-Result<nlohmann::ordered_json> describe_fap(const std::string& path, const ConvertOptions&) {
-  auto read = read_fap_path(path);
-  if (!read) return read.error();
-  const FapFileFacts& facts = read->facts;
+nlohmann::ordered_json facts_of(const FapFileFacts& facts) {
   nlohmann::ordered_json out;
   out["variant"] = facts.variant();
   if (facts.has_header) {
@@ -37,13 +19,25 @@ Result<nlohmann::ordered_json> describe_fap(const std::string& path, const Conve
   return out;
 }
 
+Result<Loaded> load_fap(const std::string& path, const ConvertOptions& options) {
+  auto bytes = read_file_bytes(path);
+  if (!bytes) return bytes.error();
+  auto read = read_fap_text(*bytes, path);
+  if (!read) return read.error();
+  Loaded loaded;
+  loaded.frames = std::move(read->sequence);
+  loaded.warnings = std::move(read->warnings);
+  if (options.facts) loaded.facts = facts_of(read->facts);
+  return loaded;
+}
+
 Result<std::string> write_fap(const Loaded& loaded, const std::string&, const ConvertOptions&) {
   return write_fap_text(loaded.frames);
 }
 
-const RegisterInput fap_input{InputFormat{"fap", {".fap", ".fap.gz", ".FAP"}, load_fap, describe_fap}};
-const RegisterOutput fap_output{OutputFormat{"fap", {".fap", ".fap.gz"}, write_fap}};
-
 }  // namespace
 
-}  // namespace fapc::cli
+InputFormat fap_input() { return {"fap", {".fap", ".fap.gz", ".FAP"}, load_fap}; }
+OutputFormat fap_output() { return {"fap", {".fap", ".fap.gz"}, write_fap}; }
+
+}  // namespace fapc::pipeline::builtin

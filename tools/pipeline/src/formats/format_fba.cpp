@@ -1,28 +1,16 @@
 // .fba raw MPEG-4 FBA streams, in and out; `fapc info` gets the stream's statistics.
 #include <filesystem>
 
-#include "fapc/fba_cli.hpp"
+#include "fapc/pipeline/fba_io.hpp"
+#include "formats.hpp"
 
-namespace fapc::cli {
+namespace fapc::pipeline::builtin {
 
 namespace {
 
-Result<Loaded> load_fba(const std::string& path, const ConvertOptions&) {
-  auto decoded = read_fba_file(path);
-  if (!decoded) return decoded.error();
-  Loaded loaded;
-  loaded.frames = std::move(decoded->sequence);
-  loaded.frames.name = std::filesystem::path(path).stem().string();
-  loaded.warnings = std::move(decoded->warnings);
-  return loaded;
-}
-
 std::string range_text(const FbaRange& r) { return std::to_string(r.min) + ".." + std::to_string(r.max); }
 
-Result<nlohmann::ordered_json> describe_fba(const std::string& path, const ConvertOptions&) {
-  auto decoded = read_fba_file(path);
-  if (!decoded) return decoded.error();
-  const FbaStreamInfo& info = decoded->info;
+nlohmann::ordered_json facts_of(const FbaStreamInfo& info) {
   nlohmann::ordered_json out;
   out["stream bytes"] = info.bytes;
   if (info.profile_and_level >= 0) out["profile and level"] = info.profile_and_level;
@@ -54,15 +42,26 @@ Result<nlohmann::ordered_json> describe_fba(const std::string& path, const Conve
   return out;
 }
 
+Result<Loaded> load_fba(const std::string& path, const ConvertOptions& options) {
+  auto decoded = read_fba_file(path);
+  if (!decoded) return decoded.error();
+  Loaded loaded;
+  loaded.frames = std::move(decoded->sequence);
+  loaded.frames.name = std::filesystem::path(path).stem().string();
+  loaded.warnings = std::move(decoded->warnings);
+  if (options.facts) loaded.facts = facts_of(decoded->info);
+  return loaded;
+}
+
 Result<std::string> write_fba(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
   auto encoded = encode_checked(loaded.frames, options, path);
   if (!encoded) return encoded.error();
   return std::string(encoded->bytes.begin(), encoded->bytes.end());
 }
 
-const RegisterInput fba_input{InputFormat{"fba", {".fba", ".fba.gz"}, load_fba, describe_fba}};
-const RegisterOutput fba_output{OutputFormat{"fba", {".fba"}, write_fba}};
-
 }  // namespace
 
-}  // namespace fapc::cli
+InputFormat fba_input() { return {"fba", {".fba", ".fba.gz"}, load_fba}; }
+OutputFormat fba_output() { return {"fba", {".fba"}, write_fba}; }
+
+}  // namespace fapc::pipeline::builtin

@@ -1,10 +1,10 @@
 // .fml as an input: FML documents (docs/fml.md). --event chooses excl branches, --duration ends
 // indefinite loops, --profile names the parameters of param moves.
-#include "fapc/registry.hpp"
-#include "fapc/timeline_input.hpp"
 #include "fapc/xmt/fml.hpp"
+#include "formats.hpp"
+#include "timeline_input.hpp"
 
-namespace fapc::cli {
+namespace fapc::pipeline::builtin {
 
 namespace {
 
@@ -17,31 +17,31 @@ Result<xmt::FmlDocument> read_document(const std::string& path, const ConvertOpt
   return xmt::load_fml(path, fml);
 }
 
+nlohmann::ordered_json facts_of(const xmt::FmlDocument& document) {
+  nlohmann::ordered_json out;
+  out["format"] = "FML";
+  if (!document.character.empty()) out["character"] = document.character;
+  for (const auto& [name, value] : document.events) out["event " + name] = value.empty() ? "(no value)" : value;
+  if (!document.templates.empty()) out["templates"] = document.templates;
+  if (!document.phoneme_files.empty()) out["phoneme files"] = document.phoneme_files;
+  out["clips"] = document.timeline.clips.size();
+  return out;
+}
+
 Result<Loaded> load_fml(const std::string& path, const ConvertOptions& options) {
   Result<Profile> profile = profile_for(options);
   if (!profile) return profile.error();
   Result<xmt::FmlDocument> document = read_document(path, options, *profile);
   if (!document) return document.error();
-  return loaded_from_timeline(std::move(document->timeline), path, *profile, options, std::move(document->warnings));
+  nlohmann::ordered_json facts = options.facts ? facts_of(*document) : nlohmann::ordered_json::object();
+  auto loaded = loaded_from_timeline(std::move(document->timeline), path, *profile, options,
+                                     std::move(document->warnings));
+  if (loaded) loaded->facts = std::move(facts);
+  return loaded;
 }
-
-Result<nlohmann::ordered_json> describe_fml(const std::string& path, const ConvertOptions& options) {
-  Result<Profile> profile = profile_for(options);
-  if (!profile) return profile.error();
-  Result<xmt::FmlDocument> document = read_document(path, options, *profile);
-  if (!document) return document.error();
-  nlohmann::ordered_json out;
-  out["format"] = "FML";
-  if (!document->character.empty()) out["character"] = document->character;
-  for (const auto& [name, value] : document->events) out["event " + name] = value.empty() ? "(no value)" : value;
-  if (!document->templates.empty()) out["templates"] = document->templates;
-  if (!document->phoneme_files.empty()) out["phoneme files"] = document->phoneme_files;
-  out["clips"] = document->timeline.clips.size();
-  return out;
-}
-
-const RegisterInput fml_input{InputFormat{"fml", {".fml"}, load_fml, describe_fml}};
 
 }  // namespace
 
-}  // namespace fapc::cli
+InputFormat fml_input() { return {"fml", {".fml"}, load_fml}; }
+
+}  // namespace fapc::pipeline::builtin

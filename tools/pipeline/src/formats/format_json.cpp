@@ -1,9 +1,9 @@
 // .json output: the curves JSON of docs/cli.md (time-value lists after blending and thinning).
 #include <cstdio>
 
-#include "fapc/registry.hpp"
+#include "formats.hpp"
 
-namespace fapc::cli {
+namespace fapc::pipeline::builtin {
 
 namespace {
 
@@ -35,8 +35,8 @@ Result<std::string> write_curves_json(const Loaded& loaded, const std::string&,
   return out + "\n }\n}\n";
 }
 
-const RegisterOutput json_output{OutputFormat{"json", {".json"}, write_curves_json}};
-
 }  // namespace
 
-}  // namespace fapc::cli
+OutputFormat curves_json_output() { return {"json", {".json"}, write_curves_json}; }
+
+}  // namespace fapc::pipeline::builtin

@@ -1,10 +1,10 @@
 // .mimic and .mim inputs: the Mimic compiler, then the shared rendering.
 #include "fapc/codec/file_io.hpp"
-#include "fapc/registry.hpp"
-#include "fapc/timeline_input.hpp"
 #include "fapc/transcoder/mimic.hpp"
+#include "formats.hpp"
+#include "timeline_input.hpp"
 
-namespace fapc::cli {
+namespace fapc::pipeline::builtin {
 
 namespace {
 
@@ -17,21 +17,19 @@ Result<Loaded> load_mimic(const std::string& path, const ConvertOptions& options
   mimic.profile = &*profile;
   Result<MimicProgram> program = compile_mimic(*source, path, mimic);
   if (!program) return program.error();
-  return loaded_from_timeline(std::move(program->timeline), path, *profile, options,
-                              std::move(program->warnings));
+  nlohmann::ordered_json facts;
+  if (options.facts) {
+    facts["clips"] = program->timeline.clips.size();
+    facts["timeline end"] = program->timeline.end();
+  }
+  auto loaded = loaded_from_timeline(std::move(program->timeline), path, *profile, options,
+                                     std::move(program->warnings));
+  if (loaded && options.facts) loaded->facts = std::move(facts);
+  return loaded;
 }
-
-Result<nlohmann::ordered_json> describe_mimic(const std::string& path, const ConvertOptions& options) {
-  Result<Loaded> loaded = load_mimic(path, options);
-  if (!loaded) return loaded.error();
-  nlohmann::ordered_json out;
-  out["clips"] = loaded->timeline->clips.size();
-  out["timeline end"] = loaded->timeline->end();
-  return out;
-}
-
-const RegisterInput mimic_input{InputFormat{"mimic", {".mimic", ".mim"}, load_mimic, describe_mimic}};
 
 }  // namespace
 
-}  // namespace fapc::cli
+InputFormat mimic_input() { return {"mimic", {".mimic", ".mim"}, load_mimic}; }
+
+}  // namespace fapc::pipeline::builtin

@@ -5,73 +5,14 @@
 #include <sstream>
 
 #include "fapc/codec/file_io.hpp"
-#include "fapc/fba_cli.hpp"
-#include "fapc/registry.hpp"
+#include "fapc/pipeline/fba_io.hpp"
 #include "fapc/xmt/mp4_reader.hpp"
 #include "fapc/xmt/mp4_writer.hpp"
+#include "formats.hpp"
 
-namespace fapc::cli {
+namespace fapc::pipeline::builtin {
 
 namespace {
-
-// The FBA track: the encoder's planes, each started by its start code and byte-aligned, become
-// the samples; the timescale is the frame rate, so a sample lasts the frames it covers.
-Result<xmt::FbaTrackInput> encode_planes(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
-  auto encoded = encode_checked(loaded.frames, options, path, /*align_planes=*/true);
-  if (!encoded) return encoded.error();
-  xmt::FbaTrackInput track;
-  const auto dsi = fba_decoder_specific_info();
-  track.decoder_specific_info.assign(dsi.begin(), dsi.end());
-  track.timescale = static_cast<std::uint32_t>(loaded.frames.fps);
-  for (const CodedPlane& plane : encoded->planes) {
-    const auto first = encoded->bytes.begin() + static_cast<std::ptrdiff_t>(plane.offset);
-    track.samples.push_back(xmt::FbaSample{xmt::Bytes(first, first + static_cast<std::ptrdiff_t>(plane.size)),
-                                           static_cast<std::uint32_t>(plane.frames), plane.intra});
-  }
-  return track;
-}
-
-// The decoder reads the raw stream rebuilt from the track (configuration, one stuffing byte, the
-// samples); a byte offset in it is turned back into the file's offset of that sample byte, so an
-// error points into the .mp4 the user has.
-Diagnostic in_file(Diagnostic d, const xmt::Mp4Track& track, const xmt::FbaTrackInput& input) {
-  if (d.where.byte_offset < 0) return d;
-  auto at = static_cast<std::uint64_t>(d.where.byte_offset);
-  const std::uint64_t header = input.decoder_specific_info.size() + 1;
-  if (at < header) {
-    d.where.byte_offset = -1;
-    d.message = "FBA decoder configuration, byte " + std::to_string(at) + ": " + d.message;
-    return d;
-  }
-  at -= header;
-  for (std::size_t k = 0; k < track.samples.size(); ++k) {
-    if (at < track.samples[k].size) {
-      d.where.byte_offset = static_cast<std::int64_t>(track.samples[k].offset + at);
-      d.message = "FBA track sample " + std::to_string(k + 1) + ": " + d.message;
-      return d;
-    }
-    at -= track.samples[k].size;
-  }
-  d.where.byte_offset = -1;
-  d.message = "end of the FBA track: " + d.message;
-  return d;
-}
-
-Result<xmt::Mp4File> read_mp4_path(const std::string& path) {
-  auto bytes = read_file_bytes(path);
-  if (!bytes) return bytes.error();
-  return xmt::read_mp4(xmt::Bytes(bytes->begin(), bytes->end()), path);
-}
-
-Result<Loaded> load_mp4(const std::string& path, const ConvertOptions&) {
-  auto fba = read_mp4_fba(path);
-  if (!fba) return fba.error();
-  Loaded loaded;
-  loaded.frames = std::move(fba->decoded.sequence);
-  loaded.frames.name = std::filesystem::path(path).stem().string();
-  loaded.warnings = std::move(fba->decoded.warnings);
-  return loaded;
-}
 
 std::string hex_byte(unsigned v) {
   std::ostringstream s;
@@ -105,9 +46,7 @@ std::string profiles_text(const xmt::ProfileLevels& p) {
          ", visual " + visual + ", graphics " + hex_byte(p.graphics);
 }
 
-Result<nlohmann::ordered_json> describe_mp4(const std::string& path, const ConvertOptions&) {
-  auto mp4 = read_mp4_path(path);
-  if (!mp4) return mp4.error();
+nlohmann::ordered_json facts_of(const xmt::Mp4File* mp4) {
   nlohmann::ordered_json out;
   std::string brands;
   for (const std::string& b : mp4->compatible_brands) brands += (brands.empty() ? "" : ", ") + b;
@@ -150,30 +89,34 @@ Result<nlohmann::ordered_json> describe_mp4(const std::string& path, const Conve
   return out;
 }
 
+Result<Loaded> load_mp4(const std::string& path, const ConvertOptions& options) {
+  auto bytes = read_file_bytes(path);
+  if (!bytes) return bytes.error();
+  auto mp4 = xmt::read_mp4(xmt::Bytes(bytes->begin(), bytes->end()), path);
+  if (!mp4) return mp4.error();
+  auto fba = decode_mp4_fba(*mp4, path);
+  if (!fba) return fba.error();
+  Loaded loaded;
+  loaded.frames = std::move(fba->decoded.sequence);
+  loaded.frames.name = std::filesystem::path(path).stem().string();
+  loaded.warnings = std::move(fba->decoded.warnings);
+  if (options.facts) loaded.facts = facts_of(&*mp4);
+  return loaded;
+}
+
+// The FBA track: the encoder's planes, each started by its start code and byte-aligned, become
+// the samples.
 Result<std::string> write_mp4_file(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
-  auto track = encode_planes(loaded, path, options);
-  if (!track) return track.error();
-  auto bytes = xmt::write_mp4(*track);
+  auto encoded = encode_checked(loaded.frames, options, path, /*align_planes=*/true);
+  if (!encoded) return encoded.error();
+  auto bytes = xmt::write_mp4(pack_fba_track(*encoded, loaded.frames.fps));
   if (!bytes) return bytes.error();
   return std::string(bytes->begin(), bytes->end());
 }
 
-const RegisterInput mp4_input{InputFormat{"mp4", {".mp4"}, load_mp4, describe_mp4}};
-const RegisterOutput mp4_output{OutputFormat{"mp4", {".mp4"}, write_mp4_file}};
-
 }  // namespace
 
-Result<Mp4Fba> read_mp4_fba(const std::string& path) {
-  auto mp4 = read_mp4_path(path);
-  if (!mp4) return mp4.error();
-  auto track = xmt::read_fba_track(*mp4);
-  if (!track) return track.error();
-  FbaDecodeOptions options;
-  options.file = path;
-  auto decoded = decode_fba(xmt::fba_stream_from_track(*track), options);
-  if (!decoded) return in_file(decoded.error(), *xmt::find_fba_track(*mp4), *track);
-  decoded->warnings.insert(decoded->warnings.begin(), mp4->warnings.begin(), mp4->warnings.end());
-  return Mp4Fba{std::move(*track), std::move(*decoded)};
-}
+InputFormat mp4_input() { return {"mp4", {".mp4"}, load_mp4}; }
+OutputFormat mp4_output() { return {"mp4", {".mp4"}, write_mp4_file}; }
 
-}  // namespace fapc::cli
+}  // namespace fapc::pipeline::builtin

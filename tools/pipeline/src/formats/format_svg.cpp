@@ -1,10 +1,10 @@
 // .svg output: the blended curves plotted (`fapc plot` adds the per-clip curves).
 #include <filesystem>
 
-#include "fapc/registry.hpp"
-#include "fapc/svg_plot.hpp"
+#include "fapc/pipeline/svg_plot.hpp"
+#include "formats.hpp"
 
-namespace fapc::cli {
+namespace fapc::pipeline::builtin {
 
 namespace {
 
@@ -13,8 +13,8 @@ Result<std::string> write_svg(const Loaded& loaded, const std::string& path, con
   return plot_svg(curves, nullptr, std::filesystem::path(path).stem().string());
 }
 
-const RegisterOutput svg_output{OutputFormat{"svg", {".svg"}, write_svg}};
-
 }  // namespace
 
-}  // namespace fapc::cli
+OutputFormat svg_output() { return {"svg", {".svg"}, write_svg}; }
+
+}  // namespace fapc::pipeline::builtin

@@ -1,16 +1,16 @@
 // XMT-A outputs (docs/mp4-and-xmta.md). Output only: reading .xmt (XMT-Ω, and XMT-A by its root
-// element) is registered by the XMT front end's own file.
+// element) is format_xmto.cpp's.
 //  - ".xmt" (kind "xmt"): the face scene with the FBA stream's object descriptor; its StreamSource
 //    names the .mp4 of the same stem, track 10, which `fapc compile` writes from the same input.
 //  - ".bifs.xmt" (kind "xmt-bifs", also `--to xmt-bifs`): the animation as timed BIFS Replace
 //    commands on the FAP node's fields, for players without an FBA decoder.
 #include <filesystem>
 
-#include "fapc/registry.hpp"
 #include "fapc/xmt/mp4_writer.hpp"
 #include "fapc/xmt/xmta_writer.hpp"
+#include "formats.hpp"
 
-namespace fapc::cli {
+namespace fapc::pipeline::builtin {
 
 namespace {
 
@@ -25,9 +25,9 @@ Result<std::string> write_bifs_commands(const Loaded& loaded, const std::string&
   return xmt::write_xmta_commands(loaded.frames);
 }
 
-const RegisterOutput xmt_output{OutputFormat{"xmt", {".xmt"}, write_fba_scene}};
-const RegisterOutput xmt_bifs_output{OutputFormat{"xmt-bifs", {".bifs.xmt"}, write_bifs_commands}};
-
 }  // namespace
 
-}  // namespace fapc::cli
+OutputFormat xmta_scene_output() { return {"xmt", {".xmt"}, write_fba_scene}; }
+OutputFormat xmta_commands_output() { return {"xmt-bifs", {".bifs.xmt"}, write_bifs_commands}; }
+
+}  // namespace fapc::pipeline::builtin

@@ -4,19 +4,20 @@
 #include <algorithm>
 #include <vector>
 
-#include "fapc/registry.hpp"
-#include "fapc/timeline_input.hpp"
 #include "fapc/transcoder/timeline_from_frames.hpp"
 #include "fapc/xmt/xmto.hpp"
+#include "formats.hpp"
+#include "timeline_input.hpp"
 
-namespace fapc::cli {
+namespace fapc::pipeline::builtin {
 
 namespace {
 
-// The XMT-Omega documents being read, outermost first: a nested `animation` that names one of
-// them is a cycle (the reader reports it with this chain). Loading is single-threaded.
+// The XMT-Omega documents being read on this thread, outermost first: a nested `animation` that
+// names one of them is a cycle (the reader reports it with this chain). One stack per thread, so
+// batch jobs reading documents side by side do not see each other's.
 std::vector<std::string>& documents_being_read() {
-  static std::vector<std::string> stack;
+  thread_local std::vector<std::string> stack;
   return stack;
 }
 
@@ -27,17 +28,21 @@ struct ReadingDocument {
   ReadingDocument& operator=(const ReadingDocument&) = delete;
 };
 
-// Included inputs get their own length: --duration ends the outer document only.
+// Included inputs get their own length: --duration ends the outer document only. A script is
+// lowered to its timeline and not rendered (its clips join this document's); an input of frames
+// becomes clips holding them.
 Result<xmt::IncludedAnimation> load_animation(const std::string& path, const Location& where,
                                               const ConvertOptions& options) {
   ConvertOptions inner = options;
   inner.duration.reset();
-  Result<Loaded> loaded = load_input(path, inner);
+  inner.render = false;
+  inner.facts = false;
+  Result<Loaded> loaded = load(path, inner);
   if (!loaded) {
     // A file that cannot be opened or has no known kind is reported at the element naming it.
     const Diagnostic& error = loaded.error();
     if (error.where.line > 0 || error.where.byte_offset >= 0) return error;
-    return make_error(where, "cannot place '" + path + "': " + error.message);
+    return make_error(error.kind, where, "cannot place '" + path + "': " + error.message);
   }
   xmt::IncludedAnimation included;
   included.timeline = loaded->timeline ? std::move(*loaded->timeline)
@@ -61,30 +66,29 @@ Result<xmt::XmtoDocument> read_document(const std::string& path, const ConvertOp
   return xmt::load_xmto(path, xmto);
 }
 
+nlohmann::ordered_json facts_of(const xmt::XmtoDocument& document) {
+  nlohmann::ordered_json out;
+  out["format"] = "XMT-Omega";
+  for (const auto& [name, content] : document.meta) out["meta " + name] = content;
+  out["clips"] = document.timeline.clips.size();
+  if (!document.included.empty()) out["included"] = document.included;
+  return out;
+}
+
 Result<Loaded> load_xmto(const std::string& path, const ConvertOptions& options) {
   Result<Profile> profile = profile_for(options);
   if (!profile) return profile.error();
   Result<xmt::XmtoDocument> document = read_document(path, options, *profile);
   if (!document) return document.error();
-  return loaded_from_timeline(std::move(document->timeline), path, *profile, options,
-                              std::move(document->warnings));
+  nlohmann::ordered_json facts = options.facts ? facts_of(*document) : nlohmann::ordered_json::object();
+  auto loaded = loaded_from_timeline(std::move(document->timeline), path, *profile, options,
+                                     std::move(document->warnings));
+  if (loaded) loaded->facts = std::move(facts);
+  return loaded;
 }
-
-Result<nlohmann::ordered_json> describe_xmto(const std::string& path, const ConvertOptions& options) {
-  Result<Profile> profile = profile_for(options);
-  if (!profile) return profile.error();
-  Result<xmt::XmtoDocument> document = read_document(path, options, *profile);
-  if (!document) return document.error();
-  nlohmann::ordered_json out;
-  out["format"] = "XMT-Omega";
-  for (const auto& [name, content] : document->meta) out["meta " + name] = content;
-  out["clips"] = document->timeline.clips.size();
-  if (!document->included.empty()) out["included"] = document->included;
-  return out;
-}
-
-const RegisterInput xmto_input{InputFormat{"xmt", {".xmt"}, load_xmto, describe_xmto}};
 
 }  // namespace
 
-}  // namespace fapc::cli
+InputFormat xmto_input() { return {"xmt", {".xmt"}, load_xmto}; }
+
+}  // namespace fapc::pipeline::builtin

@@ -1,21 +1,20 @@
-// Evaluating an Algebra expression whose operands are files: `fapc combine` and `.combine` inputs.
+// The Algebra of Expressions over files (docs/algebra.md): `fapc combine` and `.combine` inputs.
 #pragma once
 
 #include <string>
 
-#include "fapc/registry.hpp"
+#include "fapc/pipeline/options.hpp"
 #include "fapc/transcoder/algebra_expression.hpp"
 
-namespace fapc::cli {
+namespace fapc::pipeline {
 
-// Operands are loaded with load_input (any registered input) or, for .xpr, as facial states;
-// relative operand paths are taken from `base_folder` (empty: the working folder). Warnings of
-// the operands are appended to `warnings`.
-Result<algebra::Value> evaluate_combination(const std::string& expression,
-                                            const std::string& base_folder,
+// Operands are loaded with load() (any registered input) or, for .xpr, as facial states; relative
+// operand paths are taken from `base_folder` (empty: the working folder). Warnings of the
+// operands are appended to `warnings`.
+Result<algebra::Value> evaluate_combination(const std::string& expression, const std::string& base_folder,
                                             const ConvertOptions& options, Diagnostics& warnings);
 
 // The result as frames at `fps` (a state is one frame), named `name`.
 FapSequence frames_of(const algebra::Value& value, int fps, const std::string& name);
 
-}  // namespace fapc::cli
+}  // namespace fapc::pipeline

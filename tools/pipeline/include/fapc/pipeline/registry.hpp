@@ -1,103 +1,59 @@
-// The registries of the fapc program: subcommands, input formats and output formats. Each lives in
-// its own .cpp file and registers itself with a static Register* object, so the command table and
-// the format table are assembled at start-up and no central list needs editing.
+// The readers and writers, in two tables (the model: pandoc's reader and writer tables). A
+// format is one entry: its kind name, its extensions and one function. The built-in tables are
+// assembled by one function from the list in src/registry.cpp, not by static initialisers, which
+// a static link may drop.
 #pragma once
 
 #include <functional>
-#include <map>
-#include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include "fapc/pipeline/loaded.hpp"
+#include "fapc/pipeline/options.hpp"
 
-#include "fapc/codec/diagnostic.hpp"
-#include "fapc/codec/fap_sequence.hpp"
-#include "fapc/transcoder/curves.hpp"
-#include "fapc/transcoder/timeline.hpp"
-
-namespace fapc::cli {
-
-// docs/cli.md: exit statuses.
-inline constexpr int kExitOk = 0;
-inline constexpr int kExitBadInput = 1;
-inline constexpr int kExitUsage = 2;
-inline constexpr int kExitVerifyFailed = 3;
-
-// ---- subcommands -------------------------------------------------------------------------------
-
-using CommandFn = int (*)(const std::vector<std::string>& args);
-
-struct Command {
-  std::string name;
-  std::string usage;  // one line, as in docs/cli.md
-  CommandFn run;
-};
-
-struct RegisterCommand {
-  RegisterCommand(std::string name, std::string usage, CommandFn run);
-};
-
-const std::map<std::string, Command>& commands();
-
-// ---- conversion options shared by compile, batch and the format handlers ---------------------
-
-struct ConvertOptions {
-  int fps = 25;
-  std::optional<std::string> profile;
-  std::optional<double> duration;             // --duration: the end of timelines that give none
-  std::map<std::string, std::string> events;  // --event NAME=VALUE
-  double visemes_per_second = 12;             // --speech-rate: FML talk text
-  int quant = 1;                             // fap_quant for .fba/.mp4 outputs
-  int intra_period = 0;                      // 0: encoder decides
-  std::string ranges = "fit";                // fit | max
-  std::string masks = "fit";                 // fit | keep
-  bool strict = false;
-  bool verify = false;
-};
-
-// What an input became: always frames; the timeline and its curves when the front end has them
-// (Mimic, FML, XMT-Omega), so curve outputs and per-clip plots keep the authored shape.
-struct Loaded {
-  FapSequence frames;
-  std::optional<Curves> curves;
-  std::optional<Timeline> timeline;
-  Diagnostics warnings;
-};
+namespace fapc::pipeline {
 
 struct InputFormat {
   std::string kind;                     // "fap", "fba", "mimic", ...
   std::vector<std::string> extensions;  // ".fap", ".fap.gz"
   std::function<Result<Loaded>(const std::string& path, const ConvertOptions&)> load;
-  // Optional: facts for `fapc info` beyond the generic frame summary (format variant, stream
-  // statistics, tracks...). Keys become lines of the text output and members of --json.
-  std::function<Result<nlohmann::ordered_json>(const std::string& path, const ConvertOptions&)>
-      describe;
 };
 
 struct OutputFormat {
   std::string kind;
-  std::vector<std::string> extensions;
-  // The bytes to write for `path` (the name may go into the output, e.g. a .fap header).
-  std::function<Result<std::string>(const Loaded&, const std::string& path, const ConvertOptions&)>
-      write;
+  std::vector<std::string> extensions;  // the first one names batch outputs
+  // The bytes to write for `path` (the name may go into the output, e.g. an .xmt's stream source).
+  std::function<Result<std::string>(const Loaded&, const std::string& path, const ConvertOptions&)> write;
 };
 
-struct RegisterInput {
-  explicit RegisterInput(InputFormat format);
+class Registry {
+ public:
+  void add(InputFormat format) { inputs_.push_back(std::move(format)); }
+  void add(OutputFormat format) { outputs_.push_back(std::move(format)); }
+
+  // By the longest matching extension (".fap.gz" before ".gz"), or by kind name; null if none.
+  const InputFormat* input_for(const std::string& path) const;
+  const OutputFormat* output_for(const std::string& path) const;
+  const InputFormat* input_named(const std::string& kind) const;
+  const OutputFormat* output_named(const std::string& kind) const;
+
+  const std::vector<InputFormat>& inputs() const { return inputs_; }
+  const std::vector<OutputFormat>& outputs() const { return outputs_; }
+
+  // ".fap, .fap.gz, .fba, ...": for "unknown kind" errors.
+  std::string input_extensions() const;
+  std::string output_extensions() const;
+
+ private:
+  std::vector<InputFormat> inputs_;
+  std::vector<OutputFormat> outputs_;
 };
-struct RegisterOutput {
-  explicit RegisterOutput(OutputFormat format);
-};
 
-// Lookup by the longest matching extension (".fap.gz" before ".gz"), or by kind name.
-const InputFormat* input_format_for(const std::string& path);
-const OutputFormat* output_format_for(const std::string& path);
-const InputFormat* input_format_named(const std::string& kind);
-const OutputFormat* output_format_named(const std::string& kind);
+// Every built-in reader and writer. Built on first use; safe to share between threads.
+const Registry& formats();
 
-// Loads any supported input (by extension), or reports why not.
-Result<Loaded> load_input(const std::string& path, const ConvertOptions& options);
+// Loads any input the built-in readers know (by extension), or says why not (unsupported for an
+// unknown extension). Includes and operands inside inputs are loaded through this too.
+Result<Loaded> load(const std::string& path, const ConvertOptions& options);
 
-}  // namespace fapc::cli
+}  // namespace fapc::pipeline

@@ -7,8 +7,8 @@
 
 #include "fapc/transcoder/curves.hpp"
 
-namespace fapc::cli {
+namespace fapc::pipeline {
 
 std::string plot_svg(const Curves& blended, const Curves* per_clip, const std::string& title);
 
-}  // namespace fapc::cli
+}  // namespace fapc::pipeline

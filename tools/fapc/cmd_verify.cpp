@@ -1,0 +1,44 @@
+// fapc verify FILE... [--quant Q] [--intra-period N] [--ranges fit|max] [--masks fit|keep] [--json]:
+// the checks of fapc::pipeline::verify (see fapc/pipeline/verify.hpp), one line or JSON object
+// per file. Exit 3 when a check fails, 1 when an input cannot be read.
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "fapc/commands.hpp"
+#include "fapc/options.hpp"
+#include "fapc/pipeline/verify.hpp"
+#include "fapc/report.hpp"
+
+namespace fapc::cli {
+
+namespace {
+
+int run_verify(const std::vector<std::string>& argv) {
+  Args args(argv, {"quant", "intra-period", "ranges", "masks"}, {"json"});
+  const ConvertOptions options = convert_options(args);
+  if (!args.ok()) return usage_error("verify", args.error());
+  if (args.positionals().empty()) return usage_error("verify", "expected at least one FILE");
+  int status = kExitOk;
+  nlohmann::ordered_json results = nlohmann::ordered_json::array();
+  for (const std::string& path : args.positionals()) {
+    const pipeline::VerifyResult verified = pipeline::verify(path, options);
+    const int file_status = report_outcome(verified.warnings, verified.error);
+    status = worse_status(status, file_status);
+    if (args.flag("json")) {
+      results.push_back({{"file", path}, {"ok", verified.ok()}, {"status", file_status},
+                         {"message", verified.ok() ? verified.summary : format_diagnostic(*verified.error)}});
+    } else if (verified.ok()) {
+      std::cout << path << ": ok: " << verified.summary << '\n';
+    }
+  }
+  if (args.flag("json")) std::cout << results.dump(2) << '\n';
+  return status;
+}
+
+const RegisterCommand verify_command{
+    "verify", "fapc verify FILE... [--quant Q] [--intra-period N] [--ranges fit|max] [--masks fit|keep] [--json]", run_verify};
+
+}  // namespace
+
+}  // namespace fapc::cli
