@@ -8,7 +8,6 @@
 #include "fapc/pipeline/registry.hpp"
 #include "fapc/pipeline/svg_plot.hpp"
 #include "fapc/report.hpp"
-#include "fapc/transcoder/render.hpp"
 
 namespace fapc::cli {
 
@@ -27,19 +26,10 @@ int run_plot(const std::vector<std::string>& argv) {
   Result<pipeline::Loaded> loaded = pipeline::load(input, options);
   if (!loaded) return report_outcome({}, loaded.error());
   report_all(loaded->warnings);
-  std::optional<Curves> per_clip;
-  if (args.flag("per-clip")) {
-    if (!loaded->timeline) {
-      return report_outcome({}, make_error(ErrorKind::unsupported, Location{input, 0, 0, -1},
-                                           "--per-clip needs a timeline input (Mimic, FML or XMT-Omega); this "
-                                           "input has frames only"));
-    }
-    per_clip = render_clip_curves(*loaded->timeline, CurveOptions{options.fps, 1e-6});
-  }
-  const Curves blended = loaded->curves ? *loaded->curves : curves_from_frames(loaded->frames);
-  const std::string svg = pipeline::plot_svg(blended, per_clip ? &*per_clip : nullptr,
-                                   std::filesystem::path(input).filename().string());
-  if (auto written = write_file_atomic(*output, svg); !written) return report_outcome({}, written.error());
+  auto svg = pipeline::plot_loaded(*loaded, input, std::filesystem::path(input).filename().string(),
+                                   args.flag("per-clip"), options.fps);
+  if (!svg) return report_outcome({}, svg.error());
+  if (auto written = write_file_atomic(*output, *svg); !written) return report_outcome({}, written.error());
   return kExitOk;
 }
 

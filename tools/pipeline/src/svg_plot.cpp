@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "fapc/transcoder/render.hpp"
 #include "xml_text.hpp"
 
 namespace fapc::pipeline {
@@ -124,6 +125,19 @@ std::string plot_svg(const Curves& blended, const Curves* per_clip, const std::s
   }
   svg << "</svg>\n";
   return svg.str();
+}
+
+Result<std::string> plot_loaded(const Loaded& loaded, const std::string& input, const std::string& title,
+                                bool per_clip, int fps) {
+  std::optional<Curves> clips;
+  if (per_clip) {
+    if (!loaded.timeline)
+      return make_error(ErrorKind::unsupported, Location{input, 0, 0, -1},
+                        "--per-clip needs a timeline input (Mimic, FML or XMT-Omega); this input has frames only");
+    clips = render_clip_curves(*loaded.timeline, CurveOptions{fps, 1e-6});
+  }
+  const Curves blended = loaded.curves ? *loaded.curves : curves_from_frames(loaded.frames);
+  return plot_svg(blended, clips ? &*clips : nullptr, title);
 }
 
 }  // namespace fapc::pipeline

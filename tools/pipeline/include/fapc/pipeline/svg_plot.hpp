@@ -5,10 +5,17 @@
 
 #include <string>
 
+#include "fapc/pipeline/loaded.hpp"
 #include "fapc/transcoder/curves.hpp"
 
 namespace fapc::pipeline {
 
 std::string plot_svg(const Curves& blended, const Curves* per_clip, const std::string& title);
+
+// `fapc plot`: the input's curves (a script's own, or the frames'), and with `per_clip` every
+// clip's curve sampled at `fps` (unsupported without a timeline). `input` names the loaded file
+// in errors.
+Result<std::string> plot_loaded(const Loaded& loaded, const std::string& input, const std::string& title,
+                                bool per_clip, int fps);
 
 }  // namespace fapc::pipeline
