@@ -192,7 +192,8 @@ Status StreamReader::read_plane() {
   if (!out_.sequence.frames.empty() && frame.number <= out_.sequence.frames.back().number)
     return c_.error_at(start_byte, "the time code goes back to frame " + std::to_string(frame.number));
   if (out_.sequence.frames.size() >= options_.max_frames)
-    return c_.error_at(start_byte, "more than " + std::to_string(options_.max_frames) + " frames");
+    return make_error(ErrorKind::limit_exceeded, Location::binary(c_.file, start_byte),
+                      "more than " + std::to_string(options_.max_frames) + " frames");
   if (intra) note_ranges(frame.number, start_byte, c_.in.position() - start);
   next_number_ = frame.number + header.skip + 1;
   ++info.face_planes;

@@ -329,8 +329,10 @@ class FmlReader {
 
   bool count_node(const xmlNode* node) {
     if (++nodes_ <= kMaxNodes) return true;
-    fail(doc_.error(node, "the story has more than " + std::to_string(static_cast<long>(kMaxNodes)) +
-                              " elements after template expansion: fapc refuses to schedule so many"));
+    Diagnostic d = doc_.error(node, "the story has more than " + std::to_string(static_cast<long>(kMaxNodes)) +
+                                        " elements after template expansion: fapc refuses to schedule so many");
+    d.kind = ErrorKind::limit_exceeded;
+    fail(std::move(d));
     return false;
   }
 
@@ -727,7 +729,7 @@ class FmlReader {
     double shortest = 0;
     const double total = runs(tree_.root, options_.duration.value_or(kMaxNodes), shortest);
     if (total <= kMaxNodes) return ok_status();
-    return make_error(tree_.root.source, "the story repeats to more than " + std::to_string(static_cast<long>(kMaxNodes)) +
+    return make_error(ErrorKind::limit_exceeded, tree_.root.source, "the story repeats to more than " + std::to_string(static_cast<long>(kMaxNodes)) +
                                              " clips: fapc refuses to schedule so many");
   }
 

@@ -60,7 +60,7 @@ const char* text_of(const xmlChar* s) { return reinterpret_cast<const char*>(s);
 
 Result<XmlDocument> XmlDocument::parse(std::string_view text, const std::string& file_name) {
   if (text.size() > static_cast<std::size_t>(INT_MAX)) {
-    return make_error(Location{file_name, 0, 0, -1}, "file too large for the XML parser");
+    return make_error(ErrorKind::limit_exceeded, Location{file_name, 0, 0, -1}, "file too large for the XML parser");
   }
   xmlInitParser();
   std::unique_ptr<xmlParserCtxt, void (*)(xmlParserCtxtPtr)> context(xmlNewParserCtxt(),

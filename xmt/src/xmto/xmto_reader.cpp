@@ -244,9 +244,11 @@ class DocumentReader {
   bool within_budget(const xmlNode* node, double clips) {
     planned_clips_ += clips;
     if (planned_clips_ <= kMaxRuns) return true;
-    fail(doc_.error(node, std::string(xml::local_name(node)) + " brings the document to more than " +
-                              std::to_string(static_cast<long>(kMaxRuns)) +
-                              " clips (repeats of repeats?): fapc refuses to schedule so many"));
+    Diagnostic d = doc_.error(node, std::string(xml::local_name(node)) + " brings the document to more than " +
+                                        std::to_string(static_cast<long>(kMaxRuns)) +
+                                        " clips (repeats of repeats?): fapc refuses to schedule so many");
+    d.kind = ErrorKind::limit_exceeded;
+    fail(std::move(d));
     return false;
   }
 
