@@ -13,12 +13,13 @@ Result<Profile> profile_for(const ConvertOptions& options) {
 
 Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
                                     const Profile& profile, const ConvertOptions& options,
-                                    Diagnostics warnings) {
+                                    Diagnostics warnings, nlohmann::ordered_json facts) {
   if (options.duration) timeline.explicit_end = *options.duration;
   if (!options.render) {  // an XMT-Omega include: its clips are placed, its frames never used
     Loaded loaded;
     loaded.timeline = std::move(timeline);
     loaded.warnings = std::move(warnings);
+    loaded.facts = std::move(facts);
     return loaded;
   }
   RenderOptions render;
@@ -36,6 +37,7 @@ Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
   loaded.curves = render_curves(timeline, CurveOptions{options.fps, 1e-6});
   loaded.timeline = std::move(timeline);
   loaded.warnings = std::move(warnings);
+  loaded.facts = std::move(facts);
   loaded.warnings.insert(loaded.warnings.end(), rendered->warnings.begin(), rendered->warnings.end());
   return loaded;
 }

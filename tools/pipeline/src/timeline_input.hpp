@@ -14,9 +14,9 @@ namespace fapc::pipeline {
 Result<Profile> profile_for(const ConvertOptions& options);
 
 // Frames at options.fps (clamp warnings appended to `warnings`), curves, and the timeline itself;
-// the timeline alone when options.render is false.
+// the timeline alone when options.render is false. `facts` become Loaded::facts.
 Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
                                     const Profile& profile, const ConvertOptions& options,
-                                    Diagnostics warnings);
+                                    Diagnostics warnings, nlohmann::ordered_json facts = nlohmann::ordered_json::object());
 
 }  // namespace fapc::pipeline

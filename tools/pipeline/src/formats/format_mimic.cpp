@@ -17,15 +17,13 @@ Result<Loaded> load_mimic(const std::string& path, const ConvertOptions& options
   mimic.profile = &*profile;
   Result<MimicProgram> program = compile_mimic(*source, path, mimic);
   if (!program) return program.error();
-  nlohmann::ordered_json facts;
+  nlohmann::ordered_json facts = nlohmann::ordered_json::object();
   if (options.facts) {
     facts["clips"] = program->timeline.clips.size();
     facts["timeline end"] = program->timeline.end();
   }
-  auto loaded = loaded_from_timeline(std::move(program->timeline), path, *profile, options,
-                                     std::move(program->warnings));
-  if (loaded && options.facts) loaded->facts = std::move(facts);
-  return loaded;
+  return loaded_from_timeline(std::move(program->timeline), path, *profile, options, std::move(program->warnings),
+                              std::move(facts));
 }
 
 }  // namespace

@@ -80,11 +80,9 @@ Result<Loaded> load_xmto(const std::string& path, const ConvertOptions& options)
   if (!profile) return profile.error();
   Result<xmt::XmtoDocument> document = read_document(path, options, *profile);
   if (!document) return document.error();
-  nlohmann::ordered_json facts = options.facts ? facts_of(*document) : nlohmann::ordered_json::object();
-  auto loaded = loaded_from_timeline(std::move(document->timeline), path, *profile, options,
-                                     std::move(document->warnings));
-  if (loaded) loaded->facts = std::move(facts);
-  return loaded;
+  auto facts = options.facts ? facts_of(*document) : nlohmann::ordered_json::object();
+  return loaded_from_timeline(std::move(document->timeline), path, *profile, options, std::move(document->warnings),
+                              std::move(facts));
 }
 
 }  // namespace
