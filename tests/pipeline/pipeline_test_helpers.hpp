@@ -1,6 +1,8 @@
 // A fresh folder per test, removed afterwards.
 #pragma once
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <string>
 
@@ -13,7 +15,8 @@ class TempFolder {
   TempFolder() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     path_ = std::filesystem::temp_directory_path() /
-            ("fapc-pipeline-" + std::string(info->test_suite_name()) + "-" + info->name());
+            ("fapc-pipeline-" + std::string(info->test_suite_name()) + "-" + info->name() + "-" +
+             std::to_string(::getpid()));  // two builds' suites may run at once
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }
