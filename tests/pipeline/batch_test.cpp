@@ -33,6 +33,19 @@ TEST(BatchPlan, OutputsMirrorTheInputTree) {
   EXPECT_EQ((*jobs)[1].outputs[0].path, tmp / "out/b/c/anger.fap");
 }
 
+TEST(BatchPlan, AFoldersInputsThatDifferByExtensionOnlyKeepIt) {
+  const test::TempFolder tmp;
+  copy_example("fap/joy.fap", tmp / "in/a/joy.fap");
+  copy_example("fap/joy.fap", tmp / "in/a/joy.fap.gz");  // not compressed: planning reads no file
+  copy_example("fap/anger.fap", tmp / "in/a/anger.fap");
+  auto jobs = pipeline::plan_batch({tmp / "in"}, tmp / "out", {"fba"});
+  ASSERT_TRUE(jobs) << jobs.error().message;
+  ASSERT_EQ(jobs->size(), 3u);
+  EXPECT_EQ((*jobs)[0].outputs[0].path, tmp / "out/a/anger.fba");
+  EXPECT_EQ((*jobs)[1].outputs[0].path, tmp / "out/a/joy.fap.fba");
+  EXPECT_EQ((*jobs)[2].outputs[0].path, tmp / "out/a/joy.fap.gz.fba");
+}
+
 TEST(BatchPlan, TwoInputsForOneOutputAreRefusedAndListed) {
   const test::TempFolder tmp;
   copy_example("fap/joy.fap", tmp / "a/x.fap");

@@ -51,13 +51,17 @@ Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs,
   if (fs::exists(out_dir, ec) && !fs::is_directory(out_dir, ec))
     return usage("-o " + out_dir + " names an existing file, not a folder");
   const fs::path out_folder = fs::weakly_canonical(out_dir);
-  // (input, its name under DIR without extension)
-  std::vector<std::pair<std::string, std::string>> found;
+  struct Found {
+    std::string input;
+    std::string name;       // under DIR, without the input's extension
+    std::string full_name;  // with it: for a folder's inputs that differ by extension only
+  };
+  std::vector<Found> found;
   for (const std::string& input : inputs) {
     if (!fs::exists(input, ec)) return usage("no such file or folder: " + input);
     if (!fs::is_directory(input, ec)) {
       if (inside(input, out_folder)) return usage(input + " is inside the output folder " + out_dir);
-      found.emplace_back(input, fs::path(without_input_extension(input)).filename().string());
+      found.push_back({input, fs::path(without_input_extension(input)).filename().string(), {}});
       continue;
     }
     std::vector<std::string> files;
@@ -71,11 +75,18 @@ Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs,
     }
     std::sort(files.begin(), files.end());
     for (const std::string& path : files)
-      found.emplace_back(path, fs::relative(without_input_extension(path), input).string());
+      found.push_back({path, fs::relative(without_input_extension(path), input).string(),
+                       fs::relative(path, input).string()});
   }
   std::vector<BatchJob> jobs;
   std::map<std::string, std::vector<std::string>> inputs_of;  // output -> the inputs writing it
-  for (const auto& [input, name] : found) {
+  // A folder's `smile.fml` and `smile.mimic` keep their extensions (smile.fml.fap, smile.mimic.fap)
+  // rather than clash; every other name is the input's without its extension.
+  std::map<std::string, std::size_t> sharing;
+  for (const Found& f : found) ++sharing[f.name];
+  for (Found& f : found)
+    if (sharing[f.name] > 1 && !f.full_name.empty()) f.name = f.full_name;
+  for (const auto& [input, name, full_name] : found) {
     BatchJob job{input, {}};
     for (std::size_t k = 0; k < kinds.size(); ++k) {
       const std::string output = (fs::path(out_dir) / (name + writers[k]->extensions.front())).lexically_normal().string();

@@ -20,8 +20,10 @@ struct BatchJob {
 
 // Inputs are files (taken whatever they are: an unknown kind fails when run) and folders (their
 // supported files, recursively, sorted). Outputs mirror the tree under each input folder:
-// DIR/<path relative to the folder without its input extension>.<output extension>; a file named
-// on its own goes to DIR/<its name without extension>.<output extension>. Files under DIR are
+// DIR/<path relative to the folder without its input extension>.<output extension> (with the
+// extension kept when two of the folder's inputs differ by it only: a/smile.fml.fap beside
+// a/smile.mimic.fap); a file named on its own goes to DIR/<its name without extension>.<output
+// extension>. Files under DIR are
 // never inputs. Errors (usage): a missing input, an unknown kind, DIR naming an existing
 // non-folder, a named input inside DIR, and outputs two inputs would share (all listed).
 Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs, const std::string& out_dir,
