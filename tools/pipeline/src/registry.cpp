@@ -26,15 +26,6 @@ const Format* by_kind(const std::vector<Format>& table, const std::string& kind)
   return nullptr;
 }
 
-template <class Format>
-std::string extension_list(const std::vector<Format>& table) {
-  std::string out;
-  for (const Format& f : table)
-    for (const std::string& ext : f.extensions)
-      if (ext != ".FAP") out += (out.empty() ? "" : ", ") + ext;
-  return out;
-}
-
 // The one list of built-in formats. Order matters only between entries sharing an extension:
 // the longer one wins (".bifs.xmt" before ".xmt"), whatever its place.
 Registry built_in() {
@@ -63,8 +54,6 @@ const InputFormat* Registry::input_for(const std::string& path) const { return b
 const OutputFormat* Registry::output_for(const std::string& path) const { return by_extension(outputs_, path); }
 const InputFormat* Registry::input_named(const std::string& kind) const { return by_kind(inputs_, kind); }
 const OutputFormat* Registry::output_named(const std::string& kind) const { return by_kind(outputs_, kind); }
-std::string Registry::input_extensions() const { return extension_list(inputs_); }
-std::string Registry::output_extensions() const { return extension_list(outputs_); }
 
 const Registry& formats() {
   static const Registry registry = built_in();  // initialised once, thread-safe (C++11 statics)

@@ -40,10 +40,6 @@ class Registry {
   const std::vector<InputFormat>& inputs() const { return inputs_; }
   const std::vector<OutputFormat>& outputs() const { return outputs_; }
 
-  // ".fap, .fap.gz, .fba, ...": for "unknown kind" errors.
-  std::string input_extensions() const;
-  std::string output_extensions() const;
-
  private:
   std::vector<InputFormat> inputs_;
   std::vector<OutputFormat> outputs_;
