@@ -1,4 +1,4 @@
-// fapc::pipeline, all of it: the reader and writer tables, convert, verify, info, batch.
+// fapc::pipeline, all of it: the reader and writer tables, convert, verify, info, validate, batch.
 #pragma once
 
 #include "fapc/pipeline/batch.hpp"
@@ -10,4 +10,5 @@
 #include "fapc/pipeline/options.hpp"
 #include "fapc/pipeline/registry.hpp"
 #include "fapc/pipeline/svg_plot.hpp"
+#include "fapc/pipeline/validate.hpp"
 #include "fapc/pipeline/verify.hpp"
