@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <stdexcept>
 
 #include "fapc/codec/file_io.hpp"
 #include "fapc/pipeline/batch.hpp"
@@ -99,6 +100,27 @@ TEST(BatchRun, FailuresAreCountedAndTheOthersRunWithKeepGoing) {
   EXPECT_TRUE(fs::exists(tmp / "out/f.fba"));
   const std::string junit = pipeline::junit_report(*jobs, outcomes);
   EXPECT_NE(junit.find("tests=\"6\" failures=\"1\""), std::string::npos) << junit;
+}
+
+TEST(BatchRun, AJobThatThrowsIsAFailedJobAndTheOthersStillRun) {
+  auto jobs = pipeline::plan_batch({test::corpus_dir() + "/examples/fap"}, "/nonexistent-out", {"fap"});
+  ASSERT_TRUE(jobs);
+  ASSERT_GE(jobs->size(), 3u);
+  pipeline::BatchRunOptions run;
+  run.threads = 2;
+  run.keep_going = true;
+  run.convert = [&](const pipeline::BatchJob& job, const pipeline::ConvertOptions&) {
+    if (job.input == (*jobs)[1].input) throw std::runtime_error("boom");
+    return pipeline::ConvertResult{};
+  };
+  const auto outcomes = pipeline::run_batch(*jobs, {}, run);
+  for (std::size_t i = 0; i < outcomes.size(); ++i) {
+    EXPECT_TRUE(outcomes[i].ran) << i;
+    EXPECT_EQ(outcomes[i].result.ok(), i != 1) << i;
+  }
+  ASSERT_TRUE(outcomes[1].result.error);
+  EXPECT_NE(outcomes[1].result.error->message.find("boom"), std::string::npos);
+  EXPECT_EQ(outcomes[1].result.error->where.file, (*jobs)[1].input);
 }
 
 TEST(BatchRun, AStopSetBeforehandRunsNothing) {

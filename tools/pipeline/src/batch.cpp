@@ -110,7 +110,7 @@ Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs,
 namespace {
 
 // One job, whatever happens inside: an exception becomes the job's error.
-BatchOutcome run_job(const BatchJob& job, const ConvertOptions& options) {
+BatchOutcome run_job(const BatchJob& job, const ConvertOptions& options, const BatchRunOptions& run) {
   BatchOutcome outcome;
   outcome.ran = true;
   const auto start = std::chrono::steady_clock::now();
@@ -125,7 +125,8 @@ BatchOutcome run_job(const BatchJob& job, const ConvertOptions& options) {
         break;
       }
     }
-    if (!outcome.result.error) outcome.result = convert(job.input, job.outputs, options);
+    if (!outcome.result.error)
+      outcome.result = run.convert ? run.convert(job, options) : convert(job.input, job.outputs, options);
   } catch (const std::exception& e) {
     outcome.result.error = make_error(ErrorKind::bad_input, Location{job.input, 0, 0, -1},
                                       std::string("internal error while converting: ") + e.what());
@@ -155,7 +156,7 @@ std::vector<BatchOutcome> run_batch(const std::vector<BatchJob>& jobs, const Con
   };
   const auto worker = [&] {
     for (std::size_t i; !stopping() && (i = next++) < jobs.size();) {
-      BatchOutcome outcome = run_job(jobs[i], options);
+      BatchOutcome outcome = run_job(jobs[i], options, run);
       if (!outcome.result.ok() && !run.keep_going) failed_stop = true;
       const std::lock_guard<std::mutex> lock(report);
       outcomes[i] = std::move(outcome);

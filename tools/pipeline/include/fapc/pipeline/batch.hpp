@@ -46,6 +46,9 @@ struct BatchRunOptions {
   std::function<void(std::size_t index, const BatchOutcome&)> in_order;
   // Called as each job finishes (any order, never two at a time): for progress.
   std::function<void(std::size_t finished, std::size_t total)> progress;
+  // The work of one job; empty: convert(job.input, job.outputs, options). Whatever it throws is
+  // the job's error.
+  std::function<ConvertResult(const BatchJob&, const ConvertOptions&)> convert;
 };
 
 // Runs the jobs on a pool of std::threads. A job that throws is a failed job (its error says
