@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <csignal>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
@@ -37,7 +38,7 @@ std::vector<std::string> split_list(const std::string& list) {
 int run_batch(const std::vector<std::string>& argv) {
   Args args(argv, [] { auto v = kConvertValued; v.insert({"output", "jobs", "report"}); return v; }(),
             [] { auto f = kConvertFlags; f.insert("keep-going"); return f; }());
-  const ConvertOptions options = convert_options(args);
+  ConvertOptions options = convert_options(args);
   const int threads = args.integer("jobs", 0, 1, 256);  // absent: one per core
   if (!args.ok()) return usage_error("batch", args.error());
   const auto out_dir = args.value("output");
@@ -45,6 +46,9 @@ int run_batch(const std::vector<std::string>& argv) {
   if (args.positionals().empty()) return usage_error("batch", "expected at least one INPUT");
   auto jobs = pipeline::plan_batch(args.positionals(), *out_dir, split_list(args.value("to").value_or("fap")));
   if (!jobs) return usage_error("batch", jobs.error().message);
+  // A folder given to batch is the inputs' tree: their includes may read anywhere in it.
+  for (const std::string& input : args.positionals())
+    if (std::filesystem::is_directory(input)) options.includes.allowed_folders.push_back(input);
 
   pipeline::BatchRunOptions run;
   run.threads = threads;

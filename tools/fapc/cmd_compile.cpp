@@ -42,6 +42,7 @@ int run_compile(const std::vector<std::string>& argv) {
     if (!from) return usage_error("compile", "standard input needs --from KIND");
     input = save_stdin(*from);
     if (input.empty()) return usage_error("compile", "unknown input kind '" + *from + "'");
+    options.includes.base_folder = ".";  // its includes are named from the working folder
   }
   const pipeline::ConvertResult result = pipeline::convert(input, {{*output, to}}, options);
   const int status = report_outcome(result.warnings, result.error);

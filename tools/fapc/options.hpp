@@ -14,7 +14,8 @@ using pipeline::ConvertOptions;
 
 inline const std::set<std::string> kConvertValued = {"fps", "profile", "event", "quant",
                                                       "intra-period", "ranges", "masks", "from", "to",
-                                                      "duration", "speech-rate"};
+                                                      "duration", "speech-rate", "fap-flavour",
+                                                      "allow-include"};
 inline const std::set<std::string> kConvertFlags = {"strict", "verify"};
 
 // Reads the shared options; sets args' error on bad values.

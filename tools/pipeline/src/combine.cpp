@@ -1,20 +1,23 @@
 #include "fapc/pipeline/combine.hpp"
 
-#include <filesystem>
-
 #include "fapc/codec/file_io.hpp"
+#include "fapc/codec/include_policy.hpp"
 #include "fapc/pipeline/registry.hpp"
 #include "fapc/transcoder/expression_file.hpp"
+#include "input_chain.hpp"
 #include "timeline_input.hpp"
 
 namespace fapc::pipeline {
 
 namespace {
 
-Result<algebra::Value> load_operand(const std::string& path, const ConvertOptions& options,
-                                    const Profile& profile, Diagnostics& warnings) {
+// A facial state (.xpr) or, through the registry, any input; an included one (an operand of a
+// .combine file) is checked for cycles and read on a stack of its own.
+Result<algebra::Value> load_operand(const std::string& path, const Location& where, bool included,
+                                    const ConvertOptions& options, const Profile& profile,
+                                    Diagnostics& warnings) {
   algebra::Value value;
-  if (path.ends_with(".xpr")) {  // a facial state
+  if (path.ends_with(".xpr")) {
     Result<std::string> text = read_file_bytes(path);
     if (!text) return text.error();
     Result<std::vector<ExpressionEntry>> entries = parse_expression_file(*text, path);
@@ -24,7 +27,7 @@ Result<algebra::Value> load_operand(const std::string& path, const ConvertOption
     value.state = *state;
     return value;
   }
-  Result<Loaded> loaded = load(path, options);
+  Result<Loaded> loaded = included ? load_included_input(path, where, options) : load(path, options);
   if (!loaded) return loaded.error();
   warnings.insert(warnings.end(), loaded->warnings.begin(), loaded->warnings.end());
   value.animation = algebra::animation_from(loaded->frames);
@@ -34,18 +37,19 @@ Result<algebra::Value> load_operand(const std::string& path, const ConvertOption
 }  // namespace
 
 Result<algebra::Value> evaluate_combination(const std::string& expression,
-                                            const std::string& base_folder,
+                                            const std::string& including_file,
                                             const ConvertOptions& options, Diagnostics& warnings) {
   Result<Profile> profile = profile_for(options);
   if (!profile) return profile.error();
   ConvertOptions operands = options;  // operands are frames, whoever asks for the combination
   operands.render = true;
   operands.facts = false;
-  const auto load_file = [&](const std::string& name, int) {
-    const std::filesystem::path path(name);
-    const std::string resolved =
-        path.is_absolute() || base_folder.empty() ? name : (std::filesystem::path(base_folder) / path).string();
-    return load_operand(resolved, operands, *profile, warnings);
+  const auto load_file = [&](const std::string& name, int column) -> Result<algebra::Value> {
+    const Location where = Location::text("<expression>", 1, column);
+    if (including_file.empty()) return load_operand(name, where, false, operands, *profile, warnings);
+    Result<std::string> path = resolve_include(name, including_file, operands.includes, where);
+    if (!path) return path.error();
+    return load_operand(*path, where, true, operands, *profile, warnings);
   };
   return algebra::evaluate(expression, load_file);
 }

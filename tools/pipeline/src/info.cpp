@@ -4,6 +4,7 @@
 #include <map>
 
 #include "fapc/pipeline/registry.hpp"
+#include "input_chain.hpp"
 
 namespace fapc::pipeline {
 
@@ -52,7 +53,8 @@ Result<nlohmann::ordered_json> describe(const std::string& path) {
   if (!format) return make_error(ErrorKind::unsupported, Location{path, 0, 0, -1}, "unknown input kind");
   ConvertOptions options;
   options.facts = true;  // the format's facts come from this one read
-  auto loaded = format->load(path, options);
+  const ReadingInput reading(path, options);  // for its includes, as load() would
+  auto loaded = format->load(path, reading.options());
   if (!loaded) return loaded.error();
   nlohmann::ordered_json info = summarise(path, format->kind, *loaded);
   if (!loaded->facts.empty()) info["format"] = std::move(loaded->facts);

@@ -1,6 +1,7 @@
 #include "fapc/pipeline/registry.hpp"
 
 #include "formats/formats.hpp"
+#include "input_chain.hpp"
 
 namespace fapc::pipeline {
 
@@ -65,7 +66,8 @@ Result<Loaded> load(const std::string& path, const ConvertOptions& options) {
   if (!format)
     return make_error(ErrorKind::unsupported, Location{path, 0, 0, -1},
                       "unknown input kind (expected .fap, .fap.gz, .fba, .mp4, .mimic, .fml or .xmt)");
-  return format->load(path, options);
+  const ReadingInput reading(path, options);
+  return format->load(path, reading.options());
 }
 
 }  // namespace fapc::pipeline

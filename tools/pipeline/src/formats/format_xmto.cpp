@@ -7,26 +7,12 @@
 #include "fapc/transcoder/timeline_from_frames.hpp"
 #include "fapc/xmt/xmto.hpp"
 #include "formats.hpp"
+#include "input_chain.hpp"
 #include "timeline_input.hpp"
 
 namespace fapc::pipeline::builtin {
 
 namespace {
-
-// The XMT-Omega documents being read on this thread, outermost first: a nested `animation` that
-// names one of them is a cycle (the reader reports it with this chain). One stack per thread, so
-// batch jobs reading documents side by side do not see each other's.
-std::vector<std::string>& documents_being_read() {
-  thread_local std::vector<std::string> stack;
-  return stack;
-}
-
-struct ReadingDocument {
-  explicit ReadingDocument(const std::string& path) { documents_being_read().push_back(path); }
-  ~ReadingDocument() { documents_being_read().pop_back(); }
-  ReadingDocument(const ReadingDocument&) = delete;
-  ReadingDocument& operator=(const ReadingDocument&) = delete;
-};
 
 // Included inputs get their own length: --duration ends the outer document only. A script is
 // lowered to its timeline and not rendered (its clips join this document's); an input of frames
@@ -37,7 +23,7 @@ Result<xmt::IncludedAnimation> load_animation(const std::string& path, const Loc
   inner.duration.reset();
   inner.render = false;
   inner.facts = false;
-  Result<Loaded> loaded = load(path, inner);
+  Result<Loaded> loaded = load_included_input(path, where, inner);
   if (!loaded) {
     // A file that cannot be opened or has no known kind is reported at the element naming it.
     const Diagnostic& error = loaded.error();
@@ -57,12 +43,16 @@ Result<xmt::XmtoDocument> read_document(const std::string& path, const ConvertOp
   xmto.fml.events = options.events;
   xmto.fml.profile = &profile;
   xmto.fml.visemes_per_second = options.visemes_per_second;
-  xmto.including = documents_being_read();
+  // The documents around this one (load() has put this one last): the reader names a cycle
+  // among them at the animation element, before the loader is asked.
+  xmto.including = inputs_being_read();
+  if (!xmto.including.empty()) xmto.including.pop_back();
+  xmto.includes = options.includes;
+  xmto.fml.includes = options.includes;
   xmto.duration = options.duration;
   xmto.load_animation = [&options](const std::string& included, const Location& where) {
     return load_animation(included, where, options);
   };
-  const ReadingDocument reading(path);
   return xmt::load_xmto(path, xmto);
 }
 

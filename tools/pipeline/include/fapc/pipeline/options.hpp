@@ -5,6 +5,9 @@
 #include <optional>
 #include <string>
 
+#include "fapc/codec/fap_file.hpp"
+#include "fapc/codec/include_policy.hpp"
+
 namespace fapc::pipeline {
 
 struct ConvertOptions {
@@ -17,8 +20,11 @@ struct ConvertOptions {
   int intra_period = 0;                       // 0: the encoder decides
   std::string ranges = "fit";                 // fit | max
   std::string masks = "fit";                  // fit | keep
+  FapFlavour fap_flavour = FapFlavour::safe;  // the .fap layout of a player family
   bool strict = false;                        // warnings are errors; nothing is written
   bool verify = false;                        // encoded streams are decoded and checked
+  // Which files includes may read (docs/security.md): load() adds the top input's folder.
+  IncludePolicy includes;
   // What a load does beyond the frames (see Loaded):
   bool facts = false;   // fill Loaded::facts (what `fapc info` shows of the format)
   bool render = true;   // false: timeline inputs stop at the timeline (no frames, no curves)
