@@ -178,7 +178,7 @@ std::vector<Finding> check_file(const DocsIndex& docs, const std::string& path, 
 
   // 1. Documents that are not in the repository, by path or by the names they went under.
   static const std::regex kOutside(
-      R"re((\.\./shared|\bshared/(docs|seeds|corpus)|\bseeds/[a-z]|\b(reference|bitstream|XMT-Omega|XMT/MP4) notes\b|\bnotes on (XMT|FBA|MP4)|\bproject brief\b|\bproject contract\b|\bshared docs\b))re",
+      R"re((\.\./shared|\bshared/(docs|seeds|corpus)|\bseeds/[a-z]|\b(reference|bitstream|XMT-Omega|XMT/MP4) notes\b|\bnotes on (XMT|FBA|MP4)|\bproject brief\b|\bproject contract\b|\bshared docs\b|\bshared [A-Za-z0-9_-]+\.md|\b(format|shared) notes\b))re",
       std::regex::icase);
   for (std::sregex_iterator it(text.begin(), text.end(), kOutside), end; it != end; ++it)
     report(it->position(), "cites a document outside the repository: '" + (*it)[0].str() + "'");
@@ -347,6 +347,7 @@ TEST_F(DocReferences, FlagsCitationsOfOutsideDocuments) {
   EXPECT_EQ(check("x.cpp", "// Frame rates (" + std::string("fba-") + "bitstream.md section 5.3).\n").size(), 0u);
   EXPECT_EQ(check("x.cpp", std::string("// As in the project's reference ") + "notes.\n").size(), 1u);
   EXPECT_EQ(check("x.cpp", "// Blending (semantics" + std::string(".md §1).\n")).size(), 1u);
+  EXPECT_EQ(check("x.cpp", "// From each reader (shared " + std::string("fap-files.md section 3).\n")).size(), 1u);
   EXPECT_EQ(check("x.cpp", "int code = 0;  // no citation here\n").size(), 0u);
 }
 
