@@ -1,4 +1,4 @@
-// The XMT-Omega reader (docs/xmt-omega.md, semantics.md §4): an XMT-O document lowered to the
+// The XMT-Omega reader (docs/xmt-omega.md): an XMT-O document lowered to the
 // shared timeline through fapc::schedule(). Reads the SMIL timing and animation subset that
 // describes face animation; `animation src` places another input, loaded by a caller-given
 // function, so this library depends on no other front end.
@@ -38,8 +38,8 @@ struct XmtoOptions {
   // Documents being read around this one, outermost first (their paths as given): an `animation`
   // that names one of them, or this document, is an inclusion cycle and an error.
   std::vector<std::string> including;
-  // FML moves written in the document (semantics.md §4): event values for repeat, the profile for
-  // param. Their visemes_per_second is the talk rate.
+  // FML moves written in the document (docs/xmt-omega.md, "FML moves inside XMT-Omega"): event
+  // values for repeat, the profile for param. Their visemes_per_second is the talk rate.
   FmlOptions fml;
 };
 
