@@ -308,15 +308,14 @@ std::vector<std::pair<std::string, bool>> files_to_check(const fs::path& root) {
   return files;
 }
 
+const DocsIndex& DocReferences_docs() {
+  static const DocsIndex index = index_docs(test::source_dir());
+  return index;
+}
+
 class DocReferences : public ::testing::Test {
  protected:
-  static const DocsIndex& docs() {
-    static const DocsIndex index = index_docs(test::source_dir());
-    return index;
-  }
-  static std::vector<Finding> check(const std::string& path, const std::string& content) {
-    return check_file(docs(), path, content, false);
-  }
+  static const DocsIndex& docs() { return DocReferences_docs(); }
 };
 
 TEST_F(DocReferences, EverySourceAndDocCitesOnlyWhatTheRepositoryHolds) {
@@ -340,42 +339,62 @@ TEST_F(DocReferences, TheTagsTheCodeUsesAreDefined) {
     EXPECT_EQ(docs().bold_tags.count(tag), 1u) << tag;
 }
 
-// The checker itself, on lines that must fail and lines that must pass.
+// The checker itself, on lines that must fail and lines that must pass: each case is a source
+// text and the number of findings it must give.
+struct Case {
+  std::string text;
+  std::size_t findings;
+};
+
+void expect_findings(const std::vector<Case>& cases) {
+  for (const Case& c : cases)
+    EXPECT_EQ(check_file(DocReferences_docs(), "x.cpp", c.text, false).size(), c.findings) << c.text;
+}
+
 TEST_F(DocReferences, FlagsCitationsOfOutsideDocuments) {
+  // Built from pieces, so that this file does not cite what it tests for.
   const std::string shared = std::string("../") + "shared/docs/semantics.md";
-  EXPECT_EQ(check("x.cpp", "// See " + shared + " for the rules.\n").size(), 2u);  // the path and the page
-  EXPECT_EQ(check("x.cpp", "// Frame rates (" + std::string("fba-") + "bitstream.md section 5.3).\n").size(), 0u);
-  EXPECT_EQ(check("x.cpp", std::string("// As in the project's reference ") + "notes.\n").size(), 1u);
-  EXPECT_EQ(check("x.cpp", "// Blending (semantics" + std::string(".md §1).\n")).size(), 1u);
-  EXPECT_EQ(check("x.cpp", "// From each reader (shared " + std::string("fap-files.md section 3).\n")).size(), 1u);
-  EXPECT_EQ(check("x.cpp", "int code = 0;  // no citation here\n").size(), 0u);
+  expect_findings({
+      {"// See " + shared + " for the rules.\n", 2},  // the path and the page
+      {"// Frame rates (" + std::string("fba-") + "bitstream.md section 5.3).\n", 0},
+      {std::string("// As in the project's reference ") + "notes.\n", 1},
+      {"// Blending (semantics" + std::string(".md §1).\n"), 1},
+      {"// From each reader (shared " + std::string("fap-files.md section 3).\n"), 1},
+      {"int code = 0;  // no citation here\n", 0},
+  });
 }
 
 TEST_F(DocReferences, FlagsSectionsThatDoNotExist) {
-  EXPECT_EQ(check("x.cpp", "// The rewind (docs/fba-bitstream.md section 6.6).\n").size(), 0u);
-  EXPECT_EQ(check("x.cpp", "// The rewind (docs/fba-bitstream.md section 66.6).\n").size(), 1u);
-  EXPECT_EQ(check("x.cpp", "// docs/fba-bitstream.md sections 5.4 to 5.7, and\n// section 99 below.\n").size(), 1u);
-  EXPECT_EQ(check("x.cpp", "// The writer (docs/fap-files.md, \"Writing\").\n").size(), 0u);
-  EXPECT_EQ(check("x.cpp", "// The writer (docs/fap-files.md, \"Scribbling\").\n").size(), 1u);
-  EXPECT_EQ(check("x.cpp", "// Unanchored (section 4).\n").size(), 1u);
-  EXPECT_EQ(check("x.cpp", "// Descriptor tags (14496-1 §7.2.2.1).\n").size(), 0u);
+  expect_findings({
+      {"// The rewind (docs/fba-bitstream.md section 6.6).\n", 0},
+      {"// The rewind (docs/fba-bitstream.md section 66.6).\n", 1},
+      {"// docs/fba-bitstream.md sections 5.4 to 5.7, and\n// section 99 below.\n", 1},
+      {"// The writer (docs/fap-files.md, \"Writing\").\n", 0},
+      {"// The writer (docs/fap-files.md, \"Scribbling\").\n", 1},
+      {"// Unanchored (section 4).\n", 1},
+      {"// Descriptor tags (14496-1 §7.2.2.1).\n", 0},
+  });
 }
 
 TEST_F(DocReferences, FlagsTagsWithoutDefinition) {
-  EXPECT_EQ(check("x.cpp", "bool crlf = false;  // V1\n").size(), 0u);
-  EXPECT_EQ(check("x.cpp", "bool odd = false;  // V99\n").size(), 1u);
-  EXPECT_EQ(check("x.cpp", "// the reference skips a byte (D8), or\n// does not (D77)\n").size(), 1u);
-  EXPECT_EQ(check("x.cpp", "const char* hex = \"D77\";  // a string, not a comment\n").size(), 0u);
-  EXPECT_EQ(check("x.cpp", "// Example Q of somewhere\n").size(), 1u);
+  expect_findings({
+      {"bool crlf = false;  // V1\n", 0},
+      {"bool odd = false;  // V99\n", 1},
+      {"// the reference skips a byte (D8), or\n// does not (D77)\n", 1},
+      {"const char* hex = \"D77\";  // a string, not a comment\n", 0},
+      {"// Example Q of somewhere\n", 1},
+  });
 }
 
 TEST_F(DocReferences, FlagsPaperItemsWithoutThePaper) {
-  EXPECT_EQ(check("x.cpp", "// The grammar of Mimic Table 1.\n").size(), 0u);
-  EXPECT_EQ(check("x.cpp", "// The grammar of Table 1.\n").size(), 1u);
-  EXPECT_EQ(check("x.cpp", "// As in the Mimic\n// Figure 1 plot.\n").size(), 0u);
-  EXPECT_EQ(check("x.cpp", "// FML Figures 5 to 8.\n").size(), 0u);
-  EXPECT_EQ(check("x.cpp", "// Mimic Figure 99.\n").size(), 1u);
-  EXPECT_EQ(check("x.cpp", "// Algebra definitions 4 and 6.\n").size(), 0u);
+  expect_findings({
+      {"// The grammar of Mimic Table 1.\n", 0},
+      {"// The grammar of Table 1.\n", 1},
+      {"// As in the Mimic\n// Figure 1 plot.\n", 0},
+      {"// FML Figures 5 to 8.\n", 0},
+      {"// Mimic Figure 99.\n", 1},
+      {"// Algebra definitions 4 and 6.\n", 0},
+  });
 }
 
 }  // namespace

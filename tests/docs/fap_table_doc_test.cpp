@@ -26,6 +26,13 @@ std::vector<std::string> cells(const std::string& row) {
   return out;
 }
 
+std::vector<std::string> page_lines() {
+  std::istringstream page(test::read_text(test::source_dir() + "/docs/fap-table.md"));
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(page, line);) lines.push_back(line);
+  return lines;
+}
+
 // "±1080" -> 1080
 int symmetric_range(const std::string& text) {
   static const std::regex kRange(R"re(^(?:±|\+-)([0-9]+)$)re");
@@ -35,11 +42,9 @@ int symmetric_range(const std::string& text) {
 }
 
 TEST(FapTableDoc, EveryRowOfThePageMatchesTheCode) {
-  std::istringstream page(test::read_text(test::source_dir() + "/docs/fap-table.md"));
   static const std::regex kRow(R"re(^\| ([0-9]+) \| [a-z_]+ \|.*)re");
-  std::string line;
   int rows = 0;
-  while (std::getline(page, line)) {
+  for (const std::string& line : page_lines()) {
     if (!std::regex_match(line, kRow)) continue;
     const auto c = cells(line);
     if (c.size() != 9) continue;  // another table (groups, fields)
@@ -60,11 +65,9 @@ TEST(FapTableDoc, EveryRowOfThePageMatchesTheCode) {
 }
 
 TEST(FapTableDoc, GroupsOfThePageMatchTheCode) {
-  std::istringstream page(test::read_text(test::source_dir() + "/docs/fap-table.md"));
   static const std::regex kGroupRow(R"re(^\| ([0-9]+) \| ([0-9]+)-([0-9]+) \| ([0-9]+) \|.*)re");
-  std::string line;
   int rows = 0;
-  while (std::getline(page, line)) {
+  for (const std::string& line : page_lines()) {
     std::smatch m;
     if (!std::regex_match(line, m, kGroupRow)) continue;
     ++rows;
