@@ -1,5 +1,5 @@
 // fapc plot INPUT -o OUT.svg [--per-clip]: the blended curves, and with --per-clip every action's
-// own curve labelled by its source line (the Mimic paper's Figure 1).
+// own curve labelled by its source line (Mimic Figure 1, docs/mimic.md).
 #include <filesystem>
 
 #include "fapc/codec/file_io.hpp"

@@ -36,7 +36,7 @@ struct DecodeContext {
     if (!in.overrun()) return ok_status();
     return truncated_at(static_cast<std::int64_t>(in.size_bits() / 8), "stream ends inside " + what + " (truncated?)");
   }
-  // A marker bit that must be 1 (section 5.9).
+  // A marker bit that must be 1 (docs/fba-bitstream.md section 5.9).
   Status read_marker(const char* where) {
     const std::int64_t byte = in.byte_offset();
     if (in.read_bit() == 1) return ok_status();

@@ -69,7 +69,7 @@ std::optional<int> expression_number(const std::string& type) {
   return found->second;
 }
 
-// hdmv axes: semantics.md §3 (0 yaw, 1 pitch, 2 roll), as head rotation FAPs 49, 48, 50.
+// hdmv axes (docs/fml.md, "Moves"): 0 yaw, 1 pitch, 2 roll, as head rotation FAPs 49, 48, 50.
 constexpr int kAxisFap[3] = {49, 48, 50};
 std::optional<int> head_axis(const std::string& type) {
   const std::string t = lower(trim(type));
@@ -197,8 +197,8 @@ class FmlReader {
     }
   }
 
-  // An attribute under its paper spelling or one of its variants (docs/fml.md §10); a variant
-  // gets a note once, naming the paper's spelling.
+  // An attribute under its paper spelling or one of its variants (docs/fml.md, "Spellings"); a
+  // variant gets a note once, naming the paper's spelling.
   std::optional<std::string> spelled(const xmlNode* element, const char* paper,
                                      std::initializer_list<const char*> variants) {
     if (auto value = xml::attribute(element, paper)) return value;
@@ -254,11 +254,12 @@ class FmlReader {
       fail(doc_.error(item, val_text ? "val" : "", "range needs val, the largest angle in degrees (>= 0)"));
       return;
     }
-    // type: a direction (the paper's "left"); dir: an axis, both directions (docs/fml.md §10).
+    // type: a direction (the paper's "left"); dir: an axis, both directions (docs/fml.md,
+    // "Spellings").
     if (const auto dir = spelled(item, "type", {"dir"})) {
       const std::string d = lower(trim(*dir));
       const auto axis = head_axis(d);
-      // Positive FAP directions (fba-bitstream.md): yaw left, pitch down, roll right.
+      // Positive FAP directions (docs/fap-table.md section 2): yaw left, pitch down, roll right.
       if (axis) {
         limits_.min[*axis] = -*val;
         limits_.max[*axis] = *val;

@@ -1,6 +1,6 @@
 // Curves as an SVG figure: one panel per target on a shared time axis. With per-clip curves, each
 // panel also draws every clip's own curve, labelled by its source line, under the blended one
-// (the two halves of the Mimic paper's Figure 1 in one picture).
+// (the two halves of Mimic Figure 1 in one picture; docs/mimic.md).
 #pragma once
 
 #include <string>
