@@ -1,4 +1,4 @@
-// Ctrl-C in the middle of a batch (docs/cli.md, "batch"): no new job starts, what finished is
+// Ctrl-C in the middle of a batch (docs/cli.md, "Batch"): no new job starts, what finished is
 // summed up and reported, and no temporary file is left behind.
 #include <gtest/gtest.h>
 
