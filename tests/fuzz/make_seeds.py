@@ -155,6 +155,25 @@ def seeds():
         "xmt-a-million-hours": pipe("xmt", s["xmto_reader"]["dur-a-million-hours"]),
         "fml-repeat-1e9": pipe("fml", s["fml_reader"]["repeat-1e9"]),
     }
+    # Ordinary inputs too, so the fuzzers start from every kind's real structure.
+    here = os.path.dirname(os.path.abspath(__file__))
+    top = os.path.dirname(os.path.dirname(here))
+
+    def read(path):
+        with open(os.path.join(top, path), "rb") as f:
+            return f.read()
+    for kind, path in [("fap", "corpus/examples/fap/vreng-joy.fap"),
+                       ("fba", "tests/fuzz/corpus/fba_decoder/joy-q1-fit.fba"),
+                       ("mp4", "tests/fuzz/corpus/mp4_reader/fapc-written.mp4"),
+                       ("mimic", "corpus/examples/mimic/figure3.mimic"),
+                       ("fml", "corpus/examples/fml/figure8.fml"),
+                       ("xmt", "tests/fuzz/corpus/xmto_reader/xmto-values.xmt")]:
+        s["pipeline"]["example-" + kind] = pipe(kind, read(path))
+    s["pipeline"]["example-fap.gz"] = pipe("fap.gz", gzip.compress(read("corpus/examples/fap/vreng-joy.fap"), mtime=0))
+    s["pipeline"]["example-combine"] = pipe("combine", "# a comment\n0.5 * in.fap")
+    s["xml_validation"]["example-xmta"] = read("corpus/xmta/gpac-three-tracks.xmt")
+    s["xml_validation"]["example-xmto"] = read("tests/fuzz/corpus/xmto_reader/xmto-timing.xmt")
+    s["xml_validation"]["example-fml"] = read("corpus/examples/fml/tour.fml")
     return s
 
 
@@ -166,7 +185,8 @@ def main():
         os.makedirs(folder, exist_ok=True)
         for name, content in files.items():
             data = content.encode() if isinstance(content, str) else content
-            with open(os.path.join(folder, "hostile-" + name), "wb") as out:
+            prefix = "" if name.startswith("example-") else "hostile-"
+            with open(os.path.join(folder, prefix + name), "wb") as out:
                 out.write(data)
 
 
