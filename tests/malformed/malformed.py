@@ -149,11 +149,20 @@ def with_joy(files):
 
 
 def gzip_bomb(size, unit=b"\n"):
-    """A .gz whose member inflates to `size` bytes of `unit` repeated, built without holding it."""
-    compressor = zlib.compressobj(9, zlib.DEFLATED, 31)
+    """A .gz whose member inflates to `size` bytes of `unit` repeated. One megabyte is deflated
+    once and ended with a full flush (byte-aligned, no back-references across it), so the same
+    compressed block can simply be repeated: a 1 GB bomb costs a CRC, not a deflate of 1 GB."""
     chunk = unit * ((1 << 20) // len(unit))
-    parts = [compressor.compress(chunk) for _ in range(size // len(chunk))]
-    return b"".join(parts) + compressor.flush()
+    compressor = zlib.compressobj(9, zlib.DEFLATED, -15)
+    block = compressor.compress(chunk) + compressor.flush(zlib.Z_FULL_FLUSH)
+    count = size // len(chunk)
+    crc = 0
+    for _ in range(count):
+        crc = zlib.crc32(chunk, crc)
+    final = zlib.compressobj(9, zlib.DEFLATED, -15).flush()  # an empty last block
+    header = b"\x1f\x8b\x08\x00\x00\x00\x00\x00\x02\xff"
+    trailer = crc.to_bytes(4, "little") + ((count * len(chunk)) & 0xFFFFFFFF).to_bytes(4, "little")
+    return header + block * count + final + trailer
 
 
 def truncated(data, fraction):
@@ -448,6 +457,12 @@ def truncation_cases():
         for fraction in [0.1, 0.45, 0.8]:
             cases.append(compile_case("{}.trunc.at-{}".format(kind, int(fraction * 100)),
                                       truncated(text, fraction)))
+    # XMT-A scenes are validated (and refused as compile inputs): cut short, they must be placed.
+    scene = lambda fraction: (lambda: truncated(source_bytes("corpus/xmta/gpac-three-tracks.xmt"), fraction))
+    for fraction in [0.1, 0.5, 0.9]:
+        cases.append(Case("xmta.trunc.validate-at-{}".format(int(fraction * 100)),
+                          {"x.xmt": scene(fraction)}, ["validate", "x.xmt"]))
+        cases.append(compile_case("xmta.trunc.compile-at-{}".format(int(fraction * 100)), scene(fraction)))
     # .fap cut inside a line: the mask line short of 68 entries, a values line short of its mask.
     cases.append(compile_case("fap.trunc.mid-mask", fap([0]).split("\n")[0] + "\n1 1 1 1\n"))
     cases.append(compile_case("fap.trunc.mid-values",
