@@ -627,6 +627,7 @@ def run_case(case, fapc, folder, timeout, sanitized):
         proc.communicate()
         return ["timed out after {} s (limit {} s)".format(timeout, timeout)]
     elapsed = time.monotonic() - started
+    case.elapsed = elapsed
     err = stderr.decode("utf-8", "replace")
     problems = []
     allowed = case.exit if isinstance(case.exit, tuple) else (case.exit,)
@@ -748,6 +749,8 @@ def main():
                 detail = "passes now: remove it from tests/malformed/expected-failures.txt"
             elif outcome == "xfail":
                 detail = "expected failure (" + listed[name] + "): " + detail
+            if outcome == "pass":
+                detail = "{:.1f} s".format(getattr(case, "elapsed", 0))
             print("{:5} {}  {}".format(outcome, name, detail), flush=True)
     if args.command == "run-all":
         print("{} cases: {}".format(len(names), ", ".join("{} {}".format(v, k) for k, v in counts.items())))
