@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/codec/fap_file.hpp"
 #include "fapc/codec/fap_sequence.hpp"
 #include "fapc/transcoder/curves.hpp"
 #include "fapc/transcoder/timeline.hpp"
@@ -53,6 +54,7 @@ struct ConvertOptions {
   int intra_period = 0;                      // 0: encoder decides
   std::string ranges = "fit";                // fit | max
   std::string masks = "fit";                 // fit | keep
+  FapFlavour fap_flavour = FapFlavour::safe;  // --fap-flavour: the .fap layout of a player family
   bool strict = false;
   bool verify = false;
 };
