@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "diagnostic_checks.hpp"
-#include "fapc/xmt/xml_validation.hpp"
+#include "fapc/xml/xml_validation.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
