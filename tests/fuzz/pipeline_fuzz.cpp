@@ -1,6 +1,6 @@
 // libFuzzer target: the whole command pipeline of `fapc compile`, input bytes of any kind to every
-// output kind. The first byte picks the input kind (by its extension, through the program's format
-// registry), the second the options (frame rate, --duration, quantiser), the rest is the file.
+// output kind. The first byte picks the input kind (by its extension, through fapc::pipeline's
+// reader table), the second the options (frame rate, --duration, quantiser), the rest is the file.
 // Loading and writing must never crash, hang or exhaust memory; every load error must be placed
 // in the input; what is written as .fap or .fba must read back.
 //
@@ -20,20 +20,12 @@
 #include "diagnostic_checks.hpp"
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/codec/fba.hpp"
-#include "fapc/registry.hpp"
+#include "fapc/pipeline/registry.hpp"
 
 namespace {
 
 constexpr std::array<const char*, 8> kInputExtensions = {".fap", ".fap.gz", ".fba", ".mp4",
                                                          ".mimic", ".fml", ".xmt", ".combine"};
-struct Output {
-  const char* kind;
-  const char* path;
-};
-constexpr std::array<Output, 8> kOutputs = {{{"fap", "out.fap"}, {"fba", "out.fba"},
-                                             {"mp4", "out.mp4"}, {"xmt", "out.xmt"},
-                                             {"xmt-bifs", "out.bifs.xmt"}, {"json", "out.json"},
-                                             {"svg", "out.svg"}, {"timeline", "out.timeline"}}};
 // Writing is linear in the frames; past this the fuzzer would spend its time encoding.
 constexpr std::size_t kMaxFramesWritten = 20000;
 
@@ -54,8 +46,8 @@ const std::filesystem::path& work_folder() {
   return folder;
 }
 
-fapc::cli::ConvertOptions options_from(std::uint8_t bits) {
-  fapc::cli::ConvertOptions options;
+fapc::pipeline::ConvertOptions options_from(std::uint8_t bits) {
+  fapc::pipeline::ConvertOptions options;
   constexpr std::array<int, 4> kRates = {25, 10, 30, 100};
   options.fps = kRates[bits & 3];
   if (bits & 4) options.duration = 5;
@@ -81,7 +73,7 @@ void check_written(const std::string& kind, const std::string& bytes) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 2) return 0;
   const std::string extension = kInputExtensions[data[0] % kInputExtensions.size()];
-  const fapc::cli::ConvertOptions options = options_from(data[1]);
+  const fapc::pipeline::ConvertOptions options = options_from(data[1]);
   // A fresh folder for every input: what one run left must not change the next one.
   std::filesystem::remove_all(work_folder());
   std::filesystem::create_directories(work_folder());
@@ -90,21 +82,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::ofstream out(input, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(data + 2), static_cast<std::streamsize>(size - 2));
   }
-  auto loaded = fapc::cli::load_input(input, options);
+  auto loaded = fapc::pipeline::load(input, options);
   if (!loaded) {
     fapc::fuzz::require_placed(loaded.error());
     return 0;
   }
   if (loaded->frames.frames.size() > kMaxFramesWritten) return 0;
-  for (const Output& output : kOutputs) {
-    const fapc::cli::OutputFormat* format = fapc::cli::output_format_named(output.kind);
-    if (!format) continue;  // an output this build does not have
-    auto bytes = format->write(*loaded, (work_folder() / output.path).string(), options);
+  // Every writer of the table, so a writer added later is fuzzed too.
+  for (const fapc::pipeline::OutputFormat& format : fapc::pipeline::formats().outputs()) {
+    const std::string path = (work_folder() / ("out" + format.extensions.front())).string();
+    auto bytes = format.write(*loaded, path, options);
     if (!bytes) {
       if (bytes.error().where.file.empty()) fapc::fuzz::require_placed(bytes.error());
       continue;
     }
-    check_written(output.kind, *bytes);
+    check_written(format.kind, *bytes);
   }
   return 0;
 }
