@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "fapc/args.hpp"
+#include "fapc/convert.hpp"
 #include "fapc/registry.hpp"
 #include "fapc/report.hpp"
 
@@ -85,7 +86,8 @@ void print_text(const nlohmann::ordered_json& info) {
 }
 
 int run_info(const std::vector<std::string>& argv) {
-  Args args(argv, {}, {"json"});
+  Args args(argv, kLimitValued, {"json"});
+  const ConvertOptions options = convert_options(args);
   if (!args.ok()) return usage_error("info", args.error());
   if (args.positionals().size() != 1) return usage_error("info", "expected one FILE");
   const std::string& path = args.positionals().front();
@@ -94,7 +96,6 @@ int run_info(const std::vector<std::string>& argv) {
     report(make_error(Location{path, 0, 0, -1}, "unknown input kind"));
     return kExitBadInput;
   }
-  const ConvertOptions options;
   auto loaded = format->load(path, options);
   if (!loaded) {
     report(loaded.error());

@@ -86,12 +86,13 @@ Outcome reencode_matches(const std::string& path, const DecodedFba& decoded, boo
   return failure("re-encoding the decoded frames does not give the same bytes (a stream fapc did not write?)");
 }
 
-Outcome verify_stream(const std::string& path) {
-  auto raw = read_file_bytes(path);
+Outcome verify_stream(const std::string& path, const Limits& limits) {
+  auto raw = read_file_bytes(path, limits);
   if (!raw) return failed(raw.error(), kExitBadInput);
   const std::vector<std::uint8_t> bytes(raw->begin(), raw->end());
   FbaDecodeOptions decode_options;
   decode_options.file = path;
+  decode_options.max_frames = limits.max_frames;
   auto decoded = decode_fba(bytes, decode_options);
   if (!decoded) return failed(decoded.error(), kExitBadInput);
   report_all(decoded->warnings);
@@ -103,8 +104,8 @@ Outcome verify_stream(const std::string& path) {
 
 // An MP4's FBA track: each sample must be the plane fapc writes for its frame, with its duration
 // and sync flag.
-Outcome verify_mp4(const std::string& path) {
-  auto fba = read_mp4_fba(path);
+Outcome verify_mp4(const std::string& path, const Limits& limits) {
+  auto fba = read_mp4_fba(path, limits);
   if (!fba) return failed(fba.error(), kExitBadInput);
   report_all(fba->decoded.warnings);
   const std::vector<xmt::FbaSample>& samples = fba->track.samples;
@@ -144,7 +145,7 @@ Outcome verify_input(const std::string& path, const ConvertOptions& options) {
 }
 
 int run_verify(const std::vector<std::string>& argv) {
-  Args args(argv, {"quant", "intra-period", "ranges", "masks"}, {"json"});
+  Args args(argv, with_limits({"quant", "intra-period", "ranges", "masks"}), {"json"});
   const ConvertOptions options = convert_options(args);
   if (!args.ok()) return usage_error("verify", args.error());
   if (args.positionals().empty()) return usage_error("verify", "expected at least one FILE");
@@ -153,8 +154,8 @@ int run_verify(const std::vector<std::string>& argv) {
   for (const std::string& path : args.positionals()) {
     const InputFormat* format = input_format_for(path);
     const std::string kind = format ? format->kind : "";
-    const Outcome outcome = kind == "fba"   ? verify_stream(path)
-                            : kind == "mp4" ? verify_mp4(path)
+    const Outcome outcome = kind == "fba"   ? verify_stream(path, options.limits)
+                            : kind == "mp4" ? verify_mp4(path, options.limits)
                                             : verify_input(path, options);
     if (outcome.status == kExitBadInput || (outcome.status == kExitVerifyFailed && status == kExitOk))
       status = outcome.status;

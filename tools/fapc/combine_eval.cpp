@@ -25,6 +25,18 @@ Result<algebra::Value> load_operand(const std::string& path, const ConvertOption
   Result<Loaded> loaded = load_input(path, options);
   if (!loaded) return loaded.error();
   warnings.insert(warnings.end(), loaded->warnings.begin(), loaded->warnings.end());
+  // The Algebra's grid has a slot for every frame from 0 to the last: frames before 0 have no
+  // slot, and a late last frame costs as much as a long animation.
+  if (const auto& frames = loaded->frames.frames; !frames.empty()) {
+    if (frames.front().number < 0)
+      return make_error(Location{path, 0, 0, -1}, "frame " + std::to_string(frames.front().number) +
+                                                      " is before time 0: an operand's frames start at 0 or later");
+    if (frames.back().number >= options.limits.max_frames)
+      return limit_error(Location{path, 0, 0, -1},
+                         "its frames run to number " + std::to_string(frames.back().number) +
+                             ", a grid of " + std::to_string(frames.back().number + 1) + " frames",
+                         Limit::frames, options.limits);
+  }
   value.animation = algebra::animation_from(loaded->frames);
   return value;
 }
@@ -42,7 +54,7 @@ Result<algebra::Value> evaluate_combination(const std::string& expression,
         path.is_absolute() || base_folder.empty() ? name : (std::filesystem::path(base_folder) / path).string();
     return load_operand(resolved, options, *profile, warnings);
   };
-  return algebra::evaluate(expression, load);
+  return algebra::evaluate(expression, load, options.limits.max_frames);
 }
 
 FapSequence frames_of(const algebra::Value& value, int fps, const std::string& name) {

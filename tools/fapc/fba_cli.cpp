@@ -19,11 +19,12 @@ FbaEncodeOptions fba_encode_options(const ConvertOptions& options) {
 
 }  // namespace
 
-Result<DecodedFba> read_fba_file(const std::string& path) {
-  auto bytes = read_file_bytes(path);
+Result<DecodedFba> read_fba_file(const std::string& path, const Limits& limits) {
+  auto bytes = read_file_bytes(path, limits);
   if (!bytes) return bytes.error();
   FbaDecodeOptions options;
   options.file = path;
+  options.max_frames = limits.max_frames;
   const auto* data = reinterpret_cast<const std::uint8_t*>(bytes->data());
   return decode_fba(std::span<const std::uint8_t>(data, bytes->size()), options);
 }

@@ -11,7 +11,7 @@
 namespace fapc::cli {
 
 // Reads and decodes a .fba file (gzip inflated transparently).
-Result<DecodedFba> read_fba_file(const std::string& path);
+Result<DecodedFba> read_fba_file(const std::string& path, const Limits& limits);
 
 // Encodes `sequence`, which came from `input`: errors name the input. With options.verify, the
 // stream is decoded and checked too (a failure's message starts with "verification failed").
@@ -25,6 +25,6 @@ struct Mp4Fba {
   xmt::FbaTrackInput track;
   DecodedFba decoded;
 };
-Result<Mp4Fba> read_mp4_fba(const std::string& path);
+Result<Mp4Fba> read_mp4_fba(const std::string& path, const Limits& limits);
 
 }  // namespace fapc::cli

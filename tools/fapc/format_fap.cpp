@@ -7,14 +7,16 @@ namespace fapc::cli {
 
 namespace {
 
-Result<FapReadResult> read_fap_path(const std::string& path) {
-  auto bytes = read_file_bytes(path);
+Result<FapReadResult> read_fap_path(const std::string& path, const Limits& limits) {
+  auto bytes = read_file_bytes(path, limits);
   if (!bytes) return bytes.error();
-  return read_fap_text(*bytes, path);
+  FapReadOptions options;
+  options.max_frames = limits.max_frames;
+  return read_fap_text(*bytes, path, options);
 }
 
-Result<Loaded> load_fap(const std::string& path, const ConvertOptions&) {
-  auto read = read_fap_path(path);
+Result<Loaded> load_fap(const std::string& path, const ConvertOptions& options) {
+  auto read = read_fap_path(path, options.limits);
   if (!read) return read.error();
   Loaded loaded;
   loaded.frames = std::move(read->sequence);
@@ -22,8 +24,8 @@ Result<Loaded> load_fap(const std::string& path, const ConvertOptions&) {
   return loaded;
 }
 
-Result<nlohmann::ordered_json> describe_fap(const std::string& path, const ConvertOptions&) {
-  auto read = read_fap_path(path);
+Result<nlohmann::ordered_json> describe_fap(const std::string& path, const ConvertOptions& options) {
+  auto read = read_fap_path(path, options.limits);
   if (!read) return read.error();
   const FapFileFacts& facts = read->facts;
   nlohmann::ordered_json out;

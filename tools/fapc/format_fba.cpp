@@ -7,8 +7,8 @@ namespace fapc::cli {
 
 namespace {
 
-Result<Loaded> load_fba(const std::string& path, const ConvertOptions&) {
-  auto decoded = read_fba_file(path);
+Result<Loaded> load_fba(const std::string& path, const ConvertOptions& options) {
+  auto decoded = read_fba_file(path, options.limits);
   if (!decoded) return decoded.error();
   Loaded loaded;
   loaded.frames = std::move(decoded->sequence);
@@ -19,8 +19,8 @@ Result<Loaded> load_fba(const std::string& path, const ConvertOptions&) {
 
 std::string range_text(const FbaRange& r) { return std::to_string(r.min) + ".." + std::to_string(r.max); }
 
-Result<nlohmann::ordered_json> describe_fba(const std::string& path, const ConvertOptions&) {
-  auto decoded = read_fba_file(path);
+Result<nlohmann::ordered_json> describe_fba(const std::string& path, const ConvertOptions& options) {
+  auto decoded = read_fba_file(path, options.limits);
   if (!decoded) return decoded.error();
   const FbaStreamInfo& info = decoded->info;
   nlohmann::ordered_json out;

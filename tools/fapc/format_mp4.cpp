@@ -57,14 +57,14 @@ Diagnostic in_file(Diagnostic d, const xmt::Mp4Track& track, const xmt::FbaTrack
   return d;
 }
 
-Result<xmt::Mp4File> read_mp4_path(const std::string& path) {
-  auto bytes = read_file_bytes(path);
+Result<xmt::Mp4File> read_mp4_path(const std::string& path, const Limits& limits) {
+  auto bytes = read_file_bytes(path, limits);
   if (!bytes) return bytes.error();
   return xmt::read_mp4(xmt::Bytes(bytes->begin(), bytes->end()), path);
 }
 
-Result<Loaded> load_mp4(const std::string& path, const ConvertOptions&) {
-  auto fba = read_mp4_fba(path);
+Result<Loaded> load_mp4(const std::string& path, const ConvertOptions& options) {
+  auto fba = read_mp4_fba(path, options.limits);
   if (!fba) return fba.error();
   Loaded loaded;
   loaded.frames = std::move(fba->decoded.sequence);
@@ -105,8 +105,8 @@ std::string profiles_text(const xmt::ProfileLevels& p) {
          ", visual " + visual + ", graphics " + hex_byte(p.graphics);
 }
 
-Result<nlohmann::ordered_json> describe_mp4(const std::string& path, const ConvertOptions&) {
-  auto mp4 = read_mp4_path(path);
+Result<nlohmann::ordered_json> describe_mp4(const std::string& path, const ConvertOptions& options) {
+  auto mp4 = read_mp4_path(path, options.limits);
   if (!mp4) return mp4.error();
   nlohmann::ordered_json out;
   std::string brands;
@@ -163,13 +163,14 @@ const RegisterOutput mp4_output{OutputFormat{"mp4", {".mp4"}, write_mp4_file}};
 
 }  // namespace
 
-Result<Mp4Fba> read_mp4_fba(const std::string& path) {
-  auto mp4 = read_mp4_path(path);
+Result<Mp4Fba> read_mp4_fba(const std::string& path, const Limits& limits) {
+  auto mp4 = read_mp4_path(path, limits);
   if (!mp4) return mp4.error();
   auto track = xmt::read_fba_track(*mp4);
   if (!track) return track.error();
   FbaDecodeOptions options;
   options.file = path;
+  options.max_frames = limits.max_frames;
   auto decoded = decode_fba(xmt::fba_stream_from_track(*track), options);
   if (!decoded) return in_file(decoded.error(), *xmt::find_fba_track(*mp4), *track);
   decoded->warnings.insert(decoded->warnings.begin(), mp4->warnings.begin(), mp4->warnings.end());

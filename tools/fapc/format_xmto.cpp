@@ -54,6 +54,8 @@ Result<xmt::XmtoDocument> read_document(const std::string& path, const ConvertOp
   xmto.fml.visemes_per_second = options.visemes_per_second;
   xmto.including = documents_being_read();
   xmto.duration = options.duration;
+  xmto.max_runs = options.limits.max_runs;
+  xmto.fml.max_runs = options.limits.max_runs;
   xmto.load_animation = [&options](const std::string& included, const Location& where) {
     return load_animation(included, where, options);
   };

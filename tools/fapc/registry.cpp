@@ -71,7 +71,9 @@ Result<Loaded> load_input(const std::string& path, const ConvertOptions& options
   if (!format)
     return make_error(Location{path, 0, 0, -1},
                       "unknown input kind (expected .fap, .fap.gz, .fba, .mp4, .mimic, .fml or .xmt)");
-  return format->load(path, options);
+  Result<Loaded> loaded = format->load(path, options);
+  if (loaded) loaded->origin = path;
+  return loaded;
 }
 
 }  // namespace fapc::cli

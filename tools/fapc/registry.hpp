@@ -14,6 +14,7 @@
 
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/fap_sequence.hpp"
+#include "fapc/codec/limits.hpp"
 #include "fapc/transcoder/curves.hpp"
 #include "fapc/transcoder/timeline.hpp"
 
@@ -55,11 +56,13 @@ struct ConvertOptions {
   std::string masks = "fit";                 // fit | keep
   bool strict = false;
   bool verify = false;
+  Limits limits;  // --max-frames, --max-runs, --max-decompressed-bytes, --max-expansion
 };
 
 // What an input became: always frames; the timeline and its curves when the front end has them
 // (Mimic, FML, XMT-Omega), so curve outputs and per-clip plots keep the authored shape.
 struct Loaded {
+  std::string origin;  // the input it came from (load_input sets it): errors of writers name it
   FapSequence frames;
   std::optional<Curves> curves;
   std::optional<Timeline> timeline;

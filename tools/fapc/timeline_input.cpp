@@ -14,9 +14,13 @@ Result<Profile> profile_for(const ConvertOptions& options) {
 Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
                                     const Profile& profile, const ConvertOptions& options,
                                     Diagnostics warnings) {
-  if (options.duration) timeline.explicit_end = *options.duration;
+  if (options.duration) {
+    timeline.explicit_end = *options.duration;
+    timeline.end_source = Location{name, 0, 0, -1};  // the whole input, ended by --duration
+  }
   RenderOptions render;
   render.fps = options.fps;
+  render.max_frames = options.limits.max_frames;
   render.profile = &profile;
   render.name = std::filesystem::path(name).stem().string();
   Result<Rendered> rendered = render_frames(timeline, render);

@@ -40,7 +40,8 @@ Animation broadcast(const FacialState& state, const Animation& like) {
 
 class Evaluator {
  public:
-  Evaluator(std::string_view text, const OperandLoader& load) : text_(text), load_(load) {}
+  Evaluator(std::string_view text, const OperandLoader& load, std::int64_t max_frames)
+      : text_(text), load_(load), max_frames_(max_frames) {}
 
   Result<Value> run() {
     Result<Term> result = overlap();
@@ -55,7 +56,31 @@ class Evaluator {
  private:
   std::string_view text_;
   const OperandLoader& load_;
+  std::int64_t max_frames_;
   std::size_t at_ = 0;
+
+  // Before an operator brings `operands` to one frame grid: the slots that grid will have (the
+  // highest frame rate, the longest animation), against max_frames.
+  std::optional<Diagnostic> too_many_frames(std::size_t offset, const std::vector<const Value*>& operands) const {
+    int fps = 0;
+    for (const Value* v : operands)
+      if (!v->state) fps = std::max(fps, v->animation.fps);
+    double slots = 0;
+    for (const Value* v : operands)
+      if (!v->state && v->animation.fps > 0)
+        slots = std::max(slots, std::ceil(static_cast<double>(v->animation.size()) * fps / v->animation.fps));
+    if (slots <= static_cast<double>(max_frames_)) return std::nullopt;
+    char what[96];
+    std::snprintf(what, sizeof what, "this operator makes %.0f frames at %d fps", slots, fps);
+    return frames_limit(offset, what);
+  }
+  Diagnostic frames_limit(std::size_t offset, const std::string& what) const {
+    Limits limits;
+    limits.max_frames = max_frames_;
+    Diagnostic d = limit_error(Location::text("<expression>", 1, static_cast<int>(offset) + 1), what, Limit::frames, limits);
+    d.source_line = std::string(text_);
+    return d;
+  }
 
   Diagnostic error(std::size_t offset, const std::string& message) const {
     return make_error(Location::text("<expression>", 1, static_cast<int>(offset) + 1), message,
@@ -102,6 +127,9 @@ class Evaluator {
     for (const Term& t : terms) {
       if (!t.value.state) grid = &t.value.animation;
     }
+    std::vector<const Value*> operands;
+    for (const Term& t : terms) operands.push_back(&t.value);
+    if (auto bad = too_many_frames(static_cast<std::size_t>(terms.front().column - 1), operands)) return *bad;
     std::vector<LayeredAnimation> layers;
     for (const Term& t : terms) {
       if (!t.priority) {
@@ -142,6 +170,7 @@ class Evaluator {
       if (!right) return right.error();
       if (auto bad = overlap_only(*left); bad) return *bad;
       if (auto bad = overlap_only(*right); bad) return *bad;
+      if (auto bad = too_many_frames(at, {&left->value, &right->value})) return *bad;
       left->value = combine(left->value, right->value, [v](const auto& s, const auto& t) { return fapc::algebra::sum(s, t, v); });
     }
   }
@@ -192,8 +221,19 @@ class Evaluator {
         Result<double> seconds = number();
         if (!seconds) return seconds.error();
         if (term->value.state) return error(at, "'>>' delays an animation; this operand is a state");
-        // A day of frames is already more than any face animation; beyond it is a typo.
-        if (std::abs(*seconds) > 86400) return error(at, "a delay is at most 86400 s (a day)");
+        // A day of frames is already more than any face animation; beyond it is a typo. A
+        // negative delay would cut the animation's start away (all of it, for a short one): the
+        // operator only delays (docs/algebra.md).
+        if (*seconds < 0 || *seconds > 86400)
+          return error(at, "a delay is from 0 to 86400 s (a day); " + format(*seconds) + " is not");
+        const double slots = static_cast<double>(term->value.animation.size()) +
+                             std::round(*seconds * term->value.animation.fps);
+        if (slots > static_cast<double>(max_frames_)) {
+          char what[96];
+          std::snprintf(what, sizeof what, "the delayed animation spans %.0f frames at %d fps", slots,
+                        term->value.animation.fps);
+          return frames_limit(at, what);
+        }
         term->value.animation = shifted(term->value.animation, *seconds);
       } else {
         return term;
@@ -286,8 +326,8 @@ class Evaluator {
 
 }  // namespace
 
-Result<Value> evaluate(std::string_view expression, const OperandLoader& load) {
-  return Evaluator(expression, load).run();
+Result<Value> evaluate(std::string_view expression, const OperandLoader& load, std::int64_t max_frames) {
+  return Evaluator(expression, load, max_frames).run();
 }
 
 }  // namespace fapc::algebra

@@ -24,7 +24,7 @@ std::string seconds(double t) {
 class Scheduler {
  public:
   std::optional<Diagnostic> error;
-  std::size_t max_runs = 0;
+  std::int64_t max_runs = 0;
 
   // The active duration of `node` when it is known without a parent end.
   std::optional<double> measure(const ScheduleNode& node) {
@@ -73,7 +73,12 @@ class Scheduler {
     const double children_end = place_children(node, start, own_limit, iteration_cut, out);
     if (error) return start;
     const double simple = node.timing.duration.value_or(children_end - start);
-    repeat_group(node, first, start, simple, inner_cut, out);
+    // Iterations stop at the repeat count (and repeatDur) even when the group's length was only
+    // known once its children were placed: a group that does not repeat is laid out once.
+    double repeat_end = inner_cut;
+    if (!node.timing.repeat_indefinite) repeat_end = std::min(repeat_end, start + simple * node.timing.repeat);
+    if (node.timing.repeat_duration) repeat_end = std::min(repeat_end, start + *node.timing.repeat_duration);
+    repeat_group(node, first, start, simple, repeat_end, out);
     return active ? start + *active : children_end;
   }
 
@@ -83,8 +88,12 @@ class Scheduler {
   // Repeats of repeats can ask for more runs than memory holds (an indefinite repeat of a tiny
   // group beside a very long sibling): past max_runs the schedule is an error at the node.
   bool too_many(const ScheduleNode& node, const std::vector<Occurrence>& out) {
-    if (out.size() < max_runs) return error.has_value();
-    fail(node, "repeats to more than " + std::to_string(max_runs) + " runs: fapc refuses to schedule so many");
+    if (static_cast<std::int64_t>(out.size()) < max_runs) return error.has_value();
+    if (!error) {
+      Limits limits;
+      limits.max_runs = max_runs;
+      error = limit_error(node.source, "this element repeats to too many runs", Limit::runs, limits);
+    }
     return true;
   }
 
@@ -142,6 +151,8 @@ class Scheduler {
   }
 
   std::optional<double> measure_parallel(const ScheduleNode& node) {
+    // An empty par or excl (or an excl whose event picked no branch) lasts 0 s (SMIL).
+    if (node.children.empty()) return 0.0;
     const std::optional<double> reference = reference_end(node);
     if (!reference) return std::nullopt;
     double latest = std::max(0.0, *reference);

@@ -13,6 +13,7 @@
 
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/fap_sequence.hpp"
+#include "fapc/codec/limits.hpp"
 
 namespace fapc {
 
@@ -77,7 +78,8 @@ std::int64_t fba_tolerance(int fap, int quant);
 
 struct FbaDecodeOptions {
   std::string file = "stream.fba";  // names the input in diagnostics
-  std::size_t max_frames = std::size_t{1} << 22;  // refuse streams with more face planes
+  // Refuse streams whose face planes span more frames, skipped frames included (Limits).
+  std::int64_t max_frames = Limits{}.max_frames;
 };
 
 // A signalled range of one FAP, in quantised units.

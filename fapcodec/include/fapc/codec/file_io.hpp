@@ -6,14 +6,19 @@
 #include <string_view>
 
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/codec/limits.hpp"
 
 namespace fapc {
 
-// The file's bytes; a gzip stream (by its magic bytes) is inflated transparently.
-Result<std::string> read_file_bytes(const std::string& path);
+// The file's bytes; a gzip stream (by its magic bytes) is inflated transparently, within the
+// limits' decompressed bytes and expansion factor.
+Result<std::string> read_file_bytes(const std::string& path, const Limits& limits = {});
 
 bool is_gzip(std::string_view bytes);
-Result<std::string> gunzip(std::string_view bytes, const std::string& file);
+// Refuses (limit_exceeded, at the compressed byte reached) before the output would pass
+// limits.max_decompressed_bytes, or max_expansion times the input's size once past
+// kExpansionFloor.
+Result<std::string> gunzip(std::string_view bytes, const std::string& file, const Limits& limits = {});
 std::string gzip(std::string_view bytes);
 
 // Writes to a temporary file in the target's folder, then renames it over the target.

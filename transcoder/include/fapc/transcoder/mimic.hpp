@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "fapc/codec/limits.hpp"
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/transcoder/profile.hpp"
 #include "fapc/transcoder/timeline.hpp"
@@ -18,6 +19,7 @@ struct MimicOptions {
   // Reads an included file (defxpr). Empty: read from disk (read_file_bytes). Tests and fuzzers
   // pass their own.
   std::function<Result<std::string>(const std::string& path)> read_file;
+  std::int64_t max_runs = Limits{}.max_runs;  // scheduled runs after repeats (--max-runs)
 };
 
 struct MimicProgram {

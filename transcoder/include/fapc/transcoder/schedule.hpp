@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/codec/limits.hpp"
 
 namespace fapc {
 
@@ -62,8 +63,9 @@ struct ScheduleOptions {
   // The root's end when the source gives none (--duration): lets indefinite repeats and periodic
   // leaves without duration at the top level end.
   std::optional<double> root_end;
-  // The most runs (occurrences) a schedule may have; more is an error at the node that repeats.
-  std::size_t max_runs = 2000000;
+  // The most runs (occurrences) a schedule may have; more is a limit_exceeded error at the node
+  // that repeats (Limits::max_runs, --max-runs).
+  std::int64_t max_runs = Limits{}.max_runs;
 };
 
 struct Schedule {
