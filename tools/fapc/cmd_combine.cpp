@@ -54,6 +54,7 @@ int run_combine(const std::vector<std::string>& argv) {
   }
   if (states) return print_state(*value, args);
   Loaded loaded;
+  loaded.origin = "<expression>";  // what errors about the frames name, as expression errors do
   loaded.frames = frames_of(*value, options.fps, std::filesystem::path(*output).stem().string());
   return write_output(loaded, *output, options, args.value("to").value_or(""));
 }

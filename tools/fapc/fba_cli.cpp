@@ -14,6 +14,7 @@ FbaEncodeOptions fba_encode_options(const ConvertOptions& options) {
   fba.intra_period = options.intra_period;
   fba.ranges = options.ranges == "max" ? FbaRangeMode::max : FbaRangeMode::fit;
   fba.masks = options.masks == "keep" ? FbaMaskMode::keep : FbaMaskMode::fit;
+  fba.max_frames = options.limits.max_frames;
   return fba;
 }
 

@@ -55,7 +55,7 @@ Result<nlohmann::ordered_json> describe_fba(const std::string& path, const Conve
 }
 
 Result<std::string> write_fba(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
-  auto encoded = encode_checked(loaded.frames, options, path);
+  auto encoded = encode_checked(loaded.frames, options, loaded.named(path));
   if (!encoded) return encoded.error();
   return std::string(encoded->bytes.begin(), encoded->bytes.end());
 }

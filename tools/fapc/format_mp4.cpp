@@ -17,7 +17,10 @@ namespace {
 // The FBA track: the encoder's planes, each started by its start code and byte-aligned, become
 // the samples; the timescale is the frame rate, so a sample lasts the frames it covers.
 Result<xmt::FbaTrackInput> encode_planes(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
-  auto encoded = encode_checked(loaded.frames, options, path, /*align_planes=*/true);
+  // An empty input would make a track without samples: say so about the input.
+  if (loaded.frames.frames.empty())
+    return make_error(Location{loaded.named(path), 0, 0, -1}, "no frames to write: an MP4 FBA track needs at least one");
+  auto encoded = encode_checked(loaded.frames, options, loaded.named(path), /*align_planes=*/true);
   if (!encoded) return encoded.error();
   xmt::FbaTrackInput track;
   const auto dsi = fba_decoder_specific_info();
@@ -154,7 +157,11 @@ Result<std::string> write_mp4_file(const Loaded& loaded, const std::string& path
   auto track = encode_planes(loaded, path, options);
   if (!track) return track.error();
   auto bytes = xmt::write_mp4(*track);
-  if (!bytes) return bytes.error();
+  if (!bytes) {
+    Diagnostic error = bytes.error();
+    if (error.where.file.empty()) error.where.file = loaded.named(path);
+    return error;
+  }
   return std::string(bytes->begin(), bytes->end());
 }
 

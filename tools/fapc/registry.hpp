@@ -63,6 +63,9 @@ struct ConvertOptions {
 // (Mimic, FML, XMT-Omega), so curve outputs and per-clip plots keep the authored shape.
 struct Loaded {
   std::string origin;  // the input it came from (load_input sets it): errors of writers name it
+
+  // The file errors about these frames name: the input, or `output` when there is none.
+  const std::string& named(const std::string& output) const { return origin.empty() ? output : origin; }
   FapSequence frames;
   std::optional<Curves> curves;
   std::optional<Timeline> timeline;

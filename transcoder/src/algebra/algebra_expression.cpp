@@ -271,7 +271,15 @@ class Evaluator {
                                               : "expected a file, a number or '(' at the end");
     }
     Result<Value> value = load_(name, static_cast<int>(start) + 1);
-    if (!value) return value.error();
+    if (!value) {
+      // A problem with the operand as a whole (it cannot be opened, it is too long) is reported
+      // where the expression names it; a problem inside it, at its own place.
+      const Diagnostic& inner = value.error();
+      if (inner.where.line > 0 || inner.where.byte_offset >= 0) return inner;
+      Diagnostic d = error(start, "operand '" + inner.where.file + "': " + inner.message);
+      d.kind = inner.kind;
+      return d;
+    }
     return Term{std::move(*value), std::nullopt, std::nullopt, static_cast<int>(start) + 1};
   }
 

@@ -41,6 +41,9 @@ struct FbaEncodeOptions {
   bool list_every_mask = false;  // mask type 01 (bits listed) for every group, the layout of the
                                  // test vector (fba-bitstream.md 11); by default empty groups
                                  // get type 00 and full ones 11, which needs no mask bits
+  // The most frames the sequence may span (gaps included): the decoder's limit, so that fapc
+  // never writes a stream it refuses to read back (Limits::max_frames).
+  std::int64_t max_frames = Limits{}.max_frames;
 };
 
 // Where one plane (one frame, plus the frames it skips) sits in the output.
