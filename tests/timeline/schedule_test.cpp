@@ -136,7 +136,7 @@ TEST(Schedule, MoreRunsThanTheLimitIsAnErrorAtTheRepeatingNode) {
   const auto s = schedule(group(Kind::parallel, {leaf(0, 100), group(Kind::sequence, {leaf(1, 1)}, forever)}), options);
   ASSERT_FALSE(s.ok());
   EXPECT_EQ(s.error().where.line, 100);
-  EXPECT_EQ(s.error().message, "repeats to more than 10 runs: fapc refuses to schedule so many");
+  EXPECT_EQ(s.error().message, "repeats to too many runs: more than the limit of 10 runs (--max-runs N raises it)");
 }
 
 TEST(Schedule, GroupDurationCutsItsChildren) {

@@ -92,7 +92,7 @@ class Scheduler {
     if (!error) {
       Limits limits;
       limits.max_runs = max_runs;
-      error = limit_error(node.source, "this element repeats to too many runs", Limit::runs, limits);
+      error = limit_error(node.source, "repeats to too many runs", Limit::runs, limits);
     }
     return true;
   }
