@@ -163,3 +163,30 @@ TEST(Schedule, ExclusiveChildCutsTheOnePlaying) {
 
 }  // namespace
 }  // namespace fapc
+
+namespace fapc {
+namespace {
+
+// Worked out by hand from SMIL: an empty par (or an excl whose event picked no branch) lasts 0 s.
+// It used to make its sequence's length unknown, and the sequence then repeated itself until the
+// run limit ("story repeats to more than 2000000 runs").
+TEST(ScheduleEmptyGroups, AnEmptyParallelBesideATimedLeafLastsNothing) {
+  const auto s = schedule(group(Kind::sequence, {group(Kind::parallel, {}), leaf(0, 2)}));
+  ASSERT_TRUE(s.ok()) << s.error().message;
+  EXPECT_EQ(spans(*s), (std::vector<std::tuple<std::size_t, double, double>>{{0, 0, 2}}));
+  EXPECT_EQ(s->end, 2);
+  const auto excl = schedule(group(Kind::sequence, {leaf(0, 1), group(Kind::exclusive, {}), leaf(1, 1)}));
+  ASSERT_TRUE(excl.ok()) << excl.error().message;
+  EXPECT_EQ(spans(*excl), (std::vector<std::tuple<std::size_t, double, double>>{{0, 0, 1}, {1, 1, 2}}));
+}
+
+TEST(ScheduleEmptyGroups, AGroupThatDoesNotRepeatIsLaidOutOnceEvenWhenItsLengthIsOpen) {
+  // The parallel's length is known only once its open child is stretched to the 4 s sibling;
+  // the sequence around it (no repeat) must not be repeated.
+  const auto s = schedule(group(Kind::sequence, {group(Kind::parallel, {leaf(0, 4), leaf(1, {})})}));
+  ASSERT_TRUE(s.ok()) << s.error().message;
+  EXPECT_EQ(spans(*s), (std::vector<std::tuple<std::size_t, double, double>>{{0, 0, 4}, {1, 0, 4}}));
+}
+
+}  // namespace
+}  // namespace fapc
