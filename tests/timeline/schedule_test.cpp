@@ -190,3 +190,19 @@ TEST(ScheduleEmptyGroups, AGroupThatDoesNotRepeatIsLaidOutOnceEvenWhenItsLengthI
 
 }  // namespace
 }  // namespace fapc
+
+namespace fapc {
+namespace {
+
+// Mimic `left=1e300`: 1e300 + 3 == 1e300, so the run began and ended at once and the action
+// vanished from the output without a word.
+TEST(ScheduleHostileTimes, AnActionEndingBeyondTheLatestTimeIsAnErrorAtTheAction) {
+  const auto s = schedule(group(Kind::sequence, {leaf(0, 3, 1e300)}));
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.error().where.line, 1);
+  EXPECT_EQ(s.error().message, "the action ends at 1e+300 s, after the latest time fapc schedules (2e+09 s)");
+  EXPECT_TRUE(schedule(group(Kind::sequence, {leaf(0, 3, 1e6)})).ok());
+}
+
+}  // namespace
+}  // namespace fapc

@@ -71,7 +71,7 @@ class Evaluator {
         slots = std::max(slots, std::ceil(static_cast<double>(v->animation.size()) * fps / v->animation.fps));
     if (slots <= static_cast<double>(max_frames_)) return std::nullopt;
     char what[96];
-    std::snprintf(what, sizeof what, "this operator makes %.0f frames at %d fps", slots, fps);
+    std::snprintf(what, sizeof what, "this operator makes %.15g frames at %d fps", slots, fps);
     return frames_limit(offset, what);
   }
   Diagnostic frames_limit(std::size_t offset, const std::string& what) const {
@@ -230,7 +230,7 @@ class Evaluator {
                              std::round(*seconds * term->value.animation.fps);
         if (slots > static_cast<double>(max_frames_)) {
           char what[96];
-          std::snprintf(what, sizeof what, "the delayed animation spans %.0f frames at %d fps", slots,
+          std::snprintf(what, sizeof what, "the delayed animation spans %.15g frames at %d fps", slots,
                         term->value.animation.fps);
           return frames_limit(at, what);
         }

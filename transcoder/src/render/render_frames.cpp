@@ -140,7 +140,7 @@ Result<Rendered> render_frames(const Timeline& timeline, const RenderOptions& op
   if (const double frames = std::ceil(timeline.end() * options.fps);
       !(frames <= static_cast<double>(options.max_frames))) {
     char text[96];
-    std::snprintf(text, sizeof text, "the animation lasts %g s, %.0f frames at %d fps", timeline.end(), frames,
+    std::snprintf(text, sizeof text, "the animation lasts %g s, %.15g frames at %d fps", timeline.end(), frames,
                   options.fps);
     Limits limits;
     limits.max_frames = options.max_frames;

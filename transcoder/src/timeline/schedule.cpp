@@ -14,6 +14,8 @@ namespace {
 
 using Kind = ScheduleNode::Kind;
 constexpr double kForever = std::numeric_limits<double>::infinity();
+// 63 years: beyond what --max-frames allows at any frame rate (2^30 frames at 1 fps is 34 years).
+constexpr double kLatestTime = 2e9;
 
 std::string seconds(double t) {
   std::ostringstream out;
@@ -49,6 +51,13 @@ class Scheduler {
       }
       if (start < 0) {
         fail(node, "the action starts before time 0 (at " + seconds(start) + ")");
+        return start;
+      }
+      // Far out, a double cannot tell a run's end from its begin (1e300 + 3 == 1e300) and the run
+      // would vanish without a word; no renderable animation gets near (docs/security.md).
+      if (start + *active > kLatestTime) {
+        fail(node, "the action ends at " + seconds(start + *active) + ", after the latest time fapc schedules (" +
+                       seconds(kLatestTime) + ")");
         return start;
       }
       const double simple = node.timing.duration.value_or(*active);
