@@ -62,8 +62,11 @@ int write_with(const OutputFormat& writer, const Loaded& loaded, const std::stri
                const ConvertOptions& options) {
   auto bytes = writer.write(loaded, output, options);
   if (!bytes) {
-    report(bytes.error());
-    return bytes.error().message.rfind("verification", 0) == 0 ? kExitVerifyFailed : kExitBadInput;
+    // A writer's error is about what it was given: it names the input when the writer did not.
+    Diagnostic error = bytes.error();
+    if (error.where.file.empty()) error.where.file = loaded.named(output);
+    report(error);
+    return error.message.rfind("verification", 0) == 0 ? kExitVerifyFailed : kExitBadInput;
   }
   if (output == "-") {
     std::cout << *bytes << std::flush;
