@@ -64,3 +64,20 @@ TEST(AlgebraLimits, AnOperandThatCannotBeReadIsReportedWhereTheExpressionNamesIt
 
 }  // namespace
 }  // namespace fapc::algebra
+
+namespace fapc::algebra {
+namespace {
+
+// 1e300 * X + 1e300 * X: both halves saturate at 2^31 - 1 and their int32 sum overflowed
+// (undefined behaviour, caught by UBSan); the sum saturates too.
+TEST(AlgebraLimits, SaturatedHalvesOfASumDoNotOverflow) {
+  FacialState big;
+  big.at(3) = 1000;
+  big.at(4) = -1000;
+  const FacialState s = sum(amplify(big, 1e300), amplify(big, 1e300), 0.5);
+  EXPECT_EQ(s.at(3), 2147483647);
+  EXPECT_EQ(s.at(4), -2147483647 - 1);
+}
+
+}  // namespace
+}  // namespace fapc::algebra
