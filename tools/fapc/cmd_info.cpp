@@ -87,7 +87,7 @@ void print_text(const nlohmann::ordered_json& info) {
 
 int run_info(const std::vector<std::string>& argv) {
   Args args(argv, kLimitValued, {"json"});
-  const ConvertOptions options = convert_options(args);
+  const ConvertOptions parsed = convert_options(args);
   if (!args.ok()) return usage_error("info", args.error());
   if (args.positionals().size() != 1) return usage_error("info", "expected one FILE");
   const std::string& path = args.positionals().front();
@@ -96,6 +96,8 @@ int run_info(const std::vector<std::string>& argv) {
     report(make_error(Location{path, 0, 0, -1}, "unknown input kind"));
     return kExitBadInput;
   }
+  const ReadingInput reading(path, parsed);  // for its includes, as load_input would
+  const ConvertOptions& options = reading.options();
   auto loaded = format->load(path, options);
   if (!loaded) {
     report(loaded.error());

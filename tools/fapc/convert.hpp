@@ -12,7 +12,8 @@ namespace fapc::cli {
 // Option names shared by compile and batch.
 inline const std::set<std::string> kConvertValued = {"fps", "profile", "event", "quant",
                                                       "intra-period", "ranges", "masks", "from", "to",
-                                                      "duration", "speech-rate", "max-frames", "max-runs",
+                                                      "duration", "speech-rate", "fap-flavour",
+                                                      "allow-include", "max-frames", "max-runs",
                                                       "max-decompressed-bytes", "max-expansion"};
 // The resource limits (docs/security.md), taken by every command that reads inputs.
 inline const std::set<std::string> kLimitValued = {"max-frames", "max-runs", "max-decompressed-bytes",

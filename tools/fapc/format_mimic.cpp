@@ -16,6 +16,7 @@ Result<Loaded> load_mimic(const std::string& path, const ConvertOptions& options
   MimicOptions mimic;
   mimic.profile = &*profile;
   mimic.max_runs = options.limits.max_runs;
+  mimic.includes = options.includes;
   Result<MimicProgram> program = compile_mimic(*source, path, mimic);
   if (!program) return program.error();
   return loaded_from_timeline(std::move(program->timeline), path, *profile, options,

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "fapc/codec/nesting_limit.hpp"
+
 namespace fapc::algebra {
 namespace {
 
@@ -58,6 +60,14 @@ class Evaluator {
   const OperandLoader& load_;
   std::int64_t max_frames_;
   std::size_t at_ = 0;
+  // Parentheses and amplifiers ("2 * 2 * x") recurse; deeper than kMaxNestingDepth is refused
+  // before the stack can run out.
+  int depth_ = 0;
+
+  Diagnostic too_deep(std::size_t offset) const {
+    return nesting_too_deep(Location::text("<expression>", 1, static_cast<int>(offset) + 1),
+                            "parentheses and amplifiers", std::string(text_));
+  }
 
   // Before an operator brings `operands` to one frame grid: the slots that grid will have (the
   // highest frame rate, the longest animation), against max_frames.
@@ -180,7 +190,10 @@ class Evaluator {
       Result<double> w = number();
       if (!w) return w.error();
       if (!accept("*")) return error(at_, "expected '*' after the amplifier " + format(*w));
+      if (depth_ >= kMaxNestingDepth) return too_deep(at_);
+      ++depth_;
       Result<Term> operand = product();
+      --depth_;
       if (!operand) return operand.error();
       if (auto bad = overlap_only(*operand); bad) return *bad;
       amplify_in_place(operand->value, *w);
@@ -245,7 +258,10 @@ class Evaluator {
     skip_blanks();
     const std::size_t start = at_;
     if (accept("(")) {
+      if (depth_ >= kMaxNestingDepth) return too_deep(start);
+      ++depth_;
       Result<Term> inner = overlap();
+      --depth_;
       if (!inner) return inner.error();
       if (!accept(")")) return error(at_, "expected ')'");
       inner->column = static_cast<int>(start) + 1;

@@ -11,7 +11,10 @@
 namespace fapc {
 
 // The file's bytes; a gzip stream (by its magic bytes) is inflated transparently, within the
-// limits' decompressed bytes and expansion factor.
+// limits' decompressed bytes and expansion factor. Every reader and every include opens files
+// through here. Errors (ErrorKind::io, for the whole file): "is a directory", "not a regular file
+// (a FIFO)" and the like, checked before reading so that a FIFO never blocks; "cannot open file:
+// Permission denied" and other errors of the system; limit_exceeded for a gzip bomb.
 Result<std::string> read_file_bytes(const std::string& path, const Limits& limits = {});
 
 bool is_gzip(std::string_view bytes);

@@ -9,6 +9,7 @@
 
 #include "fapc/codec/limits.hpp"
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/codec/include_policy.hpp"
 #include "fapc/transcoder/profile.hpp"
 #include "fapc/transcoder/timeline.hpp"
 
@@ -20,6 +21,8 @@ struct MimicOptions {
   // pass their own.
   std::function<Result<std::string>(const std::string& path)> read_file;
   std::int64_t max_runs = Limits{}.max_runs;  // scheduled runs after repeats (--max-runs)
+  // Which files a defxpr may name (docs/security.md); by default the program's own folder tree.
+  IncludePolicy includes;
 };
 
 struct MimicProgram {
