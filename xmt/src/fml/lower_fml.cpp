@@ -93,15 +93,8 @@ Timeline lower_fml(const FmlTree& tree, const Schedule& schedule) {
     }
   }
   timeline.explicit_end = schedule.end;
-  // The element that ends last is where a too-long story is reported (the story when a group
-  // outlasts every leaf).
-  timeline.end_source = tree.root.source;
-  double last_end = -1;
-  for (const Occurrence& run : schedule.occurrences)
-    if (run.end >= last_end) {
-      last_end = run.end;
-      if (run.end >= schedule.end) timeline.end_source = tree.leaves[run.leaf_id].where;
-    }
+  timeline.end_source =
+      end_source(schedule, tree.root.source, [&](std::size_t leaf) { return tree.leaves[leaf].where; });
   return timeline;
 }
 

@@ -86,15 +86,8 @@ Timeline lower_to_timeline(const XmtoTree& tree, const Schedule& schedule) {
   Timeline timeline;
   for (TaggedClip& tagged : clips) timeline.clips.push_back(std::move(tagged.clip));
   timeline.explicit_end = schedule.end;
-  // The element that ends last is where a too-long document is reported (the body when a group
-  // outlasts every leaf).
-  timeline.end_source = tree.root.source;
-  double last_end = -1;
-  for (const Occurrence& run : schedule.occurrences)
-    if (run.end >= last_end) {
-      last_end = run.end;
-      if (run.end >= schedule.end) timeline.end_source = tree.leaves[run.leaf_id].where;
-    }
+  timeline.end_source =
+      end_source(schedule, tree.root.source, [&](std::size_t leaf) { return tree.leaves[leaf].where; });
   return timeline;
 }
 

@@ -73,6 +73,21 @@ struct Schedule {
   double end = 0;                       // the root's active end
 };
 
+// Where a schedule ends, for errors about the animation's length (Timeline::end_source): the
+// source of the run that ends last when it ends with the schedule, else `root` (a group that
+// outlasts every leaf). `leaf_source(leaf_id)` gives a leaf's source.
+template <class LeafSource>
+Location end_source(const Schedule& schedule, const Location& root, LeafSource leaf_source) {
+  Location where = root;
+  double last_end = -1;
+  for (const Occurrence& run : schedule.occurrences)
+    if (run.end >= last_end) {
+      last_end = run.end;
+      if (run.end >= schedule.end) where = leaf_source(run.leaf_id);
+    }
+  return where;
+}
+
 // Errors (with the node's source position): a start before 0, align_right outside a parallel, a
 // leaf or repeat with no duration and no parent end, more than max_runs runs.
 Result<Schedule> schedule(const ScheduleNode& root, const ScheduleOptions& options = {});
