@@ -40,7 +40,7 @@ bool is_mask_shaped(const Line& line) {
 
 constexpr long long kMaxFrameNumber = 1'000'000'000'000'000;
 
-// Field ranges of FAP 1 and FAP 2 (docs/fba-bitstream.md section 4), in file order.
+// Field ranges of FAP 1 and FAP 2 (docs/fap-table.md section 4), in file order.
 constexpr int kVisemeMax[kVisemeFieldCount] = {14, 14, 63, 1};
 constexpr const char* kVisemeField[kVisemeFieldCount] = {"viseme_select1", "viseme_select2",
                                                          "viseme_blend", "viseme_def"};
@@ -277,7 +277,7 @@ std::optional<Diagnostic> Reader::read_values(const Line& line,
   return std::nullopt;
 }
 
-// docs/fap-files.md section 6, step 5: what the frame numbers mean.
+// docs/fap-files.md section 6: what the frame numbers mean.
 std::optional<Diagnostic> Reader::place_frames_in_time() {
   auto& frames = out_.sequence.frames;
   FapFileFacts& facts = out_.facts;

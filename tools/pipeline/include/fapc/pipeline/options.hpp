@@ -1,0 +1,35 @@
+// The options every conversion takes: what the command line's --fps, --profile, --quant... set.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+
+#include "fapc/codec/fap_file.hpp"
+#include "fapc/codec/include_policy.hpp"
+#include "fapc/codec/limits.hpp"
+
+namespace fapc::pipeline {
+
+struct ConvertOptions {
+  int fps = 25;
+  std::optional<std::string> profile;         // a profile file; empty: the default profile
+  std::optional<double> duration;             // the end of timelines that give none
+  std::map<std::string, std::string> events;  // FML events, NAME -> VALUE
+  double visemes_per_second = 12;             // FML talk text
+  int quant = 1;                              // fap_quant for .fba/.mp4 outputs
+  int intra_period = 0;                       // 0: the encoder decides
+  std::string ranges = "fit";                 // fit | max
+  std::string masks = "fit";                  // fit | keep
+  FapFlavour fap_flavour = FapFlavour::safe;  // the .fap layout of a player family
+  bool strict = false;                        // warnings are errors; nothing is written
+  bool verify = false;                        // encoded streams are decoded and checked
+  Limits limits;  // --max-frames, --max-runs, --max-decompressed-bytes, --max-expansion
+  // Which files includes may read (docs/security.md): load() adds the top input's folder.
+  IncludePolicy includes;
+  // What a load does beyond the frames (see Loaded):
+  bool facts = false;   // fill Loaded::facts (what `fapc info` shows of the format)
+  bool render = true;   // false: timeline inputs stop at the timeline (no frames, no curves)
+};
+
+}  // namespace fapc::pipeline
