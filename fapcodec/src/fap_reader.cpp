@@ -38,6 +38,8 @@ bool is_mask_shaped(const Line& line) {
   return true;
 }
 
+constexpr long long kMaxFrameNumber = 1'000'000'000'000'000;
+
 // Field ranges of FAP 1 and FAP 2 (docs/fap-table.md section 4), in file order.
 constexpr int kVisemeMax[kVisemeFieldCount] = {14, 14, 63, 1};
 constexpr const char* kVisemeField[kVisemeFieldCount] = {"viseme_select1", "viseme_select2",
@@ -206,6 +208,12 @@ std::optional<Diagnostic> Reader::read_values(const Line& line,
     return error_at(line, tokens.front().column,
                     "a value line must start with an integer frame number, found '" +
                         std::string(tokens.front().text) + "'");
+  // Bounded before any arithmetic on it (gaps, millisecond grids, renumbering): 10^15 is 31,000
+  // years of millisecond stamps, and differences of such numbers cannot overflow.
+  if (*number > kMaxFrameNumber || *number < -kMaxFrameNumber)
+    return error_at(line, tokens.front().column,
+                    "frame number " + std::string(tokens.front().text) + " is outside -" +
+                        std::to_string(kMaxFrameNumber) + ".." + std::to_string(kMaxFrameNumber));
   frame.number = *number;
   frame.mask = mask;
   const bool fap1 = mask.test(0), fap2 = mask.test(1);
@@ -312,6 +320,18 @@ std::optional<Diagnostic> Reader::place_frames_in_time() {
     out_.sequence.fps = options_.headerless_fps;
     warn_file("no header; assuming " + std::to_string(options_.headerless_fps) + " fps");
   }
+  // Writers fill gaps and the Algebra allocates a slot per frame: the span is what costs.
+  for (std::size_t i = 1; i < frames.size(); ++i)
+    if (frames[i].number - frames.front().number >= options_.max_frames) {
+      const FrameLine& line = value_lines_[i];
+      Limits limits;
+      limits.max_frames = options_.max_frames;
+      return limit_error(Location::text(file_, line.number, line.first_column),
+                         "frames " + std::to_string(frames.front().number) + " to " +
+                             std::to_string(frames[i].number) + " span " +
+                             std::to_string(frames[i].number - frames.front().number + 1) + " frames",
+                         Limit::frames, limits);
+    }
   if (facts.has_header && frames.front().number == 1 &&
       frames.back().number == static_cast<long long>(frames.size())) {
     facts.frames_from_one = true;

@@ -5,6 +5,7 @@
 #include <unistd.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -54,7 +55,12 @@ bool is_gzip(std::string_view bytes) {
          static_cast<unsigned char>(bytes[1]) == 0x8b;
 }
 
-Result<std::string> gunzip(std::string_view bytes, const std::string& file) {
+Result<std::string> gunzip(std::string_view bytes, const std::string& file, const Limits& limits) {
+  // The most bytes this input may inflate to; checked before each chunk is appended.
+  const double by_ratio = std::max(static_cast<double>(kExpansionFloor),
+                                   limits.max_expansion * static_cast<double>(bytes.size()));
+  const bool ratio_binds = by_ratio < static_cast<double>(limits.max_decompressed_bytes);
+  const auto allowed = static_cast<std::size_t>(ratio_binds ? by_ratio : static_cast<double>(limits.max_decompressed_bytes));
   z_stream z{};
   if (inflateInit2(&z, 15 + 32) != Z_OK)  // +32: accept gzip and zlib headers
     return make_error(Location::binary(file, 0), "cannot start the gzip decoder");
@@ -73,7 +79,15 @@ Result<std::string> gunzip(std::string_view bytes, const std::string& file) {
       inflateEnd(&z);
       return make_error(Location::binary(file, offset), "gzip: " + why);
     }
-    out.append(buffer, sizeof buffer - z.avail_out);
+    const std::size_t produced = sizeof buffer - z.avail_out;
+    if (out.size() + produced > allowed) {
+      const auto offset = static_cast<std::int64_t>(z.total_in);
+      inflateEnd(&z);
+      return limit_error(Location::binary(file, offset),
+                         "gzip data inflates to more than " + std::to_string(allowed) + " bytes",
+                         ratio_binds ? Limit::expansion : Limit::decompressed_bytes, limits);
+    }
+    out.append(buffer, produced);
   }
   inflateEnd(&z);
   return out;
@@ -93,7 +107,7 @@ std::string gzip(std::string_view bytes) {
   return out;
 }
 
-Result<std::string> read_file_bytes(const std::string& path) {
+Result<std::string> read_file_bytes(const std::string& path, const Limits& limits) {
   const Location whole_file{path, 0, 0, -1};
   // The type is checked before opening (opening a device can have effects of its own) and again
   // on the open descriptor, in case the name changed in between. O_NONBLOCK: opening a FIFO
@@ -117,7 +131,7 @@ Result<std::string> read_file_bytes(const std::string& path) {
     }
     bytes.append(buffer, static_cast<std::size_t>(got));
   }
-  if (is_gzip(bytes)) return gunzip(bytes, path);
+  if (is_gzip(bytes)) return gunzip(bytes, path, limits);
   return bytes;
 }
 

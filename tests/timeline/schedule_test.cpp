@@ -136,7 +136,7 @@ TEST(Schedule, MoreRunsThanTheLimitIsAnErrorAtTheRepeatingNode) {
   const auto s = schedule(group(Kind::parallel, {leaf(0, 100), group(Kind::sequence, {leaf(1, 1)}, forever)}), options);
   ASSERT_FALSE(s.ok());
   EXPECT_EQ(s.error().where.line, 100);
-  EXPECT_EQ(s.error().message, "repeats to more than 10 runs: fapc refuses to schedule so many");
+  EXPECT_EQ(s.error().message, "repeats to too many runs: more than the limit of 10 runs (--max-runs N raises it)");
 }
 
 TEST(Schedule, GroupDurationCutsItsChildren) {
@@ -159,6 +159,49 @@ TEST(Schedule, ExclusiveChildCutsTheOnePlaying) {
   const auto s = schedule(group(Kind::exclusive, {leaf(0, 5), leaf(1, 5, 2), leaf(2, 1, 9)}));
   ASSERT_TRUE(s.ok());
   EXPECT_EQ(spans(*s), (Spans{{0, 0, 2}, {1, 2, 7}, {2, 9, 10}}));
+}
+
+}  // namespace
+}  // namespace fapc
+
+namespace fapc {
+namespace {
+
+// Worked out by hand from SMIL: an empty par (or an excl whose event picked no branch) lasts 0 s.
+// It used to make its sequence's length unknown, and the sequence then repeated itself until the
+// run limit ("story repeats to more than 1000000 runs").
+TEST(ScheduleEmptyGroups, AnEmptyParallelBesideATimedLeafLastsNothing) {
+  const auto s = schedule(group(Kind::sequence, {group(Kind::parallel, {}), leaf(0, 2)}));
+  ASSERT_TRUE(s.ok()) << s.error().message;
+  EXPECT_EQ(spans(*s), (std::vector<std::tuple<std::size_t, double, double>>{{0, 0, 2}}));
+  EXPECT_EQ(s->end, 2);
+  const auto excl = schedule(group(Kind::sequence, {leaf(0, 1), group(Kind::exclusive, {}), leaf(1, 1)}));
+  ASSERT_TRUE(excl.ok()) << excl.error().message;
+  EXPECT_EQ(spans(*excl), (std::vector<std::tuple<std::size_t, double, double>>{{0, 0, 1}, {1, 1, 2}}));
+}
+
+TEST(ScheduleEmptyGroups, AGroupThatDoesNotRepeatIsLaidOutOnceEvenWhenItsLengthIsOpen) {
+  // The parallel's length is known only once its open child is stretched to the 4 s sibling;
+  // the sequence around it (no repeat) must not be repeated.
+  const auto s = schedule(group(Kind::sequence, {group(Kind::parallel, {leaf(0, 4), leaf(1, {})})}));
+  ASSERT_TRUE(s.ok()) << s.error().message;
+  EXPECT_EQ(spans(*s), (std::vector<std::tuple<std::size_t, double, double>>{{0, 0, 4}, {1, 0, 4}}));
+}
+
+}  // namespace
+}  // namespace fapc
+
+namespace fapc {
+namespace {
+
+// Mimic `left=1e300`: 1e300 + 3 == 1e300, so the run began and ended at once and the action
+// vanished from the output without a word.
+TEST(ScheduleHostileTimes, AnActionEndingBeyondTheLatestTimeIsAnErrorAtTheAction) {
+  const auto s = schedule(group(Kind::sequence, {leaf(0, 3, 1e300)}));
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.error().where.line, 1);
+  EXPECT_EQ(s.error().message, "the action ends at 1e+300 s, after the latest time fapc schedules (2e+09 s)");
+  EXPECT_TRUE(schedule(group(Kind::sequence, {leaf(0, 3, 1e6)})).ok());
 }
 
 }  // namespace

@@ -84,8 +84,8 @@ const std::map<std::string, std::string>& expected_errors() {
        "    <template name=\"b\"><behavior name=\"a\"/></template>\n"
        "                       ^"},
       {"repeats-beside-a-long-sibling.fml",
-       "repeats-beside-a-long-sibling.fml:5:7: error: seq repeats to more than 2000000 runs: fapc refuses to "
-       "schedule so many\n"
+       "repeats-beside-a-long-sibling.fml:5:7: error: seq repeats to too many runs: more than the limit of "
+       "1000000 runs (--max-runs N raises it)\n"
        "      <seq repeat=\"indefinite\"><wait dur=\"100\"/></seq>\n"
        "      ^"},
       {"talk-empty.fml",
@@ -113,7 +113,7 @@ const std::map<std::string, std::string>& expected_errors() {
        "<animation>\n"
        "^"},
       {"zero-repeat.fml",
-       "zero-repeat.fml:2:18: error: repeat must be a count above 0 (at most 1000000)\n"
+       "zero-repeat.fml:2:18: error: repeat must be a count above 0\n"
        "  <story><action repeat=\"0\"><expr type=\"smile\" val=\"50\"/></action></story>\n"
        "                 ^"},
   };

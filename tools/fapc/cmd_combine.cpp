@@ -53,6 +53,7 @@ int run_combine(const std::vector<std::string>& argv) {
   report_all(warnings);
   if (states) return print_state(*value, args);
   pipeline::Loaded loaded;
+  loaded.origin = "<expression>";  // what errors about the frames name, as expression errors do
   loaded.frames = pipeline::frames_of(*value, options.fps, std::filesystem::path(*output).stem().string());
   const pipeline::ConvertResult result =
       pipeline::write_outputs(std::move(loaded), {{*output, args.value("to").value_or("")}}, options);

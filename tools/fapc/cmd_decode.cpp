@@ -12,7 +12,7 @@ namespace fapc::cli {
 namespace {
 
 int run_decode(const std::vector<std::string>& argv) {
-  Args args(argv, {"output", "to", "fap-flavour"}, {"strict"});
+  Args args(argv, with_limits({"output", "to", "fap-flavour"}), {"strict"});
   ConvertOptions options = convert_options(args);
   if (!args.ok()) return usage_error("decode", args.error());
   if (args.positionals().size() != 1) return usage_error("decode", "expected one input stream");

@@ -14,7 +14,7 @@ namespace fapc::cli {
 namespace {
 
 int run_encode(const std::vector<std::string>& argv) {
-  Args args(argv, {"output", "quant", "intra-period", "ranges", "masks"}, {"verify", "align-planes"});
+  Args args(argv, with_limits({"output", "quant", "intra-period", "ranges", "masks"}), {"verify", "align-planes"});
   const ConvertOptions options = convert_options(args);
   if (!args.ok()) return usage_error("encode", args.error());
   if (args.positionals().size() != 1) return usage_error("encode", "expected one input file");

@@ -6,6 +6,7 @@
 
 #include "fapc/args.hpp"
 #include "fapc/commands.hpp"
+#include "fapc/options.hpp"
 #include "fapc/pipeline/info.hpp"
 #include "fapc/report.hpp"
 
@@ -49,10 +50,11 @@ void print_text(const nlohmann::ordered_json& info) {
 }
 
 int run_info(const std::vector<std::string>& argv) {
-  Args args(argv, {}, {"json"});
+  Args args(argv, kLimitValued, {"json"});
+  const ConvertOptions parsed = convert_options(args);
   if (!args.ok()) return usage_error("info", args.error());
   if (args.positionals().size() != 1) return usage_error("info", "expected one FILE");
-  auto info = pipeline::describe(args.positionals().front());
+  auto info = pipeline::describe(args.positionals().front(), parsed.limits);
   if (!info) return report_outcome({}, info.error());
   if (args.flag("json")) {
     std::cout << info->dump(2) << '\n';

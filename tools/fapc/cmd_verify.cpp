@@ -15,7 +15,7 @@ namespace fapc::cli {
 namespace {
 
 int run_verify(const std::vector<std::string>& argv) {
-  Args args(argv, {"quant", "intra-period", "ranges", "masks"}, {"json"});
+  Args args(argv, with_limits({"quant", "intra-period", "ranges", "masks"}), {"json"});
   const ConvertOptions options = convert_options(args);
   if (!args.ok()) return usage_error("verify", args.error());
   if (args.positionals().empty()) return usage_error("verify", "expected at least one FILE");

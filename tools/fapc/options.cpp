@@ -10,6 +10,12 @@ ConvertOptions convert_options(Args& args) {
   options.profile = args.value("profile");
   options.duration = args.decimal("duration", 0, 1e7);
   if (const auto rate = args.decimal("speech-rate", 0.1, 100)) options.visemes_per_second = *rate;
+  // The resource limits (docs/security.md): only ever raised or lowered on purpose.
+  options.limits.max_frames = args.integer("max-frames", static_cast<int>(options.limits.max_frames), 1, 1 << 30);
+  options.limits.max_runs = args.integer("max-runs", static_cast<int>(options.limits.max_runs), 1, 1 << 30);
+  if (const auto bytes = args.decimal("max-decompressed-bytes", 1, 1e15))
+    options.limits.max_decompressed_bytes = static_cast<std::int64_t>(*bytes);
+  if (const auto factor = args.decimal("max-expansion", 1, 1e9)) options.limits.max_expansion = *factor;
   options.strict = args.flag("strict");
   options.verify = args.flag("verify");
   // Two-way choices: the option's value must be one of the two words.

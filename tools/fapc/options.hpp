@@ -15,7 +15,16 @@ using pipeline::ConvertOptions;
 inline const std::set<std::string> kConvertValued = {"fps", "profile", "event", "quant",
                                                       "intra-period", "ranges", "masks", "from", "to",
                                                       "duration", "speech-rate", "fap-flavour",
-                                                      "allow-include"};
+                                                      "allow-include", "max-frames", "max-runs",
+                                                      "max-decompressed-bytes", "max-expansion"};
+// The resource limits (docs/security.md), taken by every command that reads inputs.
+inline const std::set<std::string> kLimitValued = {"max-frames", "max-runs", "max-decompressed-bytes",
+                                                    "max-expansion"};
+// `names` plus the limit options.
+inline std::set<std::string> with_limits(std::set<std::string> names) {
+  names.insert(kLimitValued.begin(), kLimitValued.end());
+  return names;
+}
 inline const std::set<std::string> kConvertFlags = {"strict", "verify"};
 
 // Reads the shared options; sets args' error on bad values.

@@ -11,7 +11,6 @@ namespace fapc {
 namespace {
 
 // Longer gaps would cost 4 bits per 15 frames for nothing; a gap this long is a broken input.
-constexpr std::int64_t kMaxSkip = 1'000'000;
 
 Diagnostic input_error(const FapFrame& frame, const std::string& message) {
   return make_error(Location{}, "frame " + std::to_string(frame.number) + ": " + message);
@@ -58,9 +57,15 @@ Status check_input(const FapSequence& sequence, const FbaEncodeOptions& options)
     if (k > 0) {
       const std::int64_t gap = frames[k].number - frames[k - 1].number - 1;
       if (gap < 0) return input_error(frames[k], "frame numbers must ascend");
-      if (gap > kMaxSkip)
-        return input_error(frames[k], "a gap of " + std::to_string(gap) + " frames is too long to code (at most " +
-                                          std::to_string(kMaxSkip) + ")");
+      // Gaps cost 4 bits per 15 skipped frames; the span bounds them all.
+      if (frames[k].number - frames.front().number >= options.max_frames) {
+        Limits limits;
+        limits.max_frames = options.max_frames;
+        return limit_error(Location{}, "frames " + std::to_string(frames.front().number) + " to " +
+                                           std::to_string(frames[k].number) + " span " +
+                                           std::to_string(frames[k].number - frames.front().number + 1) + " frames",
+                           Limit::frames, limits);
+      }
     }
     if (auto status = check_fields(frames[k]); !status) return status;
   }

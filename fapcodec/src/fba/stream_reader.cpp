@@ -191,9 +191,17 @@ Status StreamReader::read_plane() {
   frame.number = header.time_code ? std::llround(static_cast<double>(header.time_code_seconds) * rate) : next_number_;
   if (!out_.sequence.frames.empty() && frame.number <= out_.sequence.frames.back().number)
     return c_.error_at(start_byte, "the time code goes back to frame " + std::to_string(frame.number));
-  if (out_.sequence.frames.size() >= options_.max_frames)
-    return make_error(ErrorKind::limit_exceeded, Location::binary(c_.file, start_byte),
-                      "more than " + std::to_string(options_.max_frames) + " frames");
+  // The frames the planes span so far, this one's skips included: a decoded sequence is written
+  // gap-filled (.fap) and re-encoded, so skips count like frames (Limits::max_frames). Skips grow
+  // by at most 255 per byte and time codes stay below 2^27 frames: no overflow here.
+  const std::int64_t first = out_.sequence.frames.empty() ? frame.number : out_.sequence.frames.front().number;
+  if (const std::int64_t span = frame.number + header.skip + 1 - first; span > options_.max_frames) {
+    Limits limits;
+    limits.max_frames = options_.max_frames;
+    return limit_error(Location::binary(c_.file, start_byte),
+                       "the face planes span " + std::to_string(span) + " frames (skipped frames included)",
+                       Limit::frames, limits);
+  }
   if (intra) note_ranges(frame.number, start_byte, c_.in.position() - start);
   next_number_ = frame.number + header.skip + 1;
   ++info.face_planes;

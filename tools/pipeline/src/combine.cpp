@@ -18,7 +18,7 @@ Result<algebra::Value> load_operand(const std::string& path, const Location& whe
                                     Diagnostics& warnings) {
   algebra::Value value;
   if (path.ends_with(".xpr")) {
-    Result<std::string> text = read_file_bytes(path);
+    Result<std::string> text = read_file_bytes(path, options.limits);
     if (!text) return text.error();
     Result<std::vector<ExpressionEntry>> entries = parse_expression_file(*text, path);
     if (!entries) return entries.error();
@@ -30,6 +30,18 @@ Result<algebra::Value> load_operand(const std::string& path, const Location& whe
   Result<Loaded> loaded = included ? load_included_input(path, where, options) : load(path, options);
   if (!loaded) return loaded.error();
   warnings.insert(warnings.end(), loaded->warnings.begin(), loaded->warnings.end());
+  // The Algebra's grid has a slot for every frame from 0 to the last: frames before 0 have no
+  // slot, and a late last frame costs as much as a long animation.
+  if (const auto& frames = loaded->frames.frames; !frames.empty()) {
+    if (frames.front().number < 0)
+      return make_error(Location{path, 0, 0, -1}, "frame " + std::to_string(frames.front().number) +
+                                                      " is before time 0: an operand's frames start at 0 or later");
+    if (frames.back().number >= options.limits.max_frames)
+      return limit_error(Location{path, 0, 0, -1},
+                         "its frames run to number " + std::to_string(frames.back().number) +
+                             ", a grid of " + std::to_string(frames.back().number + 1) + " frames",
+                         Limit::frames, options.limits);
+  }
   value.animation = algebra::animation_from(loaded->frames);
   return value;
 }
@@ -51,7 +63,7 @@ Result<algebra::Value> evaluate_combination(const std::string& expression,
     if (!path) return path.error();
     return load_operand(*path, where, true, operands, *profile, warnings);
   };
-  return algebra::evaluate(expression, load_file);
+  return algebra::evaluate(expression, load_file, options.limits.max_frames);
 }
 
 FapSequence frames_of(const algebra::Value& value, int fps, const std::string& name) {

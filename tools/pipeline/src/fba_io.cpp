@@ -41,14 +41,16 @@ FbaEncodeOptions fba_encode_options(const ConvertOptions& options) {
   fba.intra_period = options.intra_period;
   fba.ranges = options.ranges == "max" ? FbaRangeMode::max : FbaRangeMode::fit;
   fba.masks = options.masks == "keep" ? FbaMaskMode::keep : FbaMaskMode::fit;
+  fba.max_frames = options.limits.max_frames;
   return fba;
 }
 
-Result<DecodedFba> read_fba_file(const std::string& path) {
-  auto bytes = read_file_bytes(path);
+Result<DecodedFba> read_fba_file(const std::string& path, const Limits& limits) {
+  auto bytes = read_file_bytes(path, limits);
   if (!bytes) return bytes.error();
   FbaDecodeOptions options;
   options.file = path;
+  options.max_frames = limits.max_frames;
   const auto* data = reinterpret_cast<const std::uint8_t*>(bytes->data());
   return decode_fba(std::span<const std::uint8_t>(data, bytes->size()), options);
 }
@@ -81,23 +83,24 @@ xmt::FbaTrackInput pack_fba_track(const EncodedFba& encoded, int fps) {
   return track;
 }
 
-Result<Mp4Fba> decode_mp4_fba(const xmt::Mp4File& mp4, const std::string& path) {
+Result<Mp4Fba> decode_mp4_fba(const xmt::Mp4File& mp4, const std::string& path, const Limits& limits) {
   auto track = xmt::read_fba_track(mp4);
   if (!track) return track.error();
   FbaDecodeOptions options;
   options.file = path;
+  options.max_frames = limits.max_frames;
   auto decoded = decode_fba(xmt::fba_stream_from_track(*track), options);
   if (!decoded) return in_file(decoded.error(), *xmt::find_fba_track(mp4), *track);
   decoded->warnings.insert(decoded->warnings.begin(), mp4.warnings.begin(), mp4.warnings.end());
   return Mp4Fba{std::move(*track), std::move(*decoded)};
 }
 
-Result<Mp4Fba> read_mp4_fba(const std::string& path) {
-  auto bytes = read_file_bytes(path);
+Result<Mp4Fba> read_mp4_fba(const std::string& path, const Limits& limits) {
+  auto bytes = read_file_bytes(path, limits);
   if (!bytes) return bytes.error();
   auto mp4 = xmt::read_mp4(xmt::Bytes(bytes->begin(), bytes->end()), path);
   if (!mp4) return mp4.error();
-  return decode_mp4_fba(*mp4, path);
+  return decode_mp4_fba(*mp4, path, limits);
 }
 
 }  // namespace fapc::pipeline

@@ -67,7 +67,9 @@ Result<Loaded> load(const std::string& path, const ConvertOptions& options) {
     return make_error(ErrorKind::unsupported, Location{path, 0, 0, -1},
                       "unknown input kind (expected .fap, .fap.gz, .fba, .mp4, .mimic, .fml or .xmt)");
   const ReadingInput reading(path, options);
-  return format->load(path, reading.options());
+  Result<Loaded> loaded = format->load(path, reading.options());
+  if (loaded) loaded->origin = path;
+  return loaded;
 }
 
 }  // namespace fapc::pipeline

@@ -14,7 +14,10 @@ Result<Profile> profile_for(const ConvertOptions& options) {
 Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
                                     const Profile& profile, const ConvertOptions& options,
                                     Diagnostics warnings, nlohmann::ordered_json facts) {
-  if (options.duration) timeline.explicit_end = *options.duration;
+  if (options.duration) {
+    timeline.explicit_end = *options.duration;
+    timeline.end_source = Location{name, 0, 0, -1};  // the whole input, ended by --duration
+  }
   if (!options.render) {  // an XMT-Omega include: its clips are placed, its frames never used
     Loaded loaded;
     loaded.timeline = std::move(timeline);
@@ -24,6 +27,7 @@ Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
   }
   RenderOptions render;
   render.fps = options.fps;
+  render.max_frames = options.limits.max_frames;
   render.profile = &profile;
   render.name = std::filesystem::path(name).stem().string();
   Result<Rendered> rendered = render_frames(timeline, render);

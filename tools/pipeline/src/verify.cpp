@@ -88,12 +88,13 @@ VerifyResult reencode_matches(const std::string& path, const DecodedFba& decoded
   return failure("re-encoding the decoded frames does not give the same bytes (a stream fapc did not write?)");
 }
 
-VerifyResult verify_stream(const std::string& path) {
-  auto raw = read_file_bytes(path);
+VerifyResult verify_stream(const std::string& path, const Limits& limits) {
+  auto raw = read_file_bytes(path, limits);
   if (!raw) return failed(raw.error());
   const std::vector<std::uint8_t> bytes(raw->begin(), raw->end());
   FbaDecodeOptions decode_options;
   decode_options.file = path;
+  decode_options.max_frames = limits.max_frames;
   auto decoded = decode_fba(bytes, decode_options);
   if (!decoded) return failed(decoded.error());
   const FbaStreamInfo& info = decoded->info;
@@ -104,8 +105,8 @@ VerifyResult verify_stream(const std::string& path) {
 
 // An MP4's FBA track: each sample must be the plane fapc writes for its frame, with its duration
 // and sync flag.
-VerifyResult verify_mp4(const std::string& path) {
-  auto fba = read_mp4_fba(path);
+VerifyResult verify_mp4(const std::string& path, const Limits& limits) {
+  auto fba = read_mp4_fba(path, limits);
   if (!fba) return failed(fba.error());
   const std::vector<xmt::FbaSample>& samples = fba->track.samples;
   std::size_t bytes = 0;
@@ -144,8 +145,8 @@ VerifyResult verify_input(const std::string& path, const ConvertOptions& options
 VerifyResult verify(const std::string& path, const ConvertOptions& options) {
   const InputFormat* format = formats().input_for(path);
   const std::string kind = format ? format->kind : "";
-  if (kind == "fba") return verify_stream(path);
-  if (kind == "mp4") return verify_mp4(path);
+  if (kind == "fba") return verify_stream(path, options.limits);
+  if (kind == "mp4") return verify_mp4(path, options.limits);
   return verify_input(path, options);
 }
 

@@ -42,7 +42,8 @@ Animation broadcast(const FacialState& state, const Animation& like) {
 
 class Evaluator {
  public:
-  Evaluator(std::string_view text, const OperandLoader& load) : text_(text), load_(load) {}
+  Evaluator(std::string_view text, const OperandLoader& load, std::int64_t max_frames)
+      : text_(text), load_(load), max_frames_(max_frames) {}
 
   Result<Value> run() {
     Result<Term> result = overlap();
@@ -57,6 +58,7 @@ class Evaluator {
  private:
   std::string_view text_;
   const OperandLoader& load_;
+  std::int64_t max_frames_;
   std::size_t at_ = 0;
   // Parentheses and amplifiers ("2 * 2 * x") recurse; deeper than kMaxNestingDepth is refused
   // before the stack can run out.
@@ -65,6 +67,29 @@ class Evaluator {
   Diagnostic too_deep(std::size_t offset) const {
     return nesting_too_deep(Location::text("<expression>", 1, static_cast<int>(offset) + 1),
                             "parentheses and amplifiers", std::string(text_));
+  }
+
+  // Before an operator brings `operands` to one frame grid: the slots that grid will have (the
+  // highest frame rate, the longest animation), against max_frames.
+  std::optional<Diagnostic> too_many_frames(std::size_t offset, const std::vector<const Value*>& operands) const {
+    int fps = 0;
+    for (const Value* v : operands)
+      if (!v->state) fps = std::max(fps, v->animation.fps);
+    double slots = 0;
+    for (const Value* v : operands)
+      if (!v->state && v->animation.fps > 0)
+        slots = std::max(slots, std::ceil(static_cast<double>(v->animation.size()) * fps / v->animation.fps));
+    if (slots <= static_cast<double>(max_frames_)) return std::nullopt;
+    char what[96];
+    std::snprintf(what, sizeof what, "this operator makes %.15g frames at %d fps", slots, fps);
+    return frames_limit(offset, what);
+  }
+  Diagnostic frames_limit(std::size_t offset, const std::string& what) const {
+    Limits limits;
+    limits.max_frames = max_frames_;
+    Diagnostic d = limit_error(Location::text("<expression>", 1, static_cast<int>(offset) + 1), what, Limit::frames, limits);
+    d.source_line = std::string(text_);
+    return d;
   }
 
   Diagnostic error(std::size_t offset, const std::string& message) const {
@@ -112,6 +137,9 @@ class Evaluator {
     for (const Term& t : terms) {
       if (!t.value.state) grid = &t.value.animation;
     }
+    std::vector<const Value*> operands;
+    for (const Term& t : terms) operands.push_back(&t.value);
+    if (auto bad = too_many_frames(static_cast<std::size_t>(terms.front().column - 1), operands)) return *bad;
     std::vector<LayeredAnimation> layers;
     for (const Term& t : terms) {
       if (!t.priority) {
@@ -152,6 +180,7 @@ class Evaluator {
       if (!right) return right.error();
       if (auto bad = overlap_only(*left); bad) return *bad;
       if (auto bad = overlap_only(*right); bad) return *bad;
+      if (auto bad = too_many_frames(at, {&left->value, &right->value})) return *bad;
       left->value = combine(left->value, right->value, [v](const auto& s, const auto& t) { return fapc::algebra::sum(s, t, v); });
     }
   }
@@ -205,8 +234,19 @@ class Evaluator {
         Result<double> seconds = number();
         if (!seconds) return seconds.error();
         if (term->value.state) return error(at, "'>>' delays an animation; this operand is a state");
-        // A day of frames is already more than any face animation; beyond it is a typo.
-        if (std::abs(*seconds) > 86400) return error(at, "a delay is at most 86400 s (a day)");
+        // A day of frames is already more than any face animation; beyond it is a typo. A
+        // negative delay would cut the animation's start away (all of it, for a short one): the
+        // operator only delays (docs/algebra.md).
+        if (*seconds < 0 || *seconds > 86400)
+          return error(at, "a delay is from 0 to 86400 s (a day); " + format(*seconds) + " is not");
+        const double slots = static_cast<double>(term->value.animation.size()) +
+                             std::round(*seconds * term->value.animation.fps);
+        if (slots > static_cast<double>(max_frames_)) {
+          char what[96];
+          std::snprintf(what, sizeof what, "the delayed animation spans %.15g frames at %d fps", slots,
+                        term->value.animation.fps);
+          return frames_limit(at, what);
+        }
         term->value.animation = shifted(term->value.animation, *seconds);
       } else {
         return term;
@@ -247,7 +287,15 @@ class Evaluator {
                                               : "expected a file, a number or '(' at the end");
     }
     Result<Value> value = load_(name, static_cast<int>(start) + 1);
-    if (!value) return value.error();
+    if (!value) {
+      // A problem with the operand as a whole (it cannot be opened, it is too long) is reported
+      // where the expression names it; a problem inside it, at its own place.
+      const Diagnostic& inner = value.error();
+      if (inner.where.line > 0 || inner.where.byte_offset >= 0) return inner;
+      Diagnostic d = error(start, "operand '" + inner.where.file + "': " + inner.message);
+      d.kind = inner.kind;
+      return d;
+    }
     return Term{std::move(*value), std::nullopt, std::nullopt, static_cast<int>(start) + 1};
   }
 
@@ -302,8 +350,8 @@ class Evaluator {
 
 }  // namespace
 
-Result<Value> evaluate(std::string_view expression, const OperandLoader& load) {
-  return Evaluator(expression, load).run();
+Result<Value> evaluate(std::string_view expression, const OperandLoader& load, std::int64_t max_frames) {
+  return Evaluator(expression, load, max_frames).run();
 }
 
 }  // namespace fapc::algebra

@@ -1,5 +1,7 @@
 // The operators on facial states (docs/algebra.md, "Operators"; Algebra definitions 1 to 3).
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/transcoder/algebra.hpp"
@@ -17,7 +19,10 @@ std::int32_t round_half_away(double x) {
 FacialState sum(const FacialState& s, const FacialState& t, double v) {
   FacialState out;
   for (std::size_t i = 0; i < out.values.size(); ++i) {
-    out.values[i] = round_half_away(s.values[i] * v) + round_half_away(t.values[i] * (1 - v));
+    // Each half is clamped to 32 bits; their sum may not fit (1e300 * X + 1e300 * X), so it is
+    // added in 64 bits and clamped again.
+    const std::int64_t total = std::int64_t{round_half_away(s.values[i] * v)} + round_half_away(t.values[i] * (1 - v));
+    out.values[i] = static_cast<std::int32_t>(std::clamp<std::int64_t>(total, INT32_MIN, INT32_MAX));
   }
   return out;
 }

@@ -90,7 +90,9 @@ class Compiler {
     Result<ScheduleNode> root = build(program_.main, Context{main->blend_mode(), Action::Kind::sequence});
     if (!root) return root.error();
     if (main->left) root->timing.offset += main->left->value;
-    Result<Schedule> scheduled = schedule(*root);
+    ScheduleOptions schedule_options;
+    schedule_options.max_runs = options_.max_runs;
+    Result<Schedule> scheduled = schedule(*root, schedule_options);
     if (!scheduled) return with_source_line(scheduled.error());
     MimicProgram out;
     out.timeline = lower(*scheduled);

@@ -121,14 +121,30 @@ class FrameRenderer {
 
 }  // namespace
 
+namespace {
+
+// Where a too-long animation is reported: what the front end says ends it, else the clip that ends
+// last.
+Location where_it_ends(const Timeline& timeline) {
+  if (timeline.explicit_end) return timeline.end_source;
+  const Clip* last = nullptr;
+  for (const Clip& clip : timeline.clips)
+    if (!last || clip.end >= last->end) last = &clip;
+  return last ? last->source : Location{};
+}
+
+}  // namespace
+
 Result<Rendered> render_frames(const Timeline& timeline, const RenderOptions& options) {
-  if (options.fps <= 0) return make_error(Location{}, "the frame rate must be positive");
-  if (const double frames = std::ceil(timeline.end() * options.fps); !(frames <= kMaxRenderedFrames)) {
-    char seconds[32];
-    std::snprintf(seconds, sizeof seconds, "%g", timeline.end());
-    return make_error(Location{}, std::string("the animation lasts ") + seconds + " s: at " + std::to_string(options.fps) +
-                                      " fps that is more than the " + std::to_string(static_cast<long>(kMaxRenderedFrames)) +
-                                      " frames fapc renders");
+  if (options.fps <= 0) return make_error(ErrorKind::usage, Location{}, "the frame rate must be positive");
+  if (const double frames = std::ceil(timeline.end() * options.fps);
+      !(frames <= static_cast<double>(options.max_frames))) {
+    char text[96];
+    std::snprintf(text, sizeof text, "the animation lasts %g s, %.15g frames at %d fps", timeline.end(), frames,
+                  options.fps);
+    Limits limits;
+    limits.max_frames = options.max_frames;
+    return limit_error(where_it_ends(timeline), text, Limit::frames, limits);
   }
   const Profile& profile = options.profile ? *options.profile : default_profile();
   const TimelineIndex index(timeline);

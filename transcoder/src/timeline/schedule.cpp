@@ -14,6 +14,8 @@ namespace {
 
 using Kind = ScheduleNode::Kind;
 constexpr double kForever = std::numeric_limits<double>::infinity();
+// 63 years: beyond what --max-frames allows at any frame rate (2^30 frames at 1 fps is 34 years).
+constexpr double kLatestTime = 2e9;
 
 std::string seconds(double t) {
   std::ostringstream out;
@@ -24,7 +26,7 @@ std::string seconds(double t) {
 class Scheduler {
  public:
   std::optional<ScheduleError> error;
-  std::size_t max_runs = 0;
+  std::int64_t max_runs = 0;
 
   // The active duration of `node` when it is known without a parent end.
   std::optional<double> measure(const ScheduleNode& node) {
@@ -52,6 +54,14 @@ class Scheduler {
         fail(node, ScheduleProblem::starts_before_zero, "starts before time 0 (at " + seconds(start) + ")");
         return start;
       }
+      // Far out, a double cannot tell a run's end from its begin (1e300 + 3 == 1e300) and the run
+      // would vanish without a word; no renderable animation gets near (docs/security.md).
+      if (start + *active > kLatestTime) {
+        fail(node, ScheduleProblem::ends_too_late,
+             "ends at " + seconds(start + *active) + ", after the latest time fapc schedules (" +
+                 seconds(kLatestTime) + ")");
+        return start;
+      }
       const double simple = node.timing.duration.value_or(*active);
       place_runs(node, start, simple, *active, std::min(cut, start + *active), out);
       return start + *active;
@@ -75,7 +85,12 @@ class Scheduler {
     const double children_end = place_children(node, start, own_limit, iteration_cut, out);
     if (error) return start;
     const double simple = node.timing.duration.value_or(children_end - start);
-    repeat_group(node, first, start, simple, inner_cut, out);
+    // Iterations stop at the repeat count (and repeatDur) even when the group's length was only
+    // known once its children were placed: a group that does not repeat is laid out once.
+    double repeat_end = inner_cut;
+    if (!node.timing.repeat_indefinite) repeat_end = std::min(repeat_end, start + simple * node.timing.repeat);
+    if (node.timing.repeat_duration) repeat_end = std::min(repeat_end, start + *node.timing.repeat_duration);
+    repeat_group(node, first, start, simple, repeat_end, out);
     return active ? start + *active : children_end;
   }
 
@@ -85,9 +100,12 @@ class Scheduler {
   // Repeats of repeats can ask for more runs than memory holds (an indefinite repeat of a tiny
   // group beside a very long sibling): past max_runs the schedule is an error at the node.
   bool too_many(const ScheduleNode& node, const std::vector<Occurrence>& out) {
-    if (out.size() < max_runs) return error.has_value();
+    if (static_cast<std::int64_t>(out.size()) < max_runs) return error.has_value();
+    // The predicate is the limit's own wording: the limit, its value and the option raising it.
+    Limits limits;
+    limits.max_runs = max_runs;
     fail(node, ScheduleProblem::too_many_runs,
-         "repeats to more than " + std::to_string(max_runs) + " runs: fapc refuses to schedule so many");
+         limit_error(node.source, "repeats to too many runs", Limit::runs, limits).message);
     return true;
   }
 
@@ -145,6 +163,8 @@ class Scheduler {
   }
 
   std::optional<double> measure_parallel(const ScheduleNode& node) {
+    // An empty par or excl (or an excl whose event picked no branch) lasts 0 s (SMIL).
+    if (node.children.empty()) return 0.0;
     const std::optional<double> reference = reference_end(node);
     if (!reference) return std::nullopt;
     double latest = std::max(0.0, *reference);
@@ -286,8 +306,10 @@ Diagnostic ScheduleError::diagnostic(std::string_view subject) const {
 Result<Schedule> schedule(const ScheduleNode& root, const ScheduleOptions& options) {
   auto scheduled = schedule_tree(root, options);
   if (auto* problem = std::get_if<ScheduleError>(&scheduled)) {
-    // Only a start reads wrong without a subject ("starts before time 0").
-    return problem->diagnostic(problem->problem == ScheduleProblem::starts_before_zero ? "the action" : "");
+    // Only a start and an end read wrong without a subject ("starts before time 0").
+    const bool needs_subject = problem->problem == ScheduleProblem::starts_before_zero ||
+                               problem->problem == ScheduleProblem::ends_too_late;
+    return problem->diagnostic(needs_subject ? "the action" : "");
   }
   return std::get<Schedule>(std::move(scheduled));
 }

@@ -9,6 +9,7 @@
 
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/fap_sequence.hpp"
+#include "fapc/codec/limits.hpp"
 
 namespace fapc {
 
@@ -46,6 +47,9 @@ struct FapReadOptions {
   bool vreng_divide_v20 = false;
   // fps to assume for header-less files numbered 0, 1, 2, ... (Greta's rate).
   int headerless_fps = 25;
+  // The most frames the file may span from its first frame to its last, gaps included (writers
+  // fill gaps; see Limits::max_frames).
+  std::int64_t max_frames = Limits{}.max_frames;
 };
 
 struct FapReadResult {

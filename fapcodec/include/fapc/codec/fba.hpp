@@ -13,6 +13,7 @@
 
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/fap_sequence.hpp"
+#include "fapc/codec/limits.hpp"
 
 namespace fapc {
 
@@ -40,6 +41,9 @@ struct FbaEncodeOptions {
   bool list_every_mask = false;  // mask type 01 (bits listed) for every group, the layout of the
                                  // test vector (docs/fba-bitstream.md 11); by default empty groups
                                  // get type 00 and full ones 11, which needs no mask bits
+  // The most frames the sequence may span (gaps included): the decoder's limit, so that fapc
+  // never writes a stream it refuses to read back (Limits::max_frames).
+  std::int64_t max_frames = Limits{}.max_frames;
 };
 
 // Where one plane (one frame, plus the frames it skips) sits in the output.
@@ -77,7 +81,8 @@ std::int64_t fba_tolerance(int fap, int quant);
 
 struct FbaDecodeOptions {
   std::string file = "stream.fba";  // names the input in diagnostics
-  std::size_t max_frames = std::size_t{1} << 22;  // refuse streams with more face planes
+  // Refuse streams whose face planes span more frames, skipped frames included (Limits).
+  std::int64_t max_frames = Limits{}.max_frames;
 };
 
 // A signalled range of one FAP, in quantised units.

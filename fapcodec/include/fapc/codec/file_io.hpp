@@ -6,17 +6,22 @@
 #include <string_view>
 
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/codec/limits.hpp"
 
 namespace fapc {
 
-// The file's bytes; a gzip stream (by its magic bytes) is inflated transparently. Every reader
-// and every include opens files through here. Errors (ErrorKind::io, for the whole file): "is a
-// directory", "not a regular file (a FIFO)" and the like, checked before reading so that a FIFO
-// never blocks; "cannot open file: Permission denied" and other errors of the system.
-Result<std::string> read_file_bytes(const std::string& path);
+// The file's bytes; a gzip stream (by its magic bytes) is inflated transparently, within the
+// limits' decompressed bytes and expansion factor. Every reader and every include opens files
+// through here. Errors (ErrorKind::io, for the whole file): "is a directory", "not a regular file
+// (a FIFO)" and the like, checked before reading so that a FIFO never blocks; "cannot open file:
+// Permission denied" and other errors of the system; limit_exceeded for a gzip bomb.
+Result<std::string> read_file_bytes(const std::string& path, const Limits& limits = {});
 
 bool is_gzip(std::string_view bytes);
-Result<std::string> gunzip(std::string_view bytes, const std::string& file);
+// Refuses (limit_exceeded, at the compressed byte reached) before the output would pass
+// limits.max_decompressed_bytes, or max_expansion times the input's size once past
+// kExpansionFloor.
+Result<std::string> gunzip(std::string_view bytes, const std::string& file, const Limits& limits = {});
 std::string gzip(std::string_view bytes);
 
 // Writes to a temporary file in the target's folder, then renames it over the target.

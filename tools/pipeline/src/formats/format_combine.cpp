@@ -11,7 +11,7 @@ namespace fapc::pipeline::builtin {
 namespace {
 
 Result<Loaded> load_combine(const std::string& path, const ConvertOptions& options) {
-  Result<std::string> text = read_file_bytes(path);
+  Result<std::string> text = read_file_bytes(path, options.limits);
   if (!text) return text.error();
   // The expression is the text without comment lines; errors point into the file.
   std::string expression;

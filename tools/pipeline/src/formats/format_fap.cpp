@@ -20,9 +20,11 @@ nlohmann::ordered_json facts_of(const FapFileFacts& facts) {
 }
 
 Result<Loaded> load_fap(const std::string& path, const ConvertOptions& options) {
-  auto bytes = read_file_bytes(path);
+  auto bytes = read_file_bytes(path, options.limits);
   if (!bytes) return bytes.error();
-  auto read = read_fap_text(*bytes, path);
+  FapReadOptions read_options;
+  read_options.max_frames = options.limits.max_frames;
+  auto read = read_fap_text(*bytes, path, read_options);
   if (!read) return read.error();
   Loaded loaded;
   loaded.frames = std::move(read->sequence);

@@ -43,7 +43,7 @@ nlohmann::ordered_json facts_of(const FbaStreamInfo& info) {
 }
 
 Result<Loaded> load_fba(const std::string& path, const ConvertOptions& options) {
-  auto decoded = read_fba_file(path);
+  auto decoded = read_fba_file(path, options.limits);
   if (!decoded) return decoded.error();
   Loaded loaded;
   loaded.frames = std::move(decoded->sequence);
@@ -54,7 +54,7 @@ Result<Loaded> load_fba(const std::string& path, const ConvertOptions& options) 
 }
 
 Result<std::string> write_fba(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
-  auto encoded = encode_checked(loaded.frames, options, path);
+  auto encoded = encode_checked(loaded.frames, options, loaded.named(path));
   if (!encoded) return encoded.error();
   return std::string(encoded->bytes.begin(), encoded->bytes.end());
 }

@@ -12,6 +12,7 @@ Result<xmt::FmlDocument> read_document(const std::string& path, const ConvertOpt
   xmt::FmlOptions fml;
   fml.events = options.events;
   fml.duration = options.duration;
+  fml.max_runs = options.limits.max_runs;
   fml.visemes_per_second = options.visemes_per_second;
   fml.profile = &profile;
   fml.includes = options.includes;

@@ -9,12 +9,13 @@ namespace fapc::pipeline::builtin {
 namespace {
 
 Result<Loaded> load_mimic(const std::string& path, const ConvertOptions& options) {
-  Result<std::string> source = read_file_bytes(path);
+  Result<std::string> source = read_file_bytes(path, options.limits);
   if (!source) return source.error();
   Result<Profile> profile = profile_for(options);
   if (!profile) return profile.error();
   MimicOptions mimic;
   mimic.profile = &*profile;
+  mimic.max_runs = options.limits.max_runs;
   mimic.includes = options.includes;
   Result<MimicProgram> program = compile_mimic(*source, path, mimic);
   if (!program) return program.error();

@@ -90,11 +90,11 @@ nlohmann::ordered_json facts_of(const xmt::Mp4File* mp4) {
 }
 
 Result<Loaded> load_mp4(const std::string& path, const ConvertOptions& options) {
-  auto bytes = read_file_bytes(path);
+  auto bytes = read_file_bytes(path, options.limits);
   if (!bytes) return bytes.error();
   auto mp4 = xmt::read_mp4(xmt::Bytes(bytes->begin(), bytes->end()), path);
   if (!mp4) return mp4.error();
-  auto fba = decode_mp4_fba(*mp4, path);
+  auto fba = decode_mp4_fba(*mp4, path, options.limits);
   if (!fba) return fba.error();
   Loaded loaded;
   loaded.frames = std::move(fba->decoded.sequence);
@@ -107,10 +107,17 @@ Result<Loaded> load_mp4(const std::string& path, const ConvertOptions& options) 
 // The FBA track: the encoder's planes, each started by its start code and byte-aligned, become
 // the samples.
 Result<std::string> write_mp4_file(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
-  auto encoded = encode_checked(loaded.frames, options, path, /*align_planes=*/true);
+  // An empty input would make a track without samples: say so about the input.
+  if (loaded.frames.frames.empty())
+    return make_error(Location{loaded.named(path), 0, 0, -1}, "no frames to write: an MP4 FBA track needs at least one");
+  auto encoded = encode_checked(loaded.frames, options, loaded.named(path), /*align_planes=*/true);
   if (!encoded) return encoded.error();
   auto bytes = xmt::write_mp4(pack_fba_track(*encoded, loaded.frames.fps));
-  if (!bytes) return bytes.error();
+  if (!bytes) {
+    Diagnostic error = bytes.error();
+    if (error.where.file.empty()) error.where.file = loaded.named(path);
+    return error;
+  }
   return std::string(bytes->begin(), bytes->end());
 }
 

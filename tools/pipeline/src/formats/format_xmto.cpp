@@ -50,6 +50,8 @@ Result<xmt::XmtoDocument> read_document(const std::string& path, const ConvertOp
   xmto.includes = options.includes;
   xmto.fml.includes = options.includes;
   xmto.duration = options.duration;
+  xmto.max_runs = options.limits.max_runs;
+  xmto.fml.max_runs = options.limits.max_runs;
   xmto.load_animation = [&options](const std::string& included, const Location& where) {
     return load_animation(included, where, options);
   };

@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "fapc/codec/limits.hpp"
 #include "fapc/transcoder/algebra.hpp"
 
 namespace fapc::algebra {
@@ -21,7 +22,10 @@ struct Value {
 using OperandLoader = std::function<Result<Value>(const std::string& name, int column)>;
 
 // Errors in the expression itself come as "<expression>:1:COL" with the expression as the
-// source line, so a caret can be drawn.
-Result<Value> evaluate(std::string_view expression, const OperandLoader& load);
+// source line, so a caret can be drawn. An operator whose result would span more than
+// `max_frames` frames (a long delay, a high frame rate) is a limit_exceeded error at its column,
+// raised before the frames are allocated.
+Result<Value> evaluate(std::string_view expression, const OperandLoader& load,
+                       std::int64_t max_frames = Limits{}.max_frames);
 
 }  // namespace fapc::algebra

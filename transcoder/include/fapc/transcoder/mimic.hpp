@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "fapc/codec/limits.hpp"
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/include_policy.hpp"
 #include "fapc/transcoder/profile.hpp"
@@ -19,6 +20,7 @@ struct MimicOptions {
   // Reads an included file (defxpr). Empty: read from disk (read_file_bytes). Tests and fuzzers
   // pass their own.
   std::function<Result<std::string>(const std::string& path)> read_file;
+  std::int64_t max_runs = Limits{}.max_runs;  // scheduled runs after repeats (--max-runs)
   // Which files a defxpr may name (docs/security.md); by default the program's own folder tree.
   IncludePolicy includes;
 };

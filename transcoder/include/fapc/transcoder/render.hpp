@@ -9,6 +9,7 @@
 
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/fap_sequence.hpp"
+#include "fapc/codec/limits.hpp"
 #include "fapc/transcoder/curves.hpp"
 #include "fapc/transcoder/profile.hpp"
 #include "fapc/transcoder/timeline.hpp"
@@ -37,6 +38,7 @@ struct RenderOptions {
   int fps = 25;
   const Profile* profile = nullptr;  // nullptr: default_profile()
   std::string name;                  // the sequence's name
+  std::int64_t max_frames = Limits{}.max_frames;  // more frames is a limit_exceeded error
 };
 
 struct Rendered {
@@ -44,12 +46,8 @@ struct Rendered {
   Diagnostics warnings;  // clamps, once per clip, at the clip's source
 };
 
-// The most frames one rendering makes (about 23 hours at 25 fps, some 600 MB of frames): a longer
-// timeline is an error, not an allocation failure.
-inline constexpr double kMaxRenderedFrames = 2097152;
-
 // Frames k = 0 .. ceil(end * fps) - 1 at time k / fps. Errors: a target no profile maps, more
-// than kMaxRenderedFrames frames.
+// than options.max_frames frames (at the timeline's end_source, or the clip that ends last).
 Result<Rendered> render_frames(const Timeline& timeline, const RenderOptions& options);
 
 struct CurveOptions {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/codec/limits.hpp"
 
 namespace fapc {
 
@@ -68,14 +69,30 @@ struct ScheduleOptions {
   // The root's end when the source gives none (--duration): lets indefinite repeats and periodic
   // leaves without duration at the top level end.
   std::optional<double> root_end;
-  // The most runs (occurrences) a schedule may have; more is an error at the node that repeats.
-  std::size_t max_runs = 2000000;
+  // The most runs (occurrences) a schedule may have; more is a limit_exceeded error at the node
+  // that repeats (Limits::max_runs, --max-runs).
+  std::int64_t max_runs = Limits{}.max_runs;
 };
 
 struct Schedule {
   std::vector<Occurrence> occurrences;  // in tree order (depth first), then by iteration
   double end = 0;                       // the root's active end
 };
+
+// Where a schedule ends, for errors about the animation's length (Timeline::end_source): the
+// source of the run that ends last when it ends with the schedule, else `root` (a group that
+// outlasts every leaf). `leaf_source(leaf_id)` gives a leaf's source.
+template <class LeafSource>
+Location end_source(const Schedule& schedule, const Location& root, LeafSource leaf_source) {
+  Location where = root;
+  double last_end = -1;
+  for (const Occurrence& run : schedule.occurrences)
+    if (run.end >= last_end) {
+      last_end = run.end;
+      if (run.end >= schedule.end) where = leaf_source(run.leaf_id);
+    }
+  return where;
+}
 
 // Why a tree cannot be scheduled, as a value: front ends decide by `problem` and name the
 // element by `node_tag`, never by the wording.
@@ -85,7 +102,8 @@ enum class ScheduleProblem {
   starts_before_zero,   // a leaf would start before time 0
   right_without_end,    // aligned right in a parallel whose end is unknown
   right_in_sequence,    // aligned right outside a parallel
-  too_many_runs,        // more than ScheduleOptions::max_runs runs
+  too_many_runs,        // more than ScheduleOptions::max_runs runs (a limit, --max-runs)
+  ends_too_late,        // a leaf would end after the latest time fapc schedules
 };
 
 struct ScheduleError {

@@ -74,6 +74,8 @@ struct Timeline {
   std::vector<Clip> clips;
   // The end of the animation when the source states it (e.g. --duration); else the latest clip end.
   std::optional<double> explicit_end;
+  // Where explicit_end comes from (the element that ends last), for errors about the length.
+  Location end_source = {};
 
   double end() const;
 };

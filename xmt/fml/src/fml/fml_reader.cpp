@@ -28,7 +28,8 @@ using Kind = ScheduleNode::Kind;
 
 // FAP angle units are 1e-5 rad.
 constexpr double kAngleUnitsPerDegree = 1e5 * 3.14159265358979323846 / 180.0;
-constexpr double kMaxNodes = 1e6;  // elements after template expansion, and runs after repeats
+// The time an indefinite repeat is taken to fill when nothing ends it, to bound its runs.
+constexpr double kUnendedSeconds = 1e6;
 
 constexpr std::initializer_list<const char*> kTiming = {"begin", "duration", "dur", "end", "repeat"};
 
@@ -147,6 +148,7 @@ class FmlReader {
     if (Status s = check_runs(); !s) return s.error();
     ScheduleOptions schedule_options;
     schedule_options.root_end = options_.duration;
+    schedule_options.max_runs = options_.max_runs;
     auto scheduled = schedule_tree(tree_.root, schedule_options);
     if (const auto* problem = std::get_if<ScheduleError>(&scheduled)) return scheduler_error(*problem);
     result_.timeline = lower_fml(tree_, std::get<Schedule>(scheduled));
@@ -331,11 +333,8 @@ class FmlReader {
   // ---- story ---------------------------------------------------------------------------------
 
   bool count_node(const xmlNode* node) {
-    if (++nodes_ <= kMaxNodes) return true;
-    Diagnostic d = doc_.error(node, "the story has more than " + std::to_string(static_cast<long>(kMaxNodes)) +
-                                        " elements after template expansion: fapc refuses to schedule so many");
-    d.kind = ErrorKind::limit_exceeded;
-    fail(std::move(d));
+    if (++nodes_ <= static_cast<double>(options_.max_runs)) return true;
+    fail(limit_at(doc_.error(node, ""), "the story has too many elements after template expansion"));
     return false;
   }
 
@@ -366,8 +365,12 @@ class FmlReader {
       return true;
     }
     if (const auto n = number(text)) {
-      if (*n <= 0 || *n > kMaxNodes) {
-        fail(doc_.error(node, "repeat", "repeat must be a count above 0 (at most 1000000)"));
+      if (*n <= 0) {
+        fail(doc_.error(node, "repeat", "repeat must be a count above 0"));
+        return false;
+      }
+      if (*n > static_cast<double>(options_.max_runs)) {
+        fail(limit_at(doc_.error(node, "repeat", ""), "repeat " + text + " asks for more runs than allowed"));
         return false;
       }
       timing.repeat = *n;
@@ -387,7 +390,7 @@ class FmlReader {
       timing.repeat_indefinite = true;
     } else {
       const auto count = number(*value);
-      timing.repeat = count && *count >= 1 ? std::min(*count, kMaxNodes) : 1;
+      timing.repeat = count && *count >= 1 ? std::min(*count, static_cast<double>(options_.max_runs) + 1) : 1;
     }
     return true;
   }
@@ -718,7 +721,7 @@ class FmlReader {
   // ---- scheduling ----------------------------------------------------------------------------
 
   // Runs the tree would make (repeats of repeats, indefinite ones over --duration) against
-  // kMaxNodes, before the scheduler makes them. `shortest` is a lower bound of a node's active
+  // max_runs, before the scheduler makes them. `shortest` is a lower bound of a node's active
   // length, so that available / (one iteration) bounds an indefinite repeat's iterations. It
   // counts the children's begin offsets, takes an end as given and is 0 for an indefinite
   // repeat (an ancestor or a sibling's end may cut it anywhere). A lower bound of 0 means one
@@ -752,10 +755,18 @@ class FmlReader {
 
   Status check_runs() const {
     double shortest = 0;
-    const double total = runs(tree_.root, options_.duration.value_or(kMaxNodes), shortest);
-    if (total <= kMaxNodes) return ok_status();
-    return make_error(ErrorKind::limit_exceeded, tree_.root.source, "the story repeats to more than " + std::to_string(static_cast<long>(kMaxNodes)) +
-                                             " clips: fapc refuses to schedule so many");
+    const double total = runs(tree_.root, options_.duration.value_or(kUnendedSeconds), shortest);
+    if (total <= static_cast<double>(options_.max_runs)) return ok_status();
+    return limit_at(make_error(tree_.root.source, ""), "the story repeats to too many runs");
+  }
+
+  // A limit_exceeded error at the place `at` points to (its source line kept).
+  Diagnostic limit_at(const Diagnostic& at, const std::string& what) const {
+    Limits limits;
+    limits.max_runs = options_.max_runs;
+    Diagnostic d = limit_error(at.where, what, Limit::runs, limits);
+    d.source_line = at.source_line;
+    return d;
   }
 
   // The scheduler's problem, its subject the element it is about.

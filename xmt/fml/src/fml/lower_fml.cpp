@@ -93,6 +93,8 @@ Timeline lower_fml(const FmlTree& tree, const Schedule& schedule) {
     }
   }
   timeline.explicit_end = schedule.end;
+  timeline.end_source =
+      end_source(schedule, tree.root.source, [&](std::size_t leaf) { return tree.leaves[leaf].where; });
   return timeline;
 }
 

@@ -86,6 +86,8 @@ Timeline lower_to_timeline(const XmtoTree& tree, const Schedule& schedule) {
   Timeline timeline;
   for (TaggedClip& tagged : clips) timeline.clips.push_back(std::move(tagged.clip));
   timeline.explicit_end = schedule.end;
+  timeline.end_source =
+      end_source(schedule, tree.root.source, [&](std::size_t leaf) { return tree.leaves[leaf].where; });
   return timeline;
 }
 

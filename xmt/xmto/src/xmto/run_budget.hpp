@@ -12,8 +12,6 @@
 
 namespace fapc::xmt {
 
-inline constexpr double kMaxRuns = 1e6;  // in the whole document
-
 struct RunBudget {
   double available = std::numeric_limits<double>::infinity();  // time the parent leaves
   double repeats = 1;  // product of the repeat factors of the ancestors

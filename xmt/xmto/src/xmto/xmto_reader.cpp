@@ -71,6 +71,7 @@ class DocumentReader {
     tree_.root = tree ? std::move(*tree) : ScheduleNode::group(Kind::sequence, {}, doc_.where(body));
     ScheduleOptions schedule_options;
     schedule_options.root_end = options_.duration;
+    schedule_options.max_runs = options_.max_runs;
     auto scheduled = schedule_tree(tree_.root, schedule_options);
     if (const auto* problem = std::get_if<ScheduleError>(&scheduled)) return scheduler_error(*problem);
     result_.timeline = lower_to_timeline(tree_, std::get<Schedule>(scheduled));
@@ -240,14 +241,17 @@ class DocumentReader {
     return group;
   }
 
-  // Counts the clips a leaf will make (runs times clips per run) against kMaxRuns.
+  // Counts the clips a leaf will make (runs times clips per run) against options_.max_runs.
   bool within_budget(const xmlNode* node, double clips) {
     planned_clips_ += clips;
-    if (planned_clips_ <= kMaxRuns) return true;
-    Diagnostic d = doc_.error(node, std::string(xml::local_name(node)) + " brings the document to more than " +
-                                        std::to_string(static_cast<long>(kMaxRuns)) +
-                                        " clips (repeats of repeats?): fapc refuses to schedule so many");
-    d.kind = ErrorKind::limit_exceeded;
+    if (planned_clips_ <= static_cast<double>(options_.max_runs)) return true;
+    const Diagnostic at = doc_.error(node, "");
+    Limits limits;
+    limits.max_runs = options_.max_runs;
+    Diagnostic d = limit_error(at.where, std::string(xml::local_name(node)) +
+                                             " brings the document to too many clips (repeats of repeats?)",
+                               Limit::runs, limits);
+    d.source_line = at.source_line;
     fail(std::move(d));
     return false;
   }
@@ -337,10 +341,10 @@ class DocumentReader {
         return scheduled_node(std::move(group), node);
       }
       case FmlLeaf::Kind::talk:
-        leaf.included = Timeline{viseme_clips(fml.speech, length, doc_.where(node)), length};
+        leaf.included = Timeline{viseme_clips(fml.speech, length, doc_.where(node)), length, doc_.where(node)};
         break;
       case FmlLeaf::Kind::wait:
-        leaf.included = Timeline{{}, length};
+        leaf.included = Timeline{{}, length, doc_.where(node)};
         break;
     }
     const double clips = std::max<double>(1, static_cast<double>(leaf.included->clips.size()));

@@ -15,7 +15,7 @@ namespace fapc::pipeline {
 FbaEncodeOptions fba_encode_options(const ConvertOptions& options);
 
 // Reads and decodes a .fba file (gzip inflated transparently).
-Result<DecodedFba> read_fba_file(const std::string& path);
+Result<DecodedFba> read_fba_file(const std::string& path, const Limits& limits = {});
 
 // Encodes `sequence`, which came from `input`: errors name the input. With options.verify, the
 // stream is decoded and checked too (ErrorKind::verification_failed when it does not match).
@@ -33,7 +33,7 @@ struct Mp4Fba {
   xmt::FbaTrackInput track;
   DecodedFba decoded;
 };
-Result<Mp4Fba> read_mp4_fba(const std::string& path);
-Result<Mp4Fba> decode_mp4_fba(const xmt::Mp4File& mp4, const std::string& path);
+Result<Mp4Fba> read_mp4_fba(const std::string& path, const Limits& limits = {});
+Result<Mp4Fba> decode_mp4_fba(const xmt::Mp4File& mp4, const std::string& path, const Limits& limits = {});
 
 }  // namespace fapc::pipeline

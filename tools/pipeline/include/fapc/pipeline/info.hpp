@@ -7,11 +7,13 @@
 #include <nlohmann/json.hpp>
 
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/codec/limits.hpp"
 
 namespace fapc::pipeline {
 
 // {"file", "kind", "name", "fps", "frames", "duration", "faps used", "faps": [{number, name, unit,
 // min, max, frames}], "format": {...facts}, "warnings": ["FILE:...: warning: ..."]}.
-Result<nlohmann::ordered_json> describe(const std::string& path);
+// `limits`: the resource limits of the read (docs/security.md).
+Result<nlohmann::ordered_json> describe(const std::string& path, const Limits& limits = {});
 
 }  // namespace fapc::pipeline

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -16,6 +17,10 @@ namespace fapc::pipeline {
 // front end has them (Mimic, FML, XMT-Omega), so curve outputs and per-clip plots keep the
 // authored shape.
 struct Loaded {
+  std::string origin;  // the input it came from (load() sets it): errors of writers name it
+
+  // The file errors about these frames name: the input, or `output` when there is none.
+  const std::string& named(const std::string& output) const { return origin.empty() ? output : origin; }
   FapSequence frames;
   std::optional<Curves> curves;
   std::optional<Timeline> timeline;

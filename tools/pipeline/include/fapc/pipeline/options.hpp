@@ -7,6 +7,7 @@
 
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/codec/include_policy.hpp"
+#include "fapc/codec/limits.hpp"
 
 namespace fapc::pipeline {
 
@@ -23,6 +24,7 @@ struct ConvertOptions {
   FapFlavour fap_flavour = FapFlavour::safe;  // the .fap layout of a player family
   bool strict = false;                        // warnings are errors; nothing is written
   bool verify = false;                        // encoded streams are decoded and checked
+  Limits limits;  // --max-frames, --max-runs, --max-decompressed-bytes, --max-expansion
   // Which files includes may read (docs/security.md): load() adds the top input's folder.
   IncludePolicy includes;
   // What a load does beyond the frames (see Loaded):

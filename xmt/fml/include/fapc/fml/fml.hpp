@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "fapc/codec/limits.hpp"
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/include_policy.hpp"
 #include "fapc/transcoder/profile.hpp"
@@ -24,6 +25,8 @@ struct FmlOptions {
   std::map<std::string, std::string> events;
   // The story's end when the document gives none (--duration): lets indefinite repeats end.
   std::optional<double> duration;
+  // The most runs (elements after template expansion, runs after repeats): Limits::max_runs.
+  std::int64_t max_runs = Limits{}.max_runs;
   // Names that `param` moves may use besides the FAP names; nullptr: the default profile.
   const Profile* profile = nullptr;
   double visemes_per_second = 12;  // talk text: the speaking rate of the letter approximation

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "fapc/codec/limits.hpp"
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/include_policy.hpp"
 #include "fapc/fml/fml.hpp"
@@ -37,6 +38,8 @@ struct XmtoOptions {
   // The end of the body when the document gives none (--duration): lets indefinite repeats and
   // open-ended elements at the top level end.
   std::optional<double> duration;
+  // The most runs (clips after repeats) in the whole document: Limits::max_runs.
+  std::int64_t max_runs = Limits{}.max_runs;
   // Documents being read around this one, outermost first (their paths as given): an `animation`
   // that names one of them, or this document, is an inclusion cycle and an error.
   std::vector<std::string> including;

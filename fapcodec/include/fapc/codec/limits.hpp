@@ -1,0 +1,48 @@
+// The resource policy (docs/security.md, "Resource limits"): every number read from an input that
+// would make fapc allocate or work in proportion to it is checked against one of these limits
+// *before* the allocation, and passing one is an ErrorKind::limit_exceeded error that names the
+// limit and the command-line option that raises it. One struct, passed to every reader and
+// renderer, so the frame cap of the renderer and of the decoder cannot disagree again.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "fapc/codec/diagnostic.hpp"
+
+namespace fapc {
+
+struct Limits {
+  // Frames one sequence may span, gaps included (writers fill gaps, the Algebra allocates a slot
+  // per frame): rendered from a timeline, decoded from a stream, read from a .fap file, made by a
+  // combination. 2^20 frames is 11.6 hours at 25 fps; some 350 MB of frames in memory.
+  std::int64_t max_frames = std::int64_t{1} << 20;
+  // Scheduled runs (clips after repeats and template expansion) of one Mimic, FML or XMT-Omega
+  // script: a 1 ms animation repeated for a day would otherwise make 86 million clips. A run costs
+  // about 500 bytes through scheduling and lowering.
+  std::int64_t max_runs = 1'000'000;
+  // Bytes a compressed (gzip) input may inflate to, whatever its size.
+  std::int64_t max_decompressed_bytes = std::int64_t{1} << 30;
+  // ... and at most this many times its compressed size once past kExpansionFloor: a 1 MB gzip
+  // bomb would otherwise inflate to 1 GB (deflate reaches about 1000:1).
+  double max_expansion = 100;
+};
+
+// Below this many inflated bytes the expansion factor is not checked (tiny, very regular files
+// compress far better than 100:1 and are harmless).
+inline constexpr std::int64_t kExpansionFloor = std::int64_t{1} << 20;
+
+enum class Limit { frames, runs, decompressed_bytes, expansion };
+
+// "--max-frames" ... : the option of `fapc compile` (and every command that reads inputs) that
+// raises the limit.
+const char* limit_option(Limit which);
+// The limit's value as text ("1048576", "100").
+std::string limit_value(Limit which, const Limits& limits);
+
+// ErrorKind::limit_exceeded at `where`: "WHAT: more than the limit of N UNIT (--max-x N raises
+// it)". `what` says what the input asks for, e.g. "the animation lasts 1e+08 s, 2500000000
+// frames at 25 fps".
+Diagnostic limit_error(Location where, const std::string& what, Limit which, const Limits& limits);
+
+}  // namespace fapc

@@ -1,0 +1,51 @@
+#include "fapc/codec/limits.hpp"
+
+#include <cstdio>
+
+namespace fapc {
+
+const char* limit_option(Limit which) {
+  switch (which) {
+    case Limit::frames: return "--max-frames";
+    case Limit::runs: return "--max-runs";
+    case Limit::decompressed_bytes: return "--max-decompressed-bytes";
+    case Limit::expansion: return "--max-expansion";
+  }
+  return "";
+}
+
+std::string limit_value(Limit which, const Limits& limits) {
+  switch (which) {
+    case Limit::frames: return std::to_string(limits.max_frames);
+    case Limit::runs: return std::to_string(limits.max_runs);
+    case Limit::decompressed_bytes: return std::to_string(limits.max_decompressed_bytes);
+    case Limit::expansion: {
+      char text[32];
+      std::snprintf(text, sizeof text, "%g", limits.max_expansion);
+      return text;
+    }
+  }
+  return "";
+}
+
+namespace {
+
+const char* unit(Limit which) {
+  switch (which) {
+    case Limit::frames: return " frames";
+    case Limit::runs: return " runs";
+    case Limit::decompressed_bytes: return " bytes";
+    case Limit::expansion: return " times the compressed size";
+  }
+  return "";
+}
+
+}  // namespace
+
+Diagnostic limit_error(Location where, const std::string& what, Limit which, const Limits& limits) {
+  return make_error(ErrorKind::limit_exceeded, std::move(where),
+                    what + ": more than the limit of " + limit_value(which, limits) + unit(which) + " (" +
+                        limit_option(which) + " N raises it)");
+}
+
+}  // namespace fapc
