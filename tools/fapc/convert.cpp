@@ -1,5 +1,6 @@
 #include "fapc/convert.hpp"
 
+#include <cstdio>
 #include <iostream>
 
 #include "fapc/codec/file_io.hpp"
@@ -29,6 +30,21 @@ ConvertOptions convert_options(Args& args) {
     return true;
   };
   if (!choose("ranges", "fit", "max", options.ranges) || !choose("masks", "fit", "keep", options.masks)) return options;
+  if (const auto size = args.value("size")) {
+    int w = 0, h = 0;
+    char x = 0, rest = 0;
+    if (std::sscanf(size->c_str(), "%d%c%d%c", &w, &x, &h, &rest) != 3 || x != 'x' || w < 16 ||
+        h < 16 || w > 7680 || h > 7680) {
+      args.fail("--size takes WIDTHxHEIGHT, each 16 to 7680 pixels, not '" + *size + "'");
+      return options;
+    }
+    options.picture.width = w;
+    options.picture.height = h;
+  }
+  options.picture.frame_rate = args.integer("frame-rate", 0, 1, 120);
+  if (args.value("frame")) options.picture.frame = args.integer("frame", 0, 0, 1 << 30);
+  options.picture.time = args.decimal("time", 0, 1e7);
+  if (args.value("sheet")) options.picture.sheet = args.integer("sheet", 12, 1, 400);
   for (const std::string& event : args.values("event")) {
     const auto eq = event.find('=');
     if (eq == std::string::npos || eq == 0) {
@@ -47,7 +63,7 @@ const OutputFormat* writer_for(const std::string& output, const std::string& to_
       to_kind.empty() ? output_format_for(output) : output_format_named(to_kind);
   if (!writer) {
     report(make_error(Location{output, 0, 0, -1},
-                      "unknown output kind (expected .fap, .fap.gz, .fba, .mp4, .xmt, .json or .svg)"));
+                      "unknown output kind (expected .fap, .fap.gz, .fba, .mp4, .xmt, .json, .svg, .png, .webm or .html)"));
   }
   return writer;
 }

@@ -12,7 +12,8 @@ namespace fapc::cli {
 // Option names shared by compile and batch.
 inline const std::set<std::string> kConvertValued = {"fps", "profile", "event", "quant",
                                                       "intra-period", "ranges", "masks", "from", "to",
-                                                      "duration", "speech-rate"};
+                                                      "duration", "speech-rate", "size",
+                                                      "frame-rate", "frame", "time", "sheet"};
 inline const std::set<std::string> kConvertFlags = {"strict", "verify"};
 
 // Reads the shared options; sets args' error on bad values.

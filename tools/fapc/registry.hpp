@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <map>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -43,8 +44,19 @@ const std::map<std::string, Command>& commands();
 
 // ---- conversion options shared by compile, batch and the format handlers ---------------------
 
+// The picture outputs (.png, .webm, .html): --size, --frame-rate, --frame, --time, --sheet.
+struct PictureSettings {
+  int width = 640;
+  int height = 480;
+  int frame_rate = 0;                 // 0: the input's own frame rate
+  std::optional<std::int64_t> frame;  // .png: this frame of the input's grid
+  std::optional<double> time;         // .png: the frame at this time
+  std::optional<int> sheet;           // .png: a contact sheet of N frames
+};
+
 struct ConvertOptions {
   int fps = 25;
+  PictureSettings picture;
   std::optional<std::string> profile;
   std::optional<double> duration;             // --duration: the end of timelines that give none
   std::map<std::string, std::string> events;  // --event NAME=VALUE

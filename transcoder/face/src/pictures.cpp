@@ -35,7 +35,10 @@ void stamp(cairo_t* cr, double seconds, double x, double y, double h) {
   cairo_set_line_width(cr, std::max(1.0, h / 8));
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   for (const char* c = text; *c; ++c) {
-    if (*c >= '0' && *c <= '9') {
+    if (*c == '1') {  // the one is narrow: its segments on the left edge of a thin cell
+      stroke_segments(cr, 0x30, x, y, w, h);
+      x += gap * 1.5;
+    } else if (*c >= '0' && *c <= '9') {
       stroke_segments(cr, kDigitSegments[*c - '0'], x, y, w, h);
       x += w + gap;
     } else if (*c == '.') {
@@ -132,6 +135,13 @@ Result<Image> render_picture(const FaceTrack& track, const PictureOptions& o, co
   cairo_destroy(cr);
   cairo_surface_destroy(surface);
   return sheet;
+}
+
+Result<std::string> face_png(const FapSequence& sequence, const PictureOptions& options,
+                             const std::string& where) {
+  Result<Image> picture = render_picture(FaceTrack(sequence), options, where);
+  if (!picture) return picture.error();
+  return encode_png(*picture);
 }
 
 }  // namespace fapc::face

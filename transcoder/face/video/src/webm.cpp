@@ -102,6 +102,9 @@ Result<std::string> encode_webm(const FaceTrack& track, const VideoOptions& opti
     return make_error(ErrorKind::io, at, what + ": " + av_message(code));
   };
 
+  // libav logs to standard error by default; a library must not print (its errors come back as
+  // return codes here). This is process-wide, like libav's logging itself.
+  av_log_set_level(AV_LOG_QUIET);
   const AVCodec* vp9 = avcodec_find_encoder_by_name("libvpx-vp9");
   if (!vp9) return make_error(ErrorKind::unsupported, at, "this libavcodec has no libvpx-vp9 encoder");
   Output out;
@@ -123,6 +126,12 @@ Result<std::string> encode_webm(const FaceTrack& track, const VideoOptions& opti
   out.codec->gop_size = rate * 2;  // a key frame every 2 s keeps scrubbing in the page quick
   out.codec->bit_rate = 0;         // constant quality (crf) instead
   out.codec->thread_count = 1;
+  // swscale converts with BT.601 coefficients into limited range; say so, so players (browsers
+  // assume BT.709 for untagged video) show the colours the PNG has.
+  out.codec->colorspace = AVCOL_SPC_SMPTE170M;
+  out.codec->color_primaries = AVCOL_PRI_SMPTE170M;
+  out.codec->color_trc = AVCOL_TRC_SMPTE170M;
+  out.codec->color_range = AVCOL_RANGE_MPEG;
   av_opt_set(out.codec->priv_data, "deadline", "realtime", 0);
   av_opt_set_int(out.codec->priv_data, "cpu-used", 8, 0);
   av_opt_set_int(out.codec->priv_data, "crf", 28, 0);
@@ -148,6 +157,7 @@ Result<std::string> encode_webm(const FaceTrack& track, const VideoOptions& opti
       int e = avcodec_receive_packet(out.codec, out.packet);
       if (e == AVERROR(EAGAIN) || e == AVERROR_EOF) return 0;
       if (e < 0) return e;
+      if (out.packet->duration == 0) out.packet->duration = 1;  // one picture: the file's duration counts the last
       av_packet_rescale_ts(out.packet, out.codec->time_base, stream->time_base);
       out.packet->stream_index = stream->index;
       if ((e = av_interleaved_write_frame(out.format, out.packet)) < 0) return e;

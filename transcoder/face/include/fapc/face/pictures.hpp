@@ -17,6 +17,7 @@ struct PictureOptions {
   std::optional<std::int64_t> frame;  // --frame K (on the sequence's grid)
   std::optional<double> time;         // --time T seconds
   std::optional<int> sheet;           // --sheet N: N frames in a grid
+  int frame_rate = 0;                 // video outputs: pictures per second (0: the input's rate)
 };
 
 inline constexpr int kMaxSheetFrames = 400;
@@ -29,6 +30,10 @@ Status check_picture_options(const PictureOptions& options, const std::string& w
 // `sheet` is set: N times spread evenly from 0 to the last frame, each cell of width x height, in
 // a grid about as square as the cells allow, each stamped with its time.
 Result<Image> render_picture(const FaceTrack& track, const PictureOptions& options,
+                             const std::string& where);
+
+// The .png output of a sequence: the picture render_picture draws, as PNG bytes.
+Result<std::string> face_png(const FapSequence& sequence, const PictureOptions& options,
                              const std::string& where);
 
 // The times of a sheet's cells: N instants from 0 to the start of the last frame, evenly spread.

@@ -34,3 +34,16 @@ Result<std::string> encode_webm(const FaceTrack& track, const VideoOptions& opti
                                 const AudioInput* audio, const std::string& where);
 
 }  // namespace fapc::face
+
+#include "fapc/face/pictures.hpp"
+
+namespace fapc::face {
+
+// The .webm and .html outputs of a sequence (size and frame rate from `options`; the still-picture
+// choices --frame/--time/--sheet do not apply). The page embeds the video it encodes.
+Result<std::string> face_webm(const FapSequence& sequence, const PictureOptions& options,
+                              const std::string& where);
+Result<std::string> face_html(const FapSequence& sequence, const PictureOptions& options,
+                              const std::string& title, const std::string& where);
+
+}  // namespace fapc::face
