@@ -10,6 +10,10 @@ int run_render(const std::vector<std::string>& argv) {
   const ConvertOptions options = convert_options(args);
   if (!args.ok()) return usage_error("render", args.error());
   if (args.positionals().size() != 1) return usage_error("render", "expected one INPUT");
+  const PictureSettings& picture = options.picture;
+  if (picture.frame && picture.time) return usage_error("render", "give --frame or --time, not both");
+  if (picture.sheet && (picture.frame || picture.time))
+    return usage_error("render", "--sheet picks its own frames; drop --frame/--time");
   const auto output = args.value("output");
   if (!output) return usage_error("render", "missing -o OUT.png, OUT.webm or OUT.html");
   const OutputFormat* format = output_format_for(*output);
