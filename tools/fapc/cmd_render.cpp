@@ -25,7 +25,7 @@ int run_render(const std::vector<std::string>& argv) {
 const RegisterCommand render_command{
     "render",
     "fapc render INPUT -o OUT.png|OUT.webm|OUT.html [--size WxH] [--frame K | --time T | --sheet N] "
-    "[--frame-rate N] [--fps N] [--profile FILE]",
+    "[--frame-rate N] [--points] [--fps N] [--profile FILE]",
     run_render};
 
 }  // namespace

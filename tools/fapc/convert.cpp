@@ -44,6 +44,7 @@ ConvertOptions convert_options(Args& args) {
   options.picture.frame_rate = args.integer("frame-rate", 0, 1, 120);
   if (args.value("frame")) options.picture.frame = args.integer("frame", 0, 0, 1 << 30);
   options.picture.time = args.decimal("time", 0, 1e7);
+  options.picture.points = args.flag("points");
   if (args.value("sheet")) options.picture.sheet = args.integer("sheet", 12, 1, 400);
   for (const std::string& event : args.values("event")) {
     const auto eq = event.find('=');

@@ -14,7 +14,7 @@ inline const std::set<std::string> kConvertValued = {"fps", "profile", "event", 
                                                       "intra-period", "ranges", "masks", "from", "to",
                                                       "duration", "speech-rate", "size",
                                                       "frame-rate", "frame", "time", "sheet"};
-inline const std::set<std::string> kConvertFlags = {"strict", "verify"};
+inline const std::set<std::string> kConvertFlags = {"strict", "verify", "points"};
 
 // Reads the shared options; sets args' error on bad values.
 ConvertOptions convert_options(Args& args);

@@ -12,7 +12,7 @@ namespace {
 
 face::PictureOptions picture_options(const ConvertOptions& options) {
   const PictureSettings& p = options.picture;
-  return face::PictureOptions{p.width, p.height, p.frame, p.time, p.sheet, p.frame_rate};
+  return face::PictureOptions{p.width, p.height, p.frame, p.time, p.sheet, p.frame_rate, p.points};
 }
 
 Result<std::string> write_png(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {

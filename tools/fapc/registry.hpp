@@ -52,6 +52,7 @@ struct PictureSettings {
   std::optional<std::int64_t> frame;  // .png: this frame of the input's grid
   std::optional<double> time;         // .png: the frame at this time
   std::optional<int> sheet;           // .png: a contact sheet of N frames
+  bool points = false;                // .png: the feature points marked and numbered
 };
 
 struct ConvertOptions {

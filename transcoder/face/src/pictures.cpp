@@ -7,52 +7,19 @@
 #include <cstdio>
 
 #include "fapc/face/renderer.hpp"
+#include "stroke_text.hpp"
 
 namespace fapc::face {
 
 namespace {
 
-// Time stamps are drawn with a built-in seven-segment stroke font, not a system font, so sheets
-// look the same on every machine (golden images stay exact).
-//  segments: a top, b upper right, c lower right, d bottom, e lower left, f upper left, g middle
-constexpr unsigned char kDigitSegments[10] = {0x3f, 0x06, 0x5b, 0x4f, 0x66, 0x6d, 0x7d, 0x07, 0x7f, 0x6f};
-
-void stroke_segments(cairo_t* cr, unsigned char bits, double x, double y, double w, double h) {
-  const double segs[7][4] = {{0, 0, w, 0},     {w, 0, w, h / 2}, {w, h / 2, w, h}, {0, h, w, h},
-                             {0, h / 2, 0, h}, {0, 0, 0, h / 2}, {0, h / 2, w, h / 2}};
-  for (int i = 0; i < 7; ++i)
-    if (bits & (1 << i)) {
-      cairo_move_to(cr, x + segs[i][0], y + segs[i][1]);
-      cairo_line_to(cr, x + segs[i][2], y + segs[i][3]);
-    }
-}
-
-// "12.40 s" at (x, y), digit height h.
+// "12.40s" at (x, y), digit height h, in the stroke font (stroke_text.hpp).
 void stamp(cairo_t* cr, double seconds, double x, double y, double h) {
   char text[32];
   std::snprintf(text, sizeof text, "%.2fs", seconds);
-  const double w = h / 2, gap = h / 3;
   cairo_set_line_width(cr, std::max(1.0, h / 8));
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-  for (const char* c = text; *c; ++c) {
-    if (*c == '1') {  // the one is narrow: its segments on the left edge of a thin cell
-      stroke_segments(cr, 0x30, x, y, w, h);
-      x += gap * 1.5;
-    } else if (*c >= '0' && *c <= '9') {
-      stroke_segments(cr, kDigitSegments[*c - '0'], x, y, w, h);
-      x += w + gap;
-    } else if (*c == '.') {
-      cairo_move_to(cr, x, y + h);
-      cairo_line_to(cr, x, y + h);
-      x += gap * 1.5;
-    } else if (*c == 's') {  // a small s: the 5's shape at half height
-      stroke_segments(cr, kDigitSegments[5], x, y + h / 2, w * 0.8, h / 2);
-      x += w + gap;
-    } else if (*c == '-') {
-      stroke_segments(cr, 0x40, x, y, w, h);
-      x += w + gap;
-    }
-  }
+  stroke_text(cr, text, x, y, h);
   cairo_stroke(cr);
 }
 
@@ -100,6 +67,7 @@ std::vector<double> sheet_times(const FaceTrack& track, int cells) {
 Result<Image> render_picture(const FaceTrack& track, const PictureOptions& o, const std::string& where) {
   if (Status checked = check_picture_options(o, where); !checked) return checked.error();
   FaceRenderer renderer(o.width, o.height);
+  renderer.show_feature_points(o.points);
   if (!o.sheet) {
     const FapValues& values = o.frame ? track.at_frame(*o.frame) : track.at_time(o.time.value_or(0));
     return renderer.render(values);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "fapc/face/face_pose.hpp"
+#include "stroke_text.hpp"
 
 namespace fapc::face {
 
@@ -103,6 +104,7 @@ struct FaceRenderer::State {
   double scale = 1, cx = 0, cy = 0;
   Vec3 pivot;
   FacePose pose;
+  bool points = false;
 
   Pt at(Vec3 v) const { return {cx + scale * (v.x - pivot.x), cy - scale * (v.y - pivot.y)}; }
   Pt at(P p) const { return at(pose.at(p)); }
@@ -123,7 +125,33 @@ struct FaceRenderer::State {
   void mouth();
   void cheek(bool left);
   void draw_all();
+  void feature_points();
 };
+
+// Points on the far side of the head (facing away after the turn) are left out.
+void FaceRenderer::State::feature_points() {
+  const double h = std::max(6.0, 4.5 * scale);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  for (const FacePoint& p : face_points()) {
+    if (p.id == P::spine_top) continue;  // inside the neck
+    const Vec3 outward = p.neutral - Vec3{0, p.neutral.y, skull().centre.z};
+    if (pose.turn_direction(outward).z < -5) continue;
+    const Pt c = at(p.id);
+    const bool standard = !p.label.empty();
+    if (standard) cairo_set_source_rgb(cr, 0.85, 0.1, 0.1);
+    else cairo_set_source_rgb(cr, 0.45, 0.45, 0.5);
+    cairo_arc(cr, c.x, c.y, std::max(1.5, 0.9 * scale), 0, 2 * M_PI);
+    cairo_fill(cr);
+    if (!standard) continue;
+    // Labels of left points to the right of the dot, right points to the left.
+    const double width = stroke_text(cr, p.label, 0, -1000, h) - 0;
+    cairo_new_path(cr);
+    const double x = p.neutral.x >= 0 ? c.x + 0.4 * h : c.x - 0.4 * h - width;
+    cairo_set_line_width(cr, std::max(1.0, h / 7));
+    stroke_text(cr, p.label, x, c.y - h - 1, h);
+    cairo_stroke(cr);
+  }
+}
 
 // The outline of a turned ellipsoid seen along z: the 2x2 upper block of R D^2 R^T is the shape
 // matrix of its orthographic shadow, an ellipse.
@@ -427,10 +455,13 @@ const Image& FaceRenderer::render(const FapValues& values) {
   s.pose = pose_face(values);
   cairo_save(s.cr);
   s.draw_all();
+  if (s.points) s.feature_points();
   cairo_restore(s.cr);
   cairo_surface_flush(s.surface);
   return s.image;
 }
+
+void FaceRenderer::show_feature_points(bool show) { state_->points = show; }
 
 int FaceRenderer::width() const { return state_->image.width; }
 int FaceRenderer::height() const { return state_->image.height; }

@@ -18,6 +18,7 @@ struct PictureOptions {
   std::optional<double> time;         // --time T seconds
   std::optional<int> sheet;           // --sheet N: N frames in a grid
   int frame_rate = 0;                 // video outputs: pictures per second (0: the input's rate)
+  bool points = false;                // --points: mark and number the feature points
 };
 
 inline constexpr int kMaxSheetFrames = 400;

@@ -21,6 +21,10 @@ class FaceRenderer {
   FaceRenderer(const FaceRenderer&) = delete;
   FaceRenderer& operator=(const FaceRenderer&) = delete;
 
+  // Marks every feature point on the pictures that follow: the standard's points numbered in
+  // red, the drawing's own contour points in grey (docs/render.md's chart).
+  void show_feature_points(bool show);
+
   // Draws the face showing `values` over the whole picture; returns it (valid until the next call).
   const Image& render(const FapValues& values);
 
