@@ -116,6 +116,7 @@ struct FaceRenderer::State {
   }
 
   void ellipsoid(const Ellipsoid& e, Rgb fill, bool outline);
+  void outline_and_fill(Rgb fill);
   void neck();
   void skin();
   void ear(bool left);
@@ -175,10 +176,18 @@ void FaceRenderer::State::ellipsoid(const Ellipsoid& e, Rgb fill, bool outline) 
   cairo_arc(cr, 0, 0, 1, 0, 2 * M_PI);
   cairo_restore(cr);
   if (outline) {
-    set(cr, kSkinLine);
-    cairo_set_line_width(cr, 1.6 * scale);
-    cairo_stroke_preserve(cr);
+    outline_and_fill(fill);
+    return;
   }
+  set(cr, fill);
+  cairo_fill(cr);
+}
+
+// The current path with the skin's outline colour round it, then filled.
+void FaceRenderer::State::outline_and_fill(Rgb fill) {
+  set(cr, kSkinLine);
+  cairo_set_line_width(cr, 1.6 * scale);
+  cairo_stroke_preserve(cr);
   set(cr, fill);
   cairo_fill(cr);
 }
@@ -190,11 +199,7 @@ void FaceRenderer::State::neck() {
   cairo_move_to(cr, p[0].x, p[0].y);
   for (std::size_t i = 1; i < p.size(); ++i) cairo_line_to(cr, p[i].x, p[i].y);
   cairo_close_path(cr);
-  set(cr, kSkinLine);
-  cairo_set_line_width(cr, 1.6 * scale);
-  cairo_stroke_preserve(cr);
-  set(cr, kNeck);
-  cairo_fill(cr);
+  outline_and_fill(kNeck);
 }
 
 // Skull and lower face: the outlines of both are stroked first and then both filled, so only the
@@ -225,11 +230,7 @@ void FaceRenderer::State::ear(bool left) {
   const std::vector<Pt> p = left ? at({P::ear_l_top, P::ear_l_back, P::ear_l_lobe, P::ear_l_front})
                                  : at({P::ear_r_top, P::ear_r_back, P::ear_r_lobe, P::ear_r_front});
   curve(cr, p, true);
-  set(cr, kSkinLine);
-  cairo_set_line_width(cr, 1.6 * scale);
-  cairo_stroke_preserve(cr);
-  set(cr, kSkin);
-  cairo_fill(cr);
+  outline_and_fill(kSkin);
 }
 
 void FaceRenderer::State::brow(bool left) {
