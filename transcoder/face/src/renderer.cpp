@@ -202,12 +202,39 @@ void FaceRenderer::State::neck() {
   outline_and_fill(kNeck);
 }
 
+// The points that shape the lower face, seen from any side: the jaw line, the chin and the lips.
+constexpr P kLowerFace[] = {P::cheek_l_upper, P::cheek_l_side, P::jaw_angle_l, P::chin_l,
+                            P::chin_bottom,   P::chin_r,       P::jaw_angle_r, P::cheek_r_side,
+                            P::cheek_r_upper, P::chin_boss,    P::lip_b_mid_o, P::lip_t_mid_o};
+
+// The convex hull of projected points, counter-clockwise on the screen (Andrew's monotone chain).
+std::vector<Pt> convex_hull(std::vector<Pt> p) {
+  std::sort(p.begin(), p.end(), [](const Pt& a, const Pt& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  if (p.size() < 3) return p;
+  auto cross = [](const Pt& o, const Pt& a, const Pt& b) {
+    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+  };
+  std::vector<Pt> hull(2 * p.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
+    hull[k++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, lower = k + 1; i > 0; --i) {
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], p[i - 1]) <= 0) --k;
+    hull[k++] = p[i - 1];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
 // Skull and lower face: the outlines of both are stroked first and then both filled, so only the
-// outer edge of their union keeps a line.
+// outer edge of their union keeps a line. The lower face is the smooth curve round the convex
+// hull of its projected points, which stays a sensible jaw from the front, the side and below.
 void FaceRenderer::State::skin() {
-  const std::vector<Pt> jaw = at({P::cheek_l_upper, P::cheek_l_side, P::jaw_angle_l, P::chin_l,
-                                  P::chin_bottom, P::chin_r, P::jaw_angle_r, P::cheek_r_side,
-                                  P::cheek_r_upper});
+  std::vector<Pt> projected;
+  for (P p : kLowerFace) projected.push_back(at(p));
+  const std::vector<Pt> jaw = convex_hull(std::move(projected));
   set(cr, kSkinLine);
   cairo_set_line_width(cr, 3.2 * scale);
   curve(cr, jaw, true);
