@@ -42,9 +42,10 @@ const table = document.getElementById('values');
 const ctx = plot.getContext('2d');
 const margin = data.plotMargin, W = plot.width, H = plot.height;
 const duration = data.frames / data.rate;
-let lo = 0, hi = 0;
-for (const f of data.faps) for (const v of f.values) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
-if (hi === lo) { hi = 1; lo = -1; }
+// Each curve is scaled to its own largest |value|, so small FAPs keep their shape beside head
+// rotations in the thousands; the table gives the values themselves.
+for (const f of data.faps) f.scale = Math.max(1e-9, ...f.values.map(Math.abs));
+const lo = -1, hi = 1;
 const colours = ['#1f77b4','#d62728','#2ca02c','#9467bd','#ff7f0e','#8c564b','#e377c2','#17becf','#7f7f7f','#bcbd22'];
 const xOf = t => margin + (W - 2 * margin) * (duration > 0 ? t / duration : 0);
 const yOf = v => H - margin / 2 - (H - margin) * (v - lo) / (hi - lo);
@@ -54,7 +55,7 @@ function drawCurves() {
   ctx.strokeStyle = '#ccc'; ctx.beginPath(); ctx.moveTo(margin, yOf(0)); ctx.lineTo(W - margin, yOf(0)); ctx.stroke();
   data.faps.forEach((f, i) => {
     ctx.strokeStyle = colours[i % colours.length]; ctx.beginPath();
-    f.values.forEach((v, j) => { const x = xOf(j / data.rate), y = yOf(v); j ? ctx.lineTo(x, y) : ctx.moveTo(x, y); });
+    f.values.forEach((v, j) => { const x = xOf(j / data.rate), y = yOf(v / f.scale); j ? ctx.lineTo(x, y) : ctx.moveTo(x, y); });
     ctx.stroke();
   });
 }
