@@ -13,7 +13,7 @@ namespace fapc::test {
 // and the mean channel difference stays below kMeanTolerance. Room for anti-aliasing that
 // another cairo or pixman version may round differently, not for a moved feature.
 inline constexpr int kChannelTolerance = 24;
-inline constexpr double kPixelShare = 0.002;
+inline constexpr double kPixelShare = 0.0005;
 inline constexpr double kMeanTolerance = 0.5;
 
 // Compares `actual` with corpus/`path` within the tolerance, or rewrites it under
