@@ -1,12 +1,14 @@
 #include "fapc/codec/file_io.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <zlib.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <iterator>
 #include <random>
 
 namespace fapc {
@@ -18,8 +20,32 @@ bool ends_with(std::string_view s, std::string_view suffix) {
 }
 
 Diagnostic io_error(const std::string& path, const std::string& what) {
-  return make_error(Location{path, 0, 0, -1}, what + ": " + std::strerror(errno));
+  return make_error(ErrorKind::io, Location{path, 0, 0, -1}, what + ": " + std::strerror(errno));
 }
+
+// Why a file of this type cannot be read as an input, or nullptr for a regular file.
+const char* not_readable_type(mode_t mode) {
+  if (S_ISREG(mode)) return nullptr;
+  if (S_ISDIR(mode)) return "is a directory";
+  if (S_ISFIFO(mode)) return "not a regular file (a FIFO)";
+  if (S_ISSOCK(mode)) return "not a regular file (a socket)";
+  if (S_ISCHR(mode) || S_ISBLK(mode)) return "not a regular file (a device)";
+  return "not a regular file";
+}
+
+class Descriptor {
+ public:
+  explicit Descriptor(int fd) : fd_(fd) {}
+  ~Descriptor() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  Descriptor(const Descriptor&) = delete;
+  Descriptor& operator=(const Descriptor&) = delete;
+  int get() const { return fd_; }
+
+ private:
+  int fd_;
+};
 
 }  // namespace
 
@@ -68,10 +94,29 @@ std::string gzip(std::string_view bytes) {
 }
 
 Result<std::string> read_file_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return io_error(path, "cannot open file");
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) return io_error(path, "cannot read file");
+  const Location whole_file{path, 0, 0, -1};
+  // The type is checked before opening (opening a device can have effects of its own) and again
+  // on the open descriptor, in case the name changed in between. O_NONBLOCK: opening a FIFO
+  // without a writer would otherwise wait forever.
+  struct stat info {};
+  if (::stat(path.c_str(), &info) == 0) {
+    if (const char* why = not_readable_type(info.st_mode)) return make_error(ErrorKind::io, whole_file, why);
+  }
+  const Descriptor file(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
+  if (file.get() < 0) return io_error(path, "cannot open file");
+  if (::fstat(file.get(), &info) != 0) return io_error(path, "cannot read file");
+  if (const char* why = not_readable_type(info.st_mode)) return make_error(ErrorKind::io, whole_file, why);
+  std::string bytes;
+  char buffer[65536];
+  for (;;) {
+    const ssize_t got = ::read(file.get(), buffer, sizeof buffer);
+    if (got == 0) break;
+    if (got < 0) {
+      if (errno == EINTR) continue;
+      return io_error(path, "cannot read file");
+    }
+    bytes.append(buffer, static_cast<std::size_t>(got));
+  }
   if (is_gzip(bytes)) return gunzip(bytes, path);
   return bytes;
 }

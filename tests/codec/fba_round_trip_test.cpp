@@ -4,6 +4,7 @@
 // verify_fba alone: with fitted masks, what three kinds of player show (docs/fba.md 2, "Masks").
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 
 #include "fapc/codec/fba.hpp"
@@ -38,6 +39,20 @@ std::vector<std::array<std::int64_t, kFapCount>> shown(const FapSequence& sequen
   return frames;
 }
 
+// What a reconstruction must be within half a step of: the value, except that a value inside its
+// legal range (0..63 for blends and intensities, +-legal_max for FAPs 3..68) is never
+// reconstructed outside it, so one closer to the range's end than the last reconstruction that
+// fits wants that reconstruction (reconstructions are multiples of the step).
+std::int64_t target(std::int64_t value, std::int64_t legal, std::int64_t step) {
+  if (step == 0 || std::llabs(value) > legal) return value;
+  const std::int64_t top = legal / step * step;
+  return std::clamp(value, -top, top);
+}
+
+// A blend or intensity a decoder shows as it is: inside 0..63 and on the lattice of fap_quant
+// (fapc's decoder clamps a 64 to 63, which is then off the lattice at even fap_quant).
+bool field_legal(int value, int quant) { return value >= 0 && value <= 63 && (quant == 0 || value % quant == 0); }
+
 // Checks `decoded` against `input` frame by frame; returns a description of the first mismatch.
 std::string first_mismatch(const FapSequence& input, const FapSequence& decoded, const FbaEncodeOptions& options) {
   const int quant = options.quant;
@@ -50,15 +65,16 @@ std::string first_mismatch(const FapSequence& input, const FapSequence& decoded,
     if (b.number != a.number - input.frames.front().number) return at + "number";
     if (options.masks == FbaMaskMode::keep ? a.mask != b.mask : a.has(1) != b.has(1) || a.has(2) != b.has(2))
       return at + "mask";
-    const int half = quant / 2;
+    const auto near = [quant](int wanted, int got) {
+      return std::llabs(target(wanted, 63, quant) - got) <= quant / 2 && field_legal(got, quant);
+    };
     if (a.has(1) && (a.viseme.select1 != b.viseme.select1 || a.viseme.select2 != b.viseme.select2 ||
-                     a.viseme.def != b.viseme.def || std::abs(a.viseme.blend - b.viseme.blend) > half ||
-                     b.viseme.blend > 63))
+                     a.viseme.def != b.viseme.def || !near(a.viseme.blend, b.viseme.blend)))
       return at + "viseme";
     if (a.has(2) && (a.expression.select1 != b.expression.select1 || a.expression.select2 != b.expression.select2 ||
                      a.expression.init_face != b.expression.init_face || a.expression.def != b.expression.def ||
-                     std::abs(a.expression.intensity1 - b.expression.intensity1) > half ||
-                     std::abs(a.expression.intensity2 - b.expression.intensity2) > half))
+                     !near(a.expression.intensity1, b.expression.intensity1) ||
+                     !near(a.expression.intensity2, b.expression.intensity2)))
       return at + "expression";
   }
   for (const Player player : {kHolds, kZero, kPartner}) {
@@ -67,8 +83,10 @@ std::string first_mismatch(const FapSequence& input, const FapSequence& decoded,
     for (std::size_t k = 0; k < want.size(); ++k)
       for (int fap = 3; fap <= kFapCount; ++fap) {
         const auto i = static_cast<std::size_t>(fap - 1);
-        const std::int64_t tolerance = static_cast<std::int64_t>(fap_table()[i].quant_step) * quant / 2;
-        if (std::llabs(want[k][i] - got[k][i]) > tolerance)
+        const std::int64_t step = static_cast<std::int64_t>(fap_table()[i].quant_step) * quant;
+        const std::int64_t legal = fap_table()[i].legal_max();
+        const bool leaves_range = std::llabs(want[k][i]) <= legal && std::llabs(got[k][i]) > legal;
+        if (std::llabs(target(want[k][i], legal, step) - got[k][i]) > step / 2 || leaves_range)
           return "frame " + std::to_string(k) + ": FAP " + std::to_string(fap) + " " + std::to_string(want[k][i]) +
                  " -> " + std::to_string(got[k][i]) + " (player " + std::to_string(player) + ")";
       }

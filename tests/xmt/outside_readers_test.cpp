@@ -106,7 +106,9 @@ TEST(OutsideReaders, AcceptTheMp4OfEveryBundledExample) {
     const std::string extension = fs::path(input).extension().string();
     if (extension == ".md" || extension == ".xpr" || extension == ".pho") continue;
     const std::string output = (folder / (std::to_string(checked) + ".mp4")).string();
-    const auto run = fapc::test::run_fapc("compile '" + input + "' -o '" + output + "' --verify");
+    // As in the main job (batch over the folder): an example may include from the whole folder.
+    const auto run = fapc::test::run_fapc("compile '" + input + "' -o '" + output +
+                                          "' --verify --allow-include corpus/examples");
     ASSERT_EQ(run.exit_status, 0) << input << ": " << run.err;
     check_with_outside_readers(output);
     ++checked;

@@ -62,15 +62,34 @@ TEST(XmtoAnimation, PlacedAtTheElementsBeginWithAPathRelativeToTheDocument) {
 
 TEST(XmtoAnimation, RefAndFileUrlsAndAbsolutePaths) {
   Recorder recorder;
-  const auto doc = read(R"(<animation ref="b.fap"/><animation src="file:c.fap"/><animation src="/abs/d.fap"/>)"
-                        R"(<animation src="e.fap" ref="ignored.fap"/>)",
-                        recorder);
-  ASSERT_TRUE(doc.ok());
+  XmtoOptions options = recorder.options();
+  options.includes.allowed_folders = {"dir", "/abs"};  // an absolute path needs its folder allowed
+  const auto doc = read_xmto(document(R"(<animation ref="b.fap"/><animation src="file:c.fap"/><animation src="/abs/d.fap"/>)"
+                                      R"(<animation src="e.fap" ref="ignored.fap"/>)"),
+                             "dir/t.xmt", options);
+  ASSERT_TRUE(doc.ok()) << format_diagnostic(doc.error());
   EXPECT_EQ(recorder.paths, (std::vector<std::string>{"dir/b.fap", "dir/c.fap", "/abs/d.fap", "dir/e.fap"}));
   // The element's own warning comes before the warnings of what it included.
   const std::vector<std::string> warnings = test::messages(doc->warnings);
   ASSERT_EQ(warnings.size(), 5u);
   EXPECT_EQ(warnings[3], "dir/t.xmt:3:106: warning: ref is ignored: src is given");
+}
+
+// docs/security.md: by default a document includes from its own folder tree only.
+TEST(XmtoAnimation, AbsolutePathsAndEscapesOutsideTheFolderAreRefused) {
+  for (const std::string src : {"/etc/passwd", "../x.fap", "sub/../../x.fap"}) {
+    Recorder recorder;
+    const auto doc = read("<animation src=\"" + src + "\"/>", recorder);
+    ASSERT_FALSE(doc.ok()) << src;
+    EXPECT_EQ(doc.error().kind, ErrorKind::bad_input);
+    EXPECT_NE(doc.error().message.find("outside the folders a script may include from ('dir')"), std::string::npos)
+        << doc.error().message;
+    EXPECT_EQ(doc.error().where.line, 3) << src;
+    EXPECT_TRUE(recorder.paths.empty()) << "nothing is loaded";
+  }
+  Recorder inside;
+  EXPECT_TRUE(read(R"(<animation src="sub/../x.fap"/>)", inside).ok());
+  EXPECT_EQ(inside.paths, std::vector<std::string>{"dir/x.fap"});
 }
 
 TEST(XmtoAnimation, DurCutsTheIncludedInput) {

@@ -92,7 +92,7 @@ std::string junit_report(const std::vector<Job>& jobs, const std::vector<JobResu
 int run_batch(const std::vector<std::string>& argv) {
   Args args(argv, [] { auto v = kConvertValued; v.insert({"output", "jobs", "report"}); return v; }(),
             [] { auto f = kConvertFlags; f.insert("keep-going"); return f; }());
-  const ConvertOptions options = convert_options(args);
+  ConvertOptions options = convert_options(args);
   const int jobs_wanted = args.integer("jobs", 1, 1, 256);
   if (!args.ok()) return usage_error("batch", args.error());
   const auto out_dir = args.value("output");
@@ -103,6 +103,9 @@ int run_batch(const std::vector<std::string>& argv) {
     if (!output_format_named(kind)) return usage_error("batch", "unknown output kind '" + kind + "'");
   for (const std::string& input : args.positionals())
     if (!fs::exists(input)) return usage_error("batch", "no such file or folder: " + input);
+  // A folder given to batch is the inputs' tree: their includes may read anywhere in it.
+  for (const std::string& input : args.positionals())
+    if (fs::is_directory(input)) options.includes.allowed_folders.push_back(input);
 
   const std::vector<Job> jobs = collect(args.positionals());
   std::vector<JobResult> results(jobs.size());

@@ -39,6 +39,7 @@ int run_compile(const std::vector<std::string>& argv) {
     if (!from) return usage_error("compile", "standard input needs --from KIND");
     input = save_stdin(*from);
     if (input.empty()) return usage_error("compile", "unknown input kind '" + *from + "'");
+    options.includes.base_folder = ".";  // its includes are named from the working folder
   }
   const int status = convert(input, *output, options, to).exit_status;
   if (args.positionals().front() == "-") std::filesystem::remove_all(std::filesystem::path(input).parent_path());

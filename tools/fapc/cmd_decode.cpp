@@ -8,7 +8,7 @@ namespace fapc::cli {
 namespace {
 
 int run_decode(const std::vector<std::string>& argv) {
-  Args args(argv, {"output", "to"}, {"strict"});
+  Args args(argv, {"output", "to", "fap-flavour"}, {"strict"});
   ConvertOptions options = convert_options(args);
   if (!args.ok()) return usage_error("decode", args.error());
   if (args.positionals().size() != 1) return usage_error("decode", "expected one input stream");
@@ -21,7 +21,7 @@ int run_decode(const std::vector<std::string>& argv) {
   return convert(input, *output, options, args.value("to").value_or("")).exit_status;
 }
 
-const RegisterCommand decode_command{"decode", "fapc decode IN.fba|IN.mp4 -o OUT.fap [--strict] [--to KIND]",
+const RegisterCommand decode_command{"decode", "fapc decode IN.fba|IN.mp4 -o OUT.fap [--strict] [--to KIND] [--fap-flavour F]",
                                      run_decode};
 
 }  // namespace

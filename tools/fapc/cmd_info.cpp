@@ -94,7 +94,8 @@ int run_info(const std::vector<std::string>& argv) {
     report(make_error(Location{path, 0, 0, -1}, "unknown input kind"));
     return kExitBadInput;
   }
-  const ConvertOptions options;
+  const ReadingInput reading(path, ConvertOptions{});  // for its includes, as load_input would
+  const ConvertOptions& options = reading.options();
   auto loaded = format->load(path, options);
   if (!loaded) {
     report(loaded.error());

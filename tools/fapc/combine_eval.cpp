@@ -1,18 +1,20 @@
 #include "fapc/combine_eval.hpp"
 
-#include <filesystem>
-
 #include "fapc/codec/file_io.hpp"
+#include "fapc/codec/include_policy.hpp"
 #include "fapc/timeline_input.hpp"
 
 namespace fapc::cli {
 
 namespace {
 
-Result<algebra::Value> load_operand(const std::string& path, const ConvertOptions& options,
-                                    const Profile& profile, Diagnostics& warnings) {
+// A facial state (.xpr) or, through the registry, any input; an included one (an operand of a
+// .combine file) is checked for cycles and read on a stack of its own.
+Result<algebra::Value> load_operand(const std::string& path, const Location& where, bool included,
+                                    const ConvertOptions& options, const Profile& profile,
+                                    Diagnostics& warnings) {
   algebra::Value value;
-  if (path.ends_with(".xpr")) {  // a facial state
+  if (path.ends_with(".xpr")) {
     Result<std::string> text = read_file_bytes(path);
     if (!text) return text.error();
     Result<std::vector<ExpressionEntry>> entries = parse_expression_file(*text, path);
@@ -22,7 +24,7 @@ Result<algebra::Value> load_operand(const std::string& path, const ConvertOption
     value.state = *state;
     return value;
   }
-  Result<Loaded> loaded = load_input(path, options);
+  Result<Loaded> loaded = included ? load_included_input(path, where, options) : load_input(path, options);
   if (!loaded) return loaded.error();
   warnings.insert(warnings.end(), loaded->warnings.begin(), loaded->warnings.end());
   value.animation = algebra::animation_from(loaded->frames);
@@ -32,15 +34,16 @@ Result<algebra::Value> load_operand(const std::string& path, const ConvertOption
 }  // namespace
 
 Result<algebra::Value> evaluate_combination(const std::string& expression,
-                                            const std::string& base_folder,
+                                            const std::string& including_file,
                                             const ConvertOptions& options, Diagnostics& warnings) {
   Result<Profile> profile = profile_for(options);
   if (!profile) return profile.error();
-  const auto load = [&](const std::string& name, int) {
-    const std::filesystem::path path(name);
-    const std::string resolved =
-        path.is_absolute() || base_folder.empty() ? name : (std::filesystem::path(base_folder) / path).string();
-    return load_operand(resolved, options, *profile, warnings);
+  const auto load = [&](const std::string& name, int column) -> Result<algebra::Value> {
+    const Location where = Location::text("<expression>", 1, column);
+    if (including_file.empty()) return load_operand(name, where, false, options, *profile, warnings);
+    Result<std::string> path = resolve_include(name, including_file, options.includes, where);
+    if (!path) return path.error();
+    return load_operand(*path, where, true, options, *profile, warnings);
   };
   return algebra::evaluate(expression, load);
 }

@@ -8,11 +8,13 @@
 
 namespace fapc::cli {
 
-// Operands are loaded with load_input (any registered input) or, for .xpr, as facial states;
-// relative operand paths are taken from `base_folder` (empty: the working folder). Warnings of
-// the operands are appended to `warnings`.
+// Operands are loaded with load_input (any registered input) or, for .xpr, as facial states.
+// In a .combine file (`including_file`) they are includes: names relative to its folder, under
+// the include policy of options.includes, cycles refused. Empty `including_file`: the expression
+// comes from the command line and its operands are inputs like any other. Warnings of the
+// operands are appended to `warnings`.
 Result<algebra::Value> evaluate_combination(const std::string& expression,
-                                            const std::string& base_folder,
+                                            const std::string& including_file,
                                             const ConvertOptions& options, Diagnostics& warnings);
 
 // The result as frames at `fps` (a state is one frame), named `name`.

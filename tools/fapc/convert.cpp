@@ -46,6 +46,13 @@ ConvertOptions convert_options(Args& args) {
   options.picture.time = args.decimal("time", 0, 1e7);
   options.picture.points = args.flag("points");
   if (args.value("sheet")) options.picture.sheet = args.integer("sheet", 12, 1, 400);
+  // Folders whose files includes may read besides the input's own (docs/security.md).
+  for (const std::string& folder : args.values("allow-include")) options.includes.allowed_folders.push_back(folder);
+  if (const auto flavour = args.value("fap-flavour")) {
+    const auto known = fap_flavour_named(*flavour);
+    if (!known) args.fail("--fap-flavour takes " + fap_flavour_names() + ", not '" + *flavour + "'");
+    options.fap_flavour = known.value_or(FapFlavour::safe);
+  }
   for (const std::string& event : args.values("event")) {
     const auto eq = event.find('=');
     if (eq == std::string::npos || eq == 0) {

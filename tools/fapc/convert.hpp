@@ -12,8 +12,9 @@ namespace fapc::cli {
 // Option names shared by compile and batch.
 inline const std::set<std::string> kConvertValued = {"fps", "profile", "event", "quant",
                                                       "intra-period", "ranges", "masks", "from", "to",
-                                                      "duration", "speech-rate", "size",
-                                                      "frame-rate", "frame", "time", "sheet"};
+                                                      "duration", "speech-rate", "fap-flavour",
+                                                      "allow-include", "size", "frame-rate", "frame",
+                                                      "time", "sheet"};
 inline const std::set<std::string> kConvertFlags = {"strict", "verify", "points"};
 
 // Reads the shared options; sets args' error on bad values.

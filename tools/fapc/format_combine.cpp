@@ -35,7 +35,7 @@ Result<Loaded> load_combine(const std::string& path, const ConvertOptions& optio
   if (expression.empty()) return make_error(Location::text(path, 1, 1), "no expression in this file");
   Loaded loaded;
   Result<algebra::Value> value = evaluate_combination(
-      expression, std::filesystem::path(path).parent_path().string(), options, loaded.warnings);
+      expression, path, options, loaded.warnings);
   if (!value) {
     Diagnostic d = value.error();
     if (d.where.file == "<expression>") d.where = Location::text(path, expression_line, d.where.column);

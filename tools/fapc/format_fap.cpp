@@ -37,8 +37,12 @@ Result<nlohmann::ordered_json> describe_fap(const std::string& path, const Conve
   return out;
 }
 
-Result<std::string> write_fap(const Loaded& loaded, const std::string&, const ConvertOptions&) {
-  return write_fap_text(loaded.frames);
+Result<std::string> write_fap(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
+  FapWriteOptions write;
+  write.flavour = options.fap_flavour;
+  auto text = write_fap_flavour(loaded.frames, write);
+  if (!text) return Diagnostic{text.error().severity, Location{path, 0, 0, -1}, text.error().message, {}, text.error().kind};
+  return text;
 }
 
 const RegisterInput fap_input{InputFormat{"fap", {".fap", ".fap.gz", ".FAP"}, load_fap, describe_fap}};

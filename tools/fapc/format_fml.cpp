@@ -14,6 +14,7 @@ Result<xmt::FmlDocument> read_document(const std::string& path, const ConvertOpt
   fml.duration = options.duration;
   fml.visemes_per_second = options.visemes_per_second;
   fml.profile = &profile;
+  fml.includes = options.includes;
   return xmt::load_fml(path, fml);
 }
 

@@ -15,6 +15,7 @@ Result<Loaded> load_mimic(const std::string& path, const ConvertOptions& options
   if (!profile) return profile.error();
   MimicOptions mimic;
   mimic.profile = &*profile;
+  mimic.includes = options.includes;
   Result<MimicProgram> program = compile_mimic(*source, path, mimic);
   if (!program) return program.error();
   return loaded_from_timeline(std::move(program->timeline), path, *profile, options,

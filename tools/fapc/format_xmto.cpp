@@ -13,26 +13,12 @@ namespace fapc::cli {
 
 namespace {
 
-// The XMT-Omega documents being read, outermost first: a nested `animation` that names one of
-// them is a cycle (the reader reports it with this chain). Loading is single-threaded.
-std::vector<std::string>& documents_being_read() {
-  static std::vector<std::string> stack;
-  return stack;
-}
-
-struct ReadingDocument {
-  explicit ReadingDocument(const std::string& path) { documents_being_read().push_back(path); }
-  ~ReadingDocument() { documents_being_read().pop_back(); }
-  ReadingDocument(const ReadingDocument&) = delete;
-  ReadingDocument& operator=(const ReadingDocument&) = delete;
-};
-
 // Included inputs get their own length: --duration ends the outer document only.
 Result<xmt::IncludedAnimation> load_animation(const std::string& path, const Location& where,
                                               const ConvertOptions& options) {
   ConvertOptions inner = options;
   inner.duration.reset();
-  Result<Loaded> loaded = load_input(path, inner);
+  Result<Loaded> loaded = load_included_input(path, where, inner);
   if (!loaded) {
     // A file that cannot be opened or has no known kind is reported at the element naming it.
     const Diagnostic& error = loaded.error();
@@ -52,12 +38,16 @@ Result<xmt::XmtoDocument> read_document(const std::string& path, const ConvertOp
   xmto.fml.events = options.events;
   xmto.fml.profile = &profile;
   xmto.fml.visemes_per_second = options.visemes_per_second;
-  xmto.including = documents_being_read();
+  // The documents around this one (load_input has put this one last): the reader names a cycle
+  // among them at the animation element, before the loader is asked.
+  xmto.including = inputs_being_read();
+  if (!xmto.including.empty()) xmto.including.pop_back();
+  xmto.includes = options.includes;
+  xmto.fml.includes = options.includes;
   xmto.duration = options.duration;
   xmto.load_animation = [&options](const std::string& included, const Location& where) {
     return load_animation(included, where, options);
   };
-  const ReadingDocument reading(path);
   return xmt::load_xmto(path, xmto);
 }
 

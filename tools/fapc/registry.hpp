@@ -14,6 +14,8 @@
 #include <nlohmann/json.hpp>
 
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/codec/fap_file.hpp"
+#include "fapc/codec/include_policy.hpp"
 #include "fapc/codec/fap_sequence.hpp"
 #include "fapc/transcoder/curves.hpp"
 #include "fapc/transcoder/timeline.hpp"
@@ -66,8 +68,12 @@ struct ConvertOptions {
   int intra_period = 0;                      // 0: encoder decides
   std::string ranges = "fit";                // fit | max
   std::string masks = "fit";                 // fit | keep
+  FapFlavour fap_flavour = FapFlavour::safe;  // --fap-flavour: the .fap layout of a player family
   bool strict = false;
   bool verify = false;
+  // Which files includes may read (docs/security.md): the --allow-include folders; load_input
+  // adds the top input's folder.
+  IncludePolicy includes;
 };
 
 // What an input became: always frames; the timeline and its curves when the front end has them
@@ -112,5 +118,33 @@ const OutputFormat* output_format_named(const std::string& kind);
 
 // Loads any supported input (by extension), or reports why not.
 Result<Loaded> load_input(const std::string& path, const ConvertOptions& options);
+
+// ---- inputs that include inputs (docs/security.md) --------------------------------------------
+
+// While alive, `path` is an input being read on this thread (load_input makes one; so does
+// anything that calls a format's load or describe itself). The top input puts its folder (for
+// standard input, includes.base_folder) among the folders includes may read; an included input
+// takes its relative names from its own folder.
+class ReadingInput {
+ public:
+  ReadingInput(const std::string& path, const ConvertOptions& options);
+  ~ReadingInput();
+  ReadingInput(const ReadingInput&) = delete;
+  ReadingInput& operator=(const ReadingInput&) = delete;
+  const ConvertOptions& options() const { return options_; }
+
+ private:
+  ConvertOptions options_;
+};
+
+// The inputs being read on this thread, outermost first, as their paths were given.
+std::vector<std::string> inputs_being_read();
+
+// An input that the one being read includes, named at `where`. One already being read is a cycle,
+// an error at `where` naming the chain ("a.combine -> b.combine -> a.combine"); deeper than
+// kMaxIncludeDepth is a limit. The input is read on a fresh stack of its own, so that each level
+// of including has the whole stack its own bounded recursion needs.
+Result<Loaded> load_included_input(const std::string& path, const Location& where,
+                                   const ConvertOptions& options);
 
 }  // namespace fapc::cli

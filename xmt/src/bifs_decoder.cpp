@@ -29,7 +29,11 @@ class SceneDecoder {
   void use_names(bool on) { use_names_ = on; }
 
   Result<SceneNode> node(Ndt ndt, int depth) {
-    if (depth > kMaxDepth) return fail("scene nested deeper than " + std::to_string(kMaxDepth));
+    if (depth > kMaxDepth) {
+      Diagnostic deep = fail("scene nested deeper than " + std::to_string(kMaxDepth) + " levels (the depth limit)");
+      deep.kind = ErrorKind::limit_exceeded;
+      return deep;
+    }
     const bifs::NdtSpec& table = bifs::ndt_spec(ndt);
     if (in_.get_bit()) return fail("USE of a node: fapc decodes only scenes without USE");
     const std::uint32_t code = in_.get(table.bits);

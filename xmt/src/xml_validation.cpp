@@ -5,12 +5,15 @@
 #include <algorithm>
 #include <memory>
 #include <mutex>
+#include <optional>
 
 #include <xercesc/framework/MemBufInputSource.hpp>
 #include <xercesc/framework/XMLPScanToken.hpp>
 #include <xercesc/sax/EntityResolver.hpp>
+#include <xercesc/sax/Locator.hpp>
 #include <xercesc/sax/SAXException.hpp>
 #include <xercesc/sax/SAXParseException.hpp>
+#include <xercesc/sax2/Attributes.hpp>
 #include <xercesc/sax2/DefaultHandler.hpp>
 #include <xercesc/sax2/SAX2XMLReader.hpp>
 #include <xercesc/sax2/XMLReaderFactory.hpp>
@@ -20,7 +23,9 @@
 #include <xercesc/util/XMLString.hpp>
 #include <xercesc/validators/common/Grammar.hpp>
 
+#include "fapc/codec/deep_stack.hpp"
 #include "schema_registry.hpp"
+#include "xml/xml_document.hpp"
 
 namespace fapc::xmt {
 
@@ -55,17 +60,69 @@ class XmlCh {  // an owned Xerces string
   XMLCh* value_;
 };
 
+// XMT-Omega's NumberList ("0; 100; 50", a trailing ';' allowed), as the form its schema type
+// documents: \s*N\s*(;\s*N\s*)*;?\s* with N = [+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?. Checked
+// here, in one pass, because Xerces-C's matcher recurses once per item of such a pattern.
+bool is_number_list(std::string_view s) {
+  std::size_t i = 0;
+  const auto spaces = [&] {
+    while (i < s.size() && (s[i] == ' ' || s[i] == '\t' || s[i] == '\n' || s[i] == '\r')) ++i;
+  };
+  const auto digits = [&] {
+    const std::size_t from = i;
+    while (i < s.size() && s[i] >= '0' && s[i] <= '9') ++i;
+    return i > from;
+  };
+  const auto sign = [&] {
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+  };
+  const auto number = [&] {
+    sign();
+    if (digits()) {
+      if (i < s.size() && s[i] == '.') {
+        ++i;
+        digits();
+      }
+    } else if (i < s.size() && s[i] == '.') {
+      ++i;
+      if (!digits()) return false;
+    } else {
+      return false;
+    }
+    if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+      ++i;
+      sign();
+      if (!digits()) return false;
+    }
+    return true;
+  };
+  spaces();
+  if (!number()) return false;
+  spaces();
+  while (i < s.size() && s[i] == ';') {
+    ++i;
+    spaces();
+    if (i == s.size()) return true;
+    if (!number()) return false;
+    spaces();
+  }
+  return i == s.size();
+}
+
 // Collects problems with their positions; remembers the root element when asked to.
 class Collector : public xc::DefaultHandler {
  public:
-  explicit Collector(const std::string& file) : file_(file) {}
+  explicit Collector(const std::string& file, bool xmto_lists = false) : file_(file), xmto_lists_(xmto_lists) {}
 
-  void startElement(const XMLCh* uri, const XMLCh* local, const XMLCh*, const xc::Attributes&) override {
+  void setDocumentLocator(const xc::Locator* locator) override { locator_ = locator; }
+
+  void startElement(const XMLCh* uri, const XMLCh* local, const XMLCh*, const xc::Attributes& attributes) override {
     if (!root_seen) {
       root_seen = true;
       root_ns = text(uri);
       root_name = text(local);
     }
+    if (xmto_lists_ && text(local) == "animate") check_number_lists(attributes);
   }
   void warning(const xc::SAXParseException& e) override { add(Severity::warning, e); }
   void error(const xc::SAXParseException& e) override { add(Severity::error, e); }
@@ -82,6 +139,21 @@ class Collector : public xc::DefaultHandler {
   Diagnostics problems;
 
  private:
+  // values and keyTimes of an XMT-Omega animate (their schema type checks only the characters).
+  void check_number_lists(const xc::Attributes& attributes) {
+    for (XMLSize_t i = 0; i < attributes.getLength(); ++i) {
+      const std::string name = text(attributes.getLocalName(i));
+      if (name != "values" && name != "keyTimes") continue;
+      const std::string value = text(attributes.getValue(i));
+      if (is_number_list(value)) continue;
+      const int line = locator_ ? static_cast<int>(locator_->getLineNumber()) : 0;
+      const int column = locator_ ? static_cast<int>(locator_->getColumnNumber()) : 0;
+      const std::string shown = value.size() > 40 ? value.substr(0, 40) + "..." : value;
+      problems.push_back(make_error(Location::text(file_, line, column),
+                                    "'" + name + "': '" + shown + "' is not a list of numbers separated by ';'"));
+    }
+  }
+
   void add(Severity severity, const xc::SAXParseException& e) {
     problems.push_back(Diagnostic{severity,
                                   Location::text(file_, static_cast<int>(e.getLineNumber()),
@@ -89,6 +161,8 @@ class Collector : public xc::DefaultHandler {
                                   text(e.getMessage()), {}});
   }
   const std::string& file_;
+  bool xmto_lists_;
+  const xc::Locator* locator_ = nullptr;
 };
 
 struct ReaderDeleter {
@@ -202,7 +276,7 @@ Result<ValidationReport> validate_with_xerces(std::string_view text_in, const st
     return make_error(Location{file, 0, 0, -1}, "schema " + std::string(binding->schema) + " was not built in");
 
   // Pass 2: validate against the cached grammar.
-  Collector collector(file);
+  Collector collector(file, binding->schema == "xmt-o.xsd");
   Reader reader = make_reader(collector, security, true);
   const XmlCh schema_id(std::string(binding->schema));
   xc::MemBufInputSource grammar(reinterpret_cast<const XMLByte*>(schema->second.data()),
@@ -234,16 +308,25 @@ std::vector<std::string> validated_document_kinds() {
 }
 
 Result<ValidationReport> validate_xml(std::string_view text_in, const std::string& file) {
+  // The readers' depth limit holds here too: Xerces would take any depth, slowly.
+  if (Status depth = xml::check_element_depth(text_in, file); !depth) return depth.error();
   initialise_xerces();
-  // Xerces reports some failures (unreadable encodings, input that is not XML at all) by
-  // throwing; they become an error at the start of the document.
-  try {
-    return validate_with_xerces(text_in, file);
-  } catch (const xc::XMLException& e) {
-    return make_error(Location::text(file, 1, 1), text(e.getMessage()));
-  } catch (const xc::SAXException& e) {
-    return make_error(Location::text(file, 1, 1), text(e.getMessage()));
-  }
+  // Xerces recurses where fapc cannot bound it (its regular-expression matcher, once per item of
+  // a long list attribute): it runs on a stack of its own, large enough for any input that
+  // passes fapc's size limits.
+  std::optional<Result<ValidationReport>> outcome;
+  run_on_deep_stack([&] {
+    // Xerces reports some failures (unreadable encodings, input that is not XML at all) by
+    // throwing; they become an error at the start of the document.
+    try {
+      outcome.emplace(validate_with_xerces(text_in, file));
+    } catch (const xc::XMLException& e) {
+      outcome.emplace(make_error(Location::text(file, 1, 1), text(e.getMessage())));
+    } catch (const xc::SAXException& e) {
+      outcome.emplace(make_error(Location::text(file, 1, 1), text(e.getMessage())));
+    }
+  });
+  return std::move(*outcome);
 }
 
 }  // namespace fapc::xmt

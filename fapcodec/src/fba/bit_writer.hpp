@@ -32,11 +32,22 @@ class BitWriter {
 
   std::size_t bit_count() const { return bytes_.size() * 8 + static_cast<std::size_t>(used_); }
   bool aligned() const { return used_ % 8 == 0; }
+  // The bit at position `at` (0 = the first bit written); at < bit_count().
+  int bit_at(std::size_t at) const;
+  // How many of the last bits written are 0 (all of them, up to `limit`).
+  std::size_t trailing_zero_bits(std::size_t limit) const;
+  // Rewrites the bit at position `at` and inserts `count` (0..32) bits of `value` after it,
+  // moving everything written after it. Rebuilds the tail bit by bit: for the rare plane that
+  // must grow after it is written (plane_writer.cpp), not for the common path.
+  void replace_bit_and_insert(std::size_t at, int bit, std::uint32_t value, int count);
 
   // The bytes written so far; a partial last byte is padded with zeros (callers align first).
   std::vector<std::uint8_t> take();
 
  private:
+  // Moves the whole bytes of pending_ into bytes_, leaving fewer than 8 bits pending.
+  void flush_whole_bytes();
+
   std::vector<std::uint8_t> bytes_;
   std::uint64_t pending_ = 0;  // its last `used_` bits (fewer than 32 between calls) are unwritten
   int used_ = 0;

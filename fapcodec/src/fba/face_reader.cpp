@@ -8,10 +8,6 @@
 
 namespace fapc::fba {
 
-namespace {
-constexpr std::int32_t kLargestBlend = 63;  // viseme_blend and the expression intensities
-}  // namespace
-
 Status FaceReader::read_masks() {
   state_.mask.reset();
   for (const FapGroup& group : fap_groups()) {
@@ -79,9 +75,9 @@ int FaceReader::read_field(int field, bool intra) {
     model.update(s);
     state_.previous_fields[f] += static_cast<std::int32_t>(dequantise(s - limit, step));
   }
-  // An even step rounds 63 up to 64; prediction goes on from 64, but the frame gets the field's
-  // largest legal value, which is also the input's nearest (and re-encodes to the same symbol).
-  return std::min(state_.previous_fields[f], kLargestBlend);
+  // Streams from older fapc versions (and from other encoders) may round 63 up to 64 at an even
+  // step; prediction goes on from 64, but the frame gets the field's largest legal value.
+  return std::min(state_.previous_fields[f], kLargestFieldValue);
 }
 
 Status FaceReader::read_values(bool intra, FapFrame& frame) {

@@ -20,6 +20,22 @@ inline std::int64_t quantise(std::int64_t v, std::int64_t step) {
 
 inline std::int64_t dequantise(std::int64_t q, std::int64_t step) { return step == 0 ? q : q * step; }
 
+// The largest level whose reconstruction stays within +-`legal` (a FAP's legal range, or 63 for
+// a blend or intensity): players clamp what lies beyond, each in its own way, so a value inside
+// its range must never be reconstructed outside it (docs/fba.md 2, "Legal ranges").
+inline std::int64_t largest_legal_level(std::int64_t legal, std::int64_t step) {
+  return step == 0 ? legal : legal / step;
+}
+
+// The value a reconstruction should be within half a step of: the value itself, or the largest
+// legal reconstruction when the value lies between that and the end of its legal range.
+inline std::int64_t legal_target(std::int64_t value, std::int64_t legal, std::int64_t step) {
+  const std::int64_t top = dequantise(largest_legal_level(legal, step), step);
+  if (value > top && value <= legal) return top;
+  if (value < -top && value >= -legal) return -top;
+  return value;
+}
+
 // The smallest 5-bit range value v whose range (v * 60) / scaler covers `magnitude` quantised
 // units (section 5.6); above kMaxRangeValue when nothing can.
 inline int range_value_for(std::int64_t magnitude, int scaler) {

@@ -57,6 +57,8 @@ inline constexpr int kFirstLowLevelFap = 3;
 inline constexpr int kCodedFieldCount = 7;
 inline constexpr int kVisemeFields = 3;      // select1, select2, blend
 inline constexpr int kExpressionFields = 4;  // select1, intensity1, select2, intensity2
+// The largest viseme_blend and expression intensity (fba-bitstream.md section 4).
+inline constexpr int kLargestFieldValue = 63;
 inline constexpr std::array<int, kCodedFieldCount> kFieldLimit{14, 14, -1, 6, -1, 6, -1};  // -1: B
 
 // Body data, parsed only (section 5.8, appendix A).

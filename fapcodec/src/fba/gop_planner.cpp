@@ -23,11 +23,17 @@ bool field_masked(const std::bitset<kFapCount>& mask, int field) {
 // when the value lies exactly half way (even steps only); level_chooser.hpp picks between two. A
 // value within half a step of 0 is always sent as 0, so that a FAP the mask fitter leaves out of
 // the next group shows 0 to players either way (mask_fitter.hpp).
-LevelOptions level_options(std::int64_t value, std::int64_t step) {
-  const std::int64_t nearest = step <= 1 ? value : quantise(value, step);
+// A value inside its FAP's legal range (`legal`) is never given a level beyond it: one step
+// closer to 0 instead (docs/fba.md 2, "Legal ranges").
+LevelOptions level_options(std::int64_t value, std::int64_t step, std::int64_t legal) {
+  std::int64_t nearest = step <= 1 ? value : quantise(value, step);
+  const std::int64_t cap = largest_legal_level(legal, step);
+  const bool inside = std::llabs(value) <= legal;
+  if (inside) nearest = std::clamp(nearest, -cap, cap);
   LevelOptions options{nearest, nearest};
   if (step % 2 == 0 && step != 0 && 2 * std::llabs(value - nearest * step) == step && std::llabs(value) > step / 2)
     options.other = value > nearest * step ? nearest + 1 : nearest - 1;
+  if (inside && std::llabs(options.other) > cap) options.other = nearest;
   return options;
 }
 
@@ -47,7 +53,7 @@ bool GopPlanner::needs_intra(std::size_t k, std::size_t gop_first) const {
 void GopPlanner::nearest_levels(std::size_t k, const Gop& gop, std::vector<std::int64_t>& levels) const {
   levels.clear();
   for (std::size_t j = 0; j < gop.faps.size(); ++j)
-    levels.push_back(level_options(frames_[k].value(gop.faps[j]), steps_[j]).nearest);
+    levels.push_back(level_options(frames_[k].value(gop.faps[j]), steps_[j], legal_[j]).nearest);
 }
 
 Status GopPlanner::check_intra(const Gop& gop) const {
@@ -71,7 +77,8 @@ void GopPlanner::choose_levels(Gop& gop, std::size_t frames) {
   column_.resize(frames);
   levels_.resize(frames);
   for (std::size_t j = 0; j < n; ++j) {
-    for (std::size_t t = 0; t < frames; ++t) column_[t] = level_options(frames_[gop.first + t].value(gop.faps[j]), steps_[j]);
+    for (std::size_t t = 0; t < frames; ++t)
+      column_[t] = level_options(frames_[gop.first + t].value(gop.faps[j]), steps_[j], legal_[j]);
     chooser_.choose(column_, limit_, quant_.range_scaler(), levels_);
     gop.symbols[j] = static_cast<std::int16_t>(levels_[0]);
     for (std::size_t t = 1; t < frames; ++t)
@@ -88,10 +95,15 @@ void GopPlanner::quantise_fields(std::size_t k, bool intra, Gop& gop) {
       continue;
     }
     // Predictive blends and intensities stay within -B..B: both values lie in 0..63 (B * step >= 63).
+    // A blend or intensity is never reconstructed above 63, which an even step would give 63
+    // (64 at fap_quant 2): one step lower instead (docs/fba.md 2, "Legal ranges").
     const std::int32_t base = intra ? 0 : recon_fields_[f];
-    const std::int64_t q = quantise(fields[f] - base, quant_.field_step(field));
+    const std::int64_t step = quant_.field_step(field);
+    std::int64_t q = quantise(fields[f] - base, step);
+    if (quant_.field_quantised(field))
+      while (base + dequantise(q, step) > kLargestFieldValue) --q;
     gop.fields.push_back(static_cast<std::int16_t>(q));
-    recon_fields_[f] = base + static_cast<std::int32_t>(dequantise(q, quant_.field_step(field)));
+    recon_fields_[f] = base + static_cast<std::int32_t>(dequantise(q, step));
   }
 }
 
@@ -132,7 +144,11 @@ Result<Gop> GopPlanner::next() {
   for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap)
     if (gop.mask.test(FaceState::index(fap))) gop.faps.push_back(fap);
   steps_.clear();
-  for (const int fap : gop.faps) steps_.push_back(quant_.step(fap));
+  legal_.clear();
+  for (const int fap : gop.faps) {
+    steps_.push_back(quant_.step(fap));
+    legal_.push_back(fap_table()[FaceState::index(fap)].legal_max());
+  }
   nearest_levels(next_, gop, nearest_);
   if (auto status = check_intra(gop); !status) return status.error();
   // The group ends where the next intra plane must go. Whether a range can carry each difference

@@ -56,6 +56,7 @@ class GopPlanner {
   std::int32_t limit_;  // the largest |q| any range can carry: 31 * 60 / scaler
   std::size_t next_ = 0;
   std::vector<std::int64_t> steps_;  // of the group's FAPs, in coding order
+  std::vector<std::int64_t> legal_;  // and their legal ranges (FapInfo::legal_max)
   std::vector<std::int64_t> nearest_, previous_nearest_;  // nearest levels of two frames
   std::vector<LevelOptions> column_;  // one FAP's choices over the group
   std::vector<std::int64_t> levels_;  // and its chosen levels

@@ -2,6 +2,16 @@
 
 namespace fapc::fba {
 
+namespace {
+
+// The reference decoder decodes a segment with 16 bits of look-ahead and counts zeros as it goes
+// (fba-bitstream.md 6.4-6.6): a segment's trailing zeros, a one-bit stuffing '0' and the 23 zeros
+// of a start code make a run past 22 inside its look-ahead, which it takes for a missing
+// stuffing bit. At most 8 zeros before a start code keep every run well short of that.
+constexpr std::size_t kMaxZerosBeforeStartCode = 8;
+
+}  // namespace
+
 PlaneWriter::PlaneWriter(const FapSequence& sequence, const FbaEncodeOptions& options)
     : frames_(sequence.frames), options_(options), fps_(sequence.fps) {
   state_.fap_quant = options.quant;
@@ -31,6 +41,11 @@ void PlaneWriter::write_plane(const Gop& gop, std::size_t k) {
   write_temporal_header(intra, skip);
   if (intra) write_intra_face_header(gop);
   write_segments(gop, k, intra);
+  // A plane that would end badly grows by an empty skip count ("1 0000" for "0": 0 frames
+  // skipped, the same timing), which moves its end 4 bits on. Only a plane that skips nothing
+  // can; the last plane never skips.
+  if (skip == 0 && needs_padding(plane.bit_offset, k + 1 == frames_.size()))
+    out_.replace_bit_and_insert(skip_flag_at_, 1, 0, kSkipChunkBits);
   if (options_.align_planes) out_.put_start_code_stuffing();
 
   plane.bit_size = out_.bit_count() - plane.bit_offset;
@@ -48,6 +63,7 @@ void PlaneWriter::write_temporal_header(bool intra, std::int64_t skip) {
     out_.put_bit(0);  // frequency_offset
     out_.put_bit(0);  // is_time_code
   }
+  skip_flag_at_ = out_.bit_count();
   out_.put_bit(skip > 0 ? 1 : 0);
   if (skip == 0) return;
   for (; skip >= kSkipChunkContinues; skip -= kSkipChunkContinues)
@@ -132,6 +148,21 @@ void PlaneWriter::write_segments(const Gop& gop, std::size_t k, bool intra) {
     }
   }
   coder_.flush();  // the low-level segment is always present, even with no FAP 3..68 masked
+}
+
+bool PlaneWriter::needs_padding(std::size_t start, bool last) const {
+  const std::size_t end = out_.bit_count();
+  // Stuffing before a start code (a plane start code when planes are aligned, else the end
+  // code after the last plane) is a single '0' when one bit of the byte is left: the plane's
+  // trailing zeros then run straight into the start code.
+  if ((options_.align_planes || last) && end % 8 == 7 &&
+      out_.trailing_zero_bits(kMaxZerosBeforeStartCode) + 1 > kMaxZerosBeforeStartCode)
+    return true;
+  // After each plane the reference decoder looks for the end code at the next byte boundary,
+  // a whole byte on when already aligned (section 5.9). A last plane that ends before that
+  // boundary, stuffing and end code filling the rest of the byte, is taken for the stuffing and
+  // never decoded. Aligned planes start with a start code, which that look never skips.
+  return last && !options_.align_planes && end < start / 8 * 8 + 8;
 }
 
 EncodedFba PlaneWriter::finish() {

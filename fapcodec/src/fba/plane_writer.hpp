@@ -24,6 +24,9 @@ class PlaneWriter {
  private:
   void write_plane(const Gop& gop, std::size_t k);
   void write_temporal_header(bool intra, std::int64_t skip);
+  // Whether the plane just written, from `start` (its first bit) on, must grow so that players
+  // read it (docs/fba.md 2, "End of a plane"); `last` for the plane before the end code.
+  bool needs_padding(std::size_t start, bool last) const;
   void write_intra_face_header(const Gop& gop);
   void write_segments(const Gop& gop, std::size_t k, bool intra);
 
@@ -34,6 +37,7 @@ class PlaneWriter {
   ArithEncoder coder_{out_};
   FaceState state_;
   EncodedFba result_;
+  std::size_t skip_flag_at_ = 0;  // bit position of the current plane's skip_frames flag
 };
 
 }  // namespace fapc::fba

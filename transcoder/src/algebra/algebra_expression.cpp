@@ -11,6 +11,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "fapc/codec/nesting_limit.hpp"
+
 namespace fapc::algebra {
 namespace {
 
@@ -56,6 +58,14 @@ class Evaluator {
   std::string_view text_;
   const OperandLoader& load_;
   std::size_t at_ = 0;
+  // Parentheses and amplifiers ("2 * 2 * x") recurse; deeper than kMaxNestingDepth is refused
+  // before the stack can run out.
+  int depth_ = 0;
+
+  Diagnostic too_deep(std::size_t offset) const {
+    return nesting_too_deep(Location::text("<expression>", 1, static_cast<int>(offset) + 1),
+                            "parentheses and amplifiers", std::string(text_));
+  }
 
   Diagnostic error(std::size_t offset, const std::string& message) const {
     return make_error(Location::text("<expression>", 1, static_cast<int>(offset) + 1), message,
@@ -151,7 +161,10 @@ class Evaluator {
       Result<double> w = number();
       if (!w) return w.error();
       if (!accept("*")) return error(at_, "expected '*' after the amplifier " + format(*w));
+      if (depth_ >= kMaxNestingDepth) return too_deep(at_);
+      ++depth_;
       Result<Term> operand = product();
+      --depth_;
       if (!operand) return operand.error();
       if (auto bad = overlap_only(*operand); bad) return *bad;
       amplify_in_place(operand->value, *w);
@@ -205,7 +218,10 @@ class Evaluator {
     skip_blanks();
     const std::size_t start = at_;
     if (accept("(")) {
+      if (depth_ >= kMaxNestingDepth) return too_deep(start);
+      ++depth_;
       Result<Term> inner = overlap();
+      --depth_;
       if (!inner) return inner.error();
       if (!accept(")")) return error(at_, "expected ')'");
       inner->column = static_cast<int>(start) + 1;

@@ -3,7 +3,6 @@
 // clips; `connect` is resolved last, once every clip has its place.
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <map>
 #include <unordered_map>
 #include <sstream>
@@ -11,6 +10,8 @@
 #include "action_params.hpp"
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/codec/file_io.hpp"
+#include "fapc/codec/include_policy.hpp"
+#include "fapc/codec/nesting_limit.hpp"
 #include "fapc/transcoder/algebra.hpp"
 #include "fapc/transcoder/expression_file.hpp"
 #include "fapc/transcoder/mimic.hpp"
@@ -23,6 +24,10 @@ namespace mimic {
 namespace {
 
 using Kind = ScheduleNode::Kind;
+
+// Far more than any hand-written program expands to (an hour of animation at eight actions a
+// second is 28800), and small enough to refuse within a second (an action costs a few µs).
+constexpr std::size_t kMaxActions = 200000;
 
 struct Target {
   std::string name;
@@ -44,6 +49,9 @@ struct Leaf {
 struct Context {
   std::optional<BlendMode> blend;
   Action::Kind parent = Action::Kind::sequence;
+  // Groups around this action, macro bodies included: a chain of macros nests as deep as their
+  // groups together, and the schedule tree (and the recursion building it) is that deep.
+  int depth = 0;
 };
 
 std::string format_number(double v) {
@@ -100,6 +108,7 @@ class Compiler {
   std::map<std::string, algebra::FacialState> expressions_;
   std::vector<Leaf> leaves_;
   std::vector<std::string> stack_;  // macros being expanded, for recursion errors
+  std::size_t actions_built_ = 0;
   // Per clip of the timeline being built: empty when it does not connect, else the explicit end
   // value of `connect=x` (empty inside: take the next clip's value).
   std::vector<std::optional<std::optional<double>>> connects_;
@@ -150,7 +159,13 @@ class Compiler {
 
   // The .xpr file as a facial state (FAP units, through the profile), by the Algebra's code.
   Result<algebra::FacialState> load_expression(const Definition& d) {
-    const std::string path = (std::filesystem::path(file_).parent_path() / d.file).string();
+    Result<std::string> resolved = resolve_include(d.file, file_, options_.includes, location(d.file_at));
+    if (!resolved) {
+      Diagnostic refused = resolved.error();
+      refused.source_line = source_line(source_, d.file_at.line);
+      return refused;
+    }
+    const std::string& path = *resolved;
     Result<std::string> text = options_.read_file ? options_.read_file(path) : read_file_bytes(path);
     if (!text) {
       return error(d.file_at, "cannot read the expression file '" + d.file + "': " + text.error().message);
@@ -168,6 +183,17 @@ class Compiler {
   }
 
   Result<ScheduleNode> build(const Action& action, const Context& context) {
+    if (context.depth >= kMaxNestingDepth) {
+      return nesting_too_deep(location(action.at), "groups (with macros expanded)", source_line(source_, action.at.line));
+    }
+    // Macros that use each other twice double with every level: forty lines can ask for 2^40
+    // actions. Counted over the whole compilation (the macro bodies' own checks included).
+    if (++actions_built_ > kMaxActions) {
+      return make_error(ErrorKind::limit_exceeded, location(action.at),
+                        "the program has more than " + std::to_string(kMaxActions) +
+                            " actions with macros expanded: fapc refuses to schedule so many",
+                        source_line(source_, action.at.line));
+    }
     Result<ActionParams> params = read(action.params);
     if (!params) return params.error();
     Timing timing;
@@ -187,21 +213,21 @@ class Compiler {
           action.kind == Action::Kind::sequence ? Kind::sequence : Kind::parallel, timing,
           location(action.at));
       for (const Action& child : action.children) {
-        Result<ScheduleNode> built = build(child, Context{blend, action.kind});
+        Result<ScheduleNode> built = build(child, Context{blend, action.kind, context.depth + 1});
         if (!built) return built.error();
         node.children.push_back(std::move(*built));
       }
       return node;
     }
     if (const auto macro = macros_.find(action.name); macro != macros_.end() && !macro->second->expression) {
-      return instantiate(action, *macro->second, *params, timing, blend);
+      return instantiate(action, *macro->second, *params, timing, Context{blend, Action::Kind::sequence, context.depth + 1});
     }
     return atomic(action, *std::move(params), timing, blend.value_or(BlendMode::add), context);
   }
 
   Result<ScheduleNode> instantiate(const Action& action, const Definition& macro,
                                    const ActionParams& params, const Timing& timing,
-                                   std::optional<BlendMode> blend) {
+                                   const Context& body_context) {
     if (const Param* p = atomic_param(params)) {
       return error(p->at, "'" + p->name + "' does not apply to '" + macro.name +
                               "', a macro: give it alignment and blend parameters only");
@@ -213,7 +239,7 @@ class Compiler {
       return error(action.at, "the macro '" + macro.name + "' uses itself (" + chain + macro.name + ")");
     }
     stack_.push_back(macro.name);
-    Result<ScheduleNode> body = build(macro.group, Context{blend, Action::Kind::sequence});
+    Result<ScheduleNode> body = build(macro.group, body_context);
     stack_.pop_back();
     if (!body) return body.error();
     body->timing = timing;  // the instance's alignment, applied as to a group

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "fapc/codec/fap_table.hpp"
+#include "fapc/codec/nesting_limit.hpp"
 #include "mimic_lexer.hpp"
 
 namespace fapc::mimic {
@@ -55,6 +56,7 @@ class Parser {
   Token previous_;
   std::string_view source_;
   const std::string& file_;
+  int depth_ = 0;  // groups open around the current token: the recursion is bounded by it
 
   const Token& peek() const { return current_; }
   // Consumes the current token and returns it (valid until the next call).
@@ -111,6 +113,17 @@ class Parser {
     if (open.kind != TokenKind::left_brace && open.kind != TokenKind::left_bracket) {
       return unexpected("'{' (a sequence) or '[' (a parallel)");
     }
+    if (depth_ >= kMaxNestingDepth) {
+      return nesting_too_deep(Location::text(file_, open.line, open.column), "groups",
+                              source_line(source_, open.line));
+    }
+    ++depth_;
+    Result<Action> group = group_body(open);
+    --depth_;
+    return group;
+  }
+
+  Result<Action> group_body(const Token& open) {
     Action group;
     group.kind = open.kind == TokenKind::left_brace ? Action::Kind::sequence : Action::Kind::parallel;
     group.at = position(open);

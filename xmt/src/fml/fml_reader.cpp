@@ -10,6 +10,8 @@
 
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/codec/file_io.hpp"
+#include "fapc/codec/include_policy.hpp"
+#include "fapc/codec/nesting_limit.hpp"
 #include "fapc/xmt/fml.hpp"
 #include "fml/embedded_fml.hpp"
 #include "fml/fml_timing.hpp"
@@ -386,8 +388,25 @@ class FmlReader {
     return true;
   }
 
+  // Elements open around the one being read, templates expanded: a chain of templates nests as
+  // deep as all of them together, and so do the schedule tree and the recursion building it.
+  int depth_ = 0;
+
   std::optional<ScheduleNode> element(const xmlNode* node) {
     if (error_ || !count_node(node)) return std::nullopt;
+    if (depth_ >= kMaxNestingDepth) {
+      Diagnostic deep = nesting_too_deep(doc_.where(node), "elements (with templates expanded)");
+      deep.source_line = doc_.line_text(deep.where.line);
+      fail(std::move(deep));
+      return std::nullopt;
+    }
+    ++depth_;
+    std::optional<ScheduleNode> read = element_at_depth(node);
+    --depth_;
+    return read;
+  }
+
+  std::optional<ScheduleNode> element_at_depth(const xmlNode* node) {
     const std::string_view name = xml::local_name(node);
     Result<FmlTiming> timing = read_fml_timing(doc_, node);
     if (!timing) {
@@ -669,10 +688,15 @@ class FmlReader {
 
   // A .pho file's visemes; an empty speech for other files (the caller warns).
   std::optional<Speech> phonemes(const xmlNode* node, const std::string& name) {
-    std::filesystem::path path(name);
-    if (path.extension() != ".pho") return Speech{};
-    if (path.is_relative()) path = std::filesystem::path(doc_.file()).parent_path() / path;
-    const std::string resolved = path.lexically_normal().string();
+    if (std::filesystem::path(name).extension() != ".pho") return Speech{};
+    Result<std::string> allowed = resolve_include(name, doc_.file(), options_.includes, doc_.where(node, "file"));
+    if (!allowed) {
+      Diagnostic refused = allowed.error();
+      refused.source_line = doc_.line_text(refused.where.line);
+      fail(std::move(refused));
+      return std::nullopt;
+    }
+    const std::string& resolved = *allowed;
     Result<std::string> text = options_.read_file ? options_.read_file(resolved) : read_file_bytes(resolved);
     if (!text) {
       fail(doc_.error(node, "file", "talk file '" + name + "': " + text.error().message));

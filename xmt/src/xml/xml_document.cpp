@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <climits>
 
+#include "fapc/codec/nesting_limit.hpp"
 #include "xml/xml_tag_scan.hpp"
 
 namespace fapc::xml {
@@ -58,10 +59,24 @@ const char* text_of(const xmlChar* s) { return reinterpret_cast<const char*>(s);
 
 }  // namespace
 
+Status check_element_depth(std::string_view text, const std::string& file_name) {
+  const std::optional<std::size_t> deep = first_tag_deeper_than(text, kMaxNestingDepth);
+  if (!deep) return ok_status();
+  const std::size_t line_start = text.rfind('\n', *deep) == std::string_view::npos ? 0 : text.rfind('\n', *deep) + 1;
+  const auto line = static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(*deep), '\n')) + 1;
+  std::size_t line_end = text.find('\n', *deep);
+  if (line_end == std::string_view::npos) line_end = text.size();
+  return nesting_too_deep(Location::text(file_name, line, static_cast<int>(*deep - line_start) + 1), "elements",
+                          std::string(text.substr(line_start, std::min<std::size_t>(line_end - line_start, 200))));
+}
+
 Result<XmlDocument> XmlDocument::parse(std::string_view text, const std::string& file_name) {
   if (text.size() > static_cast<std::size_t>(INT_MAX)) {
     return make_error(Location{file_name, 0, 0, -1}, "file too large for the XML parser");
   }
+  // Every walk over the tree recurses; its depth is bounded here, with fapc's error and kind,
+  // before libxml2 (which stops at the same depth with a message of its own) sees the text.
+  if (Status depth = check_element_depth(text, file_name); !depth) return depth.error();
   xmlInitParser();
   std::unique_ptr<xmlParserCtxt, void (*)(xmlParserCtxtPtr)> context(xmlNewParserCtxt(),
                                                                       xmlFreeParserCtxt);

@@ -58,6 +58,10 @@ class XmlDocument {
   Diagnostic with_line(Diagnostic d) const;
 };
 
+// Elements nested deeper than kMaxNestingDepth: an error at the first start tag too deep
+// (ErrorKind::limit_exceeded). Every reader of XML text (parse, validation) checks it first.
+Status check_element_depth(std::string_view text, const std::string& file_name);
+
 // ---- small helpers on libxml2 nodes ----------------------------------------------------------
 
 std::string_view local_name(const xmlNode* node);

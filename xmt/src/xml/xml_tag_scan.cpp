@@ -11,6 +11,28 @@ class Scanner {
 
   std::vector<ScannedTag> run() {
     std::vector<ScannedTag> tags;
+    scan([&tags](ScannedTag tag) { tags.push_back(std::move(tag)); }, [] {});
+    return tags;
+  }
+
+  std::optional<std::size_t> first_deeper_than(int limit) {
+    int depth = 0;
+    std::optional<std::size_t> found;
+    scan(
+        [&](const ScannedTag& tag) {
+          if (tag.empty) return;
+          if (++depth > limit && !found) found = tag.offset;
+        },
+        [&depth] { --depth; });
+    return found;
+  }
+
+ private:
+  std::string_view text_;
+  std::size_t pos_ = 0;
+
+  template <class OnStart, class OnEnd>
+  void scan(OnStart on_start, OnEnd on_end) {
     while (pos_ < text_.size()) {
       if (text_[pos_] != '<') {
         ++pos_;
@@ -24,16 +46,12 @@ class Scanner {
         skip_declaration();
       } else if (starts("</")) {
         skip_past(">");
+        on_end();
       } else {
-        tags.push_back(start_tag());
+        on_start(start_tag());
       }
     }
-    return tags;
   }
-
- private:
-  std::string_view text_;
-  std::size_t pos_ = 0;
 
   bool starts(std::string_view s) const { return text_.substr(pos_, s.size()) == s; }
 
@@ -99,6 +117,7 @@ class Scanner {
       }
       if (text_[pos_] == '/') {
         ++pos_;
+        tag.empty = pos_ < text_.size() && text_[pos_] == '>';
         continue;
       }
       const std::size_t at = pos_;
@@ -120,5 +139,9 @@ class Scanner {
 }  // namespace
 
 std::vector<ScannedTag> scan_start_tags(std::string_view text) { return Scanner(text).run(); }
+
+std::optional<std::size_t> first_tag_deeper_than(std::string_view text, int limit) {
+  return Scanner(text).first_deeper_than(limit);
+}
 
 }  // namespace fapc::xml

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -15,9 +16,14 @@ struct ScannedTag {
   std::size_t offset = 0;  // the '<'
   std::string name;        // qualified name as written
   std::vector<std::pair<std::string, std::size_t>> attributes;  // name as written, offset of it
+  bool empty = false;      // an empty-element tag ("<x/>"): opens no level
 };
 
 // Start tags (and empty-element tags) in document order.
 std::vector<ScannedTag> scan_start_tags(std::string_view text);
+
+// The '<' of the first start tag nested more than `limit` elements deep, if there is one. Used
+// before any parser sees the text (the scan does not recurse), so it works on any text.
+std::optional<std::size_t> first_tag_deeper_than(std::string_view text, int limit);
 
 }  // namespace fapc::xml

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "fapc/codec/include_policy.hpp"
 #include "xml/text.hpp"
 
 namespace fapc::xmt {
@@ -38,10 +39,14 @@ Result<Included> load_included(const xml::XmlDocument& doc, const xmlNode* eleme
     return doc.error(element, used, std::string(used) + " '" + std::string(name) +
                                         "': only local files can be placed, not URLs");
   }
-  fs::path path(name);
-  if (path.is_relative()) path = fs::path(doc.file()).parent_path() / path;
+  Result<std::string> path = resolve_include(name, doc.file(), options.includes, doc.where(element, used));
+  if (!path) {
+    Diagnostic refused = path.error();
+    refused.source_line = doc.line_text(refused.where.line);
+    return refused;
+  }
   Included included;
-  included.path = path.lexically_normal().string();
+  included.path = *path;
 
   std::vector<std::string> chain = options.including;
   chain.push_back(doc.file());
@@ -52,8 +57,10 @@ Result<Included> load_included(const xml::XmlDocument& doc, const xmlNode* eleme
     }
   }
   if (chain.size() > kMaxIncludeDepth) {
-    return doc.error(element, used, "animations nested more than " + std::to_string(kMaxIncludeDepth) +
-                                        " documents deep: " + chain_text(chain, included.path));
+    Diagnostic deep = doc.error(element, used, "animations nested more than " + std::to_string(kMaxIncludeDepth) +
+                                                   " documents deep: " + chain_text(chain, included.path));
+    deep.kind = ErrorKind::limit_exceeded;
+    return deep;
   }
   if (!options.load_animation) {
     return doc.error(element, "animation elements need a loader for other inputs (none was given)");

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "fapc/codec/include_policy.hpp"  // kMaxIncludeDepth
 #include "fapc/xmt/xmto.hpp"
 #include "xml/xml_document.hpp"
 
@@ -19,7 +20,5 @@ struct Included {
 // error (returned as it is).
 Result<Included> load_included(const xml::XmlDocument& doc, const xmlNode* element,
                                const XmtoOptions& options, Diagnostics& warnings);
-
-inline constexpr std::size_t kMaxIncludeDepth = 16;
 
 }  // namespace fapc::xmt

@@ -2,6 +2,7 @@
 // one form every known player reads. See docs/fap-files.md.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -57,14 +58,41 @@ struct FapReadResult {
 Result<FapReadResult> read_fap_text(std::string_view text, const std::string& file,
                                     const FapReadOptions& options = {});
 
-// FAP 1 and FAP 2 are always written with all their fields (4 and 6 values), the form the
-// reference codec, Xface 1.0 and Greta's C++ reader expect; see docs/fap-files.md.
+// The .fap layouts of the player families (docs/fap-files.md, "Flavours"): each writes exactly
+// the header, mask width, FAP 1/2 form, separators and line ends that family's reader expects.
+enum class FapFlavour {
+  safe,        // what every reader takes: `2.1` header, 68-token masks, FAP 1/2 as 4/6 fields
+  xface,       // Xface 1.0: as safe (4/6 fields, frame numbers 0..n-1 index its rows)
+  greta_cpp,   // Greta's C++ ReadFapFile: as safe (integers, 4/6 fields, exactly n frames)
+  greta_java,  // Greta's Java reader: 69-token masks (last 0), FAP 1/2 as one value each
+  vreng,       // VREng 2.0: single spaces only, 68-token masks, FAP 1/2 as one value each
+  semaine,     // SEMAINE messages: no header, a time line, frame numbers in milliseconds,
+               //   FAP 1/2 as one value each
+};
+
+// "safe", "xface", "greta-cpp", "greta-java", "vreng", "semaine": the names options take.
+std::string_view fap_flavour_name(FapFlavour flavour);
+// The flavour with that name; empty when there is none.
+std::optional<FapFlavour> fap_flavour_named(std::string_view name);
+// Every name, separated by '|' ("safe|xface|..."), for usage messages.
+std::string fap_flavour_names();
+
 struct FapWriteOptions {
   bool trailing_space = true;  // end mask and value lines with one space, as real files do
   bool renumber = true;        // frame numbers 0..n-1; false keeps the sequence's numbers
+                               // (the safe flavour only: every other reader needs 0..n-1)
+  FapFlavour flavour = FapFlavour::safe;
 };
 
-// The safe form: `2.1 <name> <fps> <n>`, 68-token masks, integer values, LF line ends.
+// `sequence` in options.flavour. Fails (ErrorKind::unsupported, naming the frame) where the
+// flavour cannot carry it: a viseme or expression other than one select shown alone (blend or
+// intensity 63, the rest 0) in a flavour with one value for FAP 1/2; a frame rate that is not a
+// whole number of milliseconds per frame in the SEMAINE flavour. Nothing is dropped.
+Result<std::string> write_fap_flavour(const FapSequence& sequence, const FapWriteOptions& options = {});
+
+// The safe form, which carries every sequence: `2.1 <name> <fps> <n>`, 68-token masks, FAP 1/2
+// with all their fields (4 and 6 values: the reference codec, Xface 1.0 and Greta's C++ reader),
+// integer values, LF line ends. options.flavour is not used.
 std::string write_fap_text(const FapSequence& sequence, const FapWriteOptions& options = {});
 
 // The header name written for `name`: one token (whitespace replaced by '_'), below 128 chars.

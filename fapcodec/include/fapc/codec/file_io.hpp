@@ -9,7 +9,10 @@
 
 namespace fapc {
 
-// The file's bytes; a gzip stream (by its magic bytes) is inflated transparently.
+// The file's bytes; a gzip stream (by its magic bytes) is inflated transparently. Every reader
+// and every include opens files through here. Errors (ErrorKind::io, for the whole file): "is a
+// directory", "not a regular file (a FIFO)" and the like, checked before reading so that a FIFO
+// never blocks; "cannot open file: Permission denied" and other errors of the system.
 Result<std::string> read_file_bytes(const std::string& path);
 
 bool is_gzip(std::string_view bytes);

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/codec/include_policy.hpp"
 #include "fapc/transcoder/profile.hpp"
 #include "fapc/transcoder/timeline.hpp"
 
@@ -18,6 +19,8 @@ struct MimicOptions {
   // Reads an included file (defxpr). Empty: read from disk (read_file_bytes). Tests and fuzzers
   // pass their own.
   std::function<Result<std::string>(const std::string& path)> read_file;
+  // Which files a defxpr may name (docs/security.md); by default the program's own folder tree.
+  IncludePolicy includes;
 };
 
 struct MimicProgram {

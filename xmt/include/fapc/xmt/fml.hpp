@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/codec/include_policy.hpp"
 #include "fapc/transcoder/profile.hpp"
 #include "fapc/transcoder/timeline.hpp"
 
@@ -29,6 +30,8 @@ struct FmlOptions {
   // Reads the phoneme file of `talk file=` (a path already resolved against the document's
   // folder); empty: read from disk.
   std::function<Result<std::string>(const std::string& path)> read_file;
+  // Which files `talk file=` may name (docs/security.md); by default the document's folder tree.
+  IncludePolicy includes;
 };
 
 struct FmlDocument {

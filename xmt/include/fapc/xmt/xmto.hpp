@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/codec/include_policy.hpp"
 #include "fapc/transcoder/timeline.hpp"
 #include "fapc/xmt/fml.hpp"
 
@@ -38,6 +39,9 @@ struct XmtoOptions {
   // Documents being read around this one, outermost first (their paths as given): an `animation`
   // that names one of them, or this document, is an inclusion cycle and an error.
   std::vector<std::string> including;
+  // Which files `animation src` may name (docs/security.md); by default the document's folder
+  // tree. (The FML moves' talk files follow fml.includes.)
+  IncludePolicy includes;
   // FML moves written in the document (semantics.md §4): event values for repeat, the profile for
   // param. Their visemes_per_second is the talk rate.
   FmlOptions fml;
