@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "fapc/xmt/fml.hpp"
+#include "fapc/fml/fml.hpp"
 #include "timeline_checks.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

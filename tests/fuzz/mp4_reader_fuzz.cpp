@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <cstdlib>
 
-#include "fapc/xmt/mp4_reader.hpp"
-#include "fapc/xmt/mp4_writer.hpp"
+#include "fapc/mpeg4/mp4_reader.hpp"
+#include "fapc/mpeg4/mp4_writer.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace fapc::xmt;

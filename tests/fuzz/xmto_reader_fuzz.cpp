@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "fapc/xmt/xmto.hpp"
+#include "fapc/xmto/xmto.hpp"
 #include "timeline_checks.hpp"
 
 namespace {

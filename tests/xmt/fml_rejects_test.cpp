@@ -7,7 +7,7 @@
 #include <map>
 
 #include "fapc/codec/file_io.hpp"
-#include "fapc/xmt/fml.hpp"
+#include "fapc/fml/fml.hpp"
 #include "support/test_support.hpp"
 
 namespace fapc::xmt {

@@ -7,8 +7,8 @@
 
 #include <filesystem>
 
-#include "fapc/xmt/fml.hpp"
-#include "fapc/xmt/xml_validation.hpp"
+#include "fapc/fml/fml.hpp"
+#include "fapc/xml/xml_validation.hpp"
 #include "support/test_support.hpp"
 
 namespace fapc::xmt {

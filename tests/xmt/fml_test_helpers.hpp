@@ -8,7 +8,7 @@
 #include <tuple>
 #include <vector>
 
-#include "fapc/xmt/fml.hpp"
+#include "fapc/fml/fml.hpp"
 #include "xmto_test_helpers.hpp"
 
 namespace fapc::xmt::fml_test {

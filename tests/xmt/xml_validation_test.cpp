@@ -4,9 +4,9 @@
 
 #include <regex>
 
-#include "fapc/xmt/scene.hpp"
-#include "fapc/xmt/xml_validation.hpp"
-#include "fapc/xmt/xmta_writer.hpp"
+#include "fapc/mpeg4/scene.hpp"
+#include "fapc/xml/xml_validation.hpp"
+#include "fapc/mpeg4/xmta_writer.hpp"
 #include "support/test_support.hpp"
 
 namespace fapc::xmt {

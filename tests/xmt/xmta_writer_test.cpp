@@ -4,8 +4,8 @@
 
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/codec/file_io.hpp"
-#include "fapc/xmt/xml_validation.hpp"
-#include "fapc/xmt/xmta_writer.hpp"
+#include "fapc/xml/xml_validation.hpp"
+#include "fapc/mpeg4/xmta_writer.hpp"
 #include "support/test_support.hpp"
 
 namespace fapc::xmt {

@@ -6,7 +6,7 @@
 
 #include <map>
 
-#include "fapc/xmt/xmto.hpp"
+#include "fapc/xmto/xmto.hpp"
 #include "support/test_support.hpp"
 
 namespace fapc::xmt {

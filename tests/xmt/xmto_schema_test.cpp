@@ -6,7 +6,7 @@
 
 #include <filesystem>
 
-#include "fapc/xmt/xml_validation.hpp"
+#include "fapc/xml/xml_validation.hpp"
 #include "support/test_support.hpp"
 
 namespace fapc::xmt {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "fapc/transcoder/render.hpp"
-#include "fapc/xmt/xmto.hpp"
+#include "fapc/xmto/xmto.hpp"
 
 namespace fapc::xmt::test {
 

@@ -7,7 +7,7 @@
 #include "fapc/codec/file_io.hpp"
 #include "fapc/registry.hpp"
 #include "fapc/report.hpp"
-#include "fapc/xmt/xml_validation.hpp"
+#include "fapc/xml/xml_validation.hpp"
 
 namespace fapc::cli {
 

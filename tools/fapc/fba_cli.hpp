@@ -6,7 +6,7 @@
 
 #include "fapc/codec/fba.hpp"
 #include "fapc/registry.hpp"
-#include "fapc/xmt/fba_track.hpp"
+#include "fapc/mpeg4/fba_track.hpp"
 
 namespace fapc::cli {
 

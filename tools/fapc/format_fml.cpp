@@ -2,7 +2,7 @@
 // indefinite loops, --profile names the parameters of param moves.
 #include "fapc/registry.hpp"
 #include "fapc/timeline_input.hpp"
-#include "fapc/xmt/fml.hpp"
+#include "fapc/fml/fml.hpp"
 
 namespace fapc::cli {
 

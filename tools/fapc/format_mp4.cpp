@@ -7,8 +7,8 @@
 #include "fapc/codec/file_io.hpp"
 #include "fapc/fba_cli.hpp"
 #include "fapc/registry.hpp"
-#include "fapc/xmt/mp4_reader.hpp"
-#include "fapc/xmt/mp4_writer.hpp"
+#include "fapc/mpeg4/mp4_reader.hpp"
+#include "fapc/mpeg4/mp4_writer.hpp"
 
 namespace fapc::cli {
 

@@ -7,8 +7,8 @@
 #include <filesystem>
 
 #include "fapc/registry.hpp"
-#include "fapc/xmt/mp4_writer.hpp"
-#include "fapc/xmt/xmta_writer.hpp"
+#include "fapc/mpeg4/mp4_writer.hpp"
+#include "fapc/mpeg4/xmta_writer.hpp"
 
 namespace fapc::cli {
 

@@ -7,7 +7,7 @@
 #include "fapc/registry.hpp"
 #include "fapc/timeline_input.hpp"
 #include "fapc/transcoder/timeline_from_frames.hpp"
-#include "fapc/xmt/xmto.hpp"
+#include "fapc/xmto/xmto.hpp"
 
 namespace fapc::cli {
 

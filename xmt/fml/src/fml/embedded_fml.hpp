@@ -1,0 +1,25 @@
+// FML moves written inside another XML document (XMT-Omega, semantics.md §4): one move read by the
+// FML reader's own rules, for the host reader to place on its timeline.
+#pragma once
+
+#include "fapc/fml/fml.hpp"
+#include "fml/fml_tree.hpp"
+#include "fapc/xml/xml_document.hpp"
+
+namespace fapc::xmt {
+
+struct EmbeddedFmlMove {
+  FmlLeaf leaf;   // what the move does (move, normal, talk or wait)
+  Timing timing;  // begin, duration (always set), repeat, as the scheduler takes them
+  Diagnostics warnings;
+};
+
+// Errors at the element: what read_fml would report for the move, and FML time containers or
+// model items, which are read only inside an FML document (place one with animation src).
+Result<EmbeddedFmlMove> read_embedded_fml_move(const xml::XmlDocument& doc, const xmlNode* move,
+                                               const FmlOptions& options);
+
+// The viseme clips of one utterance from time 0, stretched to `duration`, weight 63.
+std::vector<Clip> viseme_clips(const Speech& speech, double duration, const Location& where);
+
+}  // namespace fapc::xmt

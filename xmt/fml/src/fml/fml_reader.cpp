@@ -1,0 +1,792 @@
+// The FML reader: walks the model and the story, builds the time tree (fml_tree.hpp), schedules it
+// and lowers the runs to clips. What it does not read is reported, never dropped silently.
+#include <algorithm>
+#include <cstdio>
+#include <cmath>
+#include <filesystem>
+#include <initializer_list>
+#include <map>
+#include <set>
+
+#include "fapc/codec/fap_table.hpp"
+#include "fapc/codec/file_io.hpp"
+#include "fapc/codec/include_policy.hpp"
+#include "fapc/codec/nesting_limit.hpp"
+#include "fapc/fml/fml.hpp"
+#include "fml/embedded_fml.hpp"
+#include "fml/fml_timing.hpp"
+#include "fml/fml_tree.hpp"
+#include "fml/other_formats.hpp"
+#include "fapc/xml/text.hpp"
+#include "fapc/xml/once_per_name.hpp"
+#include "fapc/xml/xml_document.hpp"
+
+namespace fapc::xmt {
+namespace {
+
+using Kind = ScheduleNode::Kind;
+
+// FAP angle units are 1e-5 rad.
+constexpr double kAngleUnitsPerDegree = 1e5 * 3.14159265358979323846 / 180.0;
+constexpr double kMaxNodes = 1e6;  // elements after template expansion, and runs after repeats
+
+constexpr std::initializer_list<const char*> kTiming = {"begin", "duration", "dur", "end", "repeat"};
+
+std::string trim(std::string_view s) { return std::string(xml::trim(s)); }
+
+std::optional<double> number(std::string_view text) { return xml::decimal(xml::trim(text)); }
+
+std::string format_number(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", v);
+  return buffer;
+}
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return std::tolower(c); });
+  return out;
+}
+
+// Event values compare as numbers when both are ("1" and "1.0"), else as text.
+bool same_value(const std::string& a, const std::string& b) {
+  const auto x = number(a), y = number(b);
+  return x && y ? *x == *y : trim(a) == trim(b);
+}
+
+// expr types: FAP 2 expression numbers (fap_table.hpp), words of the paper and common variants.
+std::optional<int> expression_number(const std::string& type) {
+  static const std::map<std::string, int> kWords = {
+      {"smile", 1}, {"joy", 1}, {"happy", 1}, {"happiness", 1}, {"sadness", 2}, {"sad", 2},
+      {"anger", 3}, {"angry", 3}, {"fear", 4}, {"afraid", 4}, {"disgust", 5}, {"disgusted", 5},
+      {"surprise", 6}, {"surprised", 6}, {"normal", 0}, {"neutral", 0}};
+  if (const auto n = number(type)) {
+    if (*n == std::floor(*n) && *n >= 0 && *n <= 6) return static_cast<int>(*n);
+    return std::nullopt;
+  }
+  const auto found = kWords.find(lower(trim(type)));
+  if (found == kWords.end()) return std::nullopt;
+  return found->second;
+}
+
+// hdmv axes: semantics.md §3 (0 yaw, 1 pitch, 2 roll), as head rotation FAPs 49, 48, 50.
+constexpr int kAxisFap[3] = {49, 48, 50};
+std::optional<int> head_axis(const std::string& type) {
+  const std::string t = lower(trim(type));
+  if (t == "0" || t == "yaw") return 0;
+  if (t == "1" || t == "pitch") return 1;
+  if (t == "2" || t == "roll") return 2;
+  return std::nullopt;
+}
+
+// The head's allowed range per axis, in degrees, from the model's range items.
+struct HeadLimits {
+  double min[3] = {-INFINITY, -INFINITY, -INFINITY};
+  double max[3] = {INFINITY, INFINITY, INFINITY};
+};
+
+struct EventDeclaration {
+  std::optional<std::string> value;  // the model's val; -1 means "not set yet"
+};
+
+class FmlReader {
+ public:
+  FmlReader(const xml::XmlDocument& doc, const FmlOptions& options)
+      : doc_(doc), options_(options), once_(result_.warnings) {
+    profile_ = options.profile ? options.profile : &default_profile();
+  }
+
+  Result<EmbeddedFmlMove> run_embedded(const xmlNode* node) {
+    const std::string name(xml::local_name(node));
+    if (name != "talk" && name != "expr" && name != "hdmv" && name != "fap" && name != "param" && name != "wait") {
+      return doc_.error(node, "FML '" + name + "' inside XMT-Omega: only FML moves (talk, expr, hdmv, fap, param, "
+                                               "wait) are read here; use XMT-Omega's own time containers, or "
+                                               "place an FML document with animation src");
+    }
+    std::optional<ScheduleNode> placed = element(node);
+    if (error_) return *error_;
+    once_.finish();
+    EmbeddedFmlMove embedded;
+    embedded.leaf = tree_.leaves.at(placed->leaf_id);
+    embedded.timing = placed->timing;
+    embedded.warnings = std::move(result_.warnings);
+    return embedded;
+  }
+
+  Result<FmlDocument> run() {
+    result_.warnings = doc_.warnings();
+    const xmlNode* root = doc_.root();
+    if (const std::string other = other_format_name(root); !other.empty()) {
+      return doc_.error(root, "this is " + other + ", not FML (the Arya-DiPaola Face Modeling Language, "
+                                                   "root fml with model and story): fapc does not read it");
+    }
+    if (xml::local_name(root) != "fml") {
+      return doc_.error(root, "not an FML document: the root element is '" + std::string(xml::local_name(root)) +
+                                  "', expected fml");
+    }
+    check_attributes(root, {});
+    check_text(root);
+    const xmlNode* story = nullptr;
+    for (const xmlNode* child : xml::element_children(root)) {
+      const std::string_view name = xml::local_name(child);
+      if (name == "model") {
+        read_model(child);
+      } else if (name == "story") {
+        if (story) return doc_.error(child, "a second story: an FML document has one");
+        story = child;
+      } else {
+        unknown(child, "is not part of FML (fml holds model and story) and was skipped");
+      }
+    }
+    if (error_) return *error_;
+    if (!story) return doc_.error(root, "fml has no story: nothing to animate");
+    check_given_events();
+    check_attributes(story, {});
+    tree_.root = container(story, Kind::sequence, Timing{});
+    if (error_) return *error_;
+    if (Status s = check_runs(); !s) return s.error();
+    ScheduleOptions schedule_options;
+    schedule_options.root_end = options_.duration;
+    const Result<Schedule> scheduled = schedule(tree_.root, schedule_options);
+    if (!scheduled) return scheduler_error(scheduled.error());
+    result_.timeline = lower_fml(tree_, *scheduled);
+    once_.finish();
+    return std::move(result_);
+  }
+
+ private:
+  const xml::XmlDocument& doc_;
+  const FmlOptions& options_;
+  const Profile* profile_ = nullptr;
+  FmlDocument result_;  // before once_, which appends to its warnings
+  OncePerName once_;
+  FmlTree tree_;
+  std::optional<Diagnostic> error_;
+  std::map<std::string, const xmlNode*> templates_;
+  std::vector<std::string> expanding_;  // templates being expanded, outermost first
+  std::map<std::string, EventDeclaration> events_;
+  HeadLimits limits_;
+  std::set<std::string> expressions_;
+  double nodes_ = 0;
+  // Per node of the tree (by its source position): its element name, for scheduler errors.
+  std::map<std::pair<int, int>, std::string> element_at_;
+
+  void fail(Diagnostic d) {
+    if (!error_) error_ = std::move(d);
+  }
+
+  void unknown(const xmlNode* node, const std::string& why) {
+    const std::string name(xml::local_name(node));
+    once_.report("element " + name, doc_.warning(node, "element '" + name + "' " + why));
+  }
+
+  // Attributes other than `known` (and xml:*, xmlns) are reported once per element and attribute.
+  void check_attributes(const xmlNode* element, std::initializer_list<const char*> known,
+                        std::initializer_list<const char*> more = {}) {
+    for (const xmlAttr* attr = element->properties; attr; attr = attr->next) {
+      const std::string name = xml::qualified_name(attr);
+      if (attr->ns) continue;  // xml:lang, xsi:* and other namespaced attributes carry no FML
+      const auto listed = [&](std::initializer_list<const char*> list) {
+        return std::any_of(list.begin(), list.end(), [&](const char* k) { return name == k; });
+      };
+      if (listed(known) || listed(more)) continue;
+      const std::string element_name(xml::local_name(element));
+      once_.report("attribute " + element_name + "@" + name,
+                   doc_.warning(element, name, "attribute '" + name + "' of " + element_name +
+                                                   " is not part of FML and was ignored"));
+    }
+  }
+
+  // An attribute under its paper spelling or one of its variants (docs/fml.md §10); a variant
+  // gets a note once, naming the paper's spelling.
+  std::optional<std::string> spelled(const xmlNode* element, const char* paper,
+                                     std::initializer_list<const char*> variants) {
+    if (auto value = xml::attribute(element, paper)) return value;
+    for (const char* variant : variants) {
+      if (auto value = xml::attribute(element, variant)) {
+        const std::string element_name(xml::local_name(element));
+        once_.report("variant " + element_name + "@" + variant,
+                     doc_.warning(element, variant, std::string(variant) + " is read as " + paper +
+                                                        ", the paper's spelling"));
+        return value;
+      }
+    }
+    return std::nullopt;
+  }
+
+  void check_text(const xmlNode* element) { report_stray_text(doc_, element, once_); }
+
+  // ---- model ---------------------------------------------------------------------------------
+
+  void read_model(const xmlNode* model) {
+    check_attributes(model, {});
+    check_text(model);
+    for (const xmlNode* item : xml::element_children(model)) {
+      const std::string_view name = xml::local_name(item);
+      if (name == "character") {
+        check_attributes(item, {"name"});
+        result_.character = xml::attribute(item, "name").value_or("");
+      } else if (name == "img") {
+        check_attributes(item, {"src", "type"});  // for the player's face model: no FAPs
+      } else if (name == "param") {
+        check_attributes(item, {"name", "val"});  // a player parameter (e.g. an FDP): no FAPs
+      } else if (name == "range") {
+        check_attributes(item, {"type", "val"}, {"dir"});
+        read_range(item);
+      } else if (name == "event") {
+        check_attributes(item, {"name", "val"}, {"id"});
+        read_event(item);
+      } else if (name == "template") {
+        check_attributes(item, {"name"});
+        read_template(item);
+      } else {
+        unknown(item, "is not an FML model item and was skipped");
+        continue;
+      }
+      if (name != "template") check_text(item);
+    }
+  }
+
+  void read_range(const xmlNode* item) {
+    const auto val_text = xml::attribute(item, "val");
+    const auto val = val_text ? number(*val_text) : std::nullopt;
+    if (!val || *val < 0) {
+      fail(doc_.error(item, val_text ? "val" : "", "range needs val, the largest angle in degrees (>= 0)"));
+      return;
+    }
+    // type: a direction (the paper's "left"); dir: an axis, both directions (docs/fml.md §10).
+    if (const auto dir = spelled(item, "type", {"dir"})) {
+      const std::string d = lower(trim(*dir));
+      const auto axis = head_axis(d);
+      // Positive FAP directions (fba-bitstream.md): yaw left, pitch down, roll right.
+      if (axis) {
+        limits_.min[*axis] = -*val;
+        limits_.max[*axis] = *val;
+      } else if (d == "left") {
+        limits_.max[0] = *val;
+      } else if (d == "right") {
+        limits_.min[0] = -*val;
+      } else if (d == "down") {
+        limits_.max[1] = *val;
+      } else if (d == "up") {
+        limits_.min[1] = -*val;
+      } else if (d == "roll-right" || d == "tilt-right") {
+        limits_.max[2] = *val;
+      } else if (d == "roll-left" || d == "tilt-left") {
+        limits_.min[2] = -*val;
+      } else {
+        fail(doc_.error(item, xml::attribute(item, "type") ? "type" : "dir",
+                        "range type '" + *dir + "' is not a direction (left, right, up, down, roll-left, "
+                        "roll-right) or an axis (0 yaw, 1 pitch, 2 roll)"));
+      }
+      return;
+    }
+    fail(doc_.error(item, "range needs type, the direction it limits (left, right, up, down, ...)"));
+  }
+
+  void read_event(const xmlNode* item) {
+    const auto name = spelled(item, "name", {"id"});
+    if (!name || trim(*name).empty()) {
+      fail(doc_.error(item, "event needs name"));
+      return;
+    }
+    if (events_.count(trim(*name))) {
+      fail(doc_.error(item, "event '" + trim(*name) + "' is declared twice"));
+      return;
+    }
+    events_[trim(*name)] = EventDeclaration{xml::attribute(item, "val")};
+  }
+
+  void read_template(const xmlNode* item) {
+    const auto name = xml::attribute(item, "name");
+    if (!name || trim(*name).empty()) {
+      fail(doc_.error(item, "template needs name"));
+    } else if (!templates_.emplace(trim(*name), item).second) {
+      fail(doc_.error(item, "name", "template '" + trim(*name) + "' is defined twice"));
+    } else {
+      result_.templates.push_back(trim(*name));
+    }
+  }
+
+  // The value an event has for this run: --event wins over the model's val; -1 means unset.
+  std::optional<std::string> event_value(const std::string& name) const {
+    if (const auto given = options_.events.find(name); given != options_.events.end()) return given->second;
+    const auto declared = events_.find(name);
+    if (declared == events_.end() || !declared->second.value) return std::nullopt;
+    if (const auto n = number(*declared->second.value); n && *n < 0) return std::nullopt;
+    return declared->second.value;
+  }
+
+  void check_given_events() {
+    for (const auto& [name, value] : options_.events) {
+      if (!events_.count(name)) {
+        result_.warnings.push_back(make_warning(Location{doc_.file(), 0, 0, -1},
+                                                "--event " + name + " is not declared in the model; it is unused"));
+      }
+    }
+    for (const auto& [name, declaration] : events_) result_.events.emplace_back(name, event_value(name).value_or(""));
+  }
+
+  // ---- story ---------------------------------------------------------------------------------
+
+  bool count_node(const xmlNode* node) {
+    if (++nodes_ <= kMaxNodes) return true;
+    fail(doc_.error(node, "the story has more than " + std::to_string(static_cast<long>(kMaxNodes)) +
+                              " elements after template expansion: fapc refuses to schedule so many"));
+    return false;
+  }
+
+  ScheduleNode remember(ScheduleNode node, const xmlNode* element) {
+    element_at_[{node.source.line, node.source.column}] = std::string(xml::local_name(element));
+    return node;
+  }
+
+  // A time container's children in order; excl branches and unknown elements are handled here.
+  ScheduleNode container(const xmlNode* node, Kind kind, Timing timing) {
+    ScheduleNode group = remember(ScheduleNode::group(kind, timing, doc_.where(node)), node);
+    check_text(node);
+    for (const xmlNode* child : xml::element_children(node)) {
+      if (error_) break;
+      if (auto placed = element(child)) group.children.push_back(std::move(*placed));
+    }
+    return group;
+  }
+
+  // repeat: a count, "indefinite", an event (loop until it is set: its value is the count, 0
+  // meaning once, unset meaning indefinitely) or "event;value" (loop until it has that value).
+  bool apply_repeat(const xmlNode* node, const std::optional<std::string>& repeat, Timing& timing) {
+    if (!repeat) return true;
+    const std::string text = trim(*repeat);
+    if (text == "indefinite") {
+      timing.repeat_indefinite = true;
+      return true;
+    }
+    if (const auto n = number(text)) {
+      if (*n <= 0 || *n > kMaxNodes) {
+        fail(doc_.error(node, "repeat", "repeat must be a count above 0 (at most 1000000)"));
+        return false;
+      }
+      timing.repeat = *n;
+      return true;
+    }
+    const std::size_t semicolon = text.find(';');
+    const std::string event = trim(text.substr(0, semicolon));
+    if (!events_.count(event)) {
+      fail(doc_.error(node, "repeat", "repeat '" + text + "' is not a count, indefinite, or an event declared in the model"));
+      return false;
+    }
+    const auto value = event_value(event);
+    if (semicolon != std::string::npos) {
+      const std::string until = trim(text.substr(semicolon + 1));
+      timing.repeat_indefinite = !(value && same_value(*value, until));
+    } else if (!value) {
+      timing.repeat_indefinite = true;
+    } else {
+      const auto count = number(*value);
+      timing.repeat = count && *count >= 1 ? std::min(*count, kMaxNodes) : 1;
+    }
+    return true;
+  }
+
+  // Elements open around the one being read, templates expanded: a chain of templates nests as
+  // deep as all of them together, and so do the schedule tree and the recursion building it.
+  int depth_ = 0;
+
+  std::optional<ScheduleNode> element(const xmlNode* node) {
+    if (error_ || !count_node(node)) return std::nullopt;
+    if (depth_ >= kMaxNestingDepth) {
+      Diagnostic deep = nesting_too_deep(doc_.where(node), "elements (with templates expanded)");
+      deep.source_line = doc_.line_text(deep.where.line);
+      fail(std::move(deep));
+      return std::nullopt;
+    }
+    ++depth_;
+    std::optional<ScheduleNode> read = element_at_depth(node);
+    --depth_;
+    return read;
+  }
+
+  std::optional<ScheduleNode> element_at_depth(const xmlNode* node) {
+    const std::string_view name = xml::local_name(node);
+    Result<FmlTiming> timing = read_fml_timing(doc_, node);
+    if (!timing) {
+      fail(timing.error());
+      return std::nullopt;
+    }
+    const bool group = name == "action" || name == "act" || name == "seq" || name == "par" || name == "excl" ||
+                       name == "behavior";
+    const bool move = name == "talk" || name == "expr" || name == "hdmv" || name == "fap" || name == "param" ||
+                      name == "wait";
+    if (!group && !move) {
+      // Extensions of other systems (e.g. <emotion> in the published sample): their FML
+      // children still play, together, as in a par.
+      unknown(node, "is not part of FML; its children are read as if in a par");
+      check_attributes(node, kTiming);
+      Timing t = group_timing(*timing);
+      if (!apply_repeat(node, timing->repeat, t)) return std::nullopt;
+      return container(node, Kind::parallel, t);
+    }
+    std::optional<ScheduleNode> placed = group ? time_container(node, *timing) : this->move(node, *timing);
+    if (!placed || error_) return std::nullopt;
+    if (!apply_repeat(node, timing->repeat, placed->timing)) return std::nullopt;
+    return placed;
+  }
+
+  std::optional<ScheduleNode> time_container(const xmlNode* node, const FmlTiming& timing) {
+    const std::string_view name = xml::local_name(node);
+    if (name == "excl") return excl(node, timing);
+    if (name == "behavior") return behavior(node, timing);
+    check_attributes(node, kTiming, {"ev_val", "event_value"});
+    return container(node, name == "par" ? Kind::parallel : Kind::sequence, group_timing(timing));
+  }
+
+  // The branch whose ev_val is the event's value plays, alone; the others are read for errors.
+  std::optional<ScheduleNode> excl(const xmlNode* node, const FmlTiming& timing) {
+    check_attributes(node, kTiming, {"ev_name", "ev_id", "event_name", "ev_val", "event_value"});
+    check_text(node);
+    const auto event = spelled(node, "ev_name", {"ev_id", "event_name"});
+    if (!event) {
+      fail(doc_.error(node, "excl needs ev_name, the event that chooses its branch"));
+      return std::nullopt;
+    }
+    const std::string name = trim(*event);
+    if (!events_.count(name) && !options_.events.count(name)) {
+      fail(doc_.error(node, xml::attribute(node, "ev_name") ? "ev_name" : "",
+                      "event '" + name + "' is not declared in the model (<event name=\"" + name + "\" val=\"-1\"/>)"));
+      return std::nullopt;
+    }
+    const auto value = event_value(name);
+    ScheduleNode group = remember(ScheduleNode::group(Kind::parallel, group_timing(timing), doc_.where(node)), node);
+    bool chosen = false;
+    for (const xmlNode* child : xml::element_children(node)) {
+      const auto branch = spelled(child, "ev_val", {"event_value"});
+      if (!branch) {
+        result_.warnings.push_back(doc_.warning(child, std::string(xml::local_name(child)) +
+                                                           " in excl has no ev_val: it never plays"));
+      }
+      std::optional<ScheduleNode> placed = element(child);
+      if (error_) return std::nullopt;
+      if (placed && branch && value && !chosen && same_value(*branch, *value)) {
+        group.children.push_back(std::move(*placed));
+        chosen = true;
+      }
+    }
+    if (!value) {
+      result_.warnings.push_back(doc_.warning(node, "event '" + name + "' has no value (give --event " + name +
+                                                        "=VALUE): the excl plays nothing"));
+    } else if (!chosen) {
+      result_.warnings.push_back(doc_.warning(node, "no branch of the excl has ev_val=\"" + *value + "\" (event '" +
+                                                        name + "'): it plays nothing"));
+    }
+    return group;
+  }
+
+  std::optional<ScheduleNode> behavior(const xmlNode* node, const FmlTiming& timing) {
+    check_attributes(node, kTiming, {"name", "template", "ev_val", "event_value"});
+    check_text(node);
+    const auto name = spelled(node, "name", {"template"});
+    if (!name) {
+      fail(doc_.error(node, "behavior needs name, the template it plays"));
+      return std::nullopt;
+    }
+    for (const xmlNode* child : xml::element_children(node)) {
+      unknown(child, "inside behavior is ignored: a behavior plays its template, which holds the content");
+    }
+    const std::string t = trim(*name);
+    const auto found = templates_.find(t);
+    if (found == templates_.end()) {
+      std::string known;
+      for (const auto& [n, item] : templates_) known += (known.empty() ? "" : ", ") + n;
+      fail(doc_.error(node, xml::attribute(node, "name") ? "name" : "template",
+                      "no template '" + t + "' in the model" + (known.empty() ? "" : " (templates: " + known + ")")));
+      return std::nullopt;
+    }
+    if (std::find(expanding_.begin(), expanding_.end(), t) != expanding_.end()) {
+      std::string chain;
+      for (const std::string& e : expanding_) chain += e + " -> ";
+      fail(doc_.error(node, "template '" + t + "' uses itself: " + chain + t));
+      return std::nullopt;
+    }
+    expanding_.push_back(t);
+    ScheduleNode group = container(found->second, Kind::sequence, group_timing(timing));
+    expanding_.pop_back();
+    group.source = doc_.where(node);
+    return remember(std::move(group), node);
+  }
+
+  // ---- moves ---------------------------------------------------------------------------------
+
+  ScheduleNode add_leaf(const xmlNode* node, FmlLeaf leaf, Timing timing) {
+    leaf.where = doc_.where(node);
+    const std::size_t id = tree_.leaves.size();
+    tree_.leaves.push_back(std::move(leaf));
+    return remember(ScheduleNode::leaf(id, timing, doc_.where(node)), node);
+  }
+
+  // A move that cannot be animated (an unknown type) keeps its place in time as a wait.
+  ScheduleNode as_wait(const xmlNode* node, const FmlTiming& timing, Diagnostic warning) {
+    result_.warnings.push_back(std::move(warning));
+    return add_leaf(node, FmlLeaf{}, move_timing(timing, 1.0));
+  }
+
+  static const char* value_name(const xmlNode* node) { return xml::attribute(node, "val") ? "val" : "value"; }
+
+  std::optional<double> value_attribute(const xmlNode* node, double fallback) {
+    const auto text = spelled(node, "val", {"value"});
+    if (!text) return fallback;
+    const auto v = number(*text);
+    if (!v) fail(doc_.error(node, value_name(node), "'" + *text + "' is not a number"));
+    return v;
+  }
+
+  std::optional<ScheduleNode> move(const xmlNode* node, const FmlTiming& timing) {
+    const std::string_view name = xml::local_name(node);
+    if (name == "talk") return talk(node, timing);
+    check_text(node);
+    if (name == "wait") {
+      check_attributes(node, kTiming, {"ev_val", "event_value"});
+      return add_leaf(node, FmlLeaf{}, move_timing(timing, 1.0));
+    }
+    if (name == "hdmv") {
+      check_attributes(node, kTiming, {"type", "dir", "val", "value", "ev_val", "event_value"});
+    } else {
+      check_attributes(node, kTiming, {"type", "val", "value", "ev_val", "event_value"});
+    }
+    const auto type = name == "hdmv" ? spelled(node, "type", {"dir"}) : xml::attribute(node, "type");
+    if (!type) {
+      fail(doc_.error(node, std::string(name) + " needs type"));
+      return std::nullopt;
+    }
+    if (name == "expr") return expr(node, timing, *type);
+    if (name == "hdmv") return hdmv(node, timing, *type);
+    if (name == "fap") return fap(node, timing, *type);
+    return param(node, timing, *type);
+  }
+
+  std::optional<ScheduleNode> expr(const xmlNode* node, const FmlTiming& timing, const std::string& type) {
+    const auto expression = expression_number(type);
+    if (!expression) {
+      return as_wait(node, timing, doc_.warning(node, "type", "expression type '" + type +
+                                                                  "' is not one fapc knows (smile, sadness, anger, "
+                                                                  "fear, disgust, surprise, normal or 0-6): it waits"));
+    }
+    FmlLeaf leaf;
+    if (*expression == 0) {
+      leaf.kind = FmlLeaf::Kind::normal;
+      return add_leaf(node, std::move(leaf), move_timing(timing, 1.0));
+    }
+    auto percent = value_attribute(node, 100);
+    if (!percent) return std::nullopt;
+    if (*percent < 0 || *percent > 100) {
+      result_.warnings.push_back(doc_.warning(node, value_name(node), "expression val " + format_number(*percent) +
+                                                                          " is outside 0-100 (%) and was clamped"));
+      percent = std::clamp(*percent, 0.0, 100.0);
+    }
+    leaf.kind = FmlLeaf::Kind::move;
+    leaf.target = "expression." + std::string(expression_name(*expression));
+    leaf.value = *percent * 63.0 / 100.0;
+    expressions_.insert(leaf.target);
+    return add_leaf(node, std::move(leaf), move_timing(timing, 1.0));
+  }
+
+  std::optional<ScheduleNode> hdmv(const xmlNode* node, const FmlTiming& timing, const std::string& type) {
+    const char* type_name = xml::attribute(node, "type") ? "type" : "dir";
+    const auto axis = head_axis(type);
+    if (!axis) {
+      return as_wait(node, timing, doc_.warning(node, type_name, "head movement type '" + type +
+                                                                     "' is not yaw, pitch, roll or 0-2: it waits"));
+    }
+    auto degrees = value_attribute(node, 0);
+    if (!degrees) return std::nullopt;
+    const double clamped = std::clamp(*degrees, limits_.min[*axis], limits_.max[*axis]);
+    if (clamped != *degrees) {
+      result_.warnings.push_back(doc_.warning(node, value_name(node), "head movement of " + format_number(*degrees) +
+                                                                          " degrees is beyond the model's range and was clamped"));
+    }
+    FmlLeaf leaf;
+    leaf.kind = FmlLeaf::Kind::move;
+    leaf.target = std::string(find_fap(kAxisFap[*axis])->name);
+    leaf.value = clamped * kAngleUnitsPerDegree;
+    return add_leaf(node, std::move(leaf), move_timing(timing, 1.0));
+  }
+
+  std::optional<ScheduleNode> fap(const xmlNode* node, const FmlTiming& timing, const std::string& type) {
+    const FapInfo* info = find_fap_by_name_or_number(trim(type));
+    if (!info) {
+      std::string closest;
+      for (const std::string_view n : closest_fap_names(trim(type))) closest += (closest.empty() ? "" : ", ") + std::string(n);
+      fail(doc_.error(node, "type", "'" + type + "' is not a FAP number (3-68) or name; did you mean " + closest + "?"));
+      return std::nullopt;
+    }
+    if (info->number < 3) {
+      fail(doc_.error(node, "type", "FAP " + std::to_string(info->number) +
+                                        " is not animated with fap: use talk (visemes) or expr (expressions)"));
+      return std::nullopt;
+    }
+    const auto value = value_attribute(node, 0);
+    if (!value) return std::nullopt;
+    FmlLeaf leaf;
+    leaf.kind = FmlLeaf::Kind::move;
+    leaf.target = std::string(info->name);
+    leaf.value = *value;
+    return add_leaf(node, std::move(leaf), move_timing(timing, 1.0));
+  }
+
+  std::optional<ScheduleNode> param(const xmlNode* node, const FmlTiming& timing, const std::string& type) {
+    const std::string name = trim(type);
+    if (resolve_target(name, *profile_).empty() || weight_target(name)) {
+      // Parameters are system-dependent (the paper's eye-wink): what the profile does not map waits.
+      return as_wait(node, timing, doc_.warning(node, "type", unknown_parameter_message(name, *profile_) +
+                                                                  " (param names come from the profile): it waits"));
+    }
+    const auto value = value_attribute(node, 0);
+    if (!value) return std::nullopt;
+    FmlLeaf leaf;
+    leaf.kind = FmlLeaf::Kind::move;
+    leaf.target = name;
+    leaf.value = *value;
+    return add_leaf(node, std::move(leaf), move_timing(timing, 1.0));
+  }
+
+  std::optional<ScheduleNode> talk(const xmlNode* node, const FmlTiming& timing) {
+    check_attributes(node, kTiming, {"file", "ev_val", "event_value"});
+    for (const xmlNode* child : xml::element_children(node)) {
+      unknown(child, "inside talk is skipped with the text in it: talk says only its own text");
+    }
+    const std::string text = trim(xml::text_content(node));
+    const auto file = xml::attribute(node, "file");
+    if (file && !text.empty()) {
+      fail(doc_.error(node, "file", "talk has both text and file; give one"));
+      return std::nullopt;
+    }
+    FmlLeaf leaf;
+    leaf.kind = FmlLeaf::Kind::talk;
+    if (file) {
+      auto speech = phonemes(node, trim(*file));
+      if (!speech) return std::nullopt;
+      if (speech->visemes.empty() && speech->duration == 0) {
+        return as_wait(node, timing, doc_.warning(node, "file", "talk file '" + *file + "' is not an MBROLA .pho "
+                                                                "phoneme file: fapc has no speech recogniser, so "
+                                                                "this talk is silent (it waits)"));
+      }
+      leaf.speech = std::move(*speech);
+    } else {
+      if (text.empty()) {
+        fail(doc_.error(node, "talk needs text to say or a phoneme file (file=\"x.pho\")"));
+        return std::nullopt;
+      }
+      std::string skipped;
+      leaf.speech = visemes_from_text(text, options_.visemes_per_second, skipped);
+      if (!skipped.empty()) {
+        once_.report("skipped " + skipped, doc_.warning(node, "talk: the characters '" + skipped +
+                                                                  "' have no letter-to-viseme rule and are silent"));
+      }
+    }
+    const double intrinsic = leaf.speech.duration;
+    return add_leaf(node, std::move(leaf), move_timing(timing, intrinsic));
+  }
+
+  // A .pho file's visemes; an empty speech for other files (the caller warns).
+  std::optional<Speech> phonemes(const xmlNode* node, const std::string& name) {
+    if (std::filesystem::path(name).extension() != ".pho") return Speech{};
+    Result<std::string> allowed = resolve_include(name, doc_.file(), options_.includes, doc_.where(node, "file"));
+    if (!allowed) {
+      Diagnostic refused = allowed.error();
+      refused.source_line = doc_.line_text(refused.where.line);
+      fail(std::move(refused));
+      return std::nullopt;
+    }
+    const std::string& resolved = *allowed;
+    Result<std::string> text = options_.read_file ? options_.read_file(resolved) : read_file_bytes(resolved);
+    if (!text) {
+      fail(doc_.error(node, "file", "talk file '" + name + "': " + text.error().message));
+      return std::nullopt;
+    }
+    result_.phoneme_files.push_back(resolved);
+    Result<Speech> speech = visemes_from_pho(*text, resolved, result_.warnings);
+    if (!speech) {
+      fail(speech.error());
+      return std::nullopt;
+    }
+    return std::move(*speech);
+  }
+
+  // ---- scheduling ----------------------------------------------------------------------------
+
+  // Runs the tree would make (repeats of repeats, indefinite ones over --duration) against
+  // kMaxNodes, before the scheduler makes them. `shortest` is a lower bound of a node's active
+  // length, so that available / (one iteration) bounds an indefinite repeat's iterations. It
+  // counts the children's begin offsets, takes an end as given and is 0 for an indefinite
+  // repeat (an ancestor or a sibling's end may cut it anywhere). A lower bound of 0 means one
+  // iteration: its length is 0 (not repeated) or the whole limit. (An earlier estimate floored
+  // iterations at 1 ms and ignored offsets and ends: <seq repeat="indefinite"><par
+  // end="0.000001">... scheduled millions of runs; tests/fuzz/corpus/fml_reader/runs-*.fml.)
+  double runs(const ScheduleNode& node, double available, double& shortest) const {
+    const Timing& t = node.timing;
+    double own = 0;
+    double children_runs = 0;
+    if (node.kind == Kind::leaf) {
+      own = t.duration.value_or(0);
+      const FmlLeaf& leaf = tree_.leaves[node.leaf_id];
+      children_runs = leaf.kind == FmlLeaf::Kind::talk ? std::max<double>(1, static_cast<double>(leaf.speech.visemes.size()))
+                      : leaf.kind == FmlLeaf::Kind::normal ? std::max<double>(1, static_cast<double>(expressions_.size()))
+                                                           : 1;
+    } else {
+      const double inner = t.duration.value_or(available);
+      for (const ScheduleNode& child : node.children) {
+        double child_shortest = 0;
+        children_runs += runs(child, inner, child_shortest);
+        const double reach = child.timing.offset + child_shortest;
+        own = node.kind == Kind::sequence ? own + reach : std::max(own, reach);
+      }
+      if (t.duration) own = *t.duration;
+    }
+    const double repeats = !t.repeat_indefinite ? std::max(t.repeat, 1.0) : own > 0 ? available / own : 1.0;
+    shortest = t.end ? std::max(0.0, *t.end - t.offset) : t.repeat_indefinite ? 0 : own * t.repeat;
+    return children_runs * std::max(repeats, 1.0);
+  }
+
+  Status check_runs() const {
+    double shortest = 0;
+    const double total = runs(tree_.root, options_.duration.value_or(kMaxNodes), shortest);
+    if (total <= kMaxNodes) return ok_status();
+    return make_error(tree_.root.source, "the story repeats to more than " + std::to_string(static_cast<long>(kMaxNodes)) +
+                                             " clips: fapc refuses to schedule so many");
+  }
+
+  Diagnostic scheduler_error(Diagnostic d) const {
+    if (const auto found = element_at_.find({d.where.line, d.where.column}); found != element_at_.end()) {
+      constexpr std::string_view kAction = "the action ";
+      if (d.message.starts_with(kAction)) d.message.erase(0, kAction.size());
+      const bool endless = d.message.find("ends") != std::string::npos || d.message.find("no duration") != std::string::npos;
+      d.message = found->second + ' ' + d.message;
+      if (endless) {
+        d.message += " (repeat=\"indefinite\" and unset loop events need an end: a container's duration or end, "
+                     "or --duration)";
+      }
+    }
+    if (d.where.file == doc_.file() && d.source_line.empty()) d.source_line = doc_.line_text(d.where.line);
+    return d;
+  }
+};
+
+}  // namespace
+
+Result<FmlDocument> read_fml(std::string_view text, const std::string& file_name, const FmlOptions& options) {
+  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name);
+  if (!doc) return doc.error();
+  return FmlReader(*doc, options).run();
+}
+
+Result<EmbeddedFmlMove> read_embedded_fml_move(const xml::XmlDocument& doc, const xmlNode* move,
+                                               const FmlOptions& options) {
+  return FmlReader(doc, options).run_embedded(move);
+}
+
+Result<FmlDocument> load_fml(const std::string& path, const FmlOptions& options) {
+  const auto bytes = read_file_bytes(path);
+  if (!bytes) return bytes.error();
+  return read_fml(*bytes, path, options);
+}
+
+}  // namespace fapc::xmt

@@ -1,0 +1,27 @@
+// Writes an ISO base media file (ISO/IEC 14496-12, -14) with an MPEG-4 scene and an FBA stream:
+// ftyp; moov with mvhd, iods, a BIFS scene track, an OD track whose object descriptor update binds
+// the FBA stream, and the FBA track; mdat. Layout and choices: docs/mp4-and-xmta.md.
+#pragma once
+
+#include <cstdint>
+
+#include "fapc/codec/diagnostic.hpp"
+#include "fapc/mpeg4/bifs.hpp"
+#include "fapc/mpeg4/fba_track.hpp"
+
+namespace fapc::xmt {
+
+// Track IDs (which are also the ES_IDs) and the FBA stream's object descriptor ID. 10 for the
+// FBA track is what GPAC gives it when it builds the same file from the project's XMT-A
+// (binaryID 10), so both routes produce the same layout.
+inline constexpr std::uint32_t kSceneTrackId = 1;
+inline constexpr std::uint32_t kOdTrackId = 2;
+inline constexpr std::uint32_t kFbaTrackId = 10;
+inline constexpr std::uint16_t kFbaObjectDescriptorId = 10;
+inline constexpr std::uint32_t kSystemsTimescale = 1000;  // scene, OD and movie timescale
+
+// The file's bytes, or why they cannot be written (a track check_fba_track rejects, a file over
+// 4 GiB).
+Result<Bytes> write_mp4(const FbaTrackInput& fba);
+
+}  // namespace fapc::xmt

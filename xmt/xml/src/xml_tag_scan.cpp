@@ -1,0 +1,147 @@
+#include "xml_tag_scan.hpp"
+
+namespace fapc::xml {
+namespace {
+
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+
+class Scanner {
+ public:
+  explicit Scanner(std::string_view text) : text_(text) {}
+
+  std::vector<ScannedTag> run() {
+    std::vector<ScannedTag> tags;
+    scan([&tags](ScannedTag tag) { tags.push_back(std::move(tag)); }, [] {});
+    return tags;
+  }
+
+  std::optional<std::size_t> first_deeper_than(int limit) {
+    int depth = 0;
+    std::optional<std::size_t> found;
+    scan(
+        [&](const ScannedTag& tag) {
+          if (tag.empty) return;
+          if (++depth > limit && !found) found = tag.offset;
+        },
+        [&depth] { --depth; });
+    return found;
+  }
+
+ private:
+  std::string_view text_;
+  std::size_t pos_ = 0;
+
+  template <class OnStart, class OnEnd>
+  void scan(OnStart on_start, OnEnd on_end) {
+    while (pos_ < text_.size()) {
+      if (text_[pos_] != '<') {
+        ++pos_;
+      } else if (starts("<!--")) {
+        skip_past("-->");
+      } else if (starts("<![CDATA[")) {
+        skip_past("]]>");
+      } else if (starts("<?")) {
+        skip_past("?>");
+      } else if (starts("<!")) {
+        skip_declaration();
+      } else if (starts("</")) {
+        skip_past(">");
+        on_end();
+      } else {
+        on_start(start_tag());
+      }
+    }
+  }
+
+  bool starts(std::string_view s) const { return text_.substr(pos_, s.size()) == s; }
+
+  void skip_past(std::string_view end) {
+    const std::size_t found = text_.find(end, pos_);
+    pos_ = found == std::string_view::npos ? text_.size() : found + end.size();
+  }
+
+  void skip_quoted() {
+    const char quote = text_[pos_++];
+    while (pos_ < text_.size() && text_[pos_] != quote) ++pos_;
+    if (pos_ < text_.size()) ++pos_;
+  }
+
+  // <!DOCTYPE ... [ internal subset ]>: literals and comments inside may hold '<' and '>'.
+  void skip_declaration() {
+    int depth = 0;
+    pos_ += 2;
+    while (pos_ < text_.size()) {
+      const char c = text_[pos_];
+      if (c == '"' || c == '\'') {
+        skip_quoted();
+      } else if (starts("<!--")) {
+        skip_past("-->");
+      } else if (c == '[') {
+        ++depth;
+        ++pos_;
+      } else if (c == ']') {
+        --depth;
+        ++pos_;
+      } else if (c == '>' && depth <= 0) {
+        ++pos_;
+        return;
+      } else {
+        ++pos_;
+      }
+    }
+  }
+
+  std::string name() {
+    const std::size_t from = pos_;
+    while (pos_ < text_.size() && !is_space(text_[pos_]) && text_[pos_] != '/' &&
+           text_[pos_] != '>' && text_[pos_] != '=') {
+      ++pos_;
+    }
+    return std::string(text_.substr(from, pos_ - from));
+  }
+
+  void skip_spaces() {
+    while (pos_ < text_.size() && is_space(text_[pos_])) ++pos_;
+  }
+
+  ScannedTag start_tag() {
+    ScannedTag tag;
+    tag.offset = pos_++;
+    tag.name = name();
+    while (true) {
+      skip_spaces();
+      if (pos_ >= text_.size()) break;
+      if (text_[pos_] == '>') {
+        ++pos_;
+        break;
+      }
+      if (text_[pos_] == '/') {
+        ++pos_;
+        tag.empty = pos_ < text_.size() && text_[pos_] == '>';
+        continue;
+      }
+      const std::size_t at = pos_;
+      std::string attribute = name();
+      if (attribute.empty()) {  // not well-formed after all; do not loop forever
+        ++pos_;
+        continue;
+      }
+      skip_spaces();
+      if (pos_ < text_.size() && text_[pos_] == '=') ++pos_;
+      skip_spaces();
+      if (pos_ < text_.size() && (text_[pos_] == '"' || text_[pos_] == '\'')) skip_quoted();
+      tag.attributes.emplace_back(std::move(attribute), at);
+    }
+    return tag;
+  }
+};
+
+}  // namespace
+
+std::vector<ScannedTag> scan_start_tags(std::string_view text) { return Scanner(text).run(); }
+
+std::optional<std::size_t> first_tag_deeper_than(std::string_view text, int limit) {
+  return Scanner(text).first_deeper_than(limit);
+}
+
+}  // namespace fapc::xml

@@ -1,0 +1,390 @@
+// The XMT-Omega reader: walks the document, builds the time tree (xmto_tree.hpp), schedules it and
+// lowers the runs to clips. What it does not read is reported, never dropped silently.
+#include <algorithm>
+#include <initializer_list>
+#include <map>
+#include <set>
+#include <string>
+
+#include "fapc/codec/file_io.hpp"
+#include "fapc/xmto/xmto.hpp"
+#include "fml/embedded_fml.hpp"
+#include "fapc/xml/xml_document.hpp"
+#include "xmto/animation_function.hpp"
+#include "xmto/animation_include.hpp"
+#include "xmto/attribute_target.hpp"
+#include "fapc/xml/once_per_name.hpp"
+#include "xmto/run_budget.hpp"
+#include "xmto/smil_timing.hpp"
+#include "xmto/xmto_tree.hpp"
+
+namespace fapc::xmt {
+namespace {
+
+using Kind = ScheduleNode::Kind;
+
+constexpr std::initializer_list<const char*> kTimingAttributes = {"begin", "dur", "end", "repeatCount",
+                                                                  "repeatDur", "fill"};
+constexpr std::string_view kXmlNamespace = "http://www.w3.org/XML/1998/namespace";
+constexpr std::string_view kSchemaInstanceNamespace = "http://www.w3.org/2001/XMLSchema-instance";
+
+class DocumentReader {
+ public:
+  DocumentReader(const xml::XmlDocument& doc, const XmtoOptions& options)
+      : doc_(doc), options_(options), once_(result_.warnings) {
+    result_.warnings = doc_.warnings();
+  }
+
+  Result<XmtoDocument> run() {
+    const xmlNode* root = doc_.root();
+    const std::string_view name = xml::local_name(root);
+    if (name == "XMT-A") {
+      return doc_.error(root, "XMT-A input is not supported: fapc writes XMT-A (.xmt output) but reads "
+                              "XMT-Omega, whose root is XMT-O");
+    }
+    if (name != "XMT-O") {
+      return doc_.error(root, "not an XMT-Omega document: the root element is '" + std::string(name) +
+                                  "', expected XMT-O");
+    }
+    root_namespace_ = xml::namespace_uri(root);
+    check_attributes(root, {});
+    const xmlNode* body = nullptr;
+    for (const xmlNode* child : xml::element_children(root)) {
+      if (!is_xmto(child)) {
+        unsupported(child);
+      } else if (xml::local_name(child) == "head") {
+        read_head(child);
+      } else if (xml::local_name(child) == "body") {
+        if (body) return doc_.error(child, "a second body: an XMT-O document has one");
+        body = child;
+      } else {
+        unsupported(child);
+      }
+    }
+    check_text(root);
+    if (!body) return doc_.error(root, "XMT-O has no body");
+    RunBudget budget;
+    if (options_.duration) budget.available = *options_.duration;
+    std::optional<ScheduleNode> tree = element(body, Fill::remove, false, budget);
+    if (error_) return *error_;
+    // The body is a sequence (SMIL); a body that never plays leaves an empty timeline.
+    tree_.root = tree ? std::move(*tree) : ScheduleNode::group(Kind::sequence, {}, doc_.where(body));
+    ScheduleOptions schedule_options;
+    schedule_options.root_end = options_.duration;
+    const Result<Schedule> scheduled = schedule(tree_.root, schedule_options);
+    if (!scheduled) return scheduler_error(scheduled.error());
+    result_.timeline = lower_to_timeline(tree_, *scheduled);
+    once_.finish();
+    return std::move(result_);
+  }
+
+ private:
+  const xml::XmlDocument& doc_;
+  const XmtoOptions& options_;
+  std::string root_namespace_;
+  std::optional<Diagnostic> error_;
+  XmtoDocument result_;  // before once_, which appends to its warnings
+  OncePerName once_;
+  XmtoTree tree_;
+  struct ElementFacts {
+    std::string name;
+    bool repeats_indefinitely = false;
+  };
+  std::map<std::pair<int, int>, ElementFacts> element_at_;  // by line, column: for schedule errors
+  double planned_clips_ = 0;  // upper bound, see run_budget.hpp
+  std::set<std::string> fml_expressions_;  // FAP 2 targets of the FML moves read so far
+
+  ScheduleNode scheduled_node(ScheduleNode node, const xmlNode* element) {
+    element_at_[{node.source.line, node.source.column}] =
+        ElementFacts{std::string(xml::local_name(element)),
+                     node.timing.repeat_indefinite && !node.timing.repeat_duration};
+    return node;
+  }
+
+  void fail(Diagnostic d) {
+    if (!error_) error_ = std::move(d);
+  }
+
+  // The scheduler speaks of "the action" or starts with a verb ("has no duration"): name the
+  // element instead.
+  Diagnostic scheduler_error(Diagnostic d) const {
+    if (const auto found = element_at_.find({d.where.line, d.where.column}); found != element_at_.end()) {
+      constexpr std::string_view kAction = "the action ";
+      if (d.message.starts_with(kAction)) d.message.erase(0, kAction.size());
+      d.message = found->second.name + ' ' + d.message;
+      if (found->second.repeats_indefinitely)
+        d.message += " (repeatCount=\"indefinite\" needs an end: from a par with dur, end, repeatDur or --duration)";
+    }
+    return with_source_line(std::move(d));
+  }
+
+  Diagnostic with_source_line(Diagnostic d) const {
+    if (d.where.file == doc_.file() && d.source_line.empty()) d.source_line = doc_.line_text(d.where.line);
+    return d;
+  }
+
+  bool is_xmto(const xmlNode* node) const {
+    const std::string_view ns = xml::namespace_uri(node);
+    return ns.empty() || ns == root_namespace_ || ns == kXmtoNamespace;
+  }
+
+  // FML moves embedded in an XMT-O document ("FML documents can work as XMT-Omega code"): any
+  // element whose namespace URI mentions fml.
+  static bool is_fml(const xmlNode* node) {
+    std::string ns(xml::namespace_uri(node));
+    std::transform(ns.begin(), ns.end(), ns.begin(), [](unsigned char c) { return std::tolower(c); });
+    return ns.find("fml") != std::string::npos;
+  }
+
+  void unsupported(const xmlNode* node, const std::string& why = "is not supported and was skipped") {
+    std::string name(xml::local_name(node));
+    if (!is_xmto(node)) name += "' in namespace '" + std::string(xml::namespace_uri(node));
+    once_.report("element " + name, doc_.warning(node, "element '" + name + "' " + why));
+  }
+
+  // Attributes other than `known` (and id, xml:*, xsi:*) are reported once per element name.
+  void check_attributes(const xmlNode* element, std::initializer_list<const char*> known,
+                        std::initializer_list<const char*> more = {}) {
+    for (const xmlAttr* attr = element->properties; attr; attr = attr->next) {
+      const std::string name = xml::qualified_name(attr);
+      if (attr->ns && attr->ns->href) {
+        const std::string_view ns = reinterpret_cast<const char*>(attr->ns->href);
+        if (ns == kXmlNamespace || ns == kSchemaInstanceNamespace) continue;
+      } else {
+        if (name == "id") continue;
+        bool listed = false;
+        for (const char* k : known) listed = listed || name == k;
+        for (const char* k : more) listed = listed || name == k;
+        if (listed) continue;
+      }
+      const std::string element_name(xml::local_name(element));
+      once_.report("attribute " + element_name + "@" + name,
+                   doc_.warning(element, name, "attribute '" + name + "' of " + element_name +
+                                                   " is not supported and was ignored"));
+    }
+  }
+
+  // Text in XMT-O elements carries nothing for face animation, and entities are not expanded
+  // (no DTD is trusted): report both rather than drop them.
+  void check_text(const xmlNode* element) { report_stray_text(doc_, element, once_); }
+
+  void read_head(const xmlNode* head) {
+    check_attributes(head, {});
+    check_text(head);
+    for (const xmlNode* child : xml::element_children(head)) {
+      if (is_xmto(child) && xml::local_name(child) == "meta") {
+        check_attributes(child, {"name", "content"});
+        result_.meta.emplace_back(xml::attribute(child, "name").value_or(""),
+                                  xml::attribute(child, "content").value_or(""));
+      } else {
+        unsupported(child, "is ignored: only meta is read in head");
+      }
+    }
+  }
+
+  // One element of the body; empty when it contributes nothing (skipped or never plays).
+  std::optional<ScheduleNode> element(const xmlNode* node, Fill inherited, bool in_excl,
+                                      const RunBudget& budget) {
+    if (error_) return std::nullopt;
+    if (is_fml(node)) return fml_move(node, budget);
+    if (!is_xmto(node)) {
+      unsupported(node);
+      return std::nullopt;
+    }
+    const std::string_view name = xml::local_name(node);
+    const bool group = name == "par" || name == "seq" || name == "excl" || name == "body";
+    if (!group && name != "animate" && name != "set" && name != "animation") {
+      unsupported(node);
+      return std::nullopt;
+    }
+    Result<SmilTiming> timing = read_smil_timing(doc_, node);
+    if (!timing) {
+      fail(timing.error());
+      return std::nullopt;
+    }
+    if (!plays(node, *timing, in_excl)) return std::nullopt;
+    const Fill fill = timing->effective_fill(inherited);
+    if (group) return time_container(node, *timing, fill, budget.inside(*timing, std::nullopt));
+    if (name == "animation") return animation(node, *timing, fill, budget);
+    return animate_or_set(node, *timing, fill, budget);
+  }
+
+  bool plays(const xmlNode* node, const SmilTiming& timing, bool in_excl) {
+    const std::string name(xml::local_name(node));
+    if (timing.begin_indefinite) {
+      result_.warnings.push_back(doc_.warning(node, "begin", name + " never plays: begin=\"indefinite\" waits "
+                                                             "for an event, and fapc has none"));
+      return false;
+    }
+    if (in_excl && !timing.has_begin()) {
+      result_.warnings.push_back(doc_.warning(node, name + " in excl never plays: without begin it waits "
+                                                          "for an event (SMIL); give it a begin"));
+      return false;
+    }
+    if (timing.never_plays()) {
+      result_.warnings.push_back(doc_.warning(node, "end", name + " never plays: it ends at or before its begin"));
+      return false;
+    }
+    return true;
+  }
+
+  std::optional<ScheduleNode> time_container(const xmlNode* node, const SmilTiming& timing, Fill fill,
+                                             const RunBudget& inner) {
+    const std::string_view name = xml::local_name(node);
+    const Kind kind = name == "par" ? Kind::parallel : name == "excl" ? Kind::exclusive : Kind::sequence;
+    check_attributes(node, kTimingAttributes);
+    check_text(node);
+    ScheduleNode group = scheduled_node(
+        ScheduleNode::group(kind, to_schedule_timing(timing, std::nullopt), doc_.where(node)), node);
+    for (const xmlNode* child : xml::element_children(node)) {
+      std::optional<ScheduleNode> placed = element(child, fill, kind == Kind::exclusive, inner);
+      if (error_) return std::nullopt;
+      if (placed) group.children.push_back(std::move(*placed));
+    }
+    return group;
+  }
+
+  // Counts the clips a leaf will make (runs times clips per run) against kMaxRuns.
+  bool within_budget(const xmlNode* node, double clips) {
+    planned_clips_ += clips;
+    if (planned_clips_ <= kMaxRuns) return true;
+    fail(doc_.error(node, std::string(xml::local_name(node)) + " brings the document to more than " +
+                              std::to_string(static_cast<long>(kMaxRuns)) +
+                              " clips (repeats of repeats?): fapc refuses to schedule so many"));
+    return false;
+  }
+
+  ScheduleNode add_leaf(const xmlNode* node, Leaf leaf, Timing timing) {
+    leaf.where = doc_.where(node);
+    const std::size_t id = tree_.leaves.size();
+    tree_.leaves.push_back(std::move(leaf));
+    return scheduled_node(ScheduleNode::leaf(id, timing, doc_.where(node)), node);
+  }
+
+  std::optional<ScheduleNode> animate_or_set(const xmlNode* node, const SmilTiming& timing, Fill fill,
+                                             const RunBudget& budget) {
+    const bool is_set = xml::local_name(node) == "set";
+    if (is_set) {
+      check_attributes(node, kTimingAttributes, {"attributeName", "attributeType", "to"});
+    } else {
+      check_attributes(node, kTimingAttributes, {"attributeName", "attributeType", "from", "to", "by",
+                                                 "values", "keyTimes", "calcMode", "additive", "accumulate"});
+    }
+    check_text(node);
+    Leaf leaf;
+    leaf.fill = fill;
+    const auto attribute_name = xml::attribute(node, "attributeName");
+    if (!attribute_name) {
+      fail(doc_.error(node, std::string(xml::local_name(node)) + " needs attributeName (a FAP name or number)"));
+      return std::nullopt;
+    }
+    std::string why;
+    const auto target = resolve_attribute_name(*attribute_name, why);
+    if (!target) {
+      fail(doc_.error(node, "attributeName", why));
+      return std::nullopt;
+    }
+    if (!target->warning.empty()) {
+      once_.report("name " + *attribute_name, doc_.warning(node, "attributeName", target->warning));
+    }
+    leaf.target = target->target;
+    Result<AnimationFunction> function = is_set ? read_set(doc_, node, timing.dur)
+                                                : read_animate(doc_, node, timing.dur, result_.warnings);
+    if (!function) {
+      fail(function.error());
+      return std::nullopt;
+    }
+    leaf.function = std::move(*function);
+    if (!within_budget(node, budget.inside(timing, std::nullopt).repeats)) return std::nullopt;
+    return add_leaf(node, std::move(leaf), to_schedule_timing(timing, std::nullopt));
+  }
+
+  // An FML move: expr, hdmv, fap and param become to-animations that hold (from the value their
+  // target has when they begin, so they compose with the document's other animations); normal
+  // returns the expressions of the FML moves before it to 0; talk and wait are placed like an
+  // included animation of their length.
+  std::optional<ScheduleNode> fml_move(const xmlNode* node, const RunBudget& budget) {
+    Result<EmbeddedFmlMove> move = read_embedded_fml_move(doc_, node, options_.fml);
+    if (!move) {
+      fail(move.error());
+      return std::nullopt;
+    }
+    result_.warnings.insert(result_.warnings.end(), move->warnings.begin(), move->warnings.end());
+    const double length = move->timing.duration.value_or(0);
+    const double runs = budget.repeats * (move->timing.repeat_indefinite ? budget.available / std::max(length, 1e-3)
+                                                                         : move->timing.repeat);
+    const auto hold = [&](const std::string& target, double value) {
+      Leaf leaf;
+      leaf.fill = Fill::freeze;
+      leaf.target = target;
+      leaf.function.values = {0, value};
+      leaf.function.to_animation = true;
+      leaf.function.simple_duration = length;
+      return leaf;
+    };
+    const FmlLeaf& fml = move->leaf;
+    Leaf leaf;
+    switch (fml.kind) {
+      case FmlLeaf::Kind::move:
+        if (weight_target(fml.target)) fml_expressions_.insert(fml.target);
+        if (!within_budget(node, runs)) return std::nullopt;
+        return add_leaf(node, hold(fml.target, fml.value), move->timing);
+      case FmlLeaf::Kind::normal: {
+        if (!within_budget(node, runs * std::max<double>(1, static_cast<double>(fml_expressions_.size()))))
+          return std::nullopt;
+        ScheduleNode group = ScheduleNode::group(Kind::parallel, move->timing, doc_.where(node));
+        Timing child;
+        child.duration = length;
+        for (const std::string& target : fml_expressions_) group.children.push_back(add_leaf(node, hold(target, 0), child));
+        return scheduled_node(std::move(group), node);
+      }
+      case FmlLeaf::Kind::talk:
+        leaf.included = Timeline{viseme_clips(fml.speech, length, doc_.where(node)), length};
+        break;
+      case FmlLeaf::Kind::wait:
+        leaf.included = Timeline{{}, length};
+        break;
+    }
+    const double clips = std::max<double>(1, static_cast<double>(leaf.included->clips.size()));
+    if (!within_budget(node, runs * clips)) return std::nullopt;
+    return add_leaf(node, std::move(leaf), move->timing);
+  }
+
+  std::optional<ScheduleNode> animation(const xmlNode* node, const SmilTiming& timing, Fill fill,
+                                        const RunBudget& budget) {
+    check_attributes(node, kTimingAttributes, {"src", "ref"});
+    check_text(node);
+    Result<Included> included = load_included(doc_, node, options_, result_.warnings);
+    if (!included) {
+      fail(with_source_line(included.error()));
+      return std::nullopt;
+    }
+    result_.included.push_back(included->path);
+    result_.warnings.insert(result_.warnings.end(), included->animation.warnings.begin(),
+                            included->animation.warnings.end());
+    Leaf leaf;
+    leaf.fill = fill;
+    const double length = included->animation.timeline.end();
+    const double clips_per_run = std::max<double>(1, static_cast<double>(included->animation.timeline.clips.size()));
+    if (!within_budget(node, budget.inside(timing, length).repeats * clips_per_run)) return std::nullopt;
+    leaf.included = std::move(included->animation.timeline);
+    return add_leaf(node, std::move(leaf), to_schedule_timing(timing, length));
+  }
+};
+
+}  // namespace
+
+Result<XmtoDocument> read_xmto(std::string_view text, const std::string& file_name,
+                               const XmtoOptions& options) {
+  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name);
+  if (!doc) return doc.error();
+  return DocumentReader(*doc, options).run();
+}
+
+Result<XmtoDocument> load_xmto(const std::string& path, const XmtoOptions& options) {
+  const auto bytes = read_file_bytes(path);
+  if (!bytes) return bytes.error();
+  return read_xmto(*bytes, path, options);
+}
+
+}  // namespace fapc::xmt
