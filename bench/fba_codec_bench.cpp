@@ -1,7 +1,7 @@
-// The FBA codec on the 8 Xface emotion files (issue 4, fba-bitstream.md 12.4): bits per frame at
-// fap_quant 1, 2 and 4 with fitted ranges, the largest absolute error, the order-0 entropy of
-// the coded symbols (a lower bound for the arithmetic-coded payload), and encode and decode
-// speed in memory on one core. Prints a table; not a test.
+// The FBA codec on the 8 Xface emotion files (docs/fba.md section 5, docs/fba-bitstream.md
+// section 12.4): bits per frame at fap_quant 1, 2 and 4 with fitted ranges, the largest absolute
+// error, the order-0 entropy of the coded symbols (a lower bound for the arithmetic-coded payload),
+// and encode and decode speed in memory on one core. Prints a table; not a test.
 //
 //   build/bin/fba_codec_bench [seconds per measurement round, default 0.1]
 #include <algorithm>
@@ -34,10 +34,10 @@ double entropy_bits(const Counts& counts) {
   return bits;
 }
 
-// What the decoder's adaptive model (fba-bitstream.md 6.2: every count starts at 1 and grows by
-// 1) costs for these symbols over an alphabet of A symbols: log2 of (N + A - 1)! / ((A - 1)!
-// prod n_i!), ignoring the coder's rounding. Its excess over N times the entropy is the price of
-// learning the distribution from a flat start.
+// What the decoder's adaptive model (docs/fba-bitstream.md section 6.2: every count starts at 1 and
+// grows by 1) costs for these symbols over an alphabet of A symbols: log2 of (N + A - 1)! /
+// ((A - 1)! prod n_i!), ignoring the coder's rounding. Its excess over N times the entropy is the
+// price of learning the distribution from a flat start.
 double adaptive_bits(const Counts& counts, double symbols) {
   double n = 0, log_e = -std::lgamma(symbols);
   for (const auto& [symbol, count] : counts) {
@@ -48,7 +48,7 @@ double adaptive_bits(const Counts& counts, double symbols) {
 }
 
 // The smallest alphabet the range lists can give for predictive symbols from `low` to `high`
-// (section 5.6: each side a multiple of 60, divided by fap_quant).
+// (docs/fba-bitstream.md section 5.6: each side a multiple of 60, divided by fap_quant).
 double fitted_alphabet(std::int64_t low, std::int64_t high, int quant) {
   const std::int64_t s = std::max(quant, 1);
   const auto side = [s](std::int64_t m) { return (m * s + 59) / 60 * 60 / s; };

@@ -17,6 +17,9 @@ if(FAPC_SANITIZE)
 endif()
 if(FAPC_FUZZ)
   # libFuzzer needs every library instrumented for coverage; the fuzz programs add the driver.
-  add_compile_options(-fsanitize=fuzzer-no-link,address,undefined)
-  add_link_options(-fsanitize=address,undefined)
+  # Every sanitizer report is fatal: a UB report that only prints would let the fuzzer run on
+  # past the bug it just found.
+  add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all
+    -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=address,undefined -fno-sanitize-recover=all)
 endif()

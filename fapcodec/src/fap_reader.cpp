@@ -38,7 +38,7 @@ bool is_mask_shaped(const Line& line) {
   return true;
 }
 
-// Field ranges of FAP 1 and FAP 2 (docs/fba-bitstream.md section 4), in file order.
+// Field ranges of FAP 1 and FAP 2 (docs/fap-table.md section 4), in file order.
 constexpr int kVisemeMax[kVisemeFieldCount] = {14, 14, 63, 1};
 constexpr const char* kVisemeField[kVisemeFieldCount] = {"viseme_select1", "viseme_select2",
                                                          "viseme_blend", "viseme_def"};
@@ -269,7 +269,7 @@ std::optional<Diagnostic> Reader::read_values(const Line& line,
   return std::nullopt;
 }
 
-// docs/fap-files.md section 6, step 5: what the frame numbers mean.
+// docs/fap-files.md section 6: what the frame numbers mean.
 std::optional<Diagnostic> Reader::place_frames_in_time() {
   auto& frames = out_.sequence.frames;
   FapFileFacts& facts = out_.facts;

@@ -9,7 +9,7 @@ namespace fapc {
 
 namespace {
 
-// What distinguishes the flavours, from each family's reader (shared fap-files.md section 3).
+// What distinguishes the flavours, from each family's reader (docs/fap-files.md section 3).
 struct Layout {
   bool header;          // `2.1 <name> <fps> <n>`; SEMAINE messages have none
   int mask_tokens;      // 68, or 69 with a final 0 (Greta's Java writer and reader)

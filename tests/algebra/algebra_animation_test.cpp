@@ -1,4 +1,5 @@
-// The operators on animations (the paper's definitions 4-6), with frames worked out by hand.
+// The operators on animations (Algebra definitions 4 to 6, docs/algebra.md), with frames worked out
+// by hand.
 #include <gtest/gtest.h>
 
 #include "fapc/transcoder/algebra.hpp"
@@ -31,14 +32,15 @@ std::vector<std::optional<int>> jaw_values(const Animation& a) {
 using Values = std::vector<std::optional<int>>;
 
 TEST(AlgebraAnimation, SumIsFrameByFrameAndSingleFramesPassThrough) {
-  // Definition 6: both -> D +_v E; one -> that one (unweighted); neither -> neutral.
+  // Algebra definition 6: both -> D +_v E; one -> that one (unweighted); neither -> neutral.
   const Animation a = jaw(25, {10, 20, std::nullopt, 40});
   const Animation b = jaw(25, {30, std::nullopt, std::nullopt, 0, 7});
   EXPECT_EQ(jaw_values(sum(a, b, 0.5)), (Values{20, 20, 0, 20, 7}));
 }
 
 TEST(AlgebraAnimation, DisjointAnimationsJoinWithNeutralFrames) {
-  // Definition 5: B delayed by 4 frames (0.16 s at 25 fps) after A's 2 frames: two neutral frames.
+  // Algebra definition 5: B delayed by 4 frames (0.16 s at 25 fps) after A's 2 frames: two neutral
+  // frames.
   const Animation a = jaw(25, {10, 20});
   const Animation b = shifted(jaw(25, {30, 40}), 0.16);
   const Result<Animation> joined =

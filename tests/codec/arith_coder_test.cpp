@@ -1,4 +1,4 @@
-// The arithmetic coder alone (fba-bitstream.md section 6): random symbol streams with random
+// The arithmetic coder alone (docs/fba-bitstream.md section 6): random symbol streams with random
 // models round-trip, segments end where the encoder's flush ended at every length, and the
 // stuffing rule holds around runs of zeros.
 #include <gtest/gtest.h>

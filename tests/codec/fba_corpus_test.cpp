@@ -30,11 +30,11 @@ TEST(FbaCorpus, EveryFapFileRoundTrips) {
   EXPECT_EQ(frames, 2277u);
 }
 
-// At fap_quant 0 (lossless) values beyond +-1860 cannot be coded. With the input's masks kept,
-// the same 4 Xface files (and their CRLF twins) as with the reference codec (fba-bitstream.md
-// 12.4) are refused, with the FAP and frame named: their mask changes put an intra plane where a
-// value is beyond the range. With fitted masks the eyelids that cause those changes stay in the
-// mask, no intra plane is needed there, and every file is coded exactly.
+// At fap_quant 0 (lossless) values beyond +-1860 cannot be coded. With the input's masks kept, the
+// same 4 Xface files (and their CRLF twins) as with the reference codec (docs/fba-bitstream.md
+// section 12.4) are refused, with the FAP and frame named: their mask changes put an intra plane
+// where a value is beyond the range. With fitted masks the eyelids that cause those changes stay in
+// the mask, no intra plane is needed there, and every file is coded exactly.
 std::vector<std::string> refused_at_quant_zero(FbaMaskMode masks) {
   std::vector<std::string> refused;
   for (const std::string& path : test::files_under(test::corpus_dir() + "/fap", ".fap")) {

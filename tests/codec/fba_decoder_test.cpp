@@ -1,5 +1,5 @@
 // The decoder on streams our encoder never writes, built field by field in the test from
-// fba-bitstream.md: default ranges, time codes, fractional frame rates, body data in mixed
+// docs/fba-bitstream.md: default ranges, time codes, fractional frame rates, body data in mixed
 // streams, mask type 10, legacy start codes; and on broken streams, which give an error with the
 // byte offset and never crash.
 #include <gtest/gtest.h>
@@ -251,7 +251,8 @@ TEST(FbaDecoder, AcceptsTheLegacyStartCodes) {
   EXPECT_EQ(decoded->info.plane_start_codes, 1u);
 }
 
-// The section 11 test vector, as bytes (checked there), to break in known places.
+// The test vector of docs/fba-bitstream.md section 11, as bytes (checked there), to break in known
+// places.
 std::vector<std::uint8_t> test_vector() {
   const std::string hex =
       "000001BAB19001B5E000A00140285059400A140FFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFFF51327C8F177DC1F2"

@@ -1,6 +1,6 @@
 // Where things sit in the bytes: aligned planes are self-contained MP4 samples, the decoder
-// configuration is the 14 bytes of xmt-and-mp4.md 4.2, and a raw stream rebuilt from them the
-// way 4.3 describes decodes to the same frames.
+// configuration is the 14 bytes of docs/mp4-and-xmta.md section 6.2, and a raw stream rebuilt from
+// them the way section 6.3 describes decodes to the same frames.
 #include <gtest/gtest.h>
 
 #include "fapc/codec/fba.hpp"
@@ -18,7 +18,7 @@ const std::vector<std::uint8_t> kEndCode{0x00, 0x00, 0x01, 0xB1};
 
 TEST(FbaLayout, DecoderSpecificInfoIsTheDocumentedFourteenBytes) {
   const auto dsi = fba_decoder_specific_info();
-  // Copied from xmt-and-mp4.md 4.2, where each field is spelled out.
+  // Copied from docs/mp4-and-xmta.md section 6.2, where each field is spelled out.
   const std::array<std::uint8_t, 14> expected{0x00, 0x00, 0x01, 0xB0, 0x63, 0x00, 0x00,
                                               0x01, 0xB5, 0x23, 0x00, 0x00, 0x01, 0xBA};
   EXPECT_EQ(dsi, expected);
@@ -46,7 +46,7 @@ TEST(FbaLayout, AlignedPlanesAreWholeSamplesThatRebuildTheStream) {
   }
   EXPECT_EQ(slice(bytes, at, bytes.size() - at), kEndCode);
 
-  // Decoder configuration, 0x7F, the samples, the end code (xmt-and-mp4.md 4.3).
+  // Decoder configuration, 0x7F, the samples, the end code (docs/mp4-and-xmta.md section 6.3).
   const auto dsi = fba_decoder_specific_info();
   std::vector<std::uint8_t> rebuilt(dsi.begin(), dsi.end());
   rebuilt.push_back(0x7F);

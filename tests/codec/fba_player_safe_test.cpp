@@ -1,5 +1,5 @@
 // The three stream patterns the reference decoder (visage|SDK) reads differently from fapc
-// (issue 17, docs/fba.md 2 "What other decoders need"), each from a synthetic input that produced
+// (docs/fba.md section 2, "What other decoders need"), each from a synthetic input that produced
 // it before the encoder avoided it. The properties are checked on the bytes by
 // stream_property_checks.hpp; the layout the encoder used to write is rebuilt from the new
 // stream (the empty skip count taken out again) to show the input did produce the pattern, and
@@ -29,7 +29,8 @@ std::vector<std::uint8_t> bytes_of(const Bits& bits) {
   return bytes;
 }
 
-// next_start_code() stuffing (fba-bitstream.md 5.9): a 0, then 1s to the byte boundary.
+// next_start_code() stuffing (docs/fba-bitstream.md section 5.9): a 0, then 1s to the byte
+// boundary.
 void stuff(Bits& bits) {
   bits.push_back(0);
   while (bits.size() % 8 != 0) bits.push_back(1);

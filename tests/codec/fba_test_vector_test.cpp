@@ -1,4 +1,4 @@
-// The three-frame test vector of fba-bitstream.md section 11, reproduced bit for bit. The
+// The three-frame test vector of docs/fba-bitstream.md section 11, reproduced bit for bit. The
 // expected bytes and decoded values are copied from that page, where two implementations written
 // independently of this one produced them; this code was written without looking at theirs.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-// Checks of what other decoders need from a stream, written from the bitstream notes
-// (fba-bitstream.md 5.3, 5.9, 6.4-6.6, 12.6) and not from fapc's writer: they look at the bytes.
+// Checks of what other decoders need from a stream, written from docs/fba-bitstream.md
+// (sections 5.3, 5.9, 6.4 to 6.6, 12.6) and not from fapc's writer: they look at the bytes.
 //   * zeros_before_start_codes: how many zero bits come right before each start code after the
 //     object start code. The reference decoder decodes a segment with 16 bits of look-ahead and
 //     rewinds a fixed 14; a one-bit stuffing '0' lets a segment's trailing zeros run into the 23
@@ -50,8 +50,9 @@ inline bool field_shown_as_is(int value, int quant) {
   return value >= 0 && value <= 63 && (quant == 0 || value % quant == 0);
 }
 
-// The skip_frames part of a plane's temporal header (fba-bitstream.md 5.3), read from the bytes:
-// where the flag is and the 4-bit chunks after it. `aligned`: the plane opens with its start code.
+// The skip_frames part of a plane's temporal header (docs/fba-bitstream.md section 5.3), read from
+// the bytes: where the flag is and the 4-bit chunks after it. `aligned`: the plane opens with its
+// start code.
 struct SkipField {
   std::size_t flag_at = 0;
   int flag = 0;

@@ -25,7 +25,7 @@ TEST(GoldenOutputs, MimicExamples) {
 }
 
 TEST(GoldenOutputs, FmlExamples) {
-  // Figure 7 waits for its event: the golden is the "Bye" branch.
+  // FML Figure 7 waits for its event: the golden is the "Bye" branch.
   const std::vector<std::pair<std::string, std::string>> examples = {
       {"figure5", ""}, {"figure6", ""}, {"figure7", " --event user=1"}, {"figure8", ""}, {"hindawi-alg1", ""},
       {"tour", ""}};

@@ -47,7 +47,7 @@ TEST(FaceVideo, FrameRateOptionResamplesTheAnimation) {
 TEST(FaceVideo, OddSizesAreRefusedForVideo) {
   const test::CommandRun run = test::run_fapc("render corpus/examples/mimic/figure3.mimic -o " +
                                               test::binary_dir() + "/odd.webm --size 321x240");
-  EXPECT_EQ(run.exit_status, 1);
+  EXPECT_EQ(run.exit_status, 2);  // a usage error (ErrorKind::usage), docs/cli.md
   EXPECT_NE(run.err.find("even sides"), std::string::npos) << run.err;
 }
 

@@ -13,7 +13,7 @@ std::vector<std::string> corpus_files() {
 
 TEST(FapCorpus, EveryFileIsRead) {
   const auto files = corpus_files();
-  // 196 files from five projects (docs/fap-files.md section 7.1); a silently skipped file fails.
+  // 196 files from five projects (docs/fap-files.md section 7); a silently skipped file fails.
   ASSERT_EQ(files.size(), 196u);
   std::size_t frames = 0;
   for (const std::string& path : files) {

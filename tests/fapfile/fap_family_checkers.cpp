@@ -1,5 +1,5 @@
 // The family readers of fap_family_checkers.hpp. Each rule cites the program behaviour it comes
-// from (shared fap-files.md section 3.x).
+// from (docs/fap-files.md section 3).
 #include "fap_family_checkers.hpp"
 
 #include <cctype>

@@ -1,9 +1,8 @@
-// Strict readers of .fap text, one per player family, written from the format notes (the shared
-// fap-files.md, section 3 for each program and section 5 for the safe form), not from fapc's
-// reader: each reads a file the way that family's program does and fails, with a reason, on
-// anything that program would misread, and on anything outside the exact form fapc promises for
-// that family (docs/fap-files.md, "Flavours"). They return what the program would see, so a test
-// can compare it with what was written.
+// Strict readers of .fap text, one per player family, written from docs/fap-files.md (section 3 for
+// each program and section 5 for the safe form), not from fapc's reader: each reads a file the way
+// that family's program does and fails, with a reason, on anything that program would misread, and
+// on anything outside the exact form fapc promises for that family (docs/fap-files.md, "Flavours").
+// They return what the program would see, so a test can compare it with what was written.
 #pragma once
 
 #include <bitset>

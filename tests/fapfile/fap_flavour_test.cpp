@@ -1,8 +1,9 @@
 // The .fap flavours (docs/fap-files.md, "Flavours"): every corpus file written in each flavour is
 // read as intended by that family's strict checker (fap_family_checkers.hpp, written from the
-// format notes), shows the checker the values written, and reads back through fapc's reader to
-// the same values. A flavour that cannot carry a file refuses it, naming the frame. The sanitizer
-// build (FAPC_SANITIZED_BUILD) takes every eighth file only (docs/testing.md).
+// programs' readers in docs/fap-files.md section 3), shows the checker the values written, and
+// reads back through fapc's reader to the same values. A flavour that cannot carry a file refuses
+// it, naming the frame. The sanitizer build (FAPC_SANITIZED_BUILD) takes every eighth file only
+// (docs/testing.md).
 #include <gtest/gtest.h>
 
 #include <array>
@@ -183,7 +184,7 @@ TEST(FapFlavour, NamesRoundTrip) {
 namespace fapc {
 namespace {
 
-// The checkers can fail: each refuses the forms its family misreads (fap-files.md section 4).
+// The checkers can fail: each refuses the forms its family misreads (docs/fap-files.md section 3).
 TEST(FapFlavour, CheckersRefuseFormsTheirFamilyMisreads) {
   const FapSequence blended = with_high_level({3, 7, 40, 0});
   FapWriteOptions options;

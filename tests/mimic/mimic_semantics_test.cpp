@@ -1,4 +1,4 @@
-// Every rule of semantics.md §2, with values worked out by hand.
+// Every rule of docs/mimic.md, "Timing and values", with values worked out by hand.
 #include <cmath>
 #include <numbers>
 
@@ -152,7 +152,7 @@ TEST(MimicSemantics, OutOfRangeValuesWarnAtTheNumber) {
 TEST(MimicSemantics, Table2ProgramSchedulesAsWorkedOutByHand) {
   const std::string source = test::read_text(test::corpus_dir() + "/mimic/table2.mimic");
   const Timeline t = timeline_of(source);
-  // Worked out from the paper's Table 2 (line: span): 3: [0,132) 5: [0,30) 6: [30,35) 9: [35,72)
+  // Worked out from Mimic Table 2 (line: span): 3: [0,132) 5: [0,30) 6: [30,35) 9: [35,72)
   // 11: [50,60) 13: [45,65) 15: [72,97) 17: [97,122) 19: [107,117) 21: [122,132) 28: [132,152)
   // 29: [132.1,152) 33: [152,262) 35: [152,182) 36: [182,187) 38: [197,212) 39: [212,237)
   // 40: [237,262) 42: [162,252).

@@ -1,7 +1,7 @@
 // Byte-exact checks of the MP4 writer's descriptors and configurations against the bytes GPAC
-// writes for the same content, as recorded (and checked with GPAC) in the project's reference
-// notes on XMT and MP4, section 4.5. Where the project deliberately differs from GPAC (visual
-// profile 0x63 instead of GPAC's default 0x01, audio 0xFF instead of 0x00), the test says so.
+// writes for the same content, as recorded (and checked with GPAC) in docs/mp4-and-xmta.md
+// section 6.4. Where the project deliberately differs from GPAC (visual profile 0x63 instead of
+// GPAC's default 0x01, audio 0xFF instead of 0x00), the test says so.
 #include <gtest/gtest.h>
 
 #include "fapc/mpeg4/bifs.hpp"

@@ -1,4 +1,4 @@
-// Curves, blending and rendering against values worked out by hand (semantics.md §1).
+// Curves, blending and rendering against values worked out by hand (docs/timeline.md).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// FML moves (semantics.md §3, docs/fml.md) against values worked out by hand: each move ramps its
+// FML moves (docs/fml.md, "Moves") against values worked out by hand: each move ramps its
 // target from the current value to its own and holds it; expr onto FAP 2 weights (val % of 63),
 // hdmv onto head rotation in angle units (1 degree = 1e5 * pi / 180 = 1745.33 AU) within the
 // model's ranges, fap by number or name, param through the profile, talk onto visemes.

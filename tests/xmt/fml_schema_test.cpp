@@ -51,7 +51,8 @@ TEST(FmlSchema, CorpusDocumentsAreValidExceptThePublishedSampleWithItsExtensions
   }
 }
 
-// Each spelling variant of docs/fml.md §10, every repeat form, clock values, foreign attributes.
+// Each spelling variant of docs/fml.md, "Spellings", every repeat form, clock values, foreign
+// attributes.
 const std::string kVariants = with_model(
     "<character name=\"guide\"/>\n<img src=\"a.jpg\" type=\"frontal\"/>\n<param name=\"fdp\" val=\"x\"/>\n"
     "<range dir=\"1\" val=\"20\"/>\n<event id=\"quit\" val=\"-1\"/>\n<event name=\"kbd\"/>\n"

@@ -1,4 +1,4 @@
-// FML timing (semantics.md §3, docs/fml.md) against spans worked out by hand: in a seq, begin and
+// FML timing (docs/fml.md, "Timing") against spans worked out by hand: in a seq, begin and
 // end count from the previous element's end; in a par from the par's start; end wins over
 // duration; moves last 1 s by default; actions run one after another; repeat by count, by event
 // and indefinitely; excl branches chosen by event values; templates played by behavior.
@@ -97,7 +97,7 @@ TEST(FmlTiming, ExclPlaysTheBranchOfTheEventsValue) {
 }
 
 TEST(FmlTiming, BehaviorPlaysItsTemplateInPlace) {
-  // The paper's Fig. 5: "Hello" (3 visemes at 12/s = 0.25 s), then the head turns by 3 s later.
+  // FML Figure 5: "Hello" (3 visemes at 12/s = 0.25 s), then the head turns by 3 s later.
   const std::string model =
       "<range type=\"left\" val=\"60\"/><template name=\"hi\"><seq begin=\"0\"><talk>Hello</talk>"
       "<hdmv type=\"0\" begin=\"0\" end=\"3s\" val=\"30\"/></seq></template>";

@@ -107,8 +107,9 @@ TEST(XmlValidation, NothingOutsideTheDocumentIsRead) {
 }
 
 TEST(XmlValidation, GpacShapedExampleValidates) {
-  // Example C of the project's XMT/MP4 reference notes (corpus/xmta/gpac-three-tracks.xmt), from
-  // which GPAC builds a scene, OD and FBA track: the schema accepts the shape GPAC reads.
+  // GPAC's three-track example (corpus/xmta/gpac-three-tracks.xmt, docs/mp4-and-xmta.md
+  // section 6.4), from which GPAC builds a scene, OD and FBA track: the schema accepts the shape
+  // GPAC reads.
   const std::string path = fapc::test::corpus_dir() + "/xmta/gpac-three-tracks.xmt";
   auto report = validate_xml(fapc::test::read_text(path), path);
   ASSERT_TRUE(report.ok());

@@ -90,7 +90,8 @@ TEST(XmtoValues, FromByRampsFromFromToFromPlusBy) {
 }
 
 TEST(XmtoValues, ToAnimationStartsWhereTheFrozenOneStopped) {
-  // Example D's nod: up to 3400 in 0.25 s and frozen, then a to-animation back to 0.
+  // The nod of corpus/xmto/nod-and-smile.xmt: up to 3400 in 0.25 s and frozen, then a to-animation
+  // back to 0.
   const Timeline t = read_timeline(
       R"(<seq><animate attributeName="head_pitch" from="0" to="3400" dur="0.25s" fill="freeze"/>)"
       R"(<animate attributeName="head_pitch" to="0" dur="0.25s" fill="freeze"/></seq>)");

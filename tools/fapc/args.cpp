@@ -4,7 +4,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "fapc/registry.hpp"
+#include "fapc/commands.hpp"
 
 namespace fapc::cli {
 

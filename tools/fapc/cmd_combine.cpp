@@ -3,9 +3,11 @@
 #include <filesystem>
 #include <iostream>
 
-#include "fapc/convert.hpp"
+#include "fapc/commands.hpp"
+#include "fapc/options.hpp"
+#include "fapc/pipeline/combine.hpp"
+#include "fapc/pipeline/convert.hpp"
 #include "fapc/report.hpp"
-#include "fapc/combine_eval.hpp"
 
 namespace fapc::cli {
 
@@ -46,16 +48,17 @@ int run_combine(const std::vector<std::string>& argv) {
   const auto output = args.value("output");
   if (!states && !output) return usage_error("combine", "missing -o OUTPUT (or --states)");
   Diagnostics warnings;
-  Result<Value> value = evaluate_combination(args.positionals().front(), "", options, warnings);
+  Result<Value> value = pipeline::evaluate_combination(args.positionals().front(), "", options, warnings);
+  if (!value) return report_outcome(warnings, value.error());
   report_all(warnings);
-  if (!value) {
-    report(value.error());
-    return kExitBadInput;
-  }
   if (states) return print_state(*value, args);
-  Loaded loaded;
-  loaded.frames = frames_of(*value, options.fps, std::filesystem::path(*output).stem().string());
-  return write_output(loaded, *output, options, args.value("to").value_or(""));
+  pipeline::Loaded loaded;
+  loaded.frames = pipeline::frames_of(*value, options.fps, std::filesystem::path(*output).stem().string());
+  const pipeline::ConvertResult result =
+      pipeline::write_outputs(std::move(loaded), {{*output, args.value("to").value_or("")}}, options);
+  const int status = report_outcome({}, result.error);
+  if (status == kExitOk && *output == "-") std::cout << result.standard_output << std::flush;
+  return status;
 }
 
 const RegisterCommand combine_command{

@@ -5,7 +5,10 @@
 #include <iostream>
 #include <iterator>
 
-#include "fapc/convert.hpp"
+#include "fapc/commands.hpp"
+#include "fapc/options.hpp"
+#include "fapc/pipeline/convert.hpp"
+#include "fapc/report.hpp"
 
 namespace fapc::cli {
 
@@ -14,7 +17,7 @@ namespace {
 // Standard input is saved to a temporary file with the extension of --from, because every
 // front end reads a path (and resolves relative includes from it).
 std::string save_stdin(const std::string& kind) {
-  const InputFormat* format = input_format_named(kind);
+  const pipeline::InputFormat* format = pipeline::formats().input_named(kind);
   if (!format) return {};
   const auto folder = std::filesystem::temp_directory_path() /
                       ("fapc-stdin-" + std::to_string(::getpid()));
@@ -41,7 +44,9 @@ int run_compile(const std::vector<std::string>& argv) {
     if (input.empty()) return usage_error("compile", "unknown input kind '" + *from + "'");
     options.includes.base_folder = ".";  // its includes are named from the working folder
   }
-  const int status = convert(input, *output, options, to).exit_status;
+  const pipeline::ConvertResult result = pipeline::convert(input, {{*output, to}}, options);
+  const int status = report_outcome(result.warnings, result.error);
+  if (status == kExitOk && *output == "-") std::cout << result.standard_output << std::flush;
   if (args.positionals().front() == "-") std::filesystem::remove_all(std::filesystem::path(input).parent_path());
   return status;
 }

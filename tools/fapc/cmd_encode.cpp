@@ -3,8 +3,10 @@
 #include <iostream>
 
 #include "fapc/codec/file_io.hpp"
-#include "fapc/convert.hpp"
-#include "fapc/fba_cli.hpp"
+#include "fapc/commands.hpp"
+#include "fapc/options.hpp"
+#include "fapc/pipeline/fba_io.hpp"
+#include "fapc/pipeline/registry.hpp"
 #include "fapc/report.hpp"
 
 namespace fapc::cli {
@@ -20,23 +22,16 @@ int run_encode(const std::vector<std::string>& argv) {
   if (!output) return usage_error("encode", "missing -o OUT.fba");
   const std::string& input = args.positionals().front();
 
-  auto loaded = load_input(input, options);
-  if (!loaded) {
-    report(loaded.error());
-    return kExitBadInput;
-  }
+  auto loaded = pipeline::load(input, options);
+  if (!loaded) return report_outcome({}, loaded.error());
   report_all(loaded->warnings);
-  auto encoded = encode_checked(loaded->frames, options, input, args.flag("align-planes"));
-  if (!encoded) {
-    report(encoded.error());
-    return encoded.error().message.rfind("verification failed", 0) == 0 ? kExitVerifyFailed : kExitBadInput;
-  }
+  auto encoded = pipeline::encode_checked(loaded->frames, options, input, args.flag("align-planes"));
+  if (!encoded) return report_outcome({}, encoded.error());
   const std::string bytes(encoded->bytes.begin(), encoded->bytes.end());
   if (*output == "-") {
     std::cout << bytes << std::flush;
   } else if (auto written = write_file_atomic(*output, bytes); !written) {
-    report(written.error());
-    return kExitBadInput;
+    return report_outcome({}, written.error());
   }
   return kExitOk;
 }

@@ -1,12 +1,13 @@
 // fapc plot INPUT -o OUT.svg [--per-clip]: the blended curves, and with --per-clip every action's
-// own curve labelled by its source line (the Mimic paper's Figure 1).
+// own curve labelled by its source line (Mimic Figure 1, docs/mimic.md).
 #include <filesystem>
 
 #include "fapc/codec/file_io.hpp"
-#include "fapc/convert.hpp"
+#include "fapc/commands.hpp"
+#include "fapc/options.hpp"
+#include "fapc/pipeline/registry.hpp"
+#include "fapc/pipeline/svg_plot.hpp"
 #include "fapc/report.hpp"
-#include "fapc/svg_plot.hpp"
-#include "fapc/transcoder/render.hpp"
 
 namespace fapc::cli {
 
@@ -22,29 +23,13 @@ int run_plot(const std::vector<std::string>& argv) {
   if (!output) return usage_error("plot", "missing -o OUT.svg");
   const std::string& input = args.positionals().front();
 
-  Result<Loaded> loaded = load_input(input, options);
-  if (!loaded) {
-    report(loaded.error());
-    return kExitBadInput;
-  }
+  Result<pipeline::Loaded> loaded = pipeline::load(input, options);
+  if (!loaded) return report_outcome({}, loaded.error());
   report_all(loaded->warnings);
-  std::optional<Curves> per_clip;
-  if (args.flag("per-clip")) {
-    if (!loaded->timeline) {
-      report(make_error(Location{input, 0, 0, -1},
-                        "--per-clip needs a timeline input (Mimic, FML or XMT-Omega); this input "
-                        "has frames only"));
-      return kExitBadInput;
-    }
-    per_clip = render_clip_curves(*loaded->timeline, CurveOptions{options.fps, 1e-6});
-  }
-  const Curves blended = loaded->curves ? *loaded->curves : curves_from_frames(loaded->frames);
-  const std::string svg = plot_svg(blended, per_clip ? &*per_clip : nullptr,
-                                   std::filesystem::path(input).filename().string());
-  if (auto written = write_file_atomic(*output, svg); !written) {
-    report(written.error());
-    return kExitBadInput;
-  }
+  auto svg = pipeline::plot_loaded(*loaded, input, std::filesystem::path(input).filename().string(),
+                                   args.flag("per-clip"), options.fps);
+  if (!svg) return report_outcome({}, svg.error());
+  if (auto written = write_file_atomic(*output, *svg); !written) return report_outcome({}, written.error());
   return kExitOk;
 }
 

@@ -1,5 +1,8 @@
 // fapc render INPUT -o OUT.png|.webm|.html: any input shown as a face (docs/render.md).
-#include "fapc/convert.hpp"
+#include "fapc/commands.hpp"
+#include "fapc/options.hpp"
+#include "fapc/pipeline/convert.hpp"
+#include "fapc/report.hpp"
 
 namespace fapc::cli {
 
@@ -16,10 +19,12 @@ int run_render(const std::vector<std::string>& argv) {
     return usage_error("render", "--sheet picks its own frames; drop --frame/--time");
   const auto output = args.value("output");
   if (!output) return usage_error("render", "missing -o OUT.png, OUT.webm or OUT.html");
-  const OutputFormat* format = output_format_for(*output);
+  const pipeline::OutputFormat* format = pipeline::formats().output_for(*output);
   if (!format || (format->kind != "png" && format->kind != "webm" && format->kind != "html"))
     return usage_error("render", "the output must end in .png, .webm or .html: '" + *output + "'");
-  return convert(args.positionals().front(), *output, options).exit_status;
+  const pipeline::ConvertResult result =
+      pipeline::convert(args.positionals().front(), {{*output, ""}}, options);
+  return report_outcome(result.warnings, result.error);
 }
 
 const RegisterCommand render_command{

@@ -4,22 +4,16 @@
 #include <iostream>
 
 #include "fapc/args.hpp"
-#include "fapc/codec/file_io.hpp"
-#include "fapc/registry.hpp"
+#include "fapc/commands.hpp"
+#include "fapc/pipeline/validate.hpp"
 #include "fapc/report.hpp"
-#include "fapc/xml/xml_validation.hpp"
 
 namespace fapc::cli {
 
 namespace {
 
 bool validate_one(const std::string& path) {
-  auto bytes = read_file_bytes(path);
-  if (!bytes) {
-    report(bytes.error());
-    return false;
-  }
-  auto checked = xmt::validate_xml(*bytes, path);
+  auto checked = pipeline::validate(path);
   if (!checked) {
     report(checked.error());
     return false;

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "fapc/registry.hpp"
+#include "fapc/commands.hpp"
 
 namespace {
 

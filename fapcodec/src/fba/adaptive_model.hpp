@@ -1,4 +1,4 @@
-// The frequency model of the FBA arithmetic coder (fba-bitstream.md sections 6.1, 6.2): an
+// The frequency model of the FBA arithmetic coder (docs/fba-bitstream.md sections 6.1, 6.2): an
 // alphabet of n symbols with cumulative counts that DEcrease, so symbol j owns [cum[j+1], cum[j])
 // and higher symbols sit lower in the interval. Every count starts at 1; after each coded symbol
 // the symbol's count grows by one, and all counts are halved (rounding up) when the total has

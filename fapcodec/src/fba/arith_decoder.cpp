@@ -34,9 +34,9 @@ int ArithDecoder::get_coded_bit() {
 }
 
 bool ArithDecoder::finish() {
-  // The decoder has read exactly 14 coded bits more than the encoder wrote (section 6.6), and it
-  // always reads at least 16. Coded bit L - 14 ends after those bits and the stuffing bits that
-  // came before them.
+  // The decoder has read exactly 14 coded bits more than the encoder wrote (docs/fba-bitstream.md
+  // section 6.6), and it always reads at least 16. Coded bit L - 14 ends after those bits and the
+  // stuffing bits that came before them.
   const std::uint64_t written = coded_bits_ - kLookAheadBits;
   std::size_t stuffing = 0;
   for (const std::uint64_t after : stuffing_after_) stuffing += after < written;

@@ -1,7 +1,7 @@
-// The decoder half of the FBA arithmetic coder (fba-bitstream.md sections 6.4 to 6.6). It reads
-// 16 bits ahead; at the end of a segment it puts the reader back just after the encoder's flush
-// bits, robustly: it knows where every stuffing bit of the segment was, so it returns to the end
-// of coded bit L - 14 (L = coded bits read) even when a stuffing bit lies inside the look-ahead
+// The decoder half of the FBA arithmetic coder (docs/fba-bitstream.md sections 6.4 to 6.6). It
+// reads 16 bits ahead; at the end of a segment it puts the reader back just after the encoder's
+// flush bits, robustly: it knows where every stuffing bit of the segment was, so it returns to the
+// end of coded bit L - 14 (L = coded bits read) even when a stuffing bit lies inside the look-ahead
 // (the reference's fixed 14-bit step back cannot, D9). Private to fapcodec.
 #pragma once
 

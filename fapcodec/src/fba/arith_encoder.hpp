@@ -1,4 +1,4 @@
-// The encoder half of the FBA arithmetic coder (fba-bitstream.md sections 6.3, 6.4): 16-bit
+// The encoder half of the FBA arithmetic coder (docs/fba-bitstream.md sections 6.3, 6.4): 16-bit
 // registers in the style of H.263 Annex E, and a stuffing '1' after 22 zeros of coder output so
 // that a segment never emulates a start code. Private to fapcodec.
 #pragma once

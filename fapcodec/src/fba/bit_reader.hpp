@@ -2,7 +2,7 @@
 // Reading past the end yields zeros and moves the position on regardless, so a parser can read a
 // whole syntax structure and check overrun() once at its end (the dav1d habit); the arithmetic
 // decoder relies on this for its look-ahead, which may legitimately run past the last byte before
-// it rewinds (fba-bitstream.md section 6.6). Private to fapcodec.
+// it rewinds (docs/fba-bitstream.md section 6.6). Private to fapcodec.
 #pragma once
 
 #include <bit>

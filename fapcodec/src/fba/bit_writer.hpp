@@ -1,5 +1,5 @@
 // Writes bits most significant first into a growing byte buffer: the output side of the FBA
-// bitstream (fba-bitstream.md section 0.2). Bits gather in a 64-bit word and go out four bytes
+// bitstream (docs/fba-bitstream.md section 0.2). Bits gather in a 64-bit word and go out four bytes
 // at a time. Private to fapcodec.
 #pragma once
 

@@ -1,8 +1,8 @@
-// Parses the body (BAP) part of a plane far enough to step over it (fba-bitstream.md section
-// 5.8, appendix A): masks, range lists and the arithmetic-coded segment, whose length is only
-// known by decoding it with the same models the encoder used. The values are not kept: fapc
-// handles faces only. BAPs are addressed by their position in the group order, which is also
-// the coding order, so their numbers are never needed. Private to fapcodec.
+// Parses the body (BAP) part of a plane far enough to step over it (docs/fba-bitstream.md
+// section 5.8, appendix A): masks, range lists and the arithmetic-coded segment, whose length is
+// only known by decoding it with the same models the encoder used. The values are not kept: fapc
+// handles faces only. BAPs are addressed by their position in the group order, which is also the
+// coding order, so their numbers are never needed. Private to fapcodec.
 #pragma once
 
 #include <array>

@@ -26,13 +26,17 @@ struct DecodeContext {
     return make_error(Location::binary(file, byte), message);
   }
   Diagnostic error_here(const std::string& message) const { return error_at(in.byte_offset(), message); }
+  // The stream ends before its syntax does: a kind callers (and StreamReader::explain) decide by.
+  Diagnostic truncated_at(std::int64_t byte, const std::string& message) const {
+    return make_error(ErrorKind::truncated, Location::binary(file, byte), message);
+  }
 
   // After reading a structure: did it run past the last byte?
   Status check_inside(const std::string& what) const {
     if (!in.overrun()) return ok_status();
-    return error_at(static_cast<std::int64_t>(in.size_bits() / 8), "stream ends inside " + what + " (truncated?)");
+    return truncated_at(static_cast<std::int64_t>(in.size_bits() / 8), "stream ends inside " + what + " (truncated?)");
   }
-  // A marker bit that must be 1 (section 5.9).
+  // A marker bit that must be 1 (docs/fba-bitstream.md section 5.9).
   Status read_marker(const char* where) {
     const std::int64_t byte = in.byte_offset();
     if (in.read_bit() == 1) return ok_status();

@@ -15,7 +15,7 @@ Status FaceReader::read_masks() {
     const auto type = static_cast<MaskType>(c_.in.read_bits(kMaskTypeBits));
     for (int fap = group.first_fap; fap <= group.last_fap; ++fap) {
       // Types 01 and 10 list one bit per FAP; 10 also lets a player interpolate the others, which
-      // is the player's business (section 5.4).
+      // is the player's business (docs/fba-bitstream.md section 5.4).
       const bool on = type == kMaskAll || ((type == kMaskListed || type == kMaskListedInterpolate) && c_.in.read_bit());
       state_.mask.set(FaceState::index(fap), on);
     }

@@ -1,4 +1,4 @@
-// Reads the face part of a plane (fba-bitstream.md sections 5.4 to 5.7, 6.7, 6.8): in intra
+// Reads the face part of a plane (docs/fba-bitstream.md sections 5.4 to 5.7, 6.7, 6.8): in intra
 // planes fap_quant, the group masks and the range lists; then the viseme, expression and
 // low-level segments, reconstructing values exactly as the encoder's closed loop did.
 // Private to fapcodec.

@@ -1,5 +1,5 @@
 // What encoder and decoder both keep about the face part of a stream between planes
-// (fba-bitstream.md section 8): the mask and fap_quant of the last intra plane, the persistent
+// (docs/fba-bitstream.md section 8): the mask and fap_quant of the last intra plane, the persistent
 // ranges, the adaptive P models, and the reconstructed values that predictive planes add to.
 // Both sides drive it through the same calls, so they stay in step by construction.
 // Private to fapcodec.
@@ -21,7 +21,7 @@ using RangeCodes = std::array<std::array<std::uint8_t, kFapCount>, kRangeListCou
 
 struct FaceState {
   bool started = false;             // an intra plane has set masks, ranges and models
-  bool ranges_initialised = false;  // explicit, unlike the reference's FAP 4 test (section 13.13)
+  bool ranges_initialised = false;  // explicit, unlike the reference (section 13, item 13)
   int fap_quant = 1;
   std::bitset<kFapCount> mask;
   // Ranges in quantised units, index fap - 1; [list] as RangeList.

@@ -1,6 +1,6 @@
-// Quantisation of FAP values (fba-bitstream.md section 7): rounding half away from zero, except
-// that |v| equal to half an even step goes to 0. A step of 0 means no quantisation.
-// Private to fapcodec.
+// Quantisation of FAP values (docs/fba-bitstream.md section 7): rounding half away from zero,
+// except that |v| equal to half an even step goes to 0. A step of 0 means no quantisation. Private
+// to fapcodec.
 #pragma once
 
 #include <cstdint>
@@ -37,7 +37,7 @@ inline std::int64_t legal_target(std::int64_t value, std::int64_t legal, std::in
 }
 
 // The smallest 5-bit range value v whose range (v * 60) / scaler covers `magnitude` quantised
-// units (section 5.6); above kMaxRangeValue when nothing can.
+// units (docs/fba-bitstream.md section 5.6); above kMaxRangeValue when nothing can.
 inline int range_value_for(std::int64_t magnitude, int scaler) {
   return static_cast<int>((magnitude * scaler + kRangeDelta - 1) / kRangeDelta);
 }

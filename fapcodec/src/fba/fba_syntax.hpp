@@ -1,5 +1,5 @@
 // Every start code, field width and table of the FBA bitstream that encoder and decoder share,
-// named once (fba-bitstream.md sections 5, 7 and appendix A). Private to fapcodec.
+// named once (docs/fba-bitstream.md sections 5, 7 and appendix A). Private to fapcodec.
 #pragma once
 
 #include <array>
@@ -20,7 +20,8 @@ inline constexpr std::uint32_t kLegacyObjectStartCode = 0x00000101;  // accepted
 inline constexpr std::uint32_t kLegacyPlaneStartCode = 0x00000103;   // accepted, never written
 inline constexpr std::uint8_t kStuffingByte = 0x7F;
 
-// Visual object sequence and visual object headers (section 5.1, xmt-and-mp4.md 4.2).
+// Visual object sequence and visual object headers (section 5.1; MP4 tracks carry them in their
+// decoder configuration).
 inline constexpr int kProfileLevelBits = 8;
 inline constexpr std::uint8_t kSimpleFbaLevel1 = 0x63;
 inline constexpr int kVisualObjectVerIdBits = 4;
@@ -57,11 +58,11 @@ inline constexpr int kFirstLowLevelFap = 3;
 inline constexpr int kCodedFieldCount = 7;
 inline constexpr int kVisemeFields = 3;      // select1, select2, blend
 inline constexpr int kExpressionFields = 4;  // select1, intensity1, select2, intensity2
-// The largest viseme_blend and expression intensity (fba-bitstream.md section 4).
+// The largest viseme_blend and expression intensity (docs/fap-table.md section 4).
 inline constexpr int kLargestFieldValue = 63;
 inline constexpr std::array<int, kCodedFieldCount> kFieldLimit{14, 14, -1, 6, -1, 6, -1};  // -1: B
 
-// Body data, parsed only (section 5.8, appendix A).
+// Body data, parsed only (docs/fba-bitstream.md section 5.8, appendix A).
 inline constexpr int kBapGroupCount = 24;
 inline constexpr std::array<int, kBapGroupCount> kBapGroupSizes{
     3, 4, 4, 6, 6, 5, 5, 7, 7, 12, 15, 18, 18, 12, 16, 16, 13, 13, 6, 22, 22, 22, 22, 22};

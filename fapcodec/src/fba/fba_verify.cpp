@@ -11,7 +11,7 @@ namespace fapc {
 namespace {
 
 Diagnostic failure(const std::string& file, const std::string& message) {
-  return make_error(Location{file, 0, 0, -1}, "verification failed: " + message);
+  return make_error(ErrorKind::verification_failed, Location{file, 0, 0, -1}, "verification failed: " + message);
 }
 
 std::string at_frame(const FapFrame& frame) { return "frame " + std::to_string(frame.number) + ": "; }

@@ -131,7 +131,7 @@ void GopPlanner::fit_ranges(Gop& gop) const {
     gop.codes[kPredMin][i] = code(-pred_low);
   }
   // The reference decoder takes an intra range of [0, 0] for FAP 4 as "no ranges yet" and
-  // re-applies its default table (section 13, item 13): never signal it.
+  // re-applies its default table (docs/fba-bitstream.md section 13, item 13): never signal it.
   constexpr std::size_t kFap4 = 3;
   if (gop.mask.test(kFap4) && gop.codes[kIntraMax][kFap4] == 0 && gop.codes[kIntraMin][kFap4] == 0)
     gop.codes[kIntraMax][kFap4] = 1;

@@ -1,6 +1,6 @@
 // The encoder's decisions, made before any bit is written (docs/fba.md): where intra planes go,
 // the quantised symbols of every plane (closed-loop prediction from the decoder's own
-// reconstruction, fba-bitstream.md section 6.7), and the ranges each intra plane signals.
+// reconstruction, docs/fba-bitstream.md section 6.7), and the ranges each intra plane signals.
 // A group of planes ("GOP") is one intra plane and the predictive planes that follow it.
 // Private to fapcodec.
 #pragma once

@@ -70,8 +70,9 @@ class LevelChooser {
   CountLogs logs_;
 };
 
-// The predictive alphabet the fitted ranges give differences from `low` to `high` (section 5.6:
-// each side a whole number of range steps of 60 / scaler quantised units).
+// The predictive alphabet the fitted ranges give differences from `low` to `high`
+// (docs/fba-bitstream.md section 5.6: each side a whole number of range steps of 60 / scaler
+// quantised units).
 std::int64_t fitted_alphabet(std::int64_t low, std::int64_t high, int range_scaler);
 
 }  // namespace fapc::fba

@@ -5,9 +5,9 @@ namespace fapc::fba {
 namespace {
 
 // The reference decoder decodes a segment with 16 bits of look-ahead and counts zeros as it goes
-// (fba-bitstream.md 6.4-6.6): a segment's trailing zeros, a one-bit stuffing '0' and the 23 zeros
-// of a start code make a run past 22 inside its look-ahead, which it takes for a missing
-// stuffing bit. At most 8 zeros before a start code keep every run well short of that.
+// (docs/fba-bitstream.md sections 6.4 to 6.6): a segment's trailing zeros, a one-bit stuffing '0'
+// and the 23 zeros of a start code make a run past 22 inside its look-ahead, which it takes for a
+// missing stuffing bit. At most 8 zeros before a start code keep every run well short of that.
 constexpr std::size_t kMaxZerosBeforeStartCode = 8;
 
 }  // namespace
@@ -17,7 +17,7 @@ PlaneWriter::PlaneWriter(const FapSequence& sequence, const FbaEncodeOptions& op
   state_.fap_quant = options.quant;
   out_.put_bits(kFbaObjectStartCode, kStartCodeBits);
   // Aligned planes each start with a plane start code, which needs stuffing before it; every
-  // later one gets it from the end of the plane before (xmt-and-mp4.md 4.3).
+  // later one gets it from the end of the plane before (docs/mp4-and-xmta.md section 6.3).
   if (options_.align_planes) out_.put_start_code_stuffing();
   result_.header_size = out_.bit_count() / 8;
 }
@@ -89,8 +89,9 @@ void PlaneWriter::write_intra_face_header(const Gop& gop) {
   }
   out_.put_bit(0);  // fba_suggested_gender, as the reference writes it
   out_.put_bit(0);  // fba_object_coding_type: predictive arithmetic coding
-  // All four range lists in every intra plane (section 5.6, E9): the reference decoder falls
-  // back to defaults the encoder does not share, and keeps stale ranges across a fap_quant change.
+  // All four range lists in every intra plane (docs/fba-bitstream.md section 5.6, E9): the
+  // reference decoder falls back to defaults the encoder does not share, and keeps stale ranges
+  // across a fap_quant change.
   for (int list = 0; list < kRangeListCount; ++list) out_.put_bit(1);
   state_.mask = gop.mask;
   for (int list = 0; list < kRangeListCount; ++list) {

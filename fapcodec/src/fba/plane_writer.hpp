@@ -1,4 +1,4 @@
-// Writes the syntax of a face-only FBA stream (fba-bitstream.md sections 5 and 6.7) from the
+// Writes the syntax of a face-only FBA stream (docs/fba-bitstream.md sections 5 and 6.7) from the
 // planner's decisions: object start code, planes (plane header, temporal header, masks, the four
 // range lists, arithmetic-coded segments), stuffing and end code. Private to fapcodec.
 #pragma once

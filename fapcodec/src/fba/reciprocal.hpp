@@ -1,5 +1,5 @@
 // Division by a model total without a divide instruction. The coder divides by the total of a
-// model twice per symbol (fba-bitstream.md sections 6.3, 6.5), on the chain of operations each
+// model twice per symbol (docs/fba-bitstream.md sections 6.3, 6.5), on the chain of operations each
 // symbol waits for; a multiplication and a shift by a precomputed reciprocal give exactly the
 // same quotient for every numerator the coder can produce (Granlund and Montgomery, 1994: with
 // l = ceil(log2 d) and m = floor(2^(30+l) / d) + 1, floor(n m / 2^(30+l)) = floor(n / d) for all

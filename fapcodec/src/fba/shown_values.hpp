@@ -1,9 +1,9 @@
-// What players show of a FAP that a frame leaves out. Three rules are in use (docs/fba.md 2,
-// "Masks"): a player that holds the FAP's last value (the MPEG-4 decoder model, fba-bitstream.md
-// section 8); one that shows it at 0 (Xface, whose frames start all zero); and the reference
-// decoder, which copies a FAP present on one side of the face into its absent left/right partner
-// (section 12.6, D6) and otherwise leaves it at 0. The mask fitter changes masks only where all
-// three agree, and verification checks all three. Private to fapcodec.
+// What players show of a FAP that a frame leaves out. Three rules are in use (docs/fba.md
+// section 2, "Masks"): a player that holds the FAP's last value (the MPEG-4 decoder model,
+// docs/fba-bitstream.md section 8); one that shows it at 0 (Xface, whose frames start all zero);
+// and the reference decoder, which copies a FAP present on one side of the face into its absent
+// left/right partner (section 12.6, D6) and otherwise leaves it at 0. The mask fitter changes masks
+// only where all three agree, and verification checks all three. Private to fapcodec.
 #pragma once
 
 #include <array>

@@ -80,8 +80,8 @@ Result<StreamReader::Next> StreamReader::next_part() {
   if (code == 0 || c_.in.overrun()) {
     c_.in.seek(here);
     if (c_.in.at_end() || c_.in.size_bits() - here < 8)
-      return c_.error_at(static_cast<std::int64_t>(c_.in.size_bits() / 8),
-                         "stream ends without the end code 0x000001B1 (truncated?)");
+      return c_.truncated_at(static_cast<std::int64_t>(c_.in.size_bits() / 8),
+                             "stream ends without the end code 0x000001B1 (truncated?)");
     return Next::plane;  // planes of the reference encoder follow each other unaligned
   }
   if (code == kVisualObjectSequenceEndCode) return Next::end;
@@ -192,7 +192,8 @@ Status StreamReader::read_plane() {
   if (!out_.sequence.frames.empty() && frame.number <= out_.sequence.frames.back().number)
     return c_.error_at(start_byte, "the time code goes back to frame " + std::to_string(frame.number));
   if (out_.sequence.frames.size() >= options_.max_frames)
-    return c_.error_at(start_byte, "more than " + std::to_string(options_.max_frames) + " frames");
+    return make_error(ErrorKind::limit_exceeded, Location::binary(c_.file, start_byte),
+                      "more than " + std::to_string(options_.max_frames) + " frames");
   if (intra) note_ranges(frame.number, start_byte, c_.in.position() - start);
   next_number_ = frame.number + header.skip + 1;
   ++info.face_planes;
@@ -206,9 +207,9 @@ Diagnostic StreamReader::explain(const Diagnostic& error) const {
   // Past the last byte the reader sees zeros, which trip other checks first (a marker bit of 0,
   // 23 zero bits); the real problem is the missing data.
   const auto size = static_cast<std::int64_t>(c_.in.size_bits() / 8);
-  if (error.message.rfind("stream ends", 0) == 0) return error;
+  if (error.kind == ErrorKind::truncated) return error;
   if (c_.in.overrun() || error.where.byte_offset > size)
-    return c_.error_at(size, "stream ends inside a plane (truncated?)");
+    return c_.truncated_at(size, "stream ends inside a plane (truncated?)");
   return error;
 }
 

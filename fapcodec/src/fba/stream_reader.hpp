@@ -1,4 +1,4 @@
-// The stream level of the decoder (fba-bitstream.md sections 5.1 to 5.3, 5.9): optional visual
+// The stream level of the decoder (docs/fba-bitstream.md sections 5.1 to 5.3, 5.9): optional visual
 // object sequence and visual object headers, the FBA object start code, then planes, each either
 // following the previous one bit for bit (the reference encoder's layout) or introduced by
 // stuffing and a plane start code, until the end code. Private to fapcodec.

@@ -1,4 +1,4 @@
-// The operators on animations (the paper's section 3, semantics.md §5).
+// The operators on animations (Algebra definitions 4 to 6, docs/algebra.md, "Animations").
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

@@ -1,4 +1,4 @@
-// The operators on facial states (semantics.md §5).
+// The operators on facial states (docs/algebra.md, "Operators"; Algebra definitions 1 to 3).
 #include <cmath>
 
 #include "fapc/codec/fap_table.hpp"

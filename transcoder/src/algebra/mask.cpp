@@ -28,7 +28,7 @@ std::optional<int> number(std::string_view text) {
 
 }  // namespace
 
-// The standard FAP groups (fba-bitstream.md §3) under short names, plus "mouth" (both lip
+// The standard FAP groups (docs/fap-table.md section 3) under short names, plus "mouth" (both lip
 // groups) and "all".
 const std::vector<std::pair<std::string_view, std::vector<int>>>& mask_group_names() {
   static const std::vector<std::pair<std::string_view, std::vector<int>>> names{

@@ -1,4 +1,4 @@
-// Private: the Mimic program as parsed (Table 1), before any checking beyond the grammar.
+// Private: the Mimic program as parsed (Mimic Table 1), before any checking beyond the grammar.
 #pragma once
 
 #include <optional>

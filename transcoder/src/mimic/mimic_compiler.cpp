@@ -1,6 +1,6 @@
-// Mimic semantics (semantics.md §2, docs/mimic.md): check the parsed program, build the schedule
-// tree (macros expanded), schedule it with the shared scheduler and lower the atomic actions to
-// clips; `connect` is resolved last, once every clip has its place.
+// Mimic semantics (docs/mimic.md, "Timing and values"): check the parsed program, build the
+// schedule tree (macros expanded), schedule it with the shared scheduler and lower the atomic
+// actions to clips; `connect` is resolved last, once every clip has its place.
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -340,7 +340,8 @@ class Compiler {
     return ok_status();
   }
 
-  // Values beyond what the target can carry: a warning at the number (semantics.md §2).
+  // Values beyond what the target can carry: a warning at the number (docs/mimic.md,
+  // "Timing and values").
   void check_ranges(const Leaf& leaf) {
     std::vector<const Number*> numbers;
     for (const std::optional<Number>* n : {&leaf.params.value, &leaf.params.min, &leaf.params.max}) {

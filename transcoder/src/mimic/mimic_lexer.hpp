@@ -1,4 +1,4 @@
-// Private: tokens of the Mimic language (Table 1), with their positions.
+// Private: tokens of the Mimic language (Mimic Table 1, docs/mimic.md), with their positions.
 #pragma once
 
 #include <string>

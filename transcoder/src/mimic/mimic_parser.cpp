@@ -10,7 +10,8 @@
 namespace fapc::mimic {
 namespace {
 
-// Table 1: pname (no value), pname-arg (value), and left/right/connect which take either form.
+// Mimic Table 1 (docs/mimic.md, "Grammar"): pname (no value), pname-arg (value), and
+// left/right/connect which take either form.
 const std::set<std::string, std::less<>> kWithoutValue = {"linear", "sin", "log", "exp",
                                                           "average", "add", "overwrite"};
 const std::set<std::string, std::less<>> kWithValue = {"in", "hold", "out", "value", "duration",

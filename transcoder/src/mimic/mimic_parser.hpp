@@ -1,4 +1,4 @@
-// Private: recursive descent over the grammar of Table 1.
+// Private: recursive descent over the grammar of Mimic Table 1 (docs/mimic.md, "Grammar").
 #pragma once
 
 #include <string>

@@ -1,5 +1,5 @@
-// Time-value lists (semantics.md §1): per target, the blended curve sampled at the frame rate plus
-// every key-point time, jumps kept as two points at one time, then thinned.
+// Time-value lists (docs/timeline.md, "Rendering"): per target, the blended curve sampled at the
+// frame rate plus every key-point time, jumps kept as two points at one time, then thinned.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>

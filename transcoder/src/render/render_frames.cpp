@@ -1,4 +1,4 @@
-// Frames from the timeline (semantics.md §1 "Rendering"): sample, sum the targets that drive each
+// Frames from the timeline (docs/timeline.md, "Rendering"): sample, sum the targets that drive each
 // FAP, round halves away from zero, clamp to the legal range with one warning per clip.
 #include <algorithm>
 #include <cmath>

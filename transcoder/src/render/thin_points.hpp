@@ -1,4 +1,4 @@
-// Private: thinning a time-value list (semantics.md §1).
+// Private: thinning a time-value list (docs/timeline.md, "Rendering").
 #pragma once
 
 #include <utility>

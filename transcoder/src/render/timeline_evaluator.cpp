@@ -1,6 +1,6 @@
-// Blending (semantics.md §1). Per target, the clips' begins and (fill-resolved) ends cut time into
-// elementary intervals, each with the list of clips active in it, so a query is one binary search
-// plus the blend of the few clips active there.
+// Blending (docs/timeline.md, "Blending"). Per target, the clips' begins and (fill-resolved) ends
+// cut time into elementary intervals, each with the list of clips active in it, so a query is one
+// binary search plus the blend of the few clips active there.
 #include "timeline_index.hpp"
 
 #include <algorithm>

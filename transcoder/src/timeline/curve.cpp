@@ -7,7 +7,8 @@
 namespace fapc {
 namespace {
 
-// The Mimic fading functions on the fraction u in [0, 1] of a segment (semantics.md §2).
+// The Mimic fading functions on the fraction u in [0, 1] of a segment (docs/mimic.md,
+// "Timing and values").
 double shape(Interpolation how, double u) {
   switch (how) {
     case Interpolation::linear:

@@ -23,7 +23,7 @@ std::string seconds(double t) {
 
 class Scheduler {
  public:
-  std::optional<Diagnostic> error;
+  std::optional<ScheduleError> error;
   std::size_t max_runs = 0;
 
   // The active duration of `node` when it is known without a parent end.
@@ -43,12 +43,13 @@ class Scheduler {
     if (!active && limit) active = std::max(0.0, *limit - start);
     if (node.kind == Kind::leaf) {
       if (!active) {
-        fail(node, "has no duration and nothing around it ends: give it a duration, or place it "
-                   "in a parallel with a known end");
+        fail(node, ScheduleProblem::no_duration,
+             "has no duration and nothing around it ends: give it a duration, or place it "
+             "in a parallel with a known end");
         return start;
       }
       if (start < 0) {
-        fail(node, "the action starts before time 0 (at " + seconds(start) + ")");
+        fail(node, ScheduleProblem::starts_before_zero, "starts before time 0 (at " + seconds(start) + ")");
         return start;
       }
       const double simple = node.timing.duration.value_or(*active);
@@ -57,7 +58,8 @@ class Scheduler {
     }
     if (!active && node.timing.repeat_indefinite) {
       // Repeating without end would never stop laying out iterations.
-      fail(node, "repeats indefinitely and nothing around it ends: give it or a parent an end");
+      fail(node, ScheduleProblem::endless_repeat,
+           "repeats indefinitely and nothing around it ends: give it or a parent an end");
       return start;
     }
     // A group: lay out one iteration, then repeat its occurrences shifted. A group of unknown
@@ -84,12 +86,13 @@ class Scheduler {
   // group beside a very long sibling): past max_runs the schedule is an error at the node.
   bool too_many(const ScheduleNode& node, const std::vector<Occurrence>& out) {
     if (out.size() < max_runs) return error.has_value();
-    fail(node, "repeats to more than " + std::to_string(max_runs) + " runs: fapc refuses to schedule so many");
+    fail(node, ScheduleProblem::too_many_runs,
+         "repeats to more than " + std::to_string(max_runs) + " runs: fapc refuses to schedule so many");
     return true;
   }
 
-  void fail(const ScheduleNode& node, const std::string& message) {
-    if (!error) error = make_error(node.source, message);
+  void fail(const ScheduleNode& node, ScheduleProblem problem, std::string predicate) {
+    if (!error) error = ScheduleError{problem, node.tag, node.source, std::move(predicate)};
   }
 
   std::optional<double> simple_duration(const ScheduleNode& node) {
@@ -187,7 +190,7 @@ class Scheduler {
       std::optional<double> child_limit = reference;
       if (child.timing.align_right) {
         if (!reference) {
-          fail(child, "is aligned right but the parallel has no known end");
+          fail(child, ScheduleProblem::right_without_end, "is aligned right but the parallel has no known end");
           return latest;
         }
         const double child_end = *reference + *child.timing.align_right;
@@ -210,7 +213,8 @@ class Scheduler {
     double latest = start;
     for (const ScheduleNode& child : node.children) {
       if (child.timing.align_right) {
-        fail(child, "right alignment is only allowed in a parallel, not in a sequence");
+        fail(child, ScheduleProblem::right_in_sequence,
+             "right alignment is only allowed in a parallel, not in a sequence");
         return latest;
       }
       cursor = place(child, cursor + child.timing.offset, limit, cut, out);
@@ -273,7 +277,22 @@ ScheduleNode ScheduleNode::group(Kind kind, Timing timing, Location source) {
   return node;
 }
 
+Diagnostic ScheduleError::diagnostic(std::string_view subject) const {
+  const ErrorKind kind = problem == ScheduleProblem::too_many_runs ? ErrorKind::limit_exceeded : ErrorKind::bad_input;
+  std::string message = subject.empty() ? predicate : std::string(subject) + ' ' + predicate;
+  return make_error(kind, where, std::move(message));
+}
+
 Result<Schedule> schedule(const ScheduleNode& root, const ScheduleOptions& options) {
+  auto scheduled = schedule_tree(root, options);
+  if (auto* problem = std::get_if<ScheduleError>(&scheduled)) {
+    // Only a start reads wrong without a subject ("starts before time 0").
+    return problem->diagnostic(problem->problem == ScheduleProblem::starts_before_zero ? "the action" : "");
+  }
+  return std::get<Schedule>(std::move(scheduled));
+}
+
+std::variant<Schedule, ScheduleError> schedule_tree(const ScheduleNode& root, const ScheduleOptions& options) {
   Scheduler scheduler;
   scheduler.max_runs = options.max_runs;
   Schedule result;

@@ -1,6 +1,6 @@
 // Big-endian byte I/O for boxes and descriptors. The reader never reads past its end: a short
 // read sets a sticky error (remembering the offset where it happened) and returns zeros, so a
-// parser reads a whole structure and checks once (the dav1d habit, docs/style.md §3).
+// parser reads a whole structure and checks once (the habit of dav1d's bit reader).
 #pragma once
 
 #include <cstdint>

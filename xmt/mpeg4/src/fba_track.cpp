@@ -5,7 +5,7 @@ namespace fapc::xmt {
 namespace {
 
 // 0010 0011 after the visual object start code: is_visual_object_identifier 0, visual_object_type
-// 0100 (FBA), then next_start_code stuffing 0 11 (xmt-and-mp4.md §4.2).
+// 0100 (FBA), then next_start_code stuffing 0 11 (docs/mp4-and-xmta.md section 6.2).
 constexpr std::uint8_t kFbaVisualObjectByte = 0x23;
 constexpr std::uint8_t kStuffingWhenAligned = 0x7F;
 

@@ -296,7 +296,7 @@ Result<Bytes> write_mp4(const FbaTrackInput& fba) {
   tracks.push_back(std::move(fba_track));
 
   ProfileLevels profiles;
-  profiles.od = 0x01;  // what GPAC writes when an OD stream exists (xmt-and-mp4.md §3.1)
+  profiles.od = 0x01;  // GPAC's value when an OD stream exists (docs/mp4-and-xmta.md section 6.4)
   profiles.visual = visual_level;
 
   // moov's size does not depend on the offsets it holds, so lay out once with zeros.

@@ -9,8 +9,8 @@ namespace fapc::xmt {
 
 namespace {
 
-// The six FAPs whose BIFS field name is not their 14496-2 name (xmt-and-mp4.md §2.2, checked
-// against GPAC's FAP node table in tests/xmt/scene_test.cpp).
+// The six FAPs whose BIFS field name is not their 14496-2 name (docs/fap-table.md section 5,
+// checked against GPAC's FAP node table in tests/xmt/scene_test.cpp).
 constexpr std::pair<int, std::string_view> kRenamedFapFields[] = {
     {6, "stretch_l_corner"},     {7, "stretch_r_corner"},     {10, "lower_b_lip_lm"},
     {11, "lower_b_lip_rm"},      {53, "stretch_l_cornerlip"}, {54, "stretch_r_cornerlip"},

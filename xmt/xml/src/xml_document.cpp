@@ -72,7 +72,7 @@ Status check_element_depth(std::string_view text, const std::string& file_name) 
 
 Result<XmlDocument> XmlDocument::parse(std::string_view text, const std::string& file_name) {
   if (text.size() > static_cast<std::size_t>(INT_MAX)) {
-    return make_error(Location{file_name, 0, 0, -1}, "file too large for the XML parser");
+    return make_error(ErrorKind::limit_exceeded, Location{file_name, 0, 0, -1}, "file too large for the XML parser");
   }
   // Every walk over the tree recurses; its depth is bounded here, with fapc's error and kind,
   // before libxml2 (which stops at the same depth with a message of its own) sees the text.

@@ -6,9 +6,12 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 
 #include <xercesc/framework/MemBufInputSource.hpp>
 #include <xercesc/framework/XMLPScanToken.hpp>
+#include <xercesc/framework/XMLValidityCodes.hpp>
+#include <xercesc/parsers/SAX2XMLReaderImpl.hpp>
 #include <xercesc/sax/EntityResolver.hpp>
 #include <xercesc/sax/Locator.hpp>
 #include <xercesc/sax/SAXException.hpp>
@@ -16,7 +19,6 @@
 #include <xercesc/sax2/Attributes.hpp>
 #include <xercesc/sax2/DefaultHandler.hpp>
 #include <xercesc/sax2/SAX2XMLReader.hpp>
-#include <xercesc/sax2/XMLReaderFactory.hpp>
 #include <xercesc/util/PlatformUtils.hpp>
 #include <xercesc/util/SecurityManager.hpp>
 #include <xercesc/util/XMLException.hpp>
@@ -137,6 +139,11 @@ class Collector : public xc::DefaultHandler {
   bool root_seen = false;
   std::string root_ns, root_name;
   Diagnostics problems;
+  // Which problems (indices into `problems`) are IDREFs naming no ID (Xerces reports those at
+  // the end of the document).
+  std::set<std::size_t> unresolved_references;
+  // Set by CodedReader around each report: what Xerces' error code says the next problem is.
+  bool next_is_unresolved_reference = false;
 
  private:
   // values and keyTimes of an XMT-Omega animate (their schema type checks only the characters).
@@ -159,10 +166,29 @@ class Collector : public xc::DefaultHandler {
                                   Location::text(file_, static_cast<int>(e.getLineNumber()),
                                                  static_cast<int>(e.getColumnNumber())),
                                   text(e.getMessage()), {}});
+    if (next_is_unresolved_reference) unresolved_references.insert(problems.size() - 1);
   }
   const std::string& file_;
   bool xmto_lists_;
   const xc::Locator* locator_ = nullptr;
+};
+
+// The SAX2 reader, seeing each error's code before the SAX handler gets only its text: the
+// collector learns what a problem is without reading its wording.
+class CodedReader : public xc::SAX2XMLReaderImpl {
+ public:
+  explicit CodedReader(Collector& collector) : collector_(collector) {}
+  void error(const unsigned int code, const XMLCh* const domain, const xc::XMLErrorReporter::ErrTypes type,
+             const XMLCh* const message, const XMLCh* const system_id, const XMLCh* const public_id,
+             const XMLFileLoc line, const XMLFileLoc column) override {
+    collector_.next_is_unresolved_reference =
+        code == xc::XMLValid::IDNotDeclared && xc::XMLString::equals(domain, xc::XMLUni::fgValidityDomain);
+    xc::SAX2XMLReaderImpl::error(code, domain, type, message, system_id, public_id, line, column);
+    collector_.next_is_unresolved_reference = false;
+  }
+
+ private:
+  Collector& collector_;
 };
 
 struct ReaderDeleter {
@@ -171,7 +197,7 @@ struct ReaderDeleter {
 using Reader = std::unique_ptr<xc::SAX2XMLReader, ReaderDeleter>;
 
 Reader make_reader(Collector& collector, xc::SecurityManager& security, bool validate) {
-  Reader reader(xc::XMLReaderFactory::createXMLReader());
+  Reader reader(new CodedReader(collector));
   reader->setFeature(xc::XMLUni::fgSAX2CoreNameSpaces, true);
   reader->setFeature(xc::XMLUni::fgXercesLoadExternalDTD, false);
   reader->setFeature(xc::XMLUni::fgXercesDisableDefaultEntityResolution, true);
@@ -200,10 +226,10 @@ class Positions {
       if (text[i] == '\n') starts_.push_back(i + 1);
   }
 
-  void refine(Diagnostic& d) const {
+  void refine(Diagnostic& d, bool unresolved_reference) const {
     const std::string quoted = quoted_token(d.message);
     if (!quoted.empty()) {
-      if (d.message.find("is referenced but was never declared") != std::string::npos) {
+      if (unresolved_reference) {
         move_to(d, text_.find("=\"" + quoted + "\""), 2);
       } else if (d.where.line >= 1 && static_cast<std::size_t>(d.where.line) <= starts_.size()) {
         const std::string_view line = line_text(d.where.line);
@@ -288,7 +314,8 @@ Result<ValidationReport> validate_with_xerces(std::string_view text_in, const st
   xc::MemBufInputSource in(reinterpret_cast<const XMLByte*>(text_in.data()), text_in.size(), id.get(), false);
   reader->parse(in);
   const Positions positions(text_in);
-  for (Diagnostic& d : collector.problems) positions.refine(d);
+  for (std::size_t i = 0; i < collector.problems.size(); ++i)
+    positions.refine(collector.problems[i], collector.unresolved_references.count(i) > 0);
   return ValidationReport{std::string(binding->kind), std::string(binding->schema), std::move(collector.problems)};
 }
 

@@ -1,5 +1,5 @@
 // Errors and warnings as values. The libraries never print or exit: they return a Diagnostic and
-// the command line decides how to show it (see docs/cli.md of the contract).
+// the command line decides how to show it (see docs/cli.md).
 #pragma once
 
 #include <cstdint>

@@ -36,9 +36,9 @@ struct FbaEncodeOptions {
   FbaRangeMode ranges = FbaRangeMode::fit;
   FbaMaskMode masks = FbaMaskMode::fit;
   bool align_planes = false;  // start every plane with its start code and end it byte-aligned,
-                              // so each plane is one MP4 sample (xmt-and-mp4.md 4.3)
+                              // so each plane is one MP4 sample (docs/mp4-and-xmta.md section 6.3)
   bool list_every_mask = false;  // mask type 01 (bits listed) for every group, the layout of the
-                                 // test vector (fba-bitstream.md 11); by default empty groups
+                                 // test vector (docs/fba-bitstream.md 11); by default empty groups
                                  // get type 00 and full ones 11, which needs no mask bits
 };
 
@@ -65,9 +65,9 @@ struct EncodedFba {
 // knows which input the sequence came from.
 Result<EncodedFba> encode_fba(const FapSequence& sequence, const FbaEncodeOptions& options = {});
 
-// The decoder configuration an MP4 track carries (xmt-and-mp4.md 4.2): visual object sequence
-// header with profile-level 0x63 (Simple FBA L1), visual object header of type FBA, and the FBA
-// object start code. 14 bytes.
+// The decoder configuration an MP4 track carries (docs/mp4-and-xmta.md section 6.2): visual object
+// sequence header with profile-level 0x63 (Simple FBA L1), visual object header of type FBA, and
+// the FBA object start code. 14 bytes.
 std::array<std::uint8_t, 14> fba_decoder_specific_info();
 
 // The largest error the round trip may introduce on a FAP (3..68): half its quantiser step.

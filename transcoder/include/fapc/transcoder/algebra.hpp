@@ -1,4 +1,4 @@
-// The Algebra of Expressions (seeds/algebra-of-expressions.txt, semantics.md §5, docs/algebra.md):
+// The Algebra of Expressions (docs/algebra.md, with the paper's definitions under "The paper"):
 // facial states, animations, and the sum, amplifier and overlapper on both.
 #pragma once
 
@@ -19,7 +19,7 @@ namespace fapc::algebra {
 
 inline constexpr int kStateSize = 66;  // FAP 3 .. FAP 68
 
-// Round to the nearest integer, halves away from zero (semantics.md §5).
+// Round to the nearest integer, halves away from zero (docs/algebra.md).
 std::int32_t round_half_away(double x);
 
 // 66 integers; element i is FAP i + 3.
@@ -85,7 +85,7 @@ Animation resample(const Animation& a, int fps);
 Animation shifted(const Animation& a, double seconds);
 
 // Frame by frame on a common rate (the higher one): both present -> the operator; one present ->
-// that state; neither -> the neutral state (definition 5 of the paper, used for every operator).
+// that state; neither -> the neutral state (Algebra definition 5, used for every operator).
 Animation sum(const Animation& a, const Animation& b, double v);
 Animation amplify(const Animation& a, double w);
 struct LayeredAnimation {

@@ -1,5 +1,6 @@
-// `.xpr` expression files (semantics.md §2, defxpr): a facial expression as `parameter value`
-// lines, `#` comments. Parameters are FAP names or numbers, or names a profile maps.
+// `.xpr` expression files (docs/mimic.md, "Timing and values", defxpr): a facial expression as
+// `parameter value` lines, `#` comments. Parameters are FAP names or numbers, or names a profile
+// maps.
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-// The Mimic language (seeds/mimic-language.txt, semantics.md §2, docs/mimic.md): a program
+// The Mimic language (docs/mimic.md): a program
 // compiles to the shared timeline. Parse, check, schedule and lower; the first error stops.
 #pragma once
 

@@ -1,5 +1,5 @@
-// Rendering the shared timeline (semantics.md §1): blended values at any time, frames at a frame
-// rate, and thinned time-value lists. No I/O; clamps come back as warnings.
+// Rendering the shared timeline (docs/timeline.md, "Rendering"): blended values at any time, frames
+// at a frame rate, and thinned time-value lists. No I/O; clamps come back as warnings.
 #pragma once
 
 #include <memory>
@@ -58,11 +58,11 @@ struct CurveOptions {
 };
 
 // Per target: the blended curve sampled at the frame rate plus every key-point time and span
-// end, then thinned (semantics.md §1, "Time-value lists").
+// end, then thinned (docs/timeline.md, "Rendering").
 Curves render_curves(const Timeline& timeline, const CurveOptions& options);
 
-// Per clip, its own unblended curve, labelled "target (file:line)": the upper plot of the Mimic
-// paper's Figure 1.
+// Per clip, its own unblended curve, labelled "target (file:line)": the upper plot of Mimic Figure
+// 1 (docs/mimic.md, "The paper").
 Curves render_clip_curves(const Timeline& timeline, const CurveOptions& options);
 
 }  // namespace fapc

@@ -6,6 +6,9 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
 #include <vector>
 
 #include "fapc/codec/diagnostic.hpp"
@@ -42,6 +45,9 @@ struct ScheduleNode {
   std::vector<ScheduleNode> children;
   std::size_t leaf_id = 0;  // leaves: the front end's own index, returned in Occurrence
   Location source;          // for errors
+  // Any node: the front end's own identity for it (an index into its element table, say),
+  // returned in ScheduleError so that the front end names the element without parsing text.
+  std::size_t tag = 0;
 
   static ScheduleNode leaf(std::size_t id, Timing timing, Location source);
   static ScheduleNode group(Kind kind, Timing timing, Location source);
@@ -71,8 +77,41 @@ struct Schedule {
   double end = 0;                       // the root's active end
 };
 
-// Errors (with the node's source position): a start before 0, align_right outside a parallel, a
-// leaf or repeat with no duration and no parent end, more than max_runs runs.
+// Why a tree cannot be scheduled, as a value: front ends decide by `problem` and name the
+// element by `node_tag`, never by the wording.
+enum class ScheduleProblem {
+  no_duration,          // a leaf with no duration and nothing around it ends
+  endless_repeat,       // a group repeats indefinitely and nothing around it ends
+  starts_before_zero,   // a leaf would start before time 0
+  right_without_end,    // aligned right in a parallel whose end is unknown
+  right_in_sequence,    // aligned right outside a parallel
+  too_many_runs,        // more than ScheduleOptions::max_runs runs
+};
+
+struct ScheduleError {
+  ScheduleProblem problem = ScheduleProblem::no_duration;
+  std::size_t node_tag = 0;  // the failing node's ScheduleNode::tag
+  Location where;            // the failing node's source
+  // What is wrong, without a subject: "has no duration and nothing around it ends: ...".
+  std::string predicate;
+
+  // True for the problems an end (a parent's, or --duration) would solve.
+  bool needs_an_end() const {
+    return problem == ScheduleProblem::no_duration || problem == ScheduleProblem::endless_repeat;
+  }
+  // The problem as an error whose message is `subject predicate` (limit_exceeded for too many
+  // runs, bad_input otherwise).
+  Diagnostic diagnostic(std::string_view subject) const;
+};
+
+// The schedule, or the first problem met (with the node's source position and tag): a start
+// before 0, align_right outside a parallel, a leaf or repeat with no duration and no parent end,
+// more than max_runs runs.
+std::variant<Schedule, ScheduleError> schedule_tree(const ScheduleNode& root,
+                                                    const ScheduleOptions& options = {});
+
+// schedule_tree for front ends whose nodes are all "actions" (Mimic): the error's subject is
+// "the action" where the predicate needs one.
 Result<Schedule> schedule(const ScheduleNode& root, const ScheduleOptions& options = {});
 
 }  // namespace fapc

@@ -1,4 +1,4 @@
-// The shared timeline (docs/timeline.md, semantics.md §1): what every front end lowers to and the
+// The shared timeline (docs/timeline.md): what every front end lowers to and the
 // only thing that is rendered, encoded or written. Plain values, no I/O.
 #pragma once
 

@@ -1,5 +1,5 @@
-// FML moves written inside another XML document (XMT-Omega, semantics.md §4): one move read by the
-// FML reader's own rules, for the host reader to place on its timeline.
+// FML moves written inside another XML document (docs/xmt-omega.md, "FML moves inside XMT-Omega"):
+// one move read by the FML reader's own rules, for the host reader to place on its timeline.
 #pragma once
 
 #include "fapc/fml/fml.hpp"

@@ -69,7 +69,7 @@ std::optional<int> expression_number(const std::string& type) {
   return found->second;
 }
 
-// hdmv axes: semantics.md §3 (0 yaw, 1 pitch, 2 roll), as head rotation FAPs 49, 48, 50.
+// hdmv axes (docs/fml.md, "Moves"): 0 yaw, 1 pitch, 2 roll, as head rotation FAPs 49, 48, 50.
 constexpr int kAxisFap[3] = {49, 48, 50};
 std::optional<int> head_axis(const std::string& type) {
   const std::string t = lower(trim(type));
@@ -147,9 +147,9 @@ class FmlReader {
     if (Status s = check_runs(); !s) return s.error();
     ScheduleOptions schedule_options;
     schedule_options.root_end = options_.duration;
-    const Result<Schedule> scheduled = schedule(tree_.root, schedule_options);
-    if (!scheduled) return scheduler_error(scheduled.error());
-    result_.timeline = lower_fml(tree_, *scheduled);
+    auto scheduled = schedule_tree(tree_.root, schedule_options);
+    if (const auto* problem = std::get_if<ScheduleError>(&scheduled)) return scheduler_error(*problem);
+    result_.timeline = lower_fml(tree_, std::get<Schedule>(scheduled));
     once_.finish();
     return std::move(result_);
   }
@@ -168,8 +168,8 @@ class FmlReader {
   HeadLimits limits_;
   std::set<std::string> expressions_;
   double nodes_ = 0;
-  // Per node of the tree (by its source position): its element name, for scheduler errors.
-  std::map<std::pair<int, int>, std::string> element_at_;
+  // Per node of the tree, by its ScheduleNode::tag - 1: its element name, for scheduler errors.
+  std::vector<std::string> element_names_;
 
   void fail(Diagnostic d) {
     if (!error_) error_ = std::move(d);
@@ -197,8 +197,8 @@ class FmlReader {
     }
   }
 
-  // An attribute under its paper spelling or one of its variants (docs/fml.md §10); a variant
-  // gets a note once, naming the paper's spelling.
+  // An attribute under its paper spelling or one of its variants (docs/fml.md, "Spellings"); a
+  // variant gets a note once, naming the paper's spelling.
   std::optional<std::string> spelled(const xmlNode* element, const char* paper,
                                      std::initializer_list<const char*> variants) {
     if (auto value = xml::attribute(element, paper)) return value;
@@ -254,11 +254,12 @@ class FmlReader {
       fail(doc_.error(item, val_text ? "val" : "", "range needs val, the largest angle in degrees (>= 0)"));
       return;
     }
-    // type: a direction (the paper's "left"); dir: an axis, both directions (docs/fml.md §10).
+    // type: a direction (the paper's "left"); dir: an axis, both directions (docs/fml.md,
+    // "Spellings").
     if (const auto dir = spelled(item, "type", {"dir"})) {
       const std::string d = lower(trim(*dir));
       const auto axis = head_axis(d);
-      // Positive FAP directions (fba-bitstream.md): yaw left, pitch down, roll right.
+      // Positive FAP directions (docs/fap-table.md section 2): yaw left, pitch down, roll right.
       if (axis) {
         limits_.min[*axis] = -*val;
         limits_.max[*axis] = *val;
@@ -331,13 +332,16 @@ class FmlReader {
 
   bool count_node(const xmlNode* node) {
     if (++nodes_ <= kMaxNodes) return true;
-    fail(doc_.error(node, "the story has more than " + std::to_string(static_cast<long>(kMaxNodes)) +
-                              " elements after template expansion: fapc refuses to schedule so many"));
+    Diagnostic d = doc_.error(node, "the story has more than " + std::to_string(static_cast<long>(kMaxNodes)) +
+                                        " elements after template expansion: fapc refuses to schedule so many");
+    d.kind = ErrorKind::limit_exceeded;
+    fail(std::move(d));
     return false;
   }
 
   ScheduleNode remember(ScheduleNode node, const xmlNode* element) {
-    element_at_[{node.source.line, node.source.column}] = std::string(xml::local_name(element));
+    element_names_.emplace_back(xml::local_name(element));
+    node.tag = element_names_.size();
     return node;
   }
 
@@ -750,20 +754,17 @@ class FmlReader {
     double shortest = 0;
     const double total = runs(tree_.root, options_.duration.value_or(kMaxNodes), shortest);
     if (total <= kMaxNodes) return ok_status();
-    return make_error(tree_.root.source, "the story repeats to more than " + std::to_string(static_cast<long>(kMaxNodes)) +
+    return make_error(ErrorKind::limit_exceeded, tree_.root.source, "the story repeats to more than " + std::to_string(static_cast<long>(kMaxNodes)) +
                                              " clips: fapc refuses to schedule so many");
   }
 
-  Diagnostic scheduler_error(Diagnostic d) const {
-    if (const auto found = element_at_.find({d.where.line, d.where.column}); found != element_at_.end()) {
-      constexpr std::string_view kAction = "the action ";
-      if (d.message.starts_with(kAction)) d.message.erase(0, kAction.size());
-      const bool endless = d.message.find("ends") != std::string::npos || d.message.find("no duration") != std::string::npos;
-      d.message = found->second + ' ' + d.message;
-      if (endless) {
-        d.message += " (repeat=\"indefinite\" and unset loop events need an end: a container's duration or end, "
-                     "or --duration)";
-      }
+  // The scheduler's problem, its subject the element it is about.
+  Diagnostic scheduler_error(const ScheduleError& problem) const {
+    const bool named = problem.node_tag > 0 && problem.node_tag <= element_names_.size();
+    Diagnostic d = problem.diagnostic(named ? element_names_[problem.node_tag - 1] : std::string("the element"));
+    if (named && problem.needs_an_end()) {
+      d.message += " (repeat=\"indefinite\" and unset loop events need an end: a container's duration or end, "
+                   "or --duration)";
     }
     if (d.where.file == doc_.file() && d.source_line.empty()) d.source_line = doc_.line_text(d.where.line);
     return d;

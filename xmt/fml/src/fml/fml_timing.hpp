@@ -1,6 +1,6 @@
 // The timing attributes of an FML story element (begin, duration or dur, end, repeat) as written,
-// and their translation for the scheduler (semantics.md §3: in a seq, begin and end count from the
-// end of the previous element; end wins over duration).
+// and their translation for the scheduler (docs/fml.md, "Timing": in a seq, begin and end count
+// from the end of the previous element; end wins over duration).
 #pragma once
 
 #include <optional>

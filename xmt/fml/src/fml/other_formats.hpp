@@ -1,6 +1,6 @@
 // FML's neighbours: XML languages of the Greta and Xface projects (two of them have an element
 // called fml) that a user may hand to the FML reader by mistake. Naming the format beats a cascade
-// of "unknown element" warnings (docs/fml.md, "Other formats").
+// of "unknown element" warnings (docs/fml.md, "Document").
 #pragma once
 
 #include <libxml/tree.h>

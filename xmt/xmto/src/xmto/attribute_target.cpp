@@ -9,7 +9,7 @@
 namespace fapc::xmt {
 namespace {
 
-// BIFS FAP field names (xmt-and-mp4.md §2.2) that are no ISO/IEC 14496-2 name: unambiguous.
+// BIFS FAP field names (docs/fap-table.md section 5) that are no ISO/IEC 14496-2 name: unambiguous.
 constexpr std::array<std::pair<std::string_view, int>, 4> kBifsOnlyNames{{
     {"stretch_l_corner", 6},
     {"stretch_r_corner", 7},

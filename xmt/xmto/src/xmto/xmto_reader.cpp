@@ -71,9 +71,9 @@ class DocumentReader {
     tree_.root = tree ? std::move(*tree) : ScheduleNode::group(Kind::sequence, {}, doc_.where(body));
     ScheduleOptions schedule_options;
     schedule_options.root_end = options_.duration;
-    const Result<Schedule> scheduled = schedule(tree_.root, schedule_options);
-    if (!scheduled) return scheduler_error(scheduled.error());
-    result_.timeline = lower_to_timeline(tree_, *scheduled);
+    auto scheduled = schedule_tree(tree_.root, schedule_options);
+    if (const auto* problem = std::get_if<ScheduleError>(&scheduled)) return scheduler_error(*problem);
+    result_.timeline = lower_to_timeline(tree_, std::get<Schedule>(scheduled));
     once_.finish();
     return std::move(result_);
   }
@@ -90,14 +90,14 @@ class DocumentReader {
     std::string name;
     bool repeats_indefinitely = false;
   };
-  std::map<std::pair<int, int>, ElementFacts> element_at_;  // by line, column: for schedule errors
+  std::vector<ElementFacts> element_facts_;  // by ScheduleNode::tag - 1: for schedule errors
   double planned_clips_ = 0;  // upper bound, see run_budget.hpp
   std::set<std::string> fml_expressions_;  // FAP 2 targets of the FML moves read so far
 
   ScheduleNode scheduled_node(ScheduleNode node, const xmlNode* element) {
-    element_at_[{node.source.line, node.source.column}] =
-        ElementFacts{std::string(xml::local_name(element)),
-                     node.timing.repeat_indefinite && !node.timing.repeat_duration};
+    element_facts_.push_back(ElementFacts{std::string(xml::local_name(element)),
+                                          node.timing.repeat_indefinite && !node.timing.repeat_duration});
+    node.tag = element_facts_.size();
     return node;
   }
 
@@ -105,16 +105,12 @@ class DocumentReader {
     if (!error_) error_ = std::move(d);
   }
 
-  // The scheduler speaks of "the action" or starts with a verb ("has no duration"): name the
-  // element instead.
-  Diagnostic scheduler_error(Diagnostic d) const {
-    if (const auto found = element_at_.find({d.where.line, d.where.column}); found != element_at_.end()) {
-      constexpr std::string_view kAction = "the action ";
-      if (d.message.starts_with(kAction)) d.message.erase(0, kAction.size());
-      d.message = found->second.name + ' ' + d.message;
-      if (found->second.repeats_indefinitely)
-        d.message += " (repeatCount=\"indefinite\" needs an end: from a par with dur, end, repeatDur or --duration)";
-    }
+  // The scheduler's problem, its subject the element it is about.
+  Diagnostic scheduler_error(const ScheduleError& problem) const {
+    const bool named = problem.node_tag > 0 && problem.node_tag <= element_facts_.size();
+    Diagnostic d = problem.diagnostic(named ? element_facts_[problem.node_tag - 1].name : std::string("the element"));
+    if (named && element_facts_[problem.node_tag - 1].repeats_indefinitely)
+      d.message += " (repeatCount=\"indefinite\" needs an end: from a par with dur, end, repeatDur or --duration)";
     return with_source_line(std::move(d));
   }
 
@@ -248,9 +244,11 @@ class DocumentReader {
   bool within_budget(const xmlNode* node, double clips) {
     planned_clips_ += clips;
     if (planned_clips_ <= kMaxRuns) return true;
-    fail(doc_.error(node, std::string(xml::local_name(node)) + " brings the document to more than " +
-                              std::to_string(static_cast<long>(kMaxRuns)) +
-                              " clips (repeats of repeats?): fapc refuses to schedule so many"));
+    Diagnostic d = doc_.error(node, std::string(xml::local_name(node)) + " brings the document to more than " +
+                                        std::to_string(static_cast<long>(kMaxRuns)) +
+                                        " clips (repeats of repeats?): fapc refuses to schedule so many");
+    d.kind = ErrorKind::limit_exceeded;
+    fail(std::move(d));
     return false;
   }
 

@@ -1,4 +1,4 @@
-// The FML reader (docs/fml.md, semantics.md §3): an Arya-DiPaola Face Modeling Language document
+// The FML reader (docs/fml.md): an Arya-DiPaola Face Modeling Language document
 // lowered to the shared timeline through fapc::schedule(). Moves ramp their target from its
 // current value to theirs and hold it; talk becomes FAP 1 visemes, expr FAP 2 expressions, hdmv
 // the head rotation FAPs; excl branches are chosen by event values given up front.

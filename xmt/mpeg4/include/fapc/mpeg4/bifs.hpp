@@ -14,7 +14,8 @@ namespace fapc::xmt {
 
 // BIFSConfig for BIFS version 1 (scene objectTypeIndication 1). The defaults are those of the
 // project's scene: 2-bit node IDs, no routes, a command stream without pixel metrics and with a
-// 320x240 size (GPAC writes exactly these bytes for the same settings: xmt-and-mp4.md §4.5).
+// 320x240 size (GPAC writes exactly these bytes for the same settings: docs/mp4-and-xmta.md
+// section 6.4).
 struct BifsConfig {
   int node_id_bits = 2;
   int route_id_bits = 0;

@@ -1,6 +1,6 @@
 // The FBA elementary stream as the MP4 writer takes it and the MP4 reader gives it back: a
 // decoder configuration and one sample per coded FBA object plane. Nothing here knows how planes
-// are coded; the codec fills this in (docs/mp4-and-xmta.md, xmt-and-mp4.md §4.2 and §4.3).
+// are coded; the codec fills this in (docs/mp4-and-xmta.md sections 6.2 and 6.3).
 #pragma once
 
 #include <cstdint>
@@ -41,8 +41,8 @@ struct FbaTrackInput {
   friend bool operator==(const FbaTrackInput&, const FbaTrackInput&) = default;
 };
 
-// The 14 bytes of xmt-and-mp4.md §4.2: visual object sequence header with the profile-level,
-// visual object header of type FBA, FBA object start code.
+// The 14 bytes of docs/mp4-and-xmta.md section 6.2: visual object sequence header with the
+// profile-level, visual object header of type FBA, FBA object start code.
 Bytes fba_decoder_specific_info(std::uint8_t profile_level = kSimpleFbaL1);
 
 // The profile_and_level_indication of a decoder configuration that begins with a visual object
@@ -63,7 +63,7 @@ bool declares_fba_object(const Bytes& decoder_specific_info);
 Status check_fba_track(const FbaTrackInput& track);
 
 // The raw elementary stream (.fba) the track stands for: configuration, one 0x7F stuffing byte,
-// the samples in order, the visual object sequence end code (xmt-and-mp4.md §4.3).
+// the samples in order, the visual object sequence end code (docs/mp4-and-xmta.md section 6.3).
 Bytes fba_stream_from_track(const FbaTrackInput& track);
 
 }  // namespace fapc::xmt

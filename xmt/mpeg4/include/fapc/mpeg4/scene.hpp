@@ -52,7 +52,7 @@ SceneNode face_scene(const FapFrame* initial = nullptr);
 std::string scene_text(const SceneNode& node);
 
 // The BIFS `FAP` node's field name for FAPs 3..68. Six differ from the 14496-2 names used
-// elsewhere in the project (xmt-and-mp4.md §2.2): 6, 7, 10, 11, 53 and 54.
+// elsewhere in the project (docs/fap-table.md section 5): 6, 7, 10, 11, 53 and 54.
 std::string_view fap_field_name(int fap);
 // The FAP number of a FAP-node field name, or 0.
 int fap_for_field_name(std::string_view name);

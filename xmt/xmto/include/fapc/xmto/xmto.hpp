@@ -1,4 +1,4 @@
-// The XMT-Omega reader (docs/xmt-omega.md, semantics.md §4): an XMT-O document lowered to the
+// The XMT-Omega reader (docs/xmt-omega.md): an XMT-O document lowered to the
 // shared timeline through fapc::schedule(). Reads the SMIL timing and animation subset that
 // describes face animation; `animation src` places another input, loaded by a caller-given
 // function, so this library depends on no other front end.
@@ -43,8 +43,8 @@ struct XmtoOptions {
   // Which files `animation src` may name (docs/security.md); by default the document's folder
   // tree. (The FML moves' talk files follow fml.includes.)
   IncludePolicy includes;
-  // FML moves written in the document (semantics.md §4): event values for repeat, the profile for
-  // param. Their visemes_per_second is the talk rate.
+  // FML moves written in the document (docs/xmt-omega.md, "FML moves inside XMT-Omega"): event
+  // values for repeat, the profile for param. Their visemes_per_second is the talk rate.
   FmlOptions fml;
 };
 

@@ -1,0 +1,93 @@
+// Typical failures and the kind each one carries: the kind, not the wording, is what callers
+// (the program's exit status, a batch's summary) decide by.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "fapc/codec/file_io.hpp"
+#include "fapc/pipeline/convert.hpp"
+#include "fapc/pipeline/verify.hpp"
+#include "fapc/transcoder/schedule.hpp"
+#include "pipeline_test_helpers.hpp"
+#include "support/test_support.hpp"
+
+namespace fapc {
+namespace {
+
+using pipeline::ConvertOptions;
+
+ErrorKind load_error_kind(const std::string& path) {
+  auto loaded = pipeline::load(path, ConvertOptions{});
+  EXPECT_FALSE(loaded) << path;
+  return loaded ? ErrorKind::bad_input : loaded.error().kind;
+}
+
+TEST(ErrorKinds, AMissingFileIsIo) {
+  EXPECT_EQ(load_error_kind("/nonexistent/x.fap"), ErrorKind::io);
+}
+
+TEST(ErrorKinds, AnUnknownExtensionIsUnsupported) {
+  EXPECT_EQ(load_error_kind(test::corpus_dir() + "/catalog.tsv"), ErrorKind::unsupported);
+  const auto result = pipeline::convert(test::corpus_dir() + "/examples/fap/anger.fap", {{"x.unknown", ""}}, {});
+  ASSERT_FALSE(result.ok());
+  EXPECT_EQ(result.error->kind, ErrorKind::unsupported);
+}
+
+TEST(ErrorKinds, AStreamCutShortIsTruncated) {
+  const test::TempFolder tmp;
+  ASSERT_TRUE(pipeline::convert(test::corpus_dir() + "/examples/fap/anger.fap", {{tmp / "a.fba", ""}}, {}).ok());
+  const std::string whole = test::read_text(tmp / "a.fba");
+  ASSERT_TRUE(write_file_atomic(tmp / "cut.fba", whole.substr(0, whole.size() / 2)));
+  EXPECT_EQ(load_error_kind(tmp / "cut.fba"), ErrorKind::truncated);
+}
+
+TEST(ErrorKinds, AStreamFapcDidNotWriteFailsVerification) {
+  // The reference encoder's stream with time codes decodes, but fapc writes other bytes for it.
+  const auto verified = pipeline::verify(test::corpus_dir() + "/fba/time-code-29.97fps.fba", {});
+  ASSERT_FALSE(verified.ok());
+  EXPECT_EQ(verified.error->kind, ErrorKind::verification_failed);
+}
+
+TEST(ErrorKinds, AStoryThatNeverEndsIsBadInputAtTheElement) {
+  auto loaded = pipeline::load(test::corpus_dir() + "/fml-bad/indefinite-without-end.fml", {});
+  ASSERT_FALSE(loaded);
+  EXPECT_EQ(loaded.error().kind, ErrorKind::bad_input);
+  EXPECT_EQ(loaded.error().where.line, 2);
+  EXPECT_EQ(loaded.error().message.substr(0, 7), "action ");
+}
+
+// The scheduler's problems are values: which problem, and the front end's tag of the node.
+TEST(ScheduleErrors, CarryTheProblemAndTheNodesTag) {
+  Timing forever;
+  forever.repeat_indefinite = true;
+  ScheduleNode root = ScheduleNode::group(ScheduleNode::Kind::sequence, {}, Location::text("f", 1, 1));
+  root.tag = 1;
+  ScheduleNode leaf = ScheduleNode::leaf(0, Timing{}, Location::text("f", 2, 3));
+  leaf.tag = 7;
+  root.children.push_back(leaf);
+  auto scheduled = schedule_tree(root);
+  const auto* problem = std::get_if<ScheduleError>(&scheduled);
+  ASSERT_NE(problem, nullptr);
+  EXPECT_EQ(problem->problem, ScheduleProblem::no_duration);
+  EXPECT_EQ(problem->node_tag, 7u);
+  EXPECT_EQ(problem->where.line, 2);
+  EXPECT_TRUE(problem->needs_an_end());
+
+  Timing tiny;
+  tiny.duration = 0.001;
+  tiny.repeat = 10;
+  ScheduleNode repeated = ScheduleNode::leaf(0, tiny, Location::text("f", 3, 1));
+  repeated.tag = 9;
+  ScheduleOptions few;
+  few.max_runs = 3;
+  auto too_many = schedule_tree(repeated, few);
+  const auto* limit = std::get_if<ScheduleError>(&too_many);
+  ASSERT_NE(limit, nullptr);
+  EXPECT_EQ(limit->problem, ScheduleProblem::too_many_runs);
+  EXPECT_EQ(limit->node_tag, 9u);
+  EXPECT_EQ(limit->diagnostic("clip").kind, ErrorKind::limit_exceeded);
+}
+
+}  // namespace
+}  // namespace fapc

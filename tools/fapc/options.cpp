@@ -1,0 +1,63 @@
+#include "fapc/options.hpp"
+
+#include <cstdio>
+
+namespace fapc::cli {
+
+ConvertOptions convert_options(Args& args) {
+  ConvertOptions options;
+  options.fps = args.integer("fps", 25, 1, 1000);
+  options.quant = args.integer("quant", 1, 0, 31);
+  options.intra_period = args.integer("intra-period", 0, 0, 1 << 20);
+  options.profile = args.value("profile");
+  options.duration = args.decimal("duration", 0, 1e7);
+  if (const auto rate = args.decimal("speech-rate", 0.1, 100)) options.visemes_per_second = *rate;
+  options.strict = args.flag("strict");
+  options.verify = args.flag("verify");
+  // Two-way choices: the option's value must be one of the two words.
+  const auto choose = [&args](const char* name, const char* first, const char* second, std::string& into) {
+    const auto value = args.value(name);
+    if (!value) return true;
+    if (*value != first && *value != second) {
+      args.fail(std::string("--") + name + " takes " + first + " or " + second + ", not '" + *value + "'");
+      return false;
+    }
+    into = *value;
+    return true;
+  };
+  if (!choose("ranges", "fit", "max", options.ranges) || !choose("masks", "fit", "keep", options.masks)) return options;
+  if (const auto size = args.value("size")) {
+    int w = 0, h = 0;
+    char x = 0, rest = 0;
+    if (std::sscanf(size->c_str(), "%d%c%d%c", &w, &x, &h, &rest) != 3 || x != 'x' || w < 16 ||
+        h < 16 || w > 7680 || h > 7680) {
+      args.fail("--size takes WIDTHxHEIGHT, each 16 to 7680 pixels, not '" + *size + "'");
+      return options;
+    }
+    options.picture.width = w;
+    options.picture.height = h;
+  }
+  options.picture.frame_rate = args.integer("frame-rate", 0, 1, 120);
+  if (args.value("frame")) options.picture.frame = args.integer("frame", 0, 0, 1 << 30);
+  options.picture.time = args.decimal("time", 0, 1e7);
+  options.picture.points = args.flag("points");
+  if (args.value("sheet")) options.picture.sheet = args.integer("sheet", 12, 1, 400);
+  // Folders whose files includes may read besides the input's own (docs/security.md).
+  for (const std::string& folder : args.values("allow-include")) options.includes.allowed_folders.push_back(folder);
+  if (const auto flavour = args.value("fap-flavour")) {
+    const auto known = fap_flavour_named(*flavour);
+    if (!known) args.fail("--fap-flavour takes " + fap_flavour_names() + ", not '" + *flavour + "'");
+    options.fap_flavour = known.value_or(FapFlavour::safe);
+  }
+  for (const std::string& event : args.values("event")) {
+    const auto eq = event.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      args.fail("--event takes NAME=VALUE, not '" + event + "'");
+      return options;
+    }
+    options.events[event.substr(0, eq)] = event.substr(eq + 1);
+  }
+  return options;
+}
+
+}  // namespace fapc::cli

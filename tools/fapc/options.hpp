@@ -1,0 +1,26 @@
+// The conversion options shared by compile, batch, plot, combine, encode and verify: from the
+// command line to fapc::pipeline::ConvertOptions.
+#pragma once
+
+#include <set>
+#include <string>
+
+#include "fapc/args.hpp"
+#include "fapc/pipeline/options.hpp"
+
+namespace fapc::cli {
+
+using pipeline::ConvertOptions;
+using pipeline::PictureSettings;
+
+inline const std::set<std::string> kConvertValued = {"fps", "profile", "event", "quant",
+                                                      "intra-period", "ranges", "masks", "from", "to",
+                                                      "duration", "speech-rate", "fap-flavour",
+                                                      "allow-include", "size", "frame-rate", "frame",
+                                                      "time", "sheet"};
+inline const std::set<std::string> kConvertFlags = {"strict", "verify", "points"};
+
+// Reads the shared options; sets args' error on bad values.
+ConvertOptions convert_options(Args& args);
+
+}  // namespace fapc::cli

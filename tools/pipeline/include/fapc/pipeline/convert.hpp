@@ -1,0 +1,44 @@
+// Convert: load one input, write it as one or more outputs, atomically. Nothing is printed: the
+// result carries every warning and the error, for the caller to show.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fapc/pipeline/registry.hpp"
+
+namespace fapc::pipeline {
+
+struct OutputRequest {
+  std::string path;  // "-": the bytes are returned in ConvertResult::standard_output
+  std::string kind;  // empty: from the path's extension
+};
+
+struct ConvertResult {
+  Loaded loaded;                     // what the input became (frames empty when the load failed)
+  Diagnostics warnings;              // in the order met
+  std::optional<Diagnostic> error;   // the first error; outputs after it were not written
+  std::vector<std::string> written;  // the files written, in request order
+  std::string standard_output;       // the bytes of a "-" output
+  bool ok() const { return !error; }
+};
+
+// The writer for a request, or an error (unsupported) naming the known output kinds.
+Result<const OutputFormat*> writer_for(const OutputRequest& request);
+
+// The bytes of `loaded` as the requested output.
+Result<std::string> render_output(const Loaded& loaded, const OutputRequest& request,
+                                  const ConvertOptions& options);
+
+// Writes `loaded` to each output in turn (atomically: a failed output leaves no file), stopping at
+// the first error. Every writer is found before anything is written.
+ConvertResult write_outputs(Loaded loaded, const std::vector<OutputRequest>& outputs,
+                            const ConvertOptions& options);
+
+// Loads `input` once and writes every output. Under options.strict a warning is an error and
+// nothing is written.
+ConvertResult convert(const std::string& input, const std::vector<OutputRequest>& outputs,
+                      const ConvertOptions& options);
+
+}  // namespace fapc::pipeline

@@ -1,0 +1,39 @@
+// FBA streams in files: reading a .fba, encoding with the conversion options (and checking when
+// asked), packing coded planes into MP4 samples, and an .mp4's FBA track decoded.
+#pragma once
+
+#include <string>
+
+#include "fapc/codec/fba.hpp"
+#include "fapc/pipeline/options.hpp"
+#include "fapc/mpeg4/fba_track.hpp"
+#include "fapc/mpeg4/mp4_reader.hpp"
+
+namespace fapc::pipeline {
+
+// --quant, --intra-period, --ranges and --masks as the encoder's options.
+FbaEncodeOptions fba_encode_options(const ConvertOptions& options);
+
+// Reads and decodes a .fba file (gzip inflated transparently).
+Result<DecodedFba> read_fba_file(const std::string& path);
+
+// Encodes `sequence`, which came from `input`: errors name the input. With options.verify, the
+// stream is decoded and checked too (ErrorKind::verification_failed when it does not match).
+Result<EncodedFba> encode_checked(const FapSequence& sequence, const ConvertOptions& options,
+                                  const std::string& input, bool align_planes = false);
+
+// The MP4 FBA track of an encoding made with align_planes: each plane, started by its start
+// code and byte-aligned, becomes one sample lasting the frames it covers (timescale = fps).
+xmt::FbaTrackInput pack_fba_track(const EncodedFba& encoded, int fps);
+
+// An .mp4's FBA track and what it decodes to. Errors inside the track point at the byte in the
+// .mp4 ("FBA track sample N"); decoded.warnings holds the container's warnings, then the
+// decoder's.
+struct Mp4Fba {
+  xmt::FbaTrackInput track;
+  DecodedFba decoded;
+};
+Result<Mp4Fba> read_mp4_fba(const std::string& path);
+Result<Mp4Fba> decode_mp4_fba(const xmt::Mp4File& mp4, const std::string& path);
+
+}  // namespace fapc::pipeline

@@ -1,0 +1,46 @@
+// The options every conversion takes: what the command line's --fps, --profile, --quant... set.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "fapc/codec/fap_file.hpp"
+#include "fapc/codec/include_policy.hpp"
+
+namespace fapc::pipeline {
+
+// The picture outputs (.png, .webm, .html): --size, --frame-rate, --frame, --time, --sheet.
+struct PictureSettings {
+  int width = 640;
+  int height = 480;
+  int frame_rate = 0;                 // 0: the input's own frame rate
+  std::optional<std::int64_t> frame;  // .png: this frame of the input's grid
+  std::optional<double> time;         // .png: the frame at this time
+  std::optional<int> sheet;           // .png: a contact sheet of N frames
+  bool points = false;                // .png: the feature points marked and numbered
+};
+
+struct ConvertOptions {
+  int fps = 25;
+  PictureSettings picture;                    // the face outputs
+  std::optional<std::string> profile;         // a profile file; empty: the default profile
+  std::optional<double> duration;             // the end of timelines that give none
+  std::map<std::string, std::string> events;  // FML events, NAME -> VALUE
+  double visemes_per_second = 12;             // FML talk text
+  int quant = 1;                              // fap_quant for .fba/.mp4 outputs
+  int intra_period = 0;                       // 0: the encoder decides
+  std::string ranges = "fit";                 // fit | max
+  std::string masks = "fit";                  // fit | keep
+  FapFlavour fap_flavour = FapFlavour::safe;  // the .fap layout of a player family
+  bool strict = false;                        // warnings are errors; nothing is written
+  bool verify = false;                        // encoded streams are decoded and checked
+  // Which files includes may read (docs/security.md): load() adds the top input's folder.
+  IncludePolicy includes;
+  // What a load does beyond the frames (see Loaded):
+  bool facts = false;   // fill Loaded::facts (what `fapc info` shows of the format)
+  bool render = true;   // false: timeline inputs stop at the timeline (no frames, no curves)
+};
+
+}  // namespace fapc::pipeline

@@ -1,0 +1,55 @@
+// The readers and writers, in two tables (the model: pandoc's reader and writer tables). A
+// format is one entry: its kind name, its extensions and one function. The built-in tables are
+// assembled by one function from the list in src/registry.cpp, not by static initialisers, which
+// a static link may drop.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "fapc/pipeline/loaded.hpp"
+#include "fapc/pipeline/options.hpp"
+
+namespace fapc::pipeline {
+
+struct InputFormat {
+  std::string kind;                     // "fap", "fba", "mimic", ...
+  std::vector<std::string> extensions;  // ".fap", ".fap.gz"
+  std::function<Result<Loaded>(const std::string& path, const ConvertOptions&)> load;
+};
+
+struct OutputFormat {
+  std::string kind;
+  std::vector<std::string> extensions;  // the first one names batch outputs
+  // The bytes to write for `path` (the name may go into the output, e.g. an .xmt's stream source).
+  std::function<Result<std::string>(const Loaded&, const std::string& path, const ConvertOptions&)> write;
+};
+
+class Registry {
+ public:
+  void add(InputFormat format) { inputs_.push_back(std::move(format)); }
+  void add(OutputFormat format) { outputs_.push_back(std::move(format)); }
+
+  // By the longest matching extension (".fap.gz" before ".gz"), or by kind name; null if none.
+  const InputFormat* input_for(const std::string& path) const;
+  const OutputFormat* output_for(const std::string& path) const;
+  const InputFormat* input_named(const std::string& kind) const;
+  const OutputFormat* output_named(const std::string& kind) const;
+
+  const std::vector<InputFormat>& inputs() const { return inputs_; }
+  const std::vector<OutputFormat>& outputs() const { return outputs_; }
+
+ private:
+  std::vector<InputFormat> inputs_;
+  std::vector<OutputFormat> outputs_;
+};
+
+// Every built-in reader and writer. Built on first use; safe to share between threads.
+const Registry& formats();
+
+// Loads any input the built-in readers know (by extension), or says why not (unsupported for an
+// unknown extension). Includes and operands inside inputs are loaded through this too.
+Result<Loaded> load(const std::string& path, const ConvertOptions& options);
+
+}  // namespace fapc::pipeline

@@ -1,0 +1,25 @@
+// Verify: what `fapc verify` checks. A .fba stream decodes, and encoding its frames again with
+// the settings it shows gives the same bytes (true of every stream fapc writes; the settings the
+// bits do not show are searched for). An .mp4: the same for its FBA track, sample by sample,
+// durations and sync flags included. Any other input: it encodes with the given settings, the
+// stream decodes to within half a quantiser step (exactly at quant 0) and re-encodes the same.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "fapc/pipeline/options.hpp"
+#include "fapc/codec/diagnostic.hpp"
+
+namespace fapc::pipeline {
+
+struct VerifyResult {
+  Diagnostics warnings;             // the reader's
+  std::optional<Diagnostic> error;  // verification_failed when a check fails; else why it could not run
+  std::string summary;              // "N frames, B bytes, X bits/frame at fap_quant Q" when ok
+  bool ok() const { return !error; }
+};
+
+VerifyResult verify(const std::string& path, const ConvertOptions& options);
+
+}  // namespace fapc::pipeline

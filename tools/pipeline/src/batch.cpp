@@ -1,0 +1,218 @@
+#include "fapc/pipeline/batch.hpp"
+
+#include <algorithm>
+#include <bitset>
+#include <chrono>
+#include <exception>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "xml_text.hpp"
+
+namespace fapc::pipeline {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+Diagnostic usage(const std::string& message) {
+  return make_error(ErrorKind::usage, Location{}, message);
+}
+
+std::string without_input_extension(const std::string& path) {
+  if (const InputFormat* format = formats().input_for(path))
+    for (const std::string& ext : format->extensions)
+      if (path.size() > ext.size() && path.ends_with(ext)) return path.substr(0, path.size() - ext.size());
+  return path;
+}
+
+// Whether `path` is `folder` or inside it (both made absolute, "." and ".." resolved).
+bool inside(const fs::path& path, const fs::path& folder) {
+  const fs::path p = fs::weakly_canonical(path);
+  auto [f_end, p_at] = std::mismatch(folder.begin(), folder.end(), p.begin(), p.end());
+  return f_end == folder.end();
+}
+
+}  // namespace
+
+Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs, const std::string& out_dir,
+                                         const std::vector<std::string>& kinds) {
+  std::vector<const OutputFormat*> writers;
+  for (const std::string& kind : kinds) {
+    const OutputFormat* writer = formats().output_named(kind);
+    if (!writer) return usage("unknown output kind '" + kind + "'");
+    writers.push_back(writer);
+  }
+  if (kinds.empty()) return usage("no output kind in --to");
+  std::error_code ec;
+  if (fs::exists(out_dir, ec) && !fs::is_directory(out_dir, ec))
+    return usage("-o " + out_dir + " names an existing file, not a folder");
+  const fs::path out_folder = fs::weakly_canonical(out_dir);
+  struct Found {
+    std::string input;
+    std::string name;       // under DIR, without the input's extension
+    std::string full_name;  // with it: for a folder's inputs that differ by extension only
+  };
+  std::vector<Found> found;
+  for (const std::string& input : inputs) {
+    if (!fs::exists(input, ec)) return usage("no such file or folder: " + input);
+    if (!fs::is_directory(input, ec)) {
+      if (inside(input, out_folder)) return usage(input + " is inside the output folder " + out_dir);
+      found.push_back({input, fs::path(without_input_extension(input)).filename().string(), {}});
+      continue;
+    }
+    std::vector<std::string> files;
+    for (auto it = fs::recursive_directory_iterator(input); it != fs::recursive_directory_iterator(); ++it) {
+      if (it->is_directory() && inside(it->path(), out_folder)) {
+        it.disable_recursion_pending();  // outputs of this or an earlier run are never inputs
+        continue;
+      }
+      if (it->is_regular_file() && formats().input_for(it->path().string()) && !inside(it->path(), out_folder))
+        files.push_back(it->path().string());
+    }
+    std::sort(files.begin(), files.end());
+    for (const std::string& path : files)
+      found.push_back({path, fs::relative(without_input_extension(path), input).string(),
+                       fs::relative(path, input).string()});
+  }
+  std::vector<BatchJob> jobs;
+  std::map<std::string, std::vector<std::string>> inputs_of;  // output -> the inputs writing it
+  // A folder's `smile.fml` and `smile.mimic` keep their extensions (smile.fml.fap, smile.mimic.fap)
+  // rather than clash; every other name is the input's without its extension.
+  std::map<std::string, std::size_t> sharing;
+  for (const Found& f : found) ++sharing[f.name];
+  for (Found& f : found)
+    if (sharing[f.name] > 1 && !f.full_name.empty()) f.name = f.full_name;
+  for (const auto& [input, name, full_name] : found) {
+    BatchJob job{input, {}};
+    for (std::size_t k = 0; k < kinds.size(); ++k) {
+      const std::string output = (fs::path(out_dir) / (name + writers[k]->extensions.front())).lexically_normal().string();
+      job.outputs.push_back(OutputRequest{output, kinds[k]});
+      inputs_of[output].push_back(input);
+    }
+    jobs.push_back(std::move(job));
+  }
+  std::string shared;
+  for (const auto& [output, writers_of] : inputs_of) {
+    if (writers_of.size() < 2) continue;
+    shared += "\n  " + output + " <-";
+    for (const std::string& input : writers_of) shared += " " + input;
+  }
+  if (!shared.empty())
+    return usage("inputs would overwrite each other's outputs; nothing converted (rename one, or convert them "
+                 "in separate runs):" + shared);
+  return jobs;
+}
+
+namespace {
+
+// One job, whatever happens inside: an exception becomes the job's error.
+BatchOutcome run_job(const BatchJob& job, const ConvertOptions& options, const BatchRunOptions& run) {
+  BatchOutcome outcome;
+  outcome.ran = true;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    for (const OutputRequest& output : job.outputs) {
+      std::error_code ec;
+      const fs::path folder = fs::path(output.path).parent_path();
+      if (!folder.empty()) fs::create_directories(folder, ec);
+      if (ec) {
+        outcome.result.error = make_error(ErrorKind::io, Location{folder.string(), 0, 0, -1},
+                                          "cannot create the folder: " + ec.message());
+        break;
+      }
+    }
+    if (!outcome.result.error)
+      outcome.result = run.convert ? run.convert(job, options) : convert(job.input, job.outputs, options);
+  } catch (const std::exception& e) {
+    outcome.result.error = make_error(ErrorKind::bad_input, Location{job.input, 0, 0, -1},
+                                      std::string("internal error while converting: ") + e.what());
+  } catch (...) {
+    outcome.result.error = make_error(ErrorKind::bad_input, Location{job.input, 0, 0, -1},
+                                      "internal error while converting (unknown exception)");
+  }
+  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return outcome;
+}
+
+}  // namespace
+
+std::vector<BatchOutcome> run_batch(const std::vector<BatchJob>& jobs, const ConvertOptions& options,
+                                    const BatchRunOptions& run) {
+  std::vector<BatchOutcome> outcomes(jobs.size());
+  std::vector<char> finished(jobs.size(), 0);
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> failed_stop{false};
+  std::mutex report;  // held only to hand finished jobs to the callbacks, never while converting
+  std::size_t reported = 0, done = 0;
+  const auto stopping = [&] { return failed_stop.load() || (run.stop && run.stop->load()); };
+  // Hands every job finished in input order since the last call to in_order. Under `report`.
+  const auto hand_over = [&] {
+    for (; reported < jobs.size() && finished[reported]; ++reported)
+      if (run.in_order && outcomes[reported].ran) run.in_order(reported, outcomes[reported]);
+  };
+  const auto worker = [&] {
+    for (std::size_t i; !stopping() && (i = next++) < jobs.size();) {
+      BatchOutcome outcome = run_job(jobs[i], options, run);
+      if (!outcome.result.ok() && !run.keep_going) failed_stop = true;
+      const std::lock_guard<std::mutex> lock(report);
+      outcomes[i] = std::move(outcome);
+      finished[i] = 1;
+      ++done;
+      if (run.progress) run.progress(done, jobs.size());
+      hand_over();
+    }
+  };
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t wanted = run.threads > 0 ? static_cast<std::size_t>(run.threads) : cores;
+  const std::size_t count = std::max<std::size_t>(1, std::min(wanted, jobs.size()));
+  std::vector<std::thread> threads;
+  for (std::size_t t = 1; t < count; ++t) threads.emplace_back(worker);
+  worker();  // this thread is one of the pool
+  for (std::thread& t : threads) t.join();
+  // Jobs stopped before starting leave gaps: what ran after a gap is handed over now, in order.
+  for (std::size_t i = 0; i < jobs.size(); ++i) finished[i] = 1;
+  hand_over();
+  return outcomes;
+}
+
+std::string batch_summary_line(const BatchJob& job, const BatchOutcome& outcome) {
+  if (!outcome.result.ok()) return "FAILED " + job.input;
+  const FapSequence& seq = outcome.result.loaded.frames;
+  std::bitset<kFapCount> used;
+  for (const FapFrame& f : seq.frames) used |= f.mask;
+  std::ostringstream line;
+  line << job.input << ": " << seq.frames.size() << " frames, " << seq.fps << " fps, " << used.count() << " FAPs, "
+       << outcome.result.warnings.size() << " warnings ->";
+  for (const std::string& output : outcome.result.written) line << ' ' << output;
+  return line.str();
+}
+
+std::string junit_report(const std::vector<BatchJob>& jobs, const std::vector<BatchOutcome>& outcomes) {
+  std::size_t ran = 0, failures = 0;
+  for (const BatchOutcome& o : outcomes) {
+    ran += o.ran;
+    failures += o.ran && !o.result.ok();
+  }
+  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuite name=\"fapc batch\" tests=\"" +
+                    std::to_string(ran) + "\" failures=\"" + std::to_string(failures) + "\">\n";
+  for (std::size_t i = 0; i < jobs.size() && i < outcomes.size(); ++i) {
+    const BatchOutcome& o = outcomes[i];
+    if (!o.ran) continue;  // stopped before it started: nothing to report
+    out += "  <testcase name=\"" + xml_escape(jobs[i].input) + "\" time=\"" + std::to_string(o.seconds) + "\"";
+    if (o.result.ok()) {
+      out += "/>\n";
+      continue;
+    }
+    const Diagnostic& error = *o.result.error;
+    out += "><failure type=\"" + std::string(error_kind_name(error.kind)) + "\" message=\"" +
+           xml_escape(format_diagnostic(error)) + "\">" + xml_escape(batch_summary_line(jobs[i], o)) +
+           "</failure></testcase>\n";
+  }
+  return out + "</testsuite>\n";
+}
+
+}  // namespace fapc::pipeline

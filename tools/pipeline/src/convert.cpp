@@ -1,0 +1,88 @@
+#include "fapc/pipeline/convert.hpp"
+
+#include "fapc/codec/file_io.hpp"
+
+namespace fapc::pipeline {
+
+Result<const OutputFormat*> writer_for(const OutputRequest& request) {
+  const OutputFormat* writer =
+      request.kind.empty() ? formats().output_for(request.path) : formats().output_named(request.kind);
+  if (!writer)
+    return make_error(ErrorKind::unsupported, Location{request.path, 0, 0, -1},
+                      "unknown output kind (expected .fap, .fap.gz, .fba, .mp4, .xmt, .json, .svg, .png, .webm or .html)");
+  return writer;
+}
+
+Result<std::string> render_output(const Loaded& loaded, const OutputRequest& request, const ConvertOptions& options) {
+  auto writer = writer_for(request);
+  if (!writer) return writer.error();
+  return (*writer)->write(loaded, request.path, options);
+}
+
+namespace {
+
+// Writes every output, the writers having been found already.
+void write_all(ConvertResult& result, const std::vector<const OutputFormat*>& writers,
+               const std::vector<OutputRequest>& outputs, const ConvertOptions& options) {
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    auto bytes = writers[i]->write(result.loaded, outputs[i].path, options);
+    if (!bytes) {
+      result.error = bytes.error();
+      return;
+    }
+    if (outputs[i].path == "-") {
+      result.standard_output += *bytes;
+      continue;
+    }
+    if (auto written = write_file_atomic(outputs[i].path, *bytes); !written) {
+      result.error = written.error();
+      return;
+    }
+    result.written.push_back(outputs[i].path);
+  }
+}
+
+// Every writer, or the first unknown kind: a typo in -o should not cost a long compile.
+std::optional<Diagnostic> find_writers(const std::vector<OutputRequest>& outputs,
+                                       std::vector<const OutputFormat*>& writers) {
+  for (const OutputRequest& request : outputs) {
+    auto writer = writer_for(request);
+    if (!writer) return writer.error();
+    writers.push_back(*writer);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+ConvertResult write_outputs(Loaded loaded, const std::vector<OutputRequest>& outputs, const ConvertOptions& options) {
+  ConvertResult result;
+  result.loaded = std::move(loaded);
+  std::vector<const OutputFormat*> writers;
+  if ((result.error = find_writers(outputs, writers))) return result;
+  write_all(result, writers, outputs, options);
+  return result;
+}
+
+ConvertResult convert(const std::string& input, const std::vector<OutputRequest>& outputs, const ConvertOptions& options) {
+  ConvertResult result;
+  std::vector<const OutputFormat*> writers;
+  if ((result.error = find_writers(outputs, writers))) return result;
+  auto loaded = load(input, options);
+  if (!loaded) {
+    result.error = loaded.error();
+    return result;
+  }
+  result.loaded = std::move(*loaded);
+  result.warnings = result.loaded.warnings;
+  if (options.strict && !result.warnings.empty()) {
+    result.error = make_error(ErrorKind::bad_input, Location{input, 0, 0, -1},
+                              std::to_string(result.warnings.size()) +
+                                  " warning(s) treated as errors (--strict); nothing written");
+    return result;
+  }
+  write_all(result, writers, outputs, options);
+  return result;
+}
+
+}  // namespace fapc::pipeline

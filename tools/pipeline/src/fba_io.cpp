@@ -1,0 +1,103 @@
+#include "fapc/pipeline/fba_io.hpp"
+
+#include "fapc/codec/file_io.hpp"
+#include "fapc/mpeg4/mp4_reader.hpp"
+
+namespace fapc::pipeline {
+
+namespace {
+
+// The decoder reads the raw stream rebuilt from the track (configuration, one stuffing byte, the
+// samples); a byte offset in it is turned back into the file's offset of that sample byte, so an
+// error points into the .mp4 the user has.
+Diagnostic in_file(Diagnostic d, const xmt::Mp4Track& track, const xmt::FbaTrackInput& input) {
+  if (d.where.byte_offset < 0) return d;
+  auto at = static_cast<std::uint64_t>(d.where.byte_offset);
+  const std::uint64_t header = input.decoder_specific_info.size() + 1;
+  if (at < header) {
+    d.where.byte_offset = -1;
+    d.message = "FBA decoder configuration, byte " + std::to_string(at) + ": " + d.message;
+    return d;
+  }
+  at -= header;
+  for (std::size_t k = 0; k < track.samples.size(); ++k) {
+    if (at < track.samples[k].size) {
+      d.where.byte_offset = static_cast<std::int64_t>(track.samples[k].offset + at);
+      d.message = "FBA track sample " + std::to_string(k + 1) + ": " + d.message;
+      return d;
+    }
+    at -= track.samples[k].size;
+  }
+  d.where.byte_offset = -1;
+  d.message = "end of the FBA track: " + d.message;
+  return d;
+}
+
+}  // namespace
+
+FbaEncodeOptions fba_encode_options(const ConvertOptions& options) {
+  FbaEncodeOptions fba;
+  fba.quant = options.quant;
+  fba.intra_period = options.intra_period;
+  fba.ranges = options.ranges == "max" ? FbaRangeMode::max : FbaRangeMode::fit;
+  fba.masks = options.masks == "keep" ? FbaMaskMode::keep : FbaMaskMode::fit;
+  return fba;
+}
+
+Result<DecodedFba> read_fba_file(const std::string& path) {
+  auto bytes = read_file_bytes(path);
+  if (!bytes) return bytes.error();
+  FbaDecodeOptions options;
+  options.file = path;
+  const auto* data = reinterpret_cast<const std::uint8_t*>(bytes->data());
+  return decode_fba(std::span<const std::uint8_t>(data, bytes->size()), options);
+}
+
+Result<EncodedFba> encode_checked(const FapSequence& sequence, const ConvertOptions& options,
+                                  const std::string& input, bool align_planes) {
+  FbaEncodeOptions fba = fba_encode_options(options);
+  fba.align_planes = align_planes;
+  auto encoded = encode_fba(sequence, fba);
+  if (!encoded) {
+    Diagnostic error = encoded.error();
+    error.where.file = input;
+    return error;
+  }
+  if (options.verify)
+    if (auto verified = verify_fba(sequence, *encoded, fba, input); !verified) return verified.error();
+  return encoded;
+}
+
+xmt::FbaTrackInput pack_fba_track(const EncodedFba& encoded, int fps) {
+  xmt::FbaTrackInput track;
+  const auto dsi = fba_decoder_specific_info();
+  track.decoder_specific_info.assign(dsi.begin(), dsi.end());
+  track.timescale = static_cast<std::uint32_t>(fps);
+  for (const CodedPlane& plane : encoded.planes) {
+    const auto first = encoded.bytes.begin() + static_cast<std::ptrdiff_t>(plane.offset);
+    track.samples.push_back(xmt::FbaSample{xmt::Bytes(first, first + static_cast<std::ptrdiff_t>(plane.size)),
+                                           static_cast<std::uint32_t>(plane.frames), plane.intra});
+  }
+  return track;
+}
+
+Result<Mp4Fba> decode_mp4_fba(const xmt::Mp4File& mp4, const std::string& path) {
+  auto track = xmt::read_fba_track(mp4);
+  if (!track) return track.error();
+  FbaDecodeOptions options;
+  options.file = path;
+  auto decoded = decode_fba(xmt::fba_stream_from_track(*track), options);
+  if (!decoded) return in_file(decoded.error(), *xmt::find_fba_track(mp4), *track);
+  decoded->warnings.insert(decoded->warnings.begin(), mp4.warnings.begin(), mp4.warnings.end());
+  return Mp4Fba{std::move(*track), std::move(*decoded)};
+}
+
+Result<Mp4Fba> read_mp4_fba(const std::string& path) {
+  auto bytes = read_file_bytes(path);
+  if (!bytes) return bytes.error();
+  auto mp4 = xmt::read_mp4(xmt::Bytes(bytes->begin(), bytes->end()), path);
+  if (!mp4) return mp4.error();
+  return decode_mp4_fba(*mp4, path);
+}
+
+}  // namespace fapc::pipeline

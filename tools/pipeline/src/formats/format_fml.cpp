@@ -1,0 +1,46 @@
+// .fml as an input: FML documents (docs/fml.md). --event chooses excl branches, --duration ends
+// indefinite loops, --profile names the parameters of param moves.
+#include "fapc/fml/fml.hpp"
+#include "formats.hpp"
+#include "timeline_input.hpp"
+
+namespace fapc::pipeline::builtin {
+
+namespace {
+
+Result<xmt::FmlDocument> read_document(const std::string& path, const ConvertOptions& options, const Profile& profile) {
+  xmt::FmlOptions fml;
+  fml.events = options.events;
+  fml.duration = options.duration;
+  fml.visemes_per_second = options.visemes_per_second;
+  fml.profile = &profile;
+  fml.includes = options.includes;
+  return xmt::load_fml(path, fml);
+}
+
+nlohmann::ordered_json facts_of(const xmt::FmlDocument& document) {
+  nlohmann::ordered_json out;
+  out["format"] = "FML";
+  if (!document.character.empty()) out["character"] = document.character;
+  for (const auto& [name, value] : document.events) out["event " + name] = value.empty() ? "(no value)" : value;
+  if (!document.templates.empty()) out["templates"] = document.templates;
+  if (!document.phoneme_files.empty()) out["phoneme files"] = document.phoneme_files;
+  out["clips"] = document.timeline.clips.size();
+  return out;
+}
+
+Result<Loaded> load_fml(const std::string& path, const ConvertOptions& options) {
+  Result<Profile> profile = profile_for(options);
+  if (!profile) return profile.error();
+  Result<xmt::FmlDocument> document = read_document(path, options, *profile);
+  if (!document) return document.error();
+  auto facts = options.facts ? facts_of(*document) : nlohmann::ordered_json::object();
+  return loaded_from_timeline(std::move(document->timeline), path, *profile, options, std::move(document->warnings),
+                              std::move(facts));
+}
+
+}  // namespace
+
+InputFormat fml_input() { return {"fml", {".fml"}, load_fml}; }
+
+}  // namespace fapc::pipeline::builtin

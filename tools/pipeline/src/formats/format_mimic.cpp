@@ -1,0 +1,34 @@
+// .mimic and .mim inputs: the Mimic compiler, then the shared rendering.
+#include "fapc/codec/file_io.hpp"
+#include "fapc/transcoder/mimic.hpp"
+#include "formats.hpp"
+#include "timeline_input.hpp"
+
+namespace fapc::pipeline::builtin {
+
+namespace {
+
+Result<Loaded> load_mimic(const std::string& path, const ConvertOptions& options) {
+  Result<std::string> source = read_file_bytes(path);
+  if (!source) return source.error();
+  Result<Profile> profile = profile_for(options);
+  if (!profile) return profile.error();
+  MimicOptions mimic;
+  mimic.profile = &*profile;
+  mimic.includes = options.includes;
+  Result<MimicProgram> program = compile_mimic(*source, path, mimic);
+  if (!program) return program.error();
+  nlohmann::ordered_json facts = nlohmann::ordered_json::object();
+  if (options.facts) {
+    facts["clips"] = program->timeline.clips.size();
+    facts["timeline end"] = program->timeline.end();
+  }
+  return loaded_from_timeline(std::move(program->timeline), path, *profile, options, std::move(program->warnings),
+                              std::move(facts));
+}
+
+}  // namespace
+
+InputFormat mimic_input() { return {"mimic", {".mimic", ".mim"}, load_mimic}; }
+
+}  // namespace fapc::pipeline::builtin

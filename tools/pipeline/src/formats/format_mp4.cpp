@@ -1,0 +1,122 @@
+// .mp4 in and out: an MPEG-4 file with a BIFS face scene, an OD track and the FBA track
+// (docs/mp4-and-xmta.md). The container work is the xmt library's; the FBA coding is the
+// codec's.
+#include <filesystem>
+#include <sstream>
+
+#include "fapc/codec/file_io.hpp"
+#include "fapc/pipeline/fba_io.hpp"
+#include "fapc/mpeg4/mp4_reader.hpp"
+#include "fapc/mpeg4/mp4_writer.hpp"
+#include "formats.hpp"
+
+namespace fapc::pipeline::builtin {
+
+namespace {
+
+std::string hex_byte(unsigned v) {
+  std::ostringstream s;
+  s << "0x" << std::uppercase << std::hex << (v < 16 ? "0" : "") << v;
+  return s.str();
+}
+
+std::string track_line(const xmt::Mp4Track& t, const xmt::Mp4Track* fba) {
+  std::ostringstream s;
+  s << t.handler << ' ' << t.sample_entry;
+  if (t.es) {
+    const xmt::DecoderConfig& c = t.es->config;
+    const char* role = &t == fba                                   ? "FBA stream"
+                       : c.stream_type == xmt::kSceneDescriptionStream ? "scene description"
+                       : c.stream_type == xmt::kObjectDescriptorStream ? "object descriptors"
+                                                                        : "stream";
+    s << ", " << role << " (streamType " << int{c.stream_type} << ", objectTypeIndication "
+      << hex_byte(c.object_type) << ")";
+  }
+  std::size_t sync = 0;
+  for (const xmt::Mp4Sample& sample : t.samples) sync += sample.sync ? 1 : 0;
+  s << ", " << t.samples.size() << (t.samples.size() == 1 ? " sample (" : " samples (") << sync
+    << " sync), timescale " << t.timescale;
+  return s.str();
+}
+
+std::string profiles_text(const xmt::ProfileLevels& p) {
+  std::string visual = hex_byte(p.visual);
+  if (const auto name = xmt::fba_profile_name(p.visual); !name.empty()) visual += " " + std::string(name);
+  return "OD " + hex_byte(p.od) + ", scene " + hex_byte(p.scene) + ", audio " + hex_byte(p.audio) +
+         ", visual " + visual + ", graphics " + hex_byte(p.graphics);
+}
+
+nlohmann::ordered_json facts_of(const xmt::Mp4File* mp4) {
+  nlohmann::ordered_json out;
+  std::string brands;
+  for (const std::string& b : mp4->compatible_brands) brands += (brands.empty() ? "" : ", ") + b;
+  out["brand"] = mp4->major_brand + " (" + brands + ")";
+  out["movie duration"] = mp4->timescale ? static_cast<double>(mp4->duration) / mp4->timescale : 0.0;
+  if (mp4->iod) out["profile-levels"] = profiles_text(mp4->iod->profiles);
+  const xmt::Mp4Track* fba = xmt::find_fba_track(*mp4);
+  // Flat keys, one line each in `fapc info`'s text output.
+  for (const xmt::Mp4Track& t : mp4->tracks) out["track " + std::to_string(t.id)] = track_line(t, fba);
+  // A scene or descriptors outside what fapc decodes are shown as the reason, not as a failure.
+  auto scene = xmt::read_scene(*mp4);
+  out["scene"] = scene ? xmt::scene_text(scene->scene) : "not shown: " + format_diagnostic(scene.error());
+  auto objects = xmt::read_object_descriptors(*mp4);
+  nlohmann::ordered_json ods = nlohmann::ordered_json::array();
+  if (objects) {
+    for (const xmt::Mp4ObjectView& o : *objects) {
+      std::string line = "OD " + std::to_string(o.od.od_id) + " ->";
+      for (std::uint32_t id : o.track_ids) line += " track " + std::to_string(id);
+      ods.push_back(line);
+    }
+    out["object descriptors"] = ods;
+  } else {
+    out["object descriptors"] = "not shown: " + format_diagnostic(objects.error());
+  }
+  if (auto stream = xmt::read_fba_track(*mp4)) {
+    const std::uint8_t level = *xmt::fba_profile_level(stream->decoder_specific_info);
+    std::uint64_t bytes = 0, ticks = 0;
+    std::size_t intra = 0;
+    for (const xmt::FbaSample& s : stream->samples) {
+      bytes += s.bytes.size();
+      ticks += s.duration;
+      intra += s.sync ? 1 : 0;
+    }
+    out["fba profile-level"] = hex_byte(level) + " " + std::string(xmt::fba_profile_name(level));
+    out["fba planes"] = stream->samples.size();
+    out["fba intra planes"] = intra;
+    out["fba bytes"] = bytes;
+    out["fba duration"] = static_cast<double>(ticks) / stream->timescale;
+  }
+  return out;
+}
+
+Result<Loaded> load_mp4(const std::string& path, const ConvertOptions& options) {
+  auto bytes = read_file_bytes(path);
+  if (!bytes) return bytes.error();
+  auto mp4 = xmt::read_mp4(xmt::Bytes(bytes->begin(), bytes->end()), path);
+  if (!mp4) return mp4.error();
+  auto fba = decode_mp4_fba(*mp4, path);
+  if (!fba) return fba.error();
+  Loaded loaded;
+  loaded.frames = std::move(fba->decoded.sequence);
+  loaded.frames.name = std::filesystem::path(path).stem().string();
+  loaded.warnings = std::move(fba->decoded.warnings);
+  if (options.facts) loaded.facts = facts_of(&*mp4);
+  return loaded;
+}
+
+// The FBA track: the encoder's planes, each started by its start code and byte-aligned, become
+// the samples.
+Result<std::string> write_mp4_file(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
+  auto encoded = encode_checked(loaded.frames, options, path, /*align_planes=*/true);
+  if (!encoded) return encoded.error();
+  auto bytes = xmt::write_mp4(pack_fba_track(*encoded, loaded.frames.fps));
+  if (!bytes) return bytes.error();
+  return std::string(bytes->begin(), bytes->end());
+}
+
+}  // namespace
+
+InputFormat mp4_input() { return {"mp4", {".mp4"}, load_mp4}; }
+OutputFormat mp4_output() { return {"mp4", {".mp4"}, write_mp4_file}; }
+
+}  // namespace fapc::pipeline::builtin

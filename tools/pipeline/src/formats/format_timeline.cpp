@@ -1,0 +1,21 @@
+// .timeline output: the shared timeline as text (docs/timeline.md), for debugging front ends.
+#include "formats.hpp"
+
+namespace fapc::pipeline::builtin {
+
+namespace {
+
+Result<std::string> write_timeline(const Loaded& loaded, const std::string& path,
+                                   const ConvertOptions&) {
+  if (!loaded.timeline) {
+    return make_error(ErrorKind::unsupported, Location{path, 0, 0, -1},
+                      "this input has frames, not a timeline (.timeline needs Mimic, FML or XMT-Omega)");
+  }
+  return dump(*loaded.timeline);
+}
+
+}  // namespace
+
+OutputFormat timeline_output() { return {"timeline", {".timeline"}, write_timeline}; }
+
+}  // namespace fapc::pipeline::builtin

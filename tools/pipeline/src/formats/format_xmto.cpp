@@ -1,0 +1,82 @@
+// .xmt as an input: XMT-Omega documents (docs/xmt-omega.md). `animation src` loads any other
+// registered input through the registry, so a document composes .fap, .fba, Mimic and FML files.
+// (.xmt as an output, XMT-A, is format_xmta.cpp's.)
+#include <algorithm>
+#include <vector>
+
+#include "fapc/transcoder/timeline_from_frames.hpp"
+#include "fapc/xmto/xmto.hpp"
+#include "formats.hpp"
+#include "input_chain.hpp"
+#include "timeline_input.hpp"
+
+namespace fapc::pipeline::builtin {
+
+namespace {
+
+// Included inputs get their own length: --duration ends the outer document only. A script is
+// lowered to its timeline and not rendered (its clips join this document's); an input of frames
+// becomes clips holding them.
+Result<xmt::IncludedAnimation> load_animation(const std::string& path, const Location& where,
+                                              const ConvertOptions& options) {
+  ConvertOptions inner = options;
+  inner.duration.reset();
+  inner.render = false;
+  inner.facts = false;
+  Result<Loaded> loaded = load_included_input(path, where, inner);
+  if (!loaded) {
+    // A file that cannot be opened or has no known kind is reported at the element naming it.
+    const Diagnostic& error = loaded.error();
+    if (error.where.line > 0 || error.where.byte_offset >= 0) return error;
+    return make_error(error.kind, where, "cannot place '" + path + "': " + error.message);
+  }
+  xmt::IncludedAnimation included;
+  included.timeline = loaded->timeline ? std::move(*loaded->timeline)
+                                       : timeline_from_frames(loaded->frames, 0, Location{path, 0, 0, -1});
+  included.warnings = std::move(loaded->warnings);
+  return included;
+}
+
+Result<xmt::XmtoDocument> read_document(const std::string& path, const ConvertOptions& options,
+                                        const Profile& profile) {
+  xmt::XmtoOptions xmto;
+  xmto.fml.events = options.events;
+  xmto.fml.profile = &profile;
+  xmto.fml.visemes_per_second = options.visemes_per_second;
+  // The documents around this one (load() has put this one last): the reader names a cycle
+  // among them at the animation element, before the loader is asked.
+  xmto.including = inputs_being_read();
+  if (!xmto.including.empty()) xmto.including.pop_back();
+  xmto.includes = options.includes;
+  xmto.fml.includes = options.includes;
+  xmto.duration = options.duration;
+  xmto.load_animation = [&options](const std::string& included, const Location& where) {
+    return load_animation(included, where, options);
+  };
+  return xmt::load_xmto(path, xmto);
+}
+
+nlohmann::ordered_json facts_of(const xmt::XmtoDocument& document) {
+  nlohmann::ordered_json out;
+  out["format"] = "XMT-Omega";
+  for (const auto& [name, content] : document.meta) out["meta " + name] = content;
+  out["clips"] = document.timeline.clips.size();
+  if (!document.included.empty()) out["included"] = document.included;
+  return out;
+}
+
+Result<Loaded> load_xmto(const std::string& path, const ConvertOptions& options) {
+  Result<Profile> profile = profile_for(options);
+  if (!profile) return profile.error();
+  Result<xmt::XmtoDocument> document = read_document(path, options, *profile);
+  if (!document) return document.error();
+  auto facts = options.facts ? facts_of(*document) : nlohmann::ordered_json::object();
+  return loaded_from_timeline(std::move(document->timeline), path, *profile, options, std::move(document->warnings),
+                              std::move(facts));
+}
+
+}  // namespace
+
+InputFormat xmto_input() { return {"xmt", {".xmt"}, load_xmto}; }
+
+}  // namespace fapc::pipeline::builtin

@@ -1,0 +1,66 @@
+#include "fapc/pipeline/info.hpp"
+
+#include <algorithm>
+#include <map>
+
+#include "fapc/pipeline/registry.hpp"
+#include "input_chain.hpp"
+
+namespace fapc::pipeline {
+
+namespace {
+
+struct Range {
+  long long min = 0, max = 0, frames = 0;
+};
+
+nlohmann::ordered_json summarise(const std::string& path, const std::string& kind, const Loaded& loaded) {
+  const FapSequence& seq = loaded.frames;
+  std::map<int, Range> ranges;
+  for (const FapFrame& frame : seq.frames)
+    for (int fap = 1; fap <= kFapCount; ++fap) {
+      if (!frame.has(fap)) continue;
+      const long long v = fap == 1   ? frame.viseme.select1
+                          : fap == 2 ? frame.expression.select1
+                                     : frame.value(fap);
+      Range& r = ranges[fap];
+      r.min = r.frames ? std::min(r.min, v) : v;
+      r.max = r.frames ? std::max(r.max, v) : v;
+      ++r.frames;
+    }
+  nlohmann::ordered_json out;
+  out["file"] = path;
+  out["kind"] = kind;
+  out["name"] = seq.name;
+  out["fps"] = seq.fps;
+  out["frames"] = seq.frames.size();
+  out["duration"] = seq.duration_seconds();
+  nlohmann::ordered_json faps = nlohmann::ordered_json::array();
+  for (const auto& [fap, r] : ranges) {
+    const FapInfo& info = *find_fap(fap);
+    faps.push_back({{"number", fap}, {"name", info.name}, {"unit", fapu_name(info.unit)},
+                    {"min", r.min}, {"max", r.max}, {"frames", r.frames}});
+  }
+  out["faps used"] = faps.size();
+  out["faps"] = faps;
+  return out;
+}
+
+}  // namespace
+
+Result<nlohmann::ordered_json> describe(const std::string& path) {
+  const InputFormat* format = formats().input_for(path);
+  if (!format) return make_error(ErrorKind::unsupported, Location{path, 0, 0, -1}, "unknown input kind");
+  ConvertOptions options;
+  options.facts = true;  // the format's facts come from this one read
+  const ReadingInput reading(path, options);  // for its includes, as load() would
+  auto loaded = format->load(path, reading.options());
+  if (!loaded) return loaded.error();
+  nlohmann::ordered_json info = summarise(path, format->kind, *loaded);
+  if (!loaded->facts.empty()) info["format"] = std::move(loaded->facts);
+  info["warnings"] = nlohmann::ordered_json::array();
+  for (const Diagnostic& w : loaded->warnings) info["warnings"].push_back(format_diagnostic(w));
+  return info;
+}
+
+}  // namespace fapc::pipeline

@@ -1,0 +1,45 @@
+#include "timeline_input.hpp"
+
+#include <filesystem>
+
+#include "fapc/transcoder/render.hpp"
+
+namespace fapc::pipeline {
+
+Result<Profile> profile_for(const ConvertOptions& options) {
+  if (!options.profile) return default_profile();
+  return load_profile(*options.profile);
+}
+
+Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
+                                    const Profile& profile, const ConvertOptions& options,
+                                    Diagnostics warnings, nlohmann::ordered_json facts) {
+  if (options.duration) timeline.explicit_end = *options.duration;
+  if (!options.render) {  // an XMT-Omega include: its clips are placed, its frames never used
+    Loaded loaded;
+    loaded.timeline = std::move(timeline);
+    loaded.warnings = std::move(warnings);
+    loaded.facts = std::move(facts);
+    return loaded;
+  }
+  RenderOptions render;
+  render.fps = options.fps;
+  render.profile = &profile;
+  render.name = std::filesystem::path(name).stem().string();
+  Result<Rendered> rendered = render_frames(timeline, render);
+  if (!rendered) {
+    Diagnostic error = rendered.error();
+    if (error.where.file.empty()) error.where.file = name;  // a whole-animation problem
+    return error;
+  }
+  Loaded loaded;
+  loaded.frames = std::move(rendered->frames);
+  loaded.curves = render_curves(timeline, CurveOptions{options.fps, 1e-6});
+  loaded.timeline = std::move(timeline);
+  loaded.warnings = std::move(warnings);
+  loaded.facts = std::move(facts);
+  loaded.warnings.insert(loaded.warnings.end(), rendered->warnings.begin(), rendered->warnings.end());
+  return loaded;
+}
+
+}  // namespace fapc::pipeline

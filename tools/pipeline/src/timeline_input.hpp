@@ -1,0 +1,22 @@
+// What every timeline front end (Mimic, FML, XMT-Omega) does after lowering: render the frames and
+// the curves with the user's options and keep the timeline for per-clip plots.
+#pragma once
+
+#include <string>
+
+#include "fapc/pipeline/loaded.hpp"
+#include "fapc/pipeline/options.hpp"
+#include "fapc/transcoder/profile.hpp"
+
+namespace fapc::pipeline {
+
+// The profile of --profile, or the default one.
+Result<Profile> profile_for(const ConvertOptions& options);
+
+// Frames at options.fps (clamp warnings appended to `warnings`), curves, and the timeline itself;
+// the timeline alone when options.render is false. `facts` become Loaded::facts.
+Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
+                                    const Profile& profile, const ConvertOptions& options,
+                                    Diagnostics warnings, nlohmann::ordered_json facts = nlohmann::ordered_json::object());
+
+}  // namespace fapc::pipeline

@@ -1,0 +1,13 @@
+#include "fapc/pipeline/validate.hpp"
+
+#include "fapc/codec/file_io.hpp"
+
+namespace fapc::pipeline {
+
+Result<xmt::ValidationReport> validate(const std::string& path) {
+  auto bytes = read_file_bytes(path);
+  if (!bytes) return bytes.error();
+  return xmt::validate_xml(*bytes, path);
+}
+
+}  // namespace fapc::pipeline

@@ -1,0 +1,152 @@
+// The checks of `fapc verify` (see fapc/pipeline/verify.hpp), including the search for the
+// encoder settings a stream was written with.
+#include "fapc/pipeline/verify.hpp"
+
+#include <algorithm>
+#include <functional>
+#include <iomanip>
+#include <sstream>
+
+#include "fapc/codec/file_io.hpp"
+#include "fapc/pipeline/fba_io.hpp"
+#include "fapc/pipeline/registry.hpp"
+
+namespace fapc::pipeline {
+
+namespace {
+
+std::string summary(std::size_t frames, std::size_t bytes, double bits_per_frame, int quant) {
+  std::ostringstream out;
+  out << frames << " frames, " << bytes << " bytes, " << std::fixed << std::setprecision(1) << bits_per_frame
+      << " bits/frame at fap_quant " << quant;
+  return out.str();
+}
+
+VerifyResult failed(Diagnostic d, Diagnostics warnings = {}) {
+  VerifyResult result;
+  result.warnings = std::move(warnings);
+  result.error = std::move(d);
+  return result;
+}
+
+VerifyResult passed(std::string text, Diagnostics warnings) {
+  VerifyResult result;
+  result.warnings = std::move(warnings);
+  result.summary = std::move(text);
+  return result;
+}
+
+// Plane distances between intra planes that no mask change explains: candidates for the period.
+std::vector<int> intra_periods(const FapSequence& frames, const FbaStreamInfo& info) {
+  std::vector<int> periods{0};
+  std::size_t previous = 0;
+  for (const FbaIntraPlane& intra : info.intra_planes) {
+    const auto it = std::find_if(frames.frames.begin(), frames.frames.end(),
+                                 [&](const FapFrame& f) { return f.number == intra.frame; });
+    const auto k = static_cast<std::size_t>(it - frames.frames.begin());
+    if (k > 0 && k < frames.frames.size() && frames.frames[k].mask == frames.frames[k - 1].mask)
+      periods.push_back(static_cast<int>(k - previous));
+    previous = k;
+  }
+  std::sort(periods.begin() + 1, periods.end());
+  periods.erase(std::unique(periods.begin(), periods.end()), periods.end());
+  if (periods.size() > 2) periods.resize(2);  // the smallest is the period, or nothing is
+  return periods;
+}
+
+// Finds the encoder settings that give back what was read: its fap_quant and plane alignment are
+// in the stream; the range mode, the intra period and the mask layout are tried in turn, since the
+// bits do not say which was used. `same` compares an encoding with the original.
+VerifyResult reencode_matches(const std::string& path, const DecodedFba& decoded, bool aligned,
+                             const std::function<bool(const EncodedFba&)>& same, std::size_t bytes) {
+  const FbaStreamInfo& info = decoded.info;
+  const auto failure = [&](const std::string& why) {
+    return failed(make_error(ErrorKind::verification_failed, Location{path, 0, 0, -1}, "verification failed: " + why),
+                  decoded.warnings);
+  };
+  if (info.body_planes > 0) return failure("the stream carries body data, which fapc does not write");
+  FbaEncodeOptions options;
+  for (const FbaIntraPlane& intra : info.intra_planes) {
+    if (&intra != &info.intra_planes.front() && intra.fap_quant != options.quant)
+      return failure("fap_quant changes within the stream, which fapc does not do");
+    options.quant = intra.fap_quant;
+  }
+  options.align_planes = aligned;
+  for (const FbaMaskMode masks : {FbaMaskMode::fit, FbaMaskMode::keep})
+    for (const FbaRangeMode ranges : {FbaRangeMode::fit, FbaRangeMode::max})
+      for (const int period : intra_periods(decoded.sequence, info))
+        for (const bool listed : {false, true}) {
+          options.masks = masks;
+          options.ranges = ranges;
+          options.intra_period = period;
+          options.list_every_mask = listed;
+          auto again = encode_fba(decoded.sequence, options);
+          if (again && same(*again))
+            return passed(summary(decoded.sequence.frames.size(), bytes, info.bits_per_frame(), options.quant),
+                          decoded.warnings);
+        }
+  return failure("re-encoding the decoded frames does not give the same bytes (a stream fapc did not write?)");
+}
+
+VerifyResult verify_stream(const std::string& path) {
+  auto raw = read_file_bytes(path);
+  if (!raw) return failed(raw.error());
+  const std::vector<std::uint8_t> bytes(raw->begin(), raw->end());
+  FbaDecodeOptions decode_options;
+  decode_options.file = path;
+  auto decoded = decode_fba(bytes, decode_options);
+  if (!decoded) return failed(decoded.error());
+  const FbaStreamInfo& info = decoded->info;
+  const bool aligned = info.planes > 0 && info.plane_start_codes == info.planes;
+  return reencode_matches(path, *decoded, aligned, [&](const EncodedFba& again) { return again.bytes == bytes; },
+                          bytes.size());
+}
+
+// An MP4's FBA track: each sample must be the plane fapc writes for its frame, with its duration
+// and sync flag.
+VerifyResult verify_mp4(const std::string& path) {
+  auto fba = read_mp4_fba(path);
+  if (!fba) return failed(fba.error());
+  const std::vector<xmt::FbaSample>& samples = fba->track.samples;
+  std::size_t bytes = 0;
+  for (const xmt::FbaSample& sample : samples) bytes += sample.bytes.size();
+  const auto same = [&](const EncodedFba& again) {
+    if (again.planes.size() != samples.size()) return false;
+    for (std::size_t k = 0; k < again.planes.size(); ++k) {
+      const CodedPlane& plane = again.planes[k];
+      const xmt::FbaSample& sample = samples[k];
+      const auto first = again.bytes.begin() + static_cast<std::ptrdiff_t>(plane.offset);
+      if (!std::equal(first, first + static_cast<std::ptrdiff_t>(plane.size), sample.bytes.begin(), sample.bytes.end()) ||
+          plane.intra != sample.sync || static_cast<std::uint32_t>(plane.frames) != sample.duration)
+        return false;
+    }
+    return true;
+  };
+  return reencode_matches(path, fba->decoded, true, same, bytes);
+}
+
+VerifyResult verify_input(const std::string& path, const ConvertOptions& options) {
+  auto loaded = load(path, options);
+  if (!loaded) return failed(loaded.error());
+  ConvertOptions checked = options;
+  checked.verify = true;
+  auto encoded = encode_checked(loaded->frames, checked, path);
+  if (!encoded) return failed(encoded.error(), loaded->warnings);
+  const double bits = loaded->frames.frames.empty()
+                          ? 0.0
+                          : 8.0 * static_cast<double>(encoded->bytes.size()) /
+                                static_cast<double>(loaded->frames.frames.back().number - loaded->frames.frames.front().number + 1);
+  return passed(summary(loaded->frames.frames.size(), encoded->bytes.size(), bits, options.quant), loaded->warnings);
+}
+
+}  // namespace
+
+VerifyResult verify(const std::string& path, const ConvertOptions& options) {
+  const InputFormat* format = formats().input_for(path);
+  const std::string kind = format ? format->kind : "";
+  if (kind == "fba") return verify_stream(path);
+  if (kind == "mp4") return verify_mp4(path);
+  return verify_input(path, options);
+}
+
+}  // namespace fapc::pipeline
