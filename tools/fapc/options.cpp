@@ -1,5 +1,7 @@
 #include "fapc/options.hpp"
 
+#include <cstdio>
+
 namespace fapc::cli {
 
 ConvertOptions convert_options(Args& args) {
@@ -30,6 +32,22 @@ ConvertOptions convert_options(Args& args) {
     return true;
   };
   if (!choose("ranges", "fit", "max", options.ranges) || !choose("masks", "fit", "keep", options.masks)) return options;
+  if (const auto size = args.value("size")) {
+    int w = 0, h = 0;
+    char x = 0, rest = 0;
+    if (std::sscanf(size->c_str(), "%d%c%d%c", &w, &x, &h, &rest) != 3 || x != 'x' || w < 16 ||
+        h < 16 || w > 7680 || h > 7680) {
+      args.fail("--size takes WIDTHxHEIGHT, each 16 to 7680 pixels, not '" + *size + "'");
+      return options;
+    }
+    options.picture.width = w;
+    options.picture.height = h;
+  }
+  options.picture.frame_rate = args.integer("frame-rate", 0, 1, 120);
+  if (args.value("frame")) options.picture.frame = args.integer("frame", 0, 0, 1 << 30);
+  options.picture.time = args.decimal("time", 0, 1e7);
+  options.picture.points = args.flag("points");
+  if (args.value("sheet")) options.picture.sheet = args.integer("sheet", 12, 1, 400);
   // Folders whose files includes may read besides the input's own (docs/security.md).
   for (const std::string& folder : args.values("allow-include")) options.includes.allowed_folders.push_back(folder);
   if (const auto flavour = args.value("fap-flavour")) {

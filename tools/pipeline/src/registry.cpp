@@ -46,6 +46,9 @@ Registry built_in() {
   r.add(builtin::curves_json_output());
   r.add(builtin::svg_output());
   r.add(builtin::timeline_output());
+  r.add(builtin::png_output());
+  r.add(builtin::webm_output());
+  r.add(builtin::html_output());
   return r;
 }
 

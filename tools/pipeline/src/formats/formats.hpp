@@ -22,5 +22,8 @@ OutputFormat xmta_commands_output();
 OutputFormat curves_json_output();
 OutputFormat svg_output();
 OutputFormat timeline_output();
+OutputFormat png_output();   // the face (format_face.cpp)
+OutputFormat webm_output();
+OutputFormat html_output();
 
 }  // namespace fapc::pipeline::builtin

@@ -1,6 +1,7 @@
 // The options every conversion takes: what the command line's --fps, --profile, --quant... set.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -11,8 +12,20 @@
 
 namespace fapc::pipeline {
 
+// The picture outputs (.png, .webm, .html): --size, --frame-rate, --frame, --time, --sheet.
+struct PictureSettings {
+  int width = 640;
+  int height = 480;
+  int frame_rate = 0;                 // 0: the input's own frame rate
+  std::optional<std::int64_t> frame;  // .png: this frame of the input's grid
+  std::optional<double> time;         // .png: the frame at this time
+  std::optional<int> sheet;           // .png: a contact sheet of N frames
+  bool points = false;                // .png: the feature points marked and numbered
+};
+
 struct ConvertOptions {
   int fps = 25;
+  PictureSettings picture;                    // the face outputs
   std::optional<std::string> profile;         // a profile file; empty: the default profile
   std::optional<double> duration;             // the end of timelines that give none
   std::map<std::string, std::string> events;  // FML events, NAME -> VALUE

@@ -1,0 +1,49 @@
+// The face as a video: VP9 in WebM, written through libavcodec/libavformat into memory.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "fapc/codec/diagnostic.hpp"
+#include "fapc/face/face_track.hpp"
+
+namespace fapc::face {
+
+// Speech to put beside the picture as Opus. No reader produces audio yet, so nothing passes one:
+// encode_webm refuses it (unsupported) until the Opus path is written; see docs/render.md.
+struct AudioInput {
+  int sample_rate = 48000;
+  int channels = 1;
+  std::vector<float> samples;  // interleaved, -1..1
+};
+
+struct VideoOptions {
+  int width = 640;
+  int height = 480;
+  int frame_rate = 0;  // pictures per second; 0: the sequence's own rate
+};
+
+inline constexpr double kMaxVideoSeconds = 4 * 3600.0;
+
+// The number of pictures a video of `track` has: duration x rate, rounded, at least 1.
+std::int64_t video_frame_count(const FaceTrack& track, int frame_rate);
+
+// `where` names the output in errors. Usage errors for odd sizes (4:2:0 video needs even sides)
+// and bad rates; limit_exceeded past kMaxVideoSeconds; unsupported when libav lacks libvpx-vp9.
+Result<std::string> encode_webm(const FaceTrack& track, const VideoOptions& options,
+                                const AudioInput* audio, const std::string& where);
+
+}  // namespace fapc::face
+
+#include "fapc/face/pictures.hpp"
+
+namespace fapc::face {
+
+// The .webm and .html outputs of a sequence (size and frame rate from `options`; the still-picture
+// choices --frame/--time/--sheet do not apply). The page embeds the video it encodes.
+Result<std::string> face_webm(const FapSequence& sequence, const PictureOptions& options,
+                              const std::string& where);
+Result<std::string> face_html(const FapSequence& sequence, const PictureOptions& options,
+                              const std::string& title, const std::string& where);
+
+}  // namespace fapc::face

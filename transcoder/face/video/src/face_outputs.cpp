@@ -1,0 +1,30 @@
+// The .webm and .html outputs: the face video, and the preview page around it.
+#include "fapc/face/preview_page.hpp"
+#include "fapc/face/webm.hpp"
+
+namespace fapc::face {
+
+namespace {
+
+VideoOptions video_options(const PictureOptions& options) {
+  return VideoOptions{options.width, options.height, options.frame_rate};
+}
+
+}  // namespace
+
+Result<std::string> face_webm(const FapSequence& sequence, const PictureOptions& options,
+                              const std::string& where) {
+  return encode_webm(FaceTrack(sequence), video_options(options), nullptr, where);
+}
+
+Result<std::string> face_html(const FapSequence& sequence, const PictureOptions& options,
+                              const std::string& title, const std::string& where) {
+  const FaceTrack track(sequence);
+  Result<std::string> video = encode_webm(track, video_options(options), nullptr, where);
+  if (!video) return video.error();
+  return preview_page(track, *video,
+                      PreviewOptions{options.width, options.height,
+                                     options.frame_rate > 0 ? options.frame_rate : track.fps(), title});
+}
+
+}  // namespace fapc::face
