@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/transcoder/audio.hpp"
 
 namespace fapc {
 
@@ -76,6 +77,8 @@ struct Timeline {
   std::optional<double> explicit_end;
   // Where explicit_end comes from (the element that ends last), for errors about the length.
   Location end_source = {};
+  // Speech and recordings placed on the same clock as the clips (AudioClip::begin).
+  std::vector<AudioClip> audio = {};
 
   double end() const;
 };

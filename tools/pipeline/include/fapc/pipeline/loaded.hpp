@@ -8,6 +8,7 @@
 
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/fap_sequence.hpp"
+#include "fapc/transcoder/audio.hpp"
 #include "fapc/transcoder/curves.hpp"
 #include "fapc/transcoder/timeline.hpp"
 
@@ -24,6 +25,9 @@ struct Loaded {
   FapSequence frames;
   std::optional<Curves> curves;
   std::optional<Timeline> timeline;
+  // The sound that goes with the frames (the timeline's audio mixed, or a container's audio
+  // track); absent when the input has none. Writers that can carry audio carry it.
+  std::optional<AudioTrack> audio;
   Diagnostics warnings;
   // With ConvertOptions::facts: what the reader saw of the format (variant, stream statistics,
   // tracks...), by name; `fapc info` prints it. Found during the one read, never by a second one.

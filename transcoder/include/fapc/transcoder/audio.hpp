@@ -1,0 +1,34 @@
+// Sound that travels with the timeline: speech synthesised from text, or a recording (WAV) that
+// a script names. Plain values, no I/O; docs/timeline.md places it on the clock.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "fapc/codec/diagnostic.hpp"
+
+namespace fapc {
+
+// One piece of sound placed on the timeline: mono 16-bit PCM at its own rate, starting at `begin`
+// (absolute seconds, like Clip::begin). Front ends add one per spoken text or audio element.
+struct AudioClip {
+  double begin = 0;
+  int sample_rate = 0;  // Hz
+  std::vector<std::int16_t> samples;
+  Location source;      // the element it came from, for warnings and `fapc info`
+  friend bool operator==(const AudioClip&, const AudioClip&) = default;
+};
+
+// What writers take: every clip of a timeline mixed into one mono track at one rate, starting at
+// `start` seconds on the face's clock (the face track starts at 0).
+struct AudioTrack {
+  int sample_rate = 0;
+  double start = 0;
+  std::vector<std::int16_t> samples;
+
+  double duration() const { return sample_rate > 0 ? double(samples.size()) / sample_rate : 0; }
+  friend bool operator==(const AudioTrack&, const AudioTrack&) = default;
+};
+
+}  // namespace fapc
