@@ -3,6 +3,7 @@
 #include "fapc/pipeline/verify.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <iomanip>
 #include <sstream>
@@ -105,9 +106,46 @@ VerifyResult verify_stream(const std::string& path, const Limits& limits) {
 
 // An MP4's FBA track: each sample must be the plane fapc writes for its frame, with its duration
 // and sync flag.
+// An .mp4's voice: its presentation (the delay, then the sound) must span the face track's: it
+// starts at 0 like every edit list, its sound starts before the face ends, and it ends within one
+// frame of the face's end (docs/mp4-and-xmta.md section 1.2). Checked from the container alone.
+std::optional<Diagnostic> audio_mismatch(const std::string& path, const xmt::Mp4File& mp4, const xmt::FbaTrackInput& fba) {
+  const xmt::Mp4Track* voice = xmt::find_audio_track(mp4);
+  if (!voice) return std::nullopt;
+  auto audio = xmt::read_audio_track(mp4, *voice);
+  if (!audio) return audio.error();
+  std::uint64_t ticks = 0;
+  for (const xmt::FbaSample& s : fba.samples) ticks += s.duration;
+  const double frame = fba.samples.empty() ? 0.0 : static_cast<double>(fba.samples.front().duration) / fba.timescale;
+  const double face_end = static_cast<double>(ticks) / fba.timescale;
+  const double start = audio->delay_ms / 1000.0;
+  const double end = start + static_cast<double>(audio->length) / audio->sample_rate;
+  const auto seconds = [](double v) {
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(3) << v << " s";
+    return s.str();
+  };
+  const double tolerance = frame + 1e-9;
+  std::string why;
+  // A voice may start late (its empty edit is part of the track's presentation), but not after the
+  // face is over.
+  if (start >= face_end)
+    why = "the audio track starts at " + seconds(start) + ", after the face track ends at " + seconds(face_end);
+  else if (std::abs(end - face_end) > tolerance)
+    why = "the audio track ends at " + seconds(end) + ", the face track at " + seconds(face_end);
+  if (why.empty()) return std::nullopt;
+  return make_error(ErrorKind::verification_failed, Location{path, 0, 0, -1},
+                    "verification failed: " + why + " (more than one frame, " + seconds(frame) + ", apart)");
+}
+
 VerifyResult verify_mp4(const std::string& path, const Limits& limits) {
-  auto fba = read_mp4_fba(path, limits);
+  auto raw = read_file_bytes(path, limits);
+  if (!raw) return failed(raw.error());
+  auto mp4 = xmt::read_mp4(xmt::Bytes(raw->begin(), raw->end()), path);
+  if (!mp4) return failed(mp4.error());
+  auto fba = decode_mp4_fba(*mp4, path, limits);
   if (!fba) return failed(fba.error());
+  if (auto mismatch = audio_mismatch(path, *mp4, fba->track)) return failed(std::move(*mismatch), fba->decoded.warnings);
   const std::vector<xmt::FbaSample>& samples = fba->track.samples;
   std::size_t bytes = 0;
   for (const xmt::FbaSample& sample : samples) bytes += sample.bytes.size();

@@ -139,7 +139,7 @@ std::string preview_page(const FaceTrack& track, std::string_view webm, const Pr
           "#scrub{width:" + std::to_string(kPlotWidth - 2 * kPlotMargin) + "px;margin-left:" +
           std::to_string(kPlotMargin - 8) + "px}\ntd{padding:0 6px}\n</style></head>\n<body>\n";
   page += "<video id=\"face\" width=\"" + std::to_string(o.width) + "\" height=\"" + std::to_string(o.height) +
-          "\" muted playsinline preload=\"auto\" src=\"data:video/webm;base64,";
+          (o.sound ? "\"" : "\" muted") + " playsinline preload=\"auto\" src=\"data:video/webm;base64,";
   page += base64(webm);
   page += "\"></video>\n<div id=\"side\"><b>" + title + "</b><table id=\"values\"></table></div>\n";
   page += "<div id=\"panel\"><button id=\"play\">play</button> <span id=\"clock\"></span><br>\n";

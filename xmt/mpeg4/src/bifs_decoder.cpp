@@ -112,6 +112,10 @@ class SceneDecoder {
       case FieldKind::sf_float:
         out = std::bit_cast<float>(in_.get(32));
         return ok_status();
+      case FieldKind::mf_url:
+        return urls(out);
+      case FieldKind::uncoded:
+        return fail("field " + std::string(spec.name) + " is not decoded by fapc");
       case FieldKind::sf_node:
       case FieldKind::mf_node:
         break;
@@ -138,6 +142,30 @@ class SceneDecoder {
     }
     if (in_.failed()) return cut_short();
     out = std::move(nodes);
+    return ok_status();
+  }
+
+  // An MFURL whose SFURLs name object descriptors; a URL string is named, not decoded.
+  Status urls(FieldValue& out) {
+    std::vector<ObjectUrl> list;
+    auto read_url = [&]() -> Status {
+      if (!in_.get_bit()) return fail("URL strings in an MFURL are not decoded by fapc");
+      list.push_back({static_cast<std::uint16_t>(in_.get(10))});
+      return ok_status();
+    };
+    if (in_.get_bit(), in_.get_bit()) {  // reserved bit, then list (1) or vector (0)
+      while (!in_.get_bit()) {
+        if (in_.failed()) return cut_short();
+        if (Status s = read_url(); !s) return s;
+      }
+    } else {
+      const int length_bits = static_cast<int>(in_.get(5));
+      const std::uint32_t length = in_.get(length_bits);
+      for (std::uint32_t i = 0; i < length && !in_.failed(); ++i)
+        if (Status s = read_url(); !s) return s;
+    }
+    if (in_.failed()) return cut_short();
+    out = std::move(list);
     return ok_status();
   }
 

@@ -96,6 +96,11 @@ class SceneEncoder {
         if (!std::holds_alternative<float>(f.value)) return fail(where + " must be a number");
         out_.put(std::bit_cast<std::uint32_t>(std::get<float>(f.value)), 32);
         return ok_status();
+      case FieldKind::mf_url:
+        if (!std::holds_alternative<std::vector<ObjectUrl>>(f.value)) return fail(where + " must hold URLs");
+        return urls(std::get<std::vector<ObjectUrl>>(f.value), where);
+      case FieldKind::uncoded:
+        return fail(where + " is not coded by fapc");
       case FieldKind::sf_node:
       case FieldKind::mf_node:
         break;
@@ -119,6 +124,28 @@ class SceneEncoder {
     for (const SceneNode& child : nodes) {
       if (use_list) out_.put_bit(false);
       if (Status s = node(child, spec.ndt, where); !s) return s;
+    }
+    if (use_list) out_.put_bit(true);
+    return ok_status();
+  }
+
+  // An MFURL (the MFField syntax, list or vector by the MFNode rule) of SFURLs that name object
+  // descriptors: isOD 1, then the 10-bit OD ID.
+  Status urls(const std::vector<ObjectUrl>& list, const std::string& where) {
+    out_.put_bit(false);  // reserved
+    const auto n = static_cast<std::uint32_t>(list.size());
+    const int length_bits = bifs::bit_size(n);
+    const bool use_list = n == 0 || static_cast<std::uint32_t>(length_bits) + 5 > n + 1;
+    out_.put_bit(use_list);
+    if (!use_list) {
+      out_.put(static_cast<std::uint32_t>(length_bits), 5);
+      out_.put(n, length_bits);
+    }
+    for (const ObjectUrl& u : list) {
+      if (u.od_id == 0 || u.od_id >= 1024) return fail(where + ": OD ID " + std::to_string(u.od_id) + " is not 1..1023");
+      if (use_list) out_.put_bit(false);
+      out_.put_bit(true);  // isOD
+      out_.put(u.od_id, 10);
     }
     if (use_list) out_.put_bit(true);
     return ok_status();

@@ -43,6 +43,22 @@ const std::vector<NodeSpec>& node_table() {
        {{"appearance", FieldKind::sf_node, Ndt::appearance},
         {"geometry", FieldKind::sf_node, Ndt::geometry}}},
       {"Sphere", {{"radius", FieldKind::sf_float, Ndt::top, 0, 1.0F}}},
+      // The voice. Fields the project never sets are listed for their place in DEF order only
+      // (their kinds beyond these are not coded: the encoder refuses them, the decoder names them).
+      {"Sound2D",
+       {{"intensity", FieldKind::sf_float, Ndt::top, 0, 1.0F},
+        {"location", FieldKind::uncoded},
+        {"source", FieldKind::sf_node, Ndt::audio},
+        {"spatialize", FieldKind::sf_bool}}},
+      {"AudioSource",
+       {{"children", FieldKind::mf_node, Ndt::audio},
+        {"url", FieldKind::mf_url},
+        {"pitch", FieldKind::sf_float, Ndt::top, 0, 1.0F},
+        {"speed", FieldKind::sf_float, Ndt::top, 0, 1.0F},
+        {"startTime", FieldKind::uncoded},
+        {"stopTime", FieldKind::uncoded},
+        {"numChan", FieldKind::sf_int32, Ndt::top, 1},
+        {"phaseGroup", FieldKind::uncoded}}},
   };
   return table;
 }
@@ -51,7 +67,7 @@ const std::vector<NodeSpec>& node_table() {
 const std::vector<NdtSpec>& ndt_table() {
   static const std::vector<NdtSpec> table = {
       {Ndt::top, "SFTopNode", 3, {{"Group", 1}}},
-      {Ndt::node3d, "SF3DNode", 6, {{"Face", 14}, {"Group", 17}, {"Shape", 38}}},
+      {Ndt::node3d, "SF3DNode", 6, {{"Face", 14}, {"Group", 17}, {"Shape", 38}, {"Sound2D", 40}}},
       {Ndt::fap, "SFFAPNode", 1, {{"FAP", 1}}},
       {Ndt::viseme, "SFVisemeNode", 1, {{"Viseme", 1}}},
       {Ndt::expression, "SFExpressionNode", 1, {{"Expression", 1}}},
@@ -59,7 +75,7 @@ const std::vector<NdtSpec>& ndt_table() {
       {Ndt::appearance, "SFAppearanceNode", 1, {}},
       {Ndt::fdp, "SFFDPNode", 1, {}},
       {Ndt::fit, "SFFITNode", 1, {}},
-      {Ndt::audio, "SFAudioNode", 3, {}},
+      {Ndt::audio, "SFAudioNode", 3, {{"AudioSource", 6}}},
   };
   return table;
 }

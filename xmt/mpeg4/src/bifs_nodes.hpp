@@ -12,7 +12,7 @@
 namespace fapc::xmt::bifs {
 
 enum class Ndt { top, node3d, fap, viseme, expression, geometry, appearance, fdp, fit, audio };
-enum class FieldKind { sf_int32, sf_bool, sf_float, sf_node, mf_node };
+enum class FieldKind { sf_int32, sf_bool, sf_float, sf_node, mf_node, mf_url, uncoded };
 
 // SFInt32 fields of the FAP node default to "+I", stored as 0x80000000: not initialised.
 inline constexpr std::int32_t kUninitialised = INT32_MIN;

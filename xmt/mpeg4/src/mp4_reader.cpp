@@ -1,5 +1,6 @@
 // The MP4 reader: the box tree down to the sample tables, then each track's samples resolved to
 // file offsets, decode times and sync flags, every one checked to lie inside the file.
+#include <optional>
 #include "fapc/mpeg4/mp4_reader.hpp"
 
 #include <algorithm>
@@ -92,6 +93,7 @@ class Mp4Parser {
     Mp4Track track;
     track.box_offset = box.offset;
     SampleTables tables;
+    std::optional<std::uint64_t> edts_at;
     auto boxes = read_boxes(box.body, file_);
     if (!boxes) return boxes.error();
     bool have_tkhd = false, have_mdia = false;
@@ -111,7 +113,8 @@ class Mp4Parser {
           if (ref.type == "mpod")
             while (ref.body.remaining() >= 4) track.mpod.push_back(ref.body.u32());
       } else if (child.type == "edts") {
-        warn(child.offset, "edit list ('edts') ignored: times are read as the sample table gives them");
+        edts_at = child.offset;
+        if (Status s = edts(child, track); !s) return s;
       } else if (child.type == "mdia") {
         have_mdia = true;
         if (Status s = mdia(child, track, tables); !s) return s;
@@ -120,7 +123,46 @@ class Mp4Parser {
     if (!have_tkhd) return error(box.offset, "'trak' box without 'tkhd'");
     if (!have_mdia) return error(box.offset, "'trak' box without 'mdia'");
     if (Status s = resolve_samples(track, tables); !s) return s;
+    // Only the voice's edit list is applied (read_audio_track); other tracks' times are the
+    // sample table's.
+    if (edts_at && track.handler != "soun")
+      warn(*edts_at, "edit list ('edts') ignored: times are read as the sample table gives them");
     out_.tracks.push_back(std::move(track));
+    return ok_status();
+  }
+
+  // The edit list's entries; checked against its box before anything is allocated.
+  Status edts(Box& box, Mp4Track& track) {
+    auto boxes = read_boxes(box.body, file_);
+    if (!boxes) return boxes.error();
+    for (Box& child : *boxes) {
+      if (child.type != "elst") continue;
+      ByteReader& in = child.body;
+      const std::uint32_t version = in.u8();
+      in.u24();
+      const std::uint32_t count = in.u32();
+      if (in.failed()) return error(child.offset, "'elst' box cut short");
+      if (version > 1) return error(child.offset, "'elst' version " + std::to_string(version) + " is unknown");
+      const std::size_t entry = version == 1 ? 20 : 12;
+      if (count > in.remaining() / entry)
+        return error(child.offset, "'elst' claims " + std::to_string(count) + " entries; its box holds " +
+                                       std::to_string(in.remaining() / entry));
+      track.edits_offset = child.offset;
+      for (std::uint32_t i = 0; i < count; ++i) {
+        Mp4Edit e;
+        if (version == 1) {
+          e.duration = in.u64();
+          e.media_time = static_cast<std::int64_t>(in.u64());
+        } else {
+          e.duration = in.u32();
+          e.media_time = static_cast<std::int32_t>(in.u32());
+        }
+        const std::uint32_t rate = in.u32();
+        if (rate != 0x00010000 && e.media_time != -1)
+          return error(child.offset, "'elst' entry " + std::to_string(i + 1) + " plays at a rate other than 1");
+        track.edits.push_back(e);
+      }
+    }
     return ok_status();
   }
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "box_writer.hpp"
@@ -15,9 +16,19 @@ namespace fapc::xmt {
 
 namespace {
 
+std::uint64_t to_movie_time(std::uint64_t ticks, std::uint32_t timescale) {
+  return (ticks * kSystemsTimescale + timescale / 2) / timescale;
+}
+
+// One edit of an edit list (14496-12 §8.6.6), times in the movie's timescale and the media's.
+struct Edit {
+  std::uint32_t duration = 0;  // movie timescale
+  std::int32_t media_time = -1;  // -1: an empty edit (nothing plays)
+};
+
 struct TrackPlan {
   std::uint32_t id = 0;
-  std::string_view handler;       // 'sdsm', 'odsm', 'vide'
+  std::string_view handler;       // 'sdsm', 'odsm', 'vide', 'soun'
   std::string_view handler_name;  // shown by tools
   std::uint32_t timescale = kSystemsTimescale;
   EsDescriptor es;
@@ -26,7 +37,17 @@ struct TrackPlan {
   std::vector<std::uint32_t> sync;  // 1-based numbers of sync samples
   bool all_sync = true;             // then no stss box: every sample is a sync sample
   std::vector<std::uint32_t> mpod;  // track references of an OD track
+  std::vector<Edit> edits;          // an audio track's delay and priming; none for the others
+  int channels = 1;                 // audio
   bool visual() const { return handler == "vide"; }
+  bool audio() const { return handler == "soun"; }
+  // The track's length on the movie's clock: its edits when it has them.
+  std::uint64_t movie_duration() const {
+    if (edits.empty()) return to_movie_time(duration(), timescale);
+    std::uint64_t total = 0;
+    for (const Edit& e : edits) total += e.duration;
+    return total;
+  }
   std::uint64_t duration() const {
     std::uint64_t total = 0;
     for (std::uint32_t d : durations) total += d;
@@ -59,19 +80,24 @@ void set_bitrates(TrackPlan& t) {
   t.es.config.max_bitrate = std::max(clamp32(best * 8), t.es.config.avg_bitrate);
 }
 
-std::uint64_t to_movie_time(std::uint64_t ticks, std::uint32_t timescale) {
-  return (ticks * kSystemsTimescale + timescale / 2) / timescale;
-}
-
 void write_matrix(ByteWriter& out) {
   for (std::uint32_t v : {0x00010000U, 0U, 0U, 0U, 0x00010000U, 0U, 0U, 0U, 0x40000000U}) out.u32(v);
 }
 
 void write_sample_entry(BoxWriter& box, const TrackPlan& t) {
   ByteWriter& out = box.out();
-  box.open(t.visual() ? "mp4v" : "mp4s");
+  box.open(t.visual() ? "mp4v" : t.audio() ? "mp4a" : "mp4s");
   out.zeros(6);
   out.u16(1);  // data_reference_index
+  if (t.audio()) {  // AudioSampleEntry (14496-14 §5.6): the decoder configuration is in esds
+    out.zeros(8);  // reserved
+    out.u16(static_cast<std::uint32_t>(t.channels));
+    out.u16(16);  // samplesize
+    out.u16(0);   // pre_defined
+    out.u16(0);   // reserved
+    // The rate as 16.16 fixed point; a rate past 16 bits is given by the media timescale alone.
+    out.u32(t.timescale < 65536 ? t.timescale << 16 : 0);
+  }
   if (t.visual()) {
     out.zeros(16);      // pre_defined, reserved, pre_defined[3]
     out.u16(0);         // width: an FBA stream has no picture size
@@ -143,16 +169,29 @@ void write_track(BoxWriter& box, const TrackPlan& t, std::uint64_t chunk_offset)
   out.u32(0);                          // modification_time
   out.u32(t.id);
   out.u32(0);
-  out.u32(static_cast<std::uint32_t>(to_movie_time(t.duration(), t.timescale)));
+  out.u32(static_cast<std::uint32_t>(t.movie_duration()));
   out.zeros(8);
   out.u16(0);  // layer
   out.u16(0);  // alternate_group
-  out.u16(0);  // volume
+  out.u16(t.audio() ? 0x0100 : 0);  // volume: 1.0 for sound
   out.u16(0);
   write_matrix(out);
   out.u32(0);  // width
   out.u32(0);  // height
   box.close();
+  if (!t.edits.empty()) {
+    box.open("edts");
+    box.open_full("elst", 0, 0);
+    out.u32(static_cast<std::uint32_t>(t.edits.size()));
+    for (const Edit& e : t.edits) {
+      out.u32(e.duration);
+      out.u32(static_cast<std::uint32_t>(e.media_time));
+      out.u16(1);  // media_rate_integer
+      out.u16(0);  // media_rate_fraction
+    }
+    box.close();
+    box.close();
+  }
   if (!t.mpod.empty()) {
     box.open("tref");
     box.open("mpod");
@@ -180,6 +219,10 @@ void write_track(BoxWriter& box, const TrackPlan& t, std::uint64_t chunk_offset)
   if (t.visual()) {
     box.open_full("vmhd", 0, 1);
     out.zeros(8);  // graphicsmode, opcolor
+  } else if (t.audio()) {
+    box.open_full("smhd", 0, 0);
+    out.u16(0);  // balance: centre
+    out.u16(0);
   } else {
     box.open_full("nmhd", 0, 0);
   }
@@ -202,8 +245,7 @@ Bytes write_moov(const std::vector<TrackPlan>& tracks, const std::vector<std::ui
   BoxWriter box;
   ByteWriter& out = box.out();
   std::uint64_t movie_duration = 0;
-  for (const TrackPlan& t : tracks)
-    movie_duration = std::max(movie_duration, to_movie_time(t.duration(), t.timescale));
+  for (const TrackPlan& t : tracks) movie_duration = std::max(movie_duration, t.movie_duration());
   box.open("moov");
   box.open_full("mvhd", 0, 0);
   out.u32(0);
@@ -215,7 +257,7 @@ Bytes write_moov(const std::vector<TrackPlan>& tracks, const std::vector<std::ui
   out.zeros(10);
   write_matrix(out);
   out.zeros(24);
-  out.u32(kFbaTrackId + 1);  // next_track_ID
+  out.u32(tracks.back().id + 1);  // next_track_ID
   box.close();
   box.open_full("iods", 0, 0);
   out.bytes(encode_initial_object_descriptor({1, profiles, {kSceneTrackId, kOdTrackId}}));
@@ -248,10 +290,33 @@ TrackPlan system_track(std::uint32_t id, std::string_view handler, std::string_v
   return t;
 }
 
+// The voice's track: one access unit per sample, every one lasting samples_per_unit; an edit list
+// that delays it to its start on the face's clock and skips the encoder's priming.
+TrackPlan audio_track_plan(const AudioTrackInput& audio) {
+  TrackPlan t;
+  t.id = kAudioTrackId;
+  t.handler = "soun";
+  t.handler_name = "fapc voice";
+  t.timescale = audio.sample_rate;
+  t.channels = audio.channels;
+  t.es.config.object_type = kAudio14496_3Object;
+  t.es.config.stream_type = kAudioStream;
+  t.es.config.specific_info = audio.decoder_specific_info;
+  t.samples = audio.samples;
+  t.durations.assign(audio.samples.size(), audio.samples_per_unit);
+  if (audio.delay_ms > 0) t.edits.push_back({audio.delay_ms, -1});
+  t.edits.push_back({static_cast<std::uint32_t>(to_movie_time(audio.length, audio.sample_rate)),
+                     static_cast<std::int32_t>(audio.media_start)});
+  set_bitrates(t);
+  return t;
+}
+
 }  // namespace
 
-Result<Bytes> write_mp4(const FbaTrackInput& fba) {
+Result<Bytes> write_mp4(const FbaTrackInput& fba, const AudioTrackInput* audio) {
   if (Status s = check_fba_track(fba); !s) return s.error();
+  if (audio)
+    if (Status s = check_audio_track(*audio); !s) return s.error();
   const std::uint8_t visual_level = *fba_profile_level(fba.decoder_specific_info);
 
   TrackPlan fba_track;
@@ -271,10 +336,12 @@ Result<Bytes> write_mp4(const FbaTrackInput& fba) {
   set_bitrates(fba_track);
 
   // The scene and OD access units last the whole presentation.
-  const auto span = static_cast<std::uint32_t>(
-      std::max<std::uint64_t>(1, to_movie_time(fba_track.duration(), fba.timescale)));
+  std::optional<TrackPlan> voice;
+  if (audio) voice = audio_track_plan(*audio);
+  const auto span = static_cast<std::uint32_t>(std::max<std::uint64_t>(
+      {1, to_movie_time(fba_track.duration(), fba.timescale), voice ? voice->movie_duration() : 0}));
   const BifsConfig config;
-  auto scene_au = encode_scene_replace(face_scene(), config);
+  auto scene_au = encode_scene_replace(audio ? with_sound(face_scene(), kAudioObjectDescriptorId) : face_scene(), config);
   if (!scene_au) return scene_au.error();
   // One zero byte after the command frame. GPAC's BIFS decoder stops reading a node's field list
   // or an MFNode list early when the bits left lie in the last byte of the access unit (it counts
@@ -284,9 +351,12 @@ Result<Bytes> write_mp4(const FbaTrackInput& fba) {
   TrackPlan scene = system_track(kSceneTrackId, "sdsm", "fapc scene", kSceneDescriptionStream,
                                  std::move(*scene_au), span);
   scene.es.config.specific_info = encode_bifs_config(config);
+  std::vector<ObjectDescriptor> ods = {{kFbaObjectDescriptorId, {1}}};
+  if (audio) ods.push_back({kAudioObjectDescriptorId, {2}});
   TrackPlan od = system_track(kOdTrackId, "odsm", "fapc object descriptors", kObjectDescriptorStream,
-                              encode_object_descriptor_update({{kFbaObjectDescriptorId, {1}}}), span);
+                              encode_object_descriptor_update(ods), span);
   od.mpod = {kFbaTrackId};  // ES_ID_Ref 1 is this first entry
+  if (audio) od.mpod.push_back(kAudioTrackId);  // and 2 the second
   set_bitrates(scene);
   set_bitrates(od);
 
@@ -294,10 +364,12 @@ Result<Bytes> write_mp4(const FbaTrackInput& fba) {
   tracks.push_back(std::move(scene));
   tracks.push_back(std::move(od));
   tracks.push_back(std::move(fba_track));
+  if (voice) tracks.push_back(std::move(*voice));
 
   ProfileLevels profiles;
   profiles.od = 0x01;  // GPAC's value when an OD stream exists (docs/mp4-and-xmta.md section 6.4)
   profiles.visual = visual_level;
+  if (audio) profiles.audio = aac_profile_level(audio->sample_rate);
 
   // moov's size does not depend on the offsets it holds, so lay out once with zeros.
   std::vector<std::uint64_t> offsets(tracks.size(), 0);

@@ -54,6 +54,10 @@ std::string scene_text(const SceneNode& node) {
       out += std::to_string(*i);
     } else if (const auto* b = std::get_if<bool>(&f.value)) {
       out += *b ? "TRUE" : "FALSE";
+    } else if (const auto* urls = std::get_if<std::vector<ObjectUrl>>(&f.value)) {
+      out += '[';
+      for (const ObjectUrl& u : *urls) out += " \"od:" + std::to_string(u.od_id) + '"';
+      out += " ]";
     } else {
       out += std::to_string(std::get<float>(f.value));
     }
@@ -106,6 +110,15 @@ SceneNode face_scene(const FapFrame* initial) {
   SceneNode face = node("Face", std::string(kFaceDefName),
                         {children("fap", {std::move(fap)}), children("renderedFace", {std::move(shape)})});
   return node("Group", {}, {children("children", {std::move(face)})});
+}
+
+SceneNode with_sound(SceneNode scene, std::uint16_t audio_od_id) {
+  SceneNode source = node("AudioSource", {}, {{"url", std::vector<ObjectUrl>{{audio_od_id}}}});
+  SceneNode sound = node("Sound2D", {}, {children("source", {std::move(source)})});
+  for (SceneField& f : scene.fields)
+    if (auto* nodes = std::get_if<std::vector<SceneNode>>(&f.value); nodes && f.name == "children")
+      nodes->push_back(std::move(sound));
+  return scene;
 }
 
 }  // namespace fapc::xmt

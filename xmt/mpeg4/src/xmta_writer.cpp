@@ -21,6 +21,11 @@ std::string number(long long v) { return std::to_string(v); }
 std::string value_text(const FieldValue& v) {
   if (const auto* i = std::get_if<std::int32_t>(&v)) return number(*i);
   if (const auto* b = std::get_if<bool>(&v)) return *b ? "true" : "false";
+  if (const auto* urls = std::get_if<std::vector<ObjectUrl>>(&v)) {  // an MFURL: quoted strings
+    std::string out;
+    for (const ObjectUrl& u : *urls) out += (out.empty() ? "\"od:" : " \"od:") + number(u.od_id) + '"';
+    return out;
+  }
   char buffer[32];
   const auto end = std::to_chars(buffer, buffer + sizeof buffer, std::get<float>(v)).ptr;
   return std::string(buffer, end);
@@ -118,17 +123,18 @@ void write_scene_replace(XmlOut& xml, const SceneNode& scene) {
   xml.close();
 }
 
-void write_fba_object_descriptor(XmlOut& xml, const Bytes& dsi, const std::string& stream_source) {
-  const std::string id = number(kFbaObjectDescriptorId);
-  xml.open("ObjectDescriptorUpdate");
-  xml.open("OD");
+// One ObjectDescriptor holding one ES_Descriptor, inside an open OD command.
+void write_object_descriptor(XmlOut& xml, std::uint16_t od_id, const std::string& es_name, std::uint32_t es_id,
+                             std::uint8_t stream_type, std::uint8_t object_type, const Bytes& dsi,
+                             const std::string& stream_source) {
+  const std::string id = number(od_id);
   xml.open("ObjectDescriptor", {{"objectDescriptorID", "od" + id}, {"binaryID", id}});
   xml.open("Descr");
   xml.open("esDescr");
-  xml.open("ES_Descriptor", {{"ES_ID", "fba"}, {"binaryID", number(kFbaTrackId)}});
+  xml.open("ES_Descriptor", {{"ES_ID", es_name}, {"binaryID", number(es_id)}});
   xml.open("decConfigDescr");
-  xml.open("DecoderConfigDescriptor", {{"streamType", number(kVisualStream)},
-                                       {"objectTypeIndication", number(kVisual14496_2Object)}});
+  xml.open("DecoderConfigDescriptor", {{"streamType", number(stream_type)},
+                                       {"objectTypeIndication", number(object_type)}});
   xml.open("decSpecificInfo");
   xml.empty("DecoderSpecificInfo", {{"src", "data:application/octet-string," + percent_bytes(dsi)}});
   xml.close();
@@ -137,7 +143,20 @@ void write_fba_object_descriptor(XmlOut& xml, const Bytes& dsi, const std::strin
   write_sl_config(xml);
   if (!stream_source.empty()) xml.empty("StreamSource", {{"url", stream_source}});
   xml.close();
-  for (int i = 0; i < 5; ++i) xml.close();
+  for (int i = 0; i < 3; ++i) xml.close();
+}
+
+void write_object_descriptors(XmlOut& xml, const Bytes& dsi, const std::string& stream_source,
+                              const XmtaAudio* audio) {
+  xml.open("ObjectDescriptorUpdate");
+  xml.open("OD");
+  write_object_descriptor(xml, kFbaObjectDescriptorId, "fba", kFbaTrackId, kVisualStream, kVisual14496_2Object,
+                          dsi, stream_source);
+  if (audio)
+    write_object_descriptor(xml, kAudioObjectDescriptorId, "voice", kAudioTrackId, kAudioStream,
+                            kAudio14496_3Object, audio->decoder_specific_info, audio->stream_source);
+  xml.close();
+  xml.close();
 }
 
 // Seconds as plain decimals (GPAC reads `begin` with atof): up to microseconds, no trailing zeros.
@@ -168,15 +187,16 @@ NodeValues frame_values(const FapFrame& frame) {
 
 }  // namespace
 
-std::string write_xmta_fba_scene(const Bytes& dsi, const std::string& stream_source) {
+std::string write_xmta_fba_scene(const Bytes& dsi, const std::string& stream_source, const XmtaAudio* audio) {
   ProfileLevels profiles;
   profiles.od = 0x01;
   profiles.visual = fba_profile_level(dsi).ok() ? *fba_profile_level(dsi) : kSimpleFbaL1;
+  if (audio) profiles.audio = aac_profile_level(audio->sample_rate);
   XmlOut xml;
   write_head(xml, profiles, true);
   xml.open("par", {{"begin", "0"}, {"isRAP", "yes"}});
-  write_fba_object_descriptor(xml, dsi, stream_source);
-  write_scene_replace(xml, face_scene());
+  write_object_descriptors(xml, dsi, stream_source, audio);
+  write_scene_replace(xml, audio ? with_sound(face_scene(), kAudioObjectDescriptorId) : face_scene());
   xml.close();
   xml.close();
   xml.close();

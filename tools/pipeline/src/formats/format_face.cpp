@@ -1,6 +1,7 @@
 // The face outputs: .png (a frame or a contact sheet), .webm (VP9 video) and .html (the preview
 // page), drawn by fapc::face from the frames of any input (docs/render.md).
 #include <filesystem>
+#include <optional>
 
 #include "fapc/face/pictures.hpp"
 #include "fapc/face/webm.hpp"
@@ -19,12 +20,26 @@ Result<std::string> write_png(const Loaded& loaded, const std::string& path, con
   return face::face_png(loaded.frames, picture_options(options), path);
 }
 
+// The voice beside the face, as the video writer takes it; none when the input has none.
+std::optional<face::AudioInput> voice_of(const Loaded& loaded) {
+  if (!loaded.audio || loaded.audio->samples.empty()) return std::nullopt;
+  face::AudioInput voice;
+  voice.sample_rate = loaded.audio->sample_rate;
+  voice.channels = 1;
+  voice.start = loaded.audio->start;
+  voice.samples.reserve(loaded.audio->samples.size());
+  for (const std::int16_t s : loaded.audio->samples) voice.samples.push_back(static_cast<float>(s) / 32768.0F);
+  return voice;
+}
+
 Result<std::string> write_webm(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
-  return face::face_webm(loaded.frames, picture_options(options), path);
+  const auto voice = voice_of(loaded);
+  return face::face_webm(loaded.frames, picture_options(options), voice ? &*voice : nullptr, path);
 }
 
 Result<std::string> write_html(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
-  return face::face_html(loaded.frames, picture_options(options),
+  const auto voice = voice_of(loaded);
+  return face::face_html(loaded.frames, picture_options(options), voice ? &*voice : nullptr,
                          std::filesystem::path(path).stem().string(), path);
 }
 

@@ -8,6 +8,7 @@
 #include "fapc/pipeline/fba_io.hpp"
 #include "fapc/mpeg4/mp4_reader.hpp"
 #include "fapc/mpeg4/mp4_writer.hpp"
+#include "../audio_io.hpp"
 #include "formats.hpp"
 
 namespace fapc::pipeline::builtin {
@@ -28,6 +29,7 @@ std::string track_line(const xmt::Mp4Track& t, const xmt::Mp4Track* fba) {
     const char* role = &t == fba                                   ? "FBA stream"
                        : c.stream_type == xmt::kSceneDescriptionStream ? "scene description"
                        : c.stream_type == xmt::kObjectDescriptorStream ? "object descriptors"
+                       : c.stream_type == xmt::kAudioStream             ? "audio"
                                                                         : "stream";
     s << ", " << role << " (streamType " << int{c.stream_type} << ", objectTypeIndication "
       << hex_byte(c.object_type) << ")";
@@ -86,6 +88,18 @@ nlohmann::ordered_json facts_of(const xmt::Mp4File* mp4) {
     out["fba bytes"] = bytes;
     out["fba duration"] = static_cast<double>(ticks) / stream->timescale;
   }
+  if (const xmt::Mp4Track* voice = xmt::find_audio_track(*mp4)) {
+    if (auto audio = xmt::read_audio_track(*mp4, *voice)) {
+      const int type = xmt::audio_object_type(audio->decoder_specific_info);
+      out["audio_codec"] = type == 2 ? "AAC-LC (mp4a.40.2)" : "MPEG-4 audio object type " + std::to_string(type);
+      out["audio_sample_rate"] = audio->sample_rate;
+      out["audio_channels"] = audio->channels;
+      out["audio_duration"] = static_cast<double>(audio->length) / audio->sample_rate;
+      out["audio_start"] = audio->delay_ms / 1000.0;
+    } else {
+      out["audio_codec"] = "not shown: " + format_diagnostic(audio.error());
+    }
+  }
   return out;
 }
 
@@ -100,6 +114,13 @@ Result<Loaded> load_mp4(const std::string& path, const ConvertOptions& options) 
   loaded.frames = std::move(fba->decoded.sequence);
   loaded.frames.name = std::filesystem::path(path).stem().string();
   loaded.warnings = std::move(fba->decoded.warnings);
+  if (const xmt::Mp4Track* voice = xmt::find_audio_track(*mp4)) {
+    auto track = xmt::read_audio_track(*mp4, *voice);
+    if (!track) return track.error();
+    auto audio = unpack_audio_track(*track, path, options.limits);
+    if (!audio) return audio.error();
+    loaded.audio = std::move(*audio);
+  }
   if (options.facts) loaded.facts = facts_of(&*mp4);
   return loaded;
 }
@@ -112,7 +133,13 @@ Result<std::string> write_mp4_file(const Loaded& loaded, const std::string& path
     return make_error(Location{loaded.named(path), 0, 0, -1}, "no frames to write: an MP4 FBA track needs at least one");
   auto encoded = encode_checked(loaded.frames, options, loaded.named(path), /*align_planes=*/true);
   if (!encoded) return encoded.error();
-  auto bytes = xmt::write_mp4(pack_fba_track(*encoded, loaded.frames.fps));
+  std::optional<xmt::AudioTrackInput> voice;
+  if (loaded.audio) {
+    auto packed = pack_audio_track(*loaded.audio, loaded.frames.duration_seconds(), loaded.named(path));
+    if (!packed) return packed.error();
+    voice = std::move(*packed);
+  }
+  auto bytes = xmt::write_mp4(pack_fba_track(*encoded, loaded.frames.fps), voice ? &*voice : nullptr);
   if (!bytes) {
     Diagnostic error = bytes.error();
     if (error.where.file.empty()) error.where.file = loaded.named(path);

@@ -5,7 +5,9 @@
 //  - ".bifs.xmt" (kind "xmt-bifs", also `--to xmt-bifs`): the animation as timed BIFS Replace
 //    commands on the FAP node's fields, for players without an FBA decoder.
 #include <filesystem>
+#include <optional>
 
+#include "fapc/audio_codec/aac.hpp"
 #include "fapc/mpeg4/mp4_writer.hpp"
 #include "fapc/mpeg4/xmta_writer.hpp"
 #include "formats.hpp"
@@ -14,11 +16,23 @@ namespace fapc::pipeline::builtin {
 
 namespace {
 
-Result<std::string> write_fba_scene(const Loaded&, const std::string& path, const ConvertOptions&) {
-  std::string source;
-  if (path != "-")  // "out/face.xmt" names "face.mp4", beside it
-    source = std::filesystem::path(path).stem().string() + ".mp4#" + std::to_string(xmt::kFbaTrackId);
-  return xmt::write_xmta_fba_scene(xmt::fba_decoder_specific_info(), source);
+Result<std::string> write_fba_scene(const Loaded& loaded, const std::string& path, const ConvertOptions&) {
+  std::string source, voice_source;
+  if (path != "-") {  // "out/face.xmt" names "face.mp4", beside it
+    const std::string mp4 = std::filesystem::path(path).stem().string() + ".mp4#";
+    source = mp4 + std::to_string(xmt::kFbaTrackId);
+    voice_source = mp4 + std::to_string(xmt::kAudioTrackId);
+  }
+  // The voice as the .mp4 of the same input carries it (the same configuration, track 11).
+  std::optional<xmt::XmtaAudio> voice;
+  if (loaded.audio && !loaded.audio->samples.empty()) {
+    auto config = audio::aac_lc_mono_config(loaded.audio->sample_rate);
+    if (config.empty())
+      return make_error(ErrorKind::unsupported, Location{loaded.named(path), 0, 0, -1},
+                        "audio at " + std::to_string(loaded.audio->sample_rate) + " Hz has no AAC sampling frequency index");
+    voice = xmt::XmtaAudio{std::move(config), static_cast<std::uint32_t>(loaded.audio->sample_rate), voice_source};
+  }
+  return xmt::write_xmta_fba_scene(xmt::fba_decoder_specific_info(), source, voice ? &*voice : nullptr);
 }
 
 Result<std::string> write_bifs_commands(const Loaded& loaded, const std::string&, const ConvertOptions&) {

@@ -13,18 +13,18 @@ VideoOptions video_options(const PictureOptions& options) {
 }  // namespace
 
 Result<std::string> face_webm(const FapSequence& sequence, const PictureOptions& options,
-                              const std::string& where) {
-  return encode_webm(FaceTrack(sequence), video_options(options), nullptr, where);
+                              const AudioInput* audio, const std::string& where) {
+  return encode_webm(FaceTrack(sequence), video_options(options), audio, where);
 }
 
 Result<std::string> face_html(const FapSequence& sequence, const PictureOptions& options,
-                              const std::string& title, const std::string& where) {
+                              const AudioInput* audio, const std::string& title, const std::string& where) {
   const FaceTrack track(sequence);
-  Result<std::string> video = encode_webm(track, video_options(options), nullptr, where);
+  Result<std::string> video = encode_webm(track, video_options(options), audio, where);
   if (!video) return video.error();
-  return preview_page(track, *video,
-                      PreviewOptions{options.width, options.height,
-                                     options.frame_rate > 0 ? options.frame_rate : track.fps(), title});
+  PreviewOptions page{options.width, options.height, options.frame_rate > 0 ? options.frame_rate : track.fps(), title};
+  page.sound = audio != nullptr;
+  return preview_page(track, *video, page);
 }
 
 }  // namespace fapc::face

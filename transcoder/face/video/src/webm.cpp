@@ -14,6 +14,7 @@ extern "C" {
 #include <memory>
 
 #include "fapc/face/renderer.hpp"
+#include "opus_audio.hpp"
 
 namespace fapc::face {
 
@@ -83,8 +84,6 @@ std::int64_t video_frame_count(const FaceTrack& track, int frame_rate) {
 Result<std::string> encode_webm(const FaceTrack& track, const VideoOptions& options,
                                 const AudioInput* audio, const std::string& where) {
   const Location at{where, 0, 0, -1};
-  if (audio)
-    return make_error(ErrorKind::unsupported, at, "speech audio in .webm is not written yet (Opus)");
   if (options.width < kMinSide || options.height < kMinSide || options.width > kMaxSide ||
       options.height > kMaxSide || options.width % 2 || options.height % 2)
     return make_error(ErrorKind::usage, at,
@@ -140,6 +139,30 @@ Result<std::string> encode_webm(const FaceTrack& track, const VideoOptions& opti
   AVStream* stream = avformat_new_stream(out.format, nullptr);
   avcodec_parameters_from_context(stream->codecpar, out.codec);
   stream->time_base = out.codec->time_base;
+  // The voice, coded whole before the pictures; its packets are handed to the muxer as the
+  // pictures reach their times, so the file interleaves them.
+  std::unique_ptr<OpusPackets> voice;
+  AVStream* voice_stream = nullptr;
+  if (audio) {
+    auto coded = encode_opus(*audio, (out.format->oformat->flags & AVFMT_GLOBALHEADER) != 0, at);
+    if (!coded) return coded.error();
+    voice = std::move(*coded);
+    voice_stream = avformat_new_stream(out.format, nullptr);
+    avcodec_parameters_from_context(voice_stream->codecpar, voice->codec);
+    voice_stream->time_base = voice->codec->time_base;
+  }
+  std::size_t voice_next = 0;
+  // Hands over the voice's packets that start before `seconds`.
+  auto write_voice = [&](double seconds) -> int {
+    for (; voice && voice_next < voice->packets.size(); ++voice_next) {
+      AVPacket* p = voice->packets[voice_next];
+      if (static_cast<double>(p->pts) / kOpusRate >= seconds) break;
+      av_packet_rescale_ts(p, voice->codec->time_base, voice_stream->time_base);
+      p->stream_index = voice_stream->index;
+      if (int e = av_interleaved_write_frame(out.format, p); e < 0) return e;
+    }
+    return 0;
+  };
   if (int e = avformat_write_header(out.format, nullptr); e < 0) return failed("cannot write the WebM header", e);
 
   out.frame = av_frame_alloc();
@@ -174,9 +197,11 @@ Result<std::string> encode_webm(const FaceTrack& track, const VideoOptions& opti
     out.frame->pts = j;
     if (int e = avcodec_send_frame(out.codec, out.frame); e < 0) return failed("VP9 encoding failed", e);
     if (int e = drain(); e < 0) return failed("VP9 encoding failed", e);
+    if (int e = write_voice(double(j + 1) / rate); e < 0) return failed("cannot write the Opus audio", e);
   }
   if (int e = avcodec_send_frame(out.codec, nullptr); e < 0) return failed("VP9 encoding failed", e);
   if (int e = drain(); e < 0) return failed("VP9 encoding failed", e);
+  if (int e = write_voice(HUGE_VAL); e < 0) return failed("cannot write the Opus audio", e);
   if (int e = av_write_trailer(out.format); e < 0) return failed("cannot finish the WebM file", e);
   avio_flush(out.io);
   return std::move(memory.bytes);

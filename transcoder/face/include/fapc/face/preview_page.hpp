@@ -15,6 +15,7 @@ struct PreviewOptions {
   int height = 480;
   int frame_rate = 25;  // the video's pictures per second
   std::string title;
+  bool sound = false;  // the video carries a voice: the player is not muted
 };
 
 // Layout facts the browser test relies on: the video sits at the page's top-left corner at its

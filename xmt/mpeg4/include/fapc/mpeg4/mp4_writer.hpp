@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/mpeg4/audio_track.hpp"
 #include "fapc/mpeg4/bifs.hpp"
 #include "fapc/mpeg4/fba_track.hpp"
 
@@ -19,9 +20,14 @@ inline constexpr std::uint32_t kOdTrackId = 2;
 inline constexpr std::uint32_t kFbaTrackId = 10;
 inline constexpr std::uint16_t kFbaObjectDescriptorId = 10;
 inline constexpr std::uint32_t kSystemsTimescale = 1000;  // scene, OD and movie timescale
+// The voice: the next track and OD IDs after the FBA stream's (docs/mp4-and-xmta.md section 1.2).
+inline constexpr std::uint32_t kAudioTrackId = 11;
+inline constexpr std::uint16_t kAudioObjectDescriptorId = 11;
 
-// The file's bytes, or why they cannot be written (a track check_fba_track rejects, a file over
-// 4 GiB).
-Result<Bytes> write_mp4(const FbaTrackInput& fba);
+// The file's bytes, or why they cannot be written (a track check_fba_track or check_audio_track
+// rejects, a file over 4 GiB). With `audio`, a fourth track carries it, the OD access unit
+// declares it and the scene plays it (Sound2D/AudioSource); without, the bytes are those of the
+// three-track file.
+Result<Bytes> write_mp4(const FbaTrackInput& fba, const AudioTrackInput* audio = nullptr);
 
 }  // namespace fapc::xmt

@@ -23,8 +23,16 @@ struct SceneNode {
   friend bool operator==(const SceneNode&, const SceneNode&);
 };
 
-// SFInt32, SFBool, SFFloat, or node fields (SFNode: one node; MFNode: any number).
-using FieldValue = std::variant<std::int32_t, bool, float, std::vector<SceneNode>>;
+// An SFURL that names an object descriptor ("od:11" in XMT-A): how a scene's media nodes
+// (AudioSource) find their stream.
+struct ObjectUrl {
+  std::uint16_t od_id = 0;  // 10 bits
+  friend bool operator==(const ObjectUrl&, const ObjectUrl&) = default;
+};
+
+// SFInt32, SFBool, SFFloat, node fields (SFNode: one node; MFNode: any number), or an MFURL of
+// object descriptor URLs.
+using FieldValue = std::variant<std::int32_t, bool, float, std::vector<SceneNode>, std::vector<ObjectUrl>>;
 
 struct SceneField {
   std::string name;
@@ -47,6 +55,10 @@ inline constexpr std::string_view kExpressionDefName = "EXPRESSION";
 // that frame's masked values and carries DEF'd Viseme and Expression nodes (the form the timed
 // Replace commands animate); without it, the FAP node is empty (an FBA stream drives it).
 SceneNode face_scene(const FapFrame* initial = nullptr);
+
+// The same scene with the face's voice beside it: the Group's children gain
+// Sound2D { source AudioSource { url "od:OD_ID" } }, the audio stream's object descriptor.
+SceneNode with_sound(SceneNode scene, std::uint16_t audio_od_id);
 
 // A one-line, VRML-like rendering for `fapc info`: "Group { children [ Face DEF FACE { ... } ] }".
 std::string scene_text(const SceneNode& node);

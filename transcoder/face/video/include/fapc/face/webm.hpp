@@ -9,12 +9,12 @@
 
 namespace fapc::face {
 
-// Speech to put beside the picture as Opus. No reader produces audio yet, so nothing passes one:
-// encode_webm refuses it (unsupported) until the Opus path is written; see docs/render.md.
+// Speech to put beside the picture, as Opus (resampled to 48 kHz); see docs/render.md.
 struct AudioInput {
   int sample_rate = 48000;
   int channels = 1;
   std::vector<float> samples;  // interleaved, -1..1
+  double start = 0;            // seconds on the face's clock; sound before 0 is cut
 };
 
 struct VideoOptions {
@@ -29,7 +29,8 @@ inline constexpr double kMaxVideoSeconds = 4 * 3600.0;
 std::int64_t video_frame_count(const FaceTrack& track, int frame_rate);
 
 // `where` names the output in errors. Usage errors for odd sizes (4:2:0 video needs even sides)
-// and bad rates; limit_exceeded past kMaxVideoSeconds; unsupported when libav lacks libvpx-vp9.
+// and bad rates; limit_exceeded past kMaxVideoSeconds; unsupported when libav lacks libvpx-vp9
+// (or libopus, for audio). Without audio the bytes are what they were before audio existed.
 Result<std::string> encode_webm(const FaceTrack& track, const VideoOptions& options,
                                 const AudioInput* audio, const std::string& where);
 
@@ -41,9 +42,10 @@ namespace fapc::face {
 
 // The .webm and .html outputs of a sequence (size and frame rate from `options`; the still-picture
 // choices --frame/--time/--sheet do not apply). The page embeds the video it encodes.
+// `audio`, when given, plays beside the face (and unmutes the page's video).
 Result<std::string> face_webm(const FapSequence& sequence, const PictureOptions& options,
-                              const std::string& where);
+                              const AudioInput* audio, const std::string& where);
 Result<std::string> face_html(const FapSequence& sequence, const PictureOptions& options,
-                              const std::string& title, const std::string& where);
+                              const AudioInput* audio, const std::string& title, const std::string& where);
 
 }  // namespace fapc::face

@@ -1,0 +1,57 @@
+#include "audio_io.hpp"
+
+#include <cmath>
+
+#include "fapc/audio_codec/aac.hpp"
+
+namespace fapc::pipeline {
+
+Result<std::optional<xmt::AudioTrackInput>> pack_audio_track(const AudioTrack& given, double face_seconds,
+                                                             const std::string& where) {
+  AudioTrack audio = given;
+  if (audio.sample_rate > 0 && !audio.samples.empty()) {
+    const auto face_end = static_cast<std::int64_t>(std::llround((face_seconds - audio.start) * audio.sample_rate));
+    if (face_end > static_cast<std::int64_t>(audio.samples.size())) audio.samples.resize(static_cast<std::size_t>(face_end), 0);
+  }
+  if (audio.samples.empty() || audio.sample_rate <= 0) return std::optional<xmt::AudioTrackInput>{};
+  // Sound before the face's time 0 has nowhere to play: it is cut (the edit list skips it).
+  const double rate = audio.sample_rate;
+  const auto skip = audio.start < 0 ? static_cast<std::uint64_t>(std::llround(-audio.start * rate)) : 0;
+  if (skip >= audio.samples.size()) return std::optional<xmt::AudioTrackInput>{};
+  auto aac = audio::encode_aac(audio, where);
+  if (!aac) return aac.error();
+  xmt::AudioTrackInput track;
+  track.decoder_specific_info = std::move(aac->audio_specific_config);
+  track.sample_rate = static_cast<std::uint32_t>(aac->sample_rate);
+  track.channels = aac->channels;
+  track.samples = std::move(aac->frames);
+  track.samples_per_unit = audio::kAacFrameLength;
+  track.media_start = aac->priming + skip;
+  track.length = aac->length - skip;
+  track.delay_ms = audio.start > 0 ? static_cast<std::uint32_t>(std::llround(audio.start * 1000)) : 0;
+  return std::optional<xmt::AudioTrackInput>(std::move(track));
+}
+
+Result<AudioTrack> unpack_audio_track(const xmt::AudioTrackInput& track, const std::string& where,
+                                      const Limits& limits) {
+  const Location at{where, 0, 0, -1};
+  if (static_cast<double>(track.length) * 2 > static_cast<double>(limits.max_decompressed_bytes))
+    return limit_error(at, "the audio track decodes to " + std::to_string(track.length * 2) + " bytes",
+                       Limit::decompressed_bytes, limits);
+  audio::AacStream stream;
+  stream.sample_rate = static_cast<int>(track.sample_rate);
+  stream.channels = std::max(1, track.channels);
+  stream.audio_specific_config = track.decoder_specific_info;
+  stream.frames = track.samples;
+  stream.priming = static_cast<std::uint32_t>(track.media_start);
+  stream.length = track.length;
+  auto samples = audio::decode_aac(stream, where);
+  if (!samples) return samples.error();
+  AudioTrack out;
+  out.sample_rate = static_cast<int>(track.sample_rate);
+  out.start = track.delay_ms / 1000.0;
+  out.samples = std::move(*samples);
+  return out;
+}
+
+}  // namespace fapc::pipeline

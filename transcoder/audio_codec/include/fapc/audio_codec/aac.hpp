@@ -1,0 +1,47 @@
+// Speech audio as AAC-LC (ISO/IEC 14496-3) access units, the form an MP4 audio track carries,
+// coded through libavcodec. Mono only: fapc's audio (AudioTrack) is one channel.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "fapc/codec/diagnostic.hpp"
+#include "fapc/transcoder/audio.hpp"
+
+namespace fapc::audio {
+
+inline constexpr int kAacFrameLength = 1024;  // samples per AAC-LC access unit (frameLengthFlag 0)
+
+struct AacStream {
+  int sample_rate = 0;
+  int channels = 1;
+  std::vector<std::uint8_t> audio_specific_config;  // the decoder specific info (14496-3 §1.6.2.1)
+  std::vector<std::vector<std::uint8_t>> frames;    // raw access units, kAacFrameLength samples each
+  // The encoder's delay: decoded output begins with this many samples that are not the input.
+  std::uint32_t priming = 0;
+  std::uint64_t length = 0;  // samples of the input, after the priming
+};
+
+// AAC-LC sampling frequency indexes (14496-3 Table 1.18), or -1 for a rate AAC has no index for.
+int aac_frequency_index(int sample_rate);
+
+// The AudioSpecificConfig of mono AAC-LC at `sample_rate`, written from the standard's syntax
+// (14496-3 §1.6.2.1, not taken from libavcodec): audioObjectType 2 (5 bits),
+// samplingFrequencyIndex (4), channelConfiguration 1 (4), GASpecificConfig frameLengthFlag 0,
+// dependsOnCoreCoder 0, extensionFlag 0; then the backward-compatible explicit signalling that
+// there is no SBR: syncExtensionType 0x2B7 (11 bits), extensionAudioObjectType 5 (5),
+// sbrPresentFlag 0 (1), zero padding. Five bytes (13 88 56 E5 00 at 22050 Hz), the same that
+// libavcodec's encoder announces. Without the extension a decoder may assume implicit SBR at
+// rates up to 24 kHz (HE-AAC, output at twice the rate). Empty for a rate without an index.
+std::vector<std::uint8_t> aac_lc_mono_config(int sample_rate);
+
+// Encodes the track at its own rate (which must have an AAC frequency index: 8000 to 96000 Hz
+// standard rates, else unsupported) at `bit_rate` bits per second. `where` names the output.
+Result<AacStream> encode_aac(const AudioTrack& track, const std::string& where, int bit_rate = 64000);
+
+// Decodes the access units back to mono samples, the priming dropped and the result cut to
+// `stream.length` (decoders of lossy audio give close, not equal, samples). `where` names the file.
+Result<std::vector<std::int16_t>> decode_aac(const AacStream& stream, const std::string& where);
+
+}  // namespace fapc::audio
