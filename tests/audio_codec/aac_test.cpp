@@ -14,7 +14,7 @@ TEST(Aac, AudioSpecificConfigFromTheStandardsSyntax) {
   // 5 bits object type 2, 4 bits frequency index, 4 bits channel configuration 1, 3 zero bits:
   // 22050 Hz is index 7: 00010 0111 0001 000 = 13 88; 44100 Hz index 4: 00010 0100 0001 000 = 12 08;
   // 16000 Hz index 8: 00010 1000 0001 000 = 14 08. Then sync extension 010 1011 0111, object
-  // type 00101 (SBR), sbrPresentFlag 0, padding: 0101 0110 | 1110 0101 | 0000 0000 = 56 E5 00.
+  // type 00101 (SBR), sbrPresentFlag 0, padding: 0101 0110 | 1110 0101 | 0000 0000 = 0x56 0xE5 0x00.
   EXPECT_EQ(aac_lc_mono_config(22050), (std::vector<std::uint8_t>{0x13, 0x88, 0x56, 0xE5, 0x00}));
   EXPECT_EQ(aac_lc_mono_config(44100), (std::vector<std::uint8_t>{0x12, 0x08, 0x56, 0xE5, 0x00}));
   EXPECT_EQ(aac_lc_mono_config(16000), (std::vector<std::uint8_t>{0x14, 0x08, 0x56, 0xE5, 0x00}));

@@ -43,7 +43,7 @@ Result<AudioTrack> unpack_audio_track(const xmt::AudioTrackInput& track, const s
   stream.channels = std::max(1, track.channels);
   stream.audio_specific_config = track.decoder_specific_info;
   stream.frames = track.samples;
-  stream.priming = static_cast<std::uint32_t>(track.media_start);
+  stream.priming = track.media_start;
   stream.length = track.length;
   auto samples = audio::decode_aac(stream, where);
   if (!samples) return samples.error();

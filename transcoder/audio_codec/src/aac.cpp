@@ -83,7 +83,7 @@ Result<AacStream> encode_aac(const AudioTrack& track, const std::string& where, 
 
   AacStream out;
   out.sample_rate = track.sample_rate;
-  out.priming = static_cast<std::uint32_t>(std::max(0, c.context->initial_padding));
+  out.priming = static_cast<std::uint64_t>(std::max(0, c.context->initial_padding));
   out.length = track.samples.size();
   out.audio_specific_config = aac_lc_mono_config(track.sample_rate);
   const std::vector<std::uint8_t> given(c.context->extradata, c.context->extradata + c.context->extradata_size);

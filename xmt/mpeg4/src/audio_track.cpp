@@ -52,6 +52,10 @@ Status check_audio_track(const AudioTrackInput& t) {
   if (t.samples.empty()) return make_error(nowhere, "audio track without access units");
   if (t.samples_per_unit == 0) return make_error(nowhere, "audio access units of 0 samples");
   if (t.length == 0) return make_error(nowhere, "audio track without sound (length 0)");
+  // A version 0 edit list holds the media time in 32 signed bits.
+  if (t.media_start > 0x7FFFFFFF)
+    return make_error(nowhere, "audio track: the sound starts " + std::to_string(t.media_start) +
+                                   " samples into its media, more than an edit list says");
   const std::uint64_t media = t.samples.size() * std::uint64_t{t.samples_per_unit};
   if (t.media_start + t.length > media)
     return make_error(nowhere, "audio track: " + std::to_string(t.media_start + t.length) +

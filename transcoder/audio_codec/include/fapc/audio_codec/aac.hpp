@@ -19,11 +19,12 @@ struct AacStream {
   std::vector<std::uint8_t> audio_specific_config;  // the decoder specific info (14496-3 §1.6.2.1)
   std::vector<std::vector<std::uint8_t>> frames;    // raw access units, kAacFrameLength samples each
   // The encoder's delay: decoded output begins with this many samples that are not the input.
-  std::uint32_t priming = 0;
+  std::uint64_t priming = 0;
   std::uint64_t length = 0;  // samples of the input, after the priming
 };
 
-// AAC-LC sampling frequency indexes (14496-3 Table 1.18), or -1 for a rate AAC has no index for.
+// AAC-LC sampling frequency indexes (ISO/IEC 14496-3's samplingFrequencyIndex), or -1 for a rate
+// AAC has no index for.
 int aac_frequency_index(int sample_rate);
 
 // The AudioSpecificConfig of mono AAC-LC at `sample_rate`, written from the standard's syntax
@@ -31,7 +32,7 @@ int aac_frequency_index(int sample_rate);
 // samplingFrequencyIndex (4), channelConfiguration 1 (4), GASpecificConfig frameLengthFlag 0,
 // dependsOnCoreCoder 0, extensionFlag 0; then the backward-compatible explicit signalling that
 // there is no SBR: syncExtensionType 0x2B7 (11 bits), extensionAudioObjectType 5 (5),
-// sbrPresentFlag 0 (1), zero padding. Five bytes (13 88 56 E5 00 at 22050 Hz), the same that
+// sbrPresentFlag 0 (1), zero padding. Five bytes (0x13 0x88 0x56 0xE5 0x00 at 22050 Hz), the same that
 // libavcodec's encoder announces. Without the extension a decoder may assume implicit SBR at
 // rates up to 24 kHz (HE-AAC, output at twice the rate). Empty for a rate without an index.
 std::vector<std::uint8_t> aac_lc_mono_config(int sample_rate);
