@@ -127,22 +127,28 @@ class SceneDecoder {
       nodes.push_back(std::move(*child));
       return ok_status();
     };
-    if (spec.kind == FieldKind::sf_node) {
-      if (Status s = read_child(); !s) return s;
-    } else if (in_.get_bit(), in_.get_bit()) {  // reserved bit, then list (1) or vector (0)
+    if (Status s = spec.kind == FieldKind::sf_node ? read_child() : mf_field(read_child); !s) return s;
+    if (in_.failed()) return cut_short();
+    out = std::move(nodes);
+    return ok_status();
+  }
+
+  // An MFField's items (14496-11 §8.8.3): a reserved bit, then a list (each item after a 0 bit,
+  // a 1 bit at the end) or a vector (5 bits of length width, the length, the items).
+  template <class Read>
+  Status mf_field(Read&& read_item) {
+    if (in_.get_bit(), in_.get_bit()) {  // reserved bit, then list (1) or vector (0)
       while (!in_.get_bit()) {
         if (in_.failed()) return cut_short();
-        if (Status s = read_child(); !s) return s;
+        if (Status s = read_item(); !s) return s;
       }
     } else {
       const int length_bits = static_cast<int>(in_.get(5));
       const std::uint32_t length = in_.get(length_bits);
       for (std::uint32_t i = 0; i < length && !in_.failed(); ++i)
-        if (Status s = read_child(); !s) return s;
+        if (Status s = read_item(); !s) return s;
     }
-    if (in_.failed()) return cut_short();
-    out = std::move(nodes);
-    return ok_status();
+    return in_.failed() ? Status(cut_short()) : ok_status();
   }
 
   // An MFURL whose SFURLs name object descriptors; a URL string is named, not decoded.
@@ -153,18 +159,7 @@ class SceneDecoder {
       list.push_back({static_cast<std::uint16_t>(in_.get(10))});
       return ok_status();
     };
-    if (in_.get_bit(), in_.get_bit()) {  // reserved bit, then list (1) or vector (0)
-      while (!in_.get_bit()) {
-        if (in_.failed()) return cut_short();
-        if (Status s = read_url(); !s) return s;
-      }
-    } else {
-      const int length_bits = static_cast<int>(in_.get(5));
-      const std::uint32_t length = in_.get(length_bits);
-      for (std::uint32_t i = 0; i < length && !in_.failed(); ++i)
-        if (Status s = read_url(); !s) return s;
-    }
-    if (in_.failed()) return cut_short();
+    if (Status s = mf_field(read_url); !s) return s;
     out = std::move(list);
     return ok_status();
   }

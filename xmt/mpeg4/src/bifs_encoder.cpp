@@ -111,44 +111,39 @@ class SceneEncoder {
       if (nodes.size() != 1) return fail(where + " holds exactly one node");
       return node(nodes.front(), spec.ndt, where);
     }
+    return mf_field(nodes, [&](const SceneNode& child) { return node(child, spec.ndt, where); });
+  }
+
+  // An MFField (14496-11 §8.8.3): a reserved bit, then the items as a list (each after a 0 bit,
+  // a 1 bit at the end) or a vector (5 bits of length width, the length, the items).
+  template <class Items, class Put>
+  Status mf_field(const Items& items, Put&& put) {
     out_.put_bit(false);  // reserved
-    const auto n = static_cast<std::uint32_t>(nodes.size());
+    const auto n = static_cast<std::uint32_t>(items.size());
     const int length_bits = bifs::bit_size(n);
-    // A list costs an end bit per node; a vector 5 bits of width and the length.
+    // A list costs an end bit per item; a vector 5 bits of width and the length.
     const bool use_list = n == 0 || static_cast<std::uint32_t>(length_bits) + 5 > n + 1;
     out_.put_bit(use_list);
     if (!use_list) {
       out_.put(static_cast<std::uint32_t>(length_bits), 5);
       out_.put(n, length_bits);
     }
-    for (const SceneNode& child : nodes) {
+    for (const auto& item : items) {
       if (use_list) out_.put_bit(false);
-      if (Status s = node(child, spec.ndt, where); !s) return s;
+      if (Status s = put(item); !s) return s;
     }
     if (use_list) out_.put_bit(true);
     return ok_status();
   }
 
-  // An MFURL (the MFField syntax, list or vector by the MFNode rule) of SFURLs that name object
-  // descriptors: isOD 1, then the 10-bit OD ID.
+  // An MFURL of SFURLs that name object descriptors: isOD 1, then the 10-bit OD ID.
   Status urls(const std::vector<ObjectUrl>& list, const std::string& where) {
-    out_.put_bit(false);  // reserved
-    const auto n = static_cast<std::uint32_t>(list.size());
-    const int length_bits = bifs::bit_size(n);
-    const bool use_list = n == 0 || static_cast<std::uint32_t>(length_bits) + 5 > n + 1;
-    out_.put_bit(use_list);
-    if (!use_list) {
-      out_.put(static_cast<std::uint32_t>(length_bits), 5);
-      out_.put(n, length_bits);
-    }
-    for (const ObjectUrl& u : list) {
+    return mf_field(list, [&](const ObjectUrl& u) -> Status {
       if (u.od_id == 0 || u.od_id >= 1024) return fail(where + ": OD ID " + std::to_string(u.od_id) + " is not 1..1023");
-      if (use_list) out_.put_bit(false);
       out_.put_bit(true);  // isOD
       out_.put(u.od_id, 10);
-    }
-    if (use_list) out_.put_bit(true);
-    return ok_status();
+      return ok_status();
+    });
   }
 
   static Diagnostic fail(const std::string& message) {

@@ -1,5 +1,7 @@
 #include "opus_audio.hpp"
 
+#include "av_error.hpp"
+
 extern "C" {
 #include <libavutil/channel_layout.h>
 #include <libavutil/opt.h>
@@ -12,12 +14,6 @@ extern "C" {
 namespace fapc::face {
 
 namespace {
-
-std::string av_message(int code) {
-  char text[AV_ERROR_MAX_STRING_SIZE] = {};
-  av_strerror(code, text, sizeof text);
-  return text;
-}
 
 struct Resampler {
   SwrContext* swr = nullptr;

@@ -14,6 +14,7 @@ extern "C" {
 #include <memory>
 
 #include "fapc/face/renderer.hpp"
+#include "av_error.hpp"
 #include "opus_audio.hpp"
 
 namespace fapc::face {
@@ -46,12 +47,6 @@ std::int64_t seek(void* opaque, std::int64_t offset, int whence) {
   if (to < 0) return -1;
   m->at = to;
   return to;
-}
-
-std::string av_message(int code) {
-  char text[AV_ERROR_MAX_STRING_SIZE] = {};
-  av_strerror(code, text, sizeof text);
-  return text;
 }
 
 // Owners for the libav objects, so every error path frees them.
