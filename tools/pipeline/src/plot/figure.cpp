@@ -88,9 +88,18 @@ Result<std::vector<std::string>> select_targets(const std::string& selection,
     const auto names = fap_names_of(item);
     if (!names) {
       std::string message = "--faps: unknown parameter or group '" + item + "'";
-      const auto close = closest_fap_names(item, 1);
-      if (!close.empty() && edit_distance(item, close.front()) <= 2)
-        message += "; did you mean " + std::string(close.front()) + "?";
+      // The closest spelling among groups, FAP names and the input's own targets.
+      std::vector<std::string> candidates = available;
+      for (const auto& group : algebra::mask_group_names()) candidates.emplace_back(group.first);
+      for (const FapInfo& fap : fap_table()) candidates.emplace_back(fap.name);
+      std::string best;
+      std::size_t best_distance = 3;  // farther than two edits is no suggestion
+      for (const std::string& candidate : candidates)
+        if (const std::size_t d = edit_distance(item, candidate); d < best_distance) {
+          best = candidate;
+          best_distance = d;
+        }
+      if (!best.empty()) message += "; did you mean " + best + "?";
       message += " (a FAP name or number, a range like 19-30, a group: jaw, lips, eyes, brows, cheeks, "
                  "tongue, head, outer_lips, nose, ears, mouth, all; or viseme, expression)";
       return make_error(ErrorKind::usage, Location{input, 0, 0, -1}, message);
