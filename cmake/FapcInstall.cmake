@@ -170,6 +170,6 @@ install(FILES ${CMAKE_BINARY_DIR}/fapcConfig.cmake ${CMAKE_BINARY_DIR}/fapcConfi
   DESTINATION ${fapc_cmake_dir})
 
 # The documentation and the licence, where Debian puts them (share/doc/fapc).
-install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/LICENSE ${PROJECT_SOURCE_DIR}/COPYING.LGPL-2.1
-  ${PROJECT_SOURCE_DIR}/COPYING.GPL-3 DESTINATION ${CMAKE_INSTALL_DOCDIR})
+# (Paths relative to the top folder, which includes this file.)
+install(FILES README.md LICENSE COPYING.LGPL-2.1 COPYING.GPL-3 DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs)

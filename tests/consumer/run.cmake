@@ -85,9 +85,8 @@ if(CONSUMER STREQUAL "codec")
   list(TRANSFORM pc_args REPLACE "\\.fba$" "-pkgconfig.fba")
   run("running ${pc_program}" ${pc_program} ${pc_args})
 
-  foreach(installed share/doc/fapc/LICENSE share/doc/fapc/COPYING.LGPL-2.1 share/doc/fapc/README.md
-                    share/doc/fapc/docs/json.md share/doc/fapc/docs/json/info.schema.json)
-    if(NOT EXISTS ${prefix}/${installed})
+  foreach(installed LICENSE COPYING.LGPL-2.1 README.md docs/json.md docs/json/info.schema.json)
+    if(NOT EXISTS ${prefix}/share/doc/fapc/${installed})
       message(FATAL_ERROR "cmake --install did not install ${installed}")
     endif()
   endforeach()

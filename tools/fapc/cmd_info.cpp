@@ -26,6 +26,10 @@ std::string key_text(std::string key) {
 std::string scalar_text(const nlohmann::ordered_json& v) {
   if (v.is_string()) return v.get<std::string>();
   if (v.is_null()) return "none";
+  if (v.is_object() && v.contains("intra_min")) {  // a quantised range: "open_jaw I -1..1 P -2..2"
+    return v["name"].get<std::string>() + " I " + v["intra_min"].dump() + ".." + v["intra_max"].dump() + " P " +
+           v["predictive_min"].dump() + ".." + v["predictive_max"].dump();
+  }
   if (v.is_object()) {
     std::string out;
     for (const auto& [k, item] : v.items()) out += (out.empty() ? "" : ", ") + key_text(k) + " " + scalar_text(item);
@@ -49,7 +53,14 @@ void print_text(const nlohmann::ordered_json& info) {
     if (key == "faps" || key == "warnings") continue;
     if (value.is_object()) {
       std::cout << key_text(key) << ":\n";
-      for (const auto& [k, v] : value.items()) std::cout << "  " << key_text(k) << ": " << scalar_text(v) << '\n';
+      for (const auto& [k, v] : value.items()) {
+        if (v.is_object() && !v.empty()) {  // names to values (FML events, XMT-Omega meta): one line each
+          for (const auto& [name, text] : v.items())
+            std::cout << "  " << key_text(k) << " " << name << ": " << scalar_text(text) << '\n';
+        } else {
+          std::cout << "  " << key_text(k) << ": " << scalar_text(v) << '\n';
+        }
+      }
     } else if (key != "schema_version") {
       std::cout << key_text(key) << ": " << scalar_text(value) << '\n';
     }

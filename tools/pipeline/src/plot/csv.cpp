@@ -1,4 +1,4 @@
-// The frames as a table: one row per frame, one column per parameter (docs/cli.md "fapc plot"),
+// The frames as a table: one row per frame, one column per parameter (docs/cli.md, "Plot"),
 // for gnuplot (`set datafile separator ','`) or a spreadsheet.
 #include <charconv>
 

@@ -1,4 +1,4 @@
-// `fapc plot -o X.csv`: the frames as a table (columns in docs/cli.md "fapc plot").
+// `fapc plot -o X.csv`: the frames as a table (columns in docs/cli.md, "Plot").
 #pragma once
 
 #include <string>

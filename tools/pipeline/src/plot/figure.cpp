@@ -1,4 +1,4 @@
-// Building the figure: the series a plot draws (docs/cli.md "fapc plot").
+// Building the figure: the series a plot draws (docs/cli.md, "Plot").
 #include "figure.hpp"
 
 #include <algorithm>

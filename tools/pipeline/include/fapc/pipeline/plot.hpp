@@ -1,5 +1,5 @@
 // `fapc plot`: curves as a figure for a paper, or as a table. One drawing routine draws every
-// picture format: SVG (written as text, see docs/cli.md "fapc plot"), PNG and PDF (cairo);
+// picture format: SVG (written as text, see docs/cli.md, "Plot"), PNG and PDF (cairo);
 // `.csv` is the frames as a table for gnuplot or a spreadsheet.
 #pragma once
 
