@@ -86,7 +86,7 @@ Layout layout(const Figure& figure) {
   } else {
     l.panels = figure.series.size();
   }
-  double y = l.top + static_cast<double>(l.panels) * (l.panel_height + kGap) - kGap;
+  double y = l.panels > 0 ? l.top + static_cast<double>(l.panels) * (l.panel_height + kGap) - kGap : l.top - 20;
   if (l.panels > 0) {
     l.time_title_y = y + 34;
     y = l.time_title_y + 8;
