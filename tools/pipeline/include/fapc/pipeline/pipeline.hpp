@@ -1,4 +1,4 @@
-// fapc::pipeline, all of it: the reader and writer tables, convert, verify, info, validate, batch.
+// fapc::pipeline, all of it: the reader and writer tables, convert, verify, info, validate, batch, plots, JSON output.
 #pragma once
 
 #include "fapc/pipeline/batch.hpp"
@@ -9,6 +9,7 @@
 #include "fapc/pipeline/loaded.hpp"
 #include "fapc/pipeline/options.hpp"
 #include "fapc/pipeline/registry.hpp"
-#include "fapc/pipeline/svg_plot.hpp"
+#include "fapc/pipeline/json_output.hpp"
+#include "fapc/pipeline/plot.hpp"
 #include "fapc/pipeline/validate.hpp"
 #include "fapc/pipeline/verify.hpp"
