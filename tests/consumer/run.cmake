@@ -106,6 +106,13 @@ if(CONSUMER STREQUAL "codec")
       message(FATAL_ERROR "man fapc shows no page:\n${run_output}")
     endif()
     run("man -l fapc.1" man -P cat -l ${prefix}/share/man/man1/fapc.1)
+    # The bash completion loads and completes fapc; the zsh one is a function file (#compdef).
+    run("loading the bash completion" bash -c
+        "source '${prefix}/share/bash-completion/completions/fapc' && complete -p fapc")
+    file(READ ${prefix}/share/zsh/vendor-completions/_fapc zsh_completion)
+    if(NOT zsh_completion MATCHES "^#compdef fapc")
+      message(FATAL_ERROR "share/zsh/vendor-completions/_fapc does not start with '#compdef fapc'")
+    endif()
   else()
     message(STATUS "no man page or completion installed yet (issue 18a): not checked")
   endif()
