@@ -83,7 +83,12 @@ if(CONSUMER STREQUAL "codec")
   set(pc_args ${ARGS})
   string(REPLACE "@WORK@" "${WORK_DIR}" pc_args "${pc_args}")
   list(TRANSFORM pc_args REPLACE "\\.fba$" "-pkgconfig.fba")
+  # pkg-config gives no run path: a shared build's libraries are found as an installed system's
+  # would be through ld.so, here through LD_LIBRARY_PATH.
+  get_filename_component(pc_libdir ${pc_dir} DIRECTORY)
+  set(ENV{LD_LIBRARY_PATH} ${pc_libdir})
   run("running ${pc_program}" ${pc_program} ${pc_args})
+  unset(ENV{LD_LIBRARY_PATH})
 
   foreach(installed LICENSE COPYING.LGPL-2.1 README.md docs/json.md docs/json/info.schema.json)
     if(NOT EXISTS ${prefix}/share/doc/fapc/${installed})
