@@ -23,7 +23,8 @@ std::mutex& engine_mutex() {
   return m;
 }
 
-// What one espeak_Synth call collects; reached from the callback through the event's user_data.
+// What one espeak_Synth call collects. The callback reaches it through `collecting`, set while
+// the mutex is held (a block of samples may come with no event, so user_data cannot be relied on).
 struct Collect {
   std::vector<std::int16_t> samples;
   std::vector<std::pair<std::string, int>> phonemes;  // mnemonic, start in ms
@@ -31,17 +32,19 @@ struct Collect {
   bool too_long = false;
 };
 
+Collect* collecting = nullptr;
+
 int on_samples(short* wav, int count, espeak_EVENT* events) {
-  Collect* into = nullptr;
-  for (espeak_EVENT* e = events; e->type != espeakEVENT_LIST_TERMINATED; ++e) {
-    into = static_cast<Collect*>(e->user_data);
+  Collect* into = collecting;
+  if (into == nullptr) return 0;
+  for (espeak_EVENT* e = events; e != nullptr && e->type != espeakEVENT_LIST_TERMINATED; ++e) {
     if (e->type == espeakEVENT_PHONEME) {
       char name[9] = {};
       std::memcpy(name, e->id.string, 8);
       into->phonemes.emplace_back(name, e->audio_position);
     }
   }
-  if (into == nullptr || wav == nullptr || count <= 0) return 0;
+  if (wav == nullptr || count <= 0) return 0;
   if (into->samples.size() + static_cast<std::size_t>(count) > into->max_samples) {
     into->too_long = true;
     return 1;  // stop the synthesis
@@ -103,8 +106,10 @@ Result<Utterance> speak(const SpeechRequest& request) {
 
   Collect collect;
   collect.max_samples = static_cast<std::size_t>(std::max(0.0, request.max_seconds) * engine.sample_rate);
+  collecting = &collect;
   const espeak_ERROR status = espeak_Synth(request.text.c_str(), request.text.size() + 1, 0, POS_CHARACTER, 0,
-                                           espeakCHARS_UTF8, nullptr, &collect);
+                                           espeakCHARS_UTF8, nullptr, nullptr);
+  collecting = nullptr;
   if (collect.too_long) {
     return make_error(ErrorKind::limit_exceeded, request.where,
                       "the speech would last more than " + std::to_string(request.max_seconds) +

@@ -18,6 +18,23 @@ double sample_at(const AudioClip& clip, double x) {
 
 }  // namespace
 
+std::optional<AudioClip> placed_audio(const AudioClip& clip, double shift, double from, double to) {
+  if (clip.sample_rate <= 0 || clip.samples.empty()) return std::nullopt;
+  const double begin = clip.begin + shift;
+  const double rate = clip.sample_rate;
+  const auto count = static_cast<double>(clip.samples.size());
+  const double first = std::clamp(std::ceil((from - begin) * rate - 1e-6), 0.0, count);
+  const double last = std::clamp(std::ceil((to - begin) * rate - 1e-6), 0.0, count);
+  if (last <= first) return std::nullopt;
+  AudioClip out;
+  out.sample_rate = clip.sample_rate;
+  out.source = clip.source;
+  out.begin = begin + first / rate;
+  out.samples.assign(clip.samples.begin() + static_cast<std::ptrdiff_t>(first),
+                     clip.samples.begin() + static_cast<std::ptrdiff_t>(last));
+  return out;
+}
+
 Result<std::optional<AudioTrack>> mix_audio(const std::vector<AudioClip>& clips, double max_seconds) {
   std::optional<AudioTrack> none;
   int rate = 0;

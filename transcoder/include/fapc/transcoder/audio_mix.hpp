@@ -15,6 +15,10 @@ namespace fapc {
 // when that is earlier: clips before 0 are cut). No clips: nullopt. A track longer than
 // `max_seconds` is a limit_exceeded error at the clip that reaches furthest, checked before
 // allocating.
+// The part of `clip`, moved by `shift` seconds, that lies in [from, to): one run of an utterance
+// (a repeat, a run cut by its container). nullopt when nothing is left.
+std::optional<AudioClip> placed_audio(const AudioClip& clip, double shift, double from, double to);
+
 Result<std::optional<AudioTrack>> mix_audio(const std::vector<AudioClip>& clips, double max_seconds);
 
 }  // namespace fapc
