@@ -54,7 +54,7 @@ int run_compile(const std::vector<std::string>& argv) {
 const RegisterCommand compile_command{
     "compile",
     "fapc compile INPUT -o OUTPUT [--fps N] [--profile FILE] [--event NAME=VALUE]... "
-    "[--quant Q] [--speech-rate WPM] [--voice LANG[+VARIANT]] [--strict] [--from KIND] [--to KIND]",
+    "[--quant Q] [--speech-rate N] [--strict] [--from KIND] [--to KIND]",
     run_compile};
 
 }  // namespace

@@ -85,23 +85,23 @@ Result<Utterance> speak(const SpeechRequest& request) {
   if (engine.sample_rate == 0)
     return make_error(ErrorKind::unsupported, request.where, "the speech engine (eSpeak NG) could not start: is espeak-ng-data installed?");
   if (!plain_name(request.language))
-    return make_error(ErrorKind::usage, request.where, "'" + request.language + "' is not a language name (like en, en-us, fr, de)");
+    return make_error(ErrorKind::bad_input, request.where, "'" + request.language + "' is not a language name (like en, en-us, fr, de)");
   if (!request.voice.empty() &&
       (!plain_name(request.voice) || !std::filesystem::is_regular_file(engine.data / "voices" / "!v" / request.voice))) {
-    return make_error(ErrorKind::usage, request.where,
+    return make_error(ErrorKind::bad_input, request.where,
                       "unknown voice '" + request.voice + "' (voice variants of eSpeak NG: m1..m7, f1..f5, klatt, whisper, ...; `espeak-ng --voices=variant` lists them)");
   }
   if (espeak_SetVoiceByName(request.language.c_str()) != EE_OK)
-    return make_error(ErrorKind::usage, request.where,
+    return make_error(ErrorKind::bad_input, request.where,
                       "unknown language '" + request.language + "' (`espeak-ng --voices` lists the languages)");
   if (!request.voice.empty()) {
     const std::string name = request.language + "+" + request.voice;
     if (espeak_SetVoiceByName(name.c_str()) != EE_OK)
-      return make_error(ErrorKind::usage, request.where, "eSpeak NG refused the voice '" + name + "'");
+      return make_error(ErrorKind::bad_input, request.where, "eSpeak NG refused the voice '" + name + "'");
   }
   const int rate = static_cast<int>(request.words_per_minute + 0.5);
   if (rate < espeakRATE_MINIMUM || rate > espeakRATE_MAXIMUM)
-    return make_error(ErrorKind::usage, request.where, "the speech rate " + std::to_string(rate) + " words per minute is outside 80 to 450");
+    return make_error(ErrorKind::bad_input, request.where, "the speech rate " + std::to_string(rate) + " words per minute is outside 80 to 450");
   espeak_SetParameter(espeakRATE, rate, 0);
 
   Collect collect;

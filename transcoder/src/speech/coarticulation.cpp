@@ -80,7 +80,9 @@ std::vector<Clip> coarticulated_viseme_clips(std::vector<VisemeSpan> spans, doub
     // Half of each edge's fade: at most half of this span and half of what lies on the other
     // side (the neighbour, or the silence), so the two fades of one span never meet.
     const auto half_fade = [&](double other) { return std::min({rule.fade / 2, length / 2, other / 2}); };
-    const double before = i == 0 ? rule.fade  // silence before: the mouth may open ahead of the talk
+    // Before the first sound the fade fits between the utterance's start and the sound (the face
+    // is neutral when the talk begins); after the last one it runs its full length.
+    const double before = i == 0 ? 2 * s.begin
                                  : (std::abs(spans[i - 1].end - s.begin) < kTouch
                                         ? spans[i - 1].end - spans[i - 1].begin
                                         : s.begin - spans[i - 1].end);

@@ -9,7 +9,7 @@ namespace {
 
 Result<std::string> write_wav(const Loaded& loaded, const std::string& path, const ConvertOptions&) {
   if (!loaded.audio || loaded.audio->samples.empty()) {
-    return make_error(ErrorKind::usage, Location{loaded.named(path), 0, 0, -1},
+    return make_error(ErrorKind::unsupported, Location{loaded.named(path), 0, 0, -1},
                       "this input has no audio to write to " + path +
                           " (audio comes from FML talk text, or an XMT-Omega audio element with a WAV file)");
   }

@@ -60,7 +60,8 @@ std::vector<VisemeSpan> viseme_spans(const std::vector<SpokenPhoneme>& phonemes)
 // The coarticulation rule (docs/speech.md): each span becomes one viseme clip of weight 63 whose
 // edges are linear cross-fades of `fade` seconds centred on the span's boundaries, so neighbours
 // overlap and FAP 1 blends them (viseme_select1/2, viseme_blend); a fade is never longer than the
-// shorter of the two spans it joins, and at silence the weight falls to 0 (neutral). Spans shorter
+// shorter of the two spans it joins, and at silence the weight falls to 0 (neutral). The first
+// fade-in starts no earlier than time 0; the last fade-out may end fade/2 after the last span. Spans shorter
 // than `min_hold` are first widened to it around their centre (taking the time from their
 // neighbours), so a short closure such as a p still shows on a frame.
 struct Coarticulation {

@@ -691,7 +691,11 @@ class FmlReader {
       }
       if (!speak(node, text, leaf)) return std::nullopt;
     }
-    const double intrinsic = leaf.speech.duration;
+    // The talk lasts until its sound ends and the mouth is back at neutral.
+    leaf.natural = leaf.speech.duration;
+    for (const Clip& clip : talk_timeline(leaf, leaf.speech.duration, options_.coarticulation).clips)
+      leaf.natural = std::max(leaf.natural, clip.end);
+    const double intrinsic = leaf.natural;
     return add_leaf(node, std::move(leaf), move_timing(timing, intrinsic));
   }
 
@@ -699,8 +703,9 @@ class FmlReader {
   // warning once per document.
   bool speak(const xmlNode* node, const std::string& text, FmlLeaf& leaf) {
     if (!options_.synthesize) {
-      once_.report("no speech engine", doc_.warning(node, "fapc was built without its speech engine (FAPC_SPEECH=OFF): "
-                                                          "talk text becomes visemes by the letter table, with no voice"));
+      once_.report("no speech engine", doc_.warning(node, "no speech engine (fapc built with FAPC_SPEECH=OFF, or none "
+                                                          "given): talk text becomes visemes by the letter table, with "
+                                                          "no voice"));
       std::string skipped;
       leaf.speech = visemes_from_text(text, options_.words_per_minute * 12 / 175, skipped);
       if (!skipped.empty()) {

@@ -24,6 +24,7 @@ struct FmlLeaf {
   double value = 0;
   Speech speech;
   AudioClip audio;  // the voice of a spoken talk (no samples: a silent one, stretched to its runs)
+  double natural = 0;  // a talk's own length: its speech, or the last viseme's fade to neutral if later
 };
 
 struct FmlTree {

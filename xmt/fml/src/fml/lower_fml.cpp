@@ -54,9 +54,10 @@ void place_talk(const FmlLeaf& leaf, const Occurrence& run, const Coarticulation
 Timeline talk_timeline(const FmlLeaf& talk, double duration, const Coarticulation& rule) {
   Timeline out;
   const Speech& speech = talk.speech;
-  if (speech.duration <= 0) return out;
+  const double natural = std::max(talk.natural, speech.duration);
+  if (natural <= 0) return out;
   const bool spoken = !talk.audio.samples.empty();
-  const double stretch = spoken ? 1.0 : duration / speech.duration;
+  const double stretch = spoken ? 1.0 : duration / natural;
   out.clips = coarticulated_viseme_clips(speech.visemes, stretch, rule, talk.where);
   if (spoken) out.audio.push_back(talk.audio);
   out.explicit_end = duration;
