@@ -113,7 +113,7 @@ TEST(OutsideReaders, AcceptTheMp4OfEveryBundledExample) {
     check_with_outside_readers(output);
     ++checked;
   }
-  EXPECT_EQ(checked, 14);
+  EXPECT_EQ(checked, 15);
   fs::remove_all(folder);
 }
 

@@ -90,25 +90,32 @@ TEST(FmlMoves, ParamGoesThroughTheProfile) {
   EXPECT_EQ(spans(read_ok(in_action("<param type=\"eye-wink\" val=\"1\"/>"), options).timeline), (Spans{{"eye-wink", 0, 1}}));
 }
 
+// The letter table's and the .pho file's own timing, without the coarticulation's overlaps.
+FmlOptions exact_spans() {
+  FmlOptions options;
+  options.coarticulation = Coarticulation{0, 0};
+  return options;
+}
+
 TEST(FmlMoves, TalkSaysOneVisemePerLetterGroupAtTwelvePerSecond) {
   // "Hi, Bob": h (no shape), i = ih; ',' two silent slots; ' ' one; B = PP, o = oh, b = PP.
   // Seven slots of 1/12 s: ih [0, 1), PP [4, 5), oh [5, 6), PP [6, 7) in twelfths.
-  const auto doc = read_ok(in_action("<talk>Hi, Bob</talk>"));
+  const auto doc = read_ok(in_action("<talk>Hi, Bob</talk>"), exact_spans());
   const double s = 1.0 / 12;
   expect_spans(doc.timeline, Spans{{"viseme.ih", 0, s}, {"viseme.PP", 4 * s, 5 * s}, {"viseme.oh", 5 * s, 6 * s}, {"viseme.PP", 6 * s, 7 * s}});
   EXPECT_DOUBLE_EQ(doc.timeline.explicit_end.value_or(0), 7 * s);
-  EXPECT_EQ(doc.timeline.clips[0].curve.keys.front().value, 63);
+  EXPECT_EQ(doc.timeline.clips[0].curve.value_at(s / 2), 63);
 }
 
 TEST(FmlMoves, TalkWithADurationIsStretchedOverIt) {
   // "Hello": E, nn (ll said once), oh: three slots over 0.6 s.
-  const auto doc = read_ok(in_action("<talk duration=\"0.6s\">Hello</talk>"));
+  const auto doc = read_ok(in_action("<talk duration=\"0.6s\">Hello</talk>"), exact_spans());
   expect_spans(doc.timeline, Spans{{"viseme.E", 0, 0.2}, {"viseme.nn", 0.2, 0.4}, {"viseme.oh", 0.4, 0.6}});
 }
 
 TEST(FmlMoves, TalkFileReadsMbrolaPhonemes) {
   // _ 100 ms silence; h 50 ms has no shape; @ 80 ms = E; l 60 ms = nn; @U 120 ms = oh (by its first vowel).
-  FmlOptions options;
+  FmlOptions options = exact_spans();
   options.read_file = [](const std::string& path) -> Result<std::string> {
     EXPECT_EQ(path, "hello.pho");
     return std::string("; hello\n_ 100\nh 50\n@ 80 50 120\nl 60\n@U 120 0 110 100 90\n_ 40\n");
@@ -120,12 +127,31 @@ TEST(FmlMoves, TalkFileReadsMbrolaPhonemes) {
 }
 
 TEST(FmlMoves, UnknownPhonemesAreSilentWithOneWarningEach) {
-  FmlOptions options;
+  FmlOptions options = exact_spans();
   options.read_file = [](const std::string&) -> Result<std::string> { return std::string("Y 100\np 50\nY 100\n"); };
   const auto doc = read_ok(in_action("<talk file=\"x.pho\"/>"), options);
   expect_spans(doc.timeline, Spans{{"viseme.PP", 0.1, 0.15}});
   EXPECT_EQ(messages(doc.warnings),
             (std::vector<std::string>{"x.pho:1:1: warning: phoneme 'Y' has no MPEG-4 viseme and is treated as silence"}));
+}
+
+TEST(FmlMoves, NeighbouringVisemesCrossFadeAndSilenceReturnsToNeutral) {
+  // "Hello" by the letter table (E, nn, oh, 1/12 s each) with the default rule: a 60 ms fade
+  // centred on each boundary, capped at half of each side (1/24 s here).
+  const auto doc = read_ok(in_action("<talk>Hello</talk>"));
+  ASSERT_EQ(doc.timeline.clips.size(), 3u);
+  const double s = 1.0 / 12;
+  const Clip& e = doc.timeline.clips[0];
+  const Clip& nn = doc.timeline.clips[1];
+  EXPECT_NEAR(nn.begin, s - 0.03, 1e-9);  // nn fades in over [s - 30 ms, s + 30 ms] ...
+  EXPECT_NEAR(e.end, s + 0.03, 1e-9);     // ... while E fades out over the same
+  EXPECT_NEAR(e.curve.value_at(s - e.begin), 31.5, 1e-9);
+  EXPECT_NEAR(nn.curve.value_at(s - nn.begin), 31.5, 1e-9);
+  const Clip& oh = doc.timeline.clips[2];
+  EXPECT_NEAR(oh.curve.value_at(oh.end - oh.begin), 0, 1e-9);  // back to neutral after the word
+  EXPECT_NEAR(oh.end, 3 * s + 0.03, 1e-9);
+  ASSERT_EQ(doc.warnings.size(), 1u);  // no engine given: the letter table, said so
+  EXPECT_EQ(doc.warnings[0].severity, Severity::warning);
 }
 
 TEST(FmlMoves, ATalkFileOtherThanPhonemesIsSilentWithAWarning) {

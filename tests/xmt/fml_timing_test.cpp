@@ -97,15 +97,16 @@ TEST(FmlTiming, ExclPlaysTheBranchOfTheEventsValue) {
 }
 
 TEST(FmlTiming, BehaviorPlaysItsTemplateInPlace) {
-  // FML Figure 5: "Hello" (3 visemes at 12/s = 0.25 s), then the head turns by 3 s later.
+  // FML Figure 5: "Hello" (3 visemes at 12/s = 0.25 s, then 30 ms of fade to neutral: 0.28 s),
+  // then the head turns by 3 s later.
   const std::string model =
       "<range type=\"left\" val=\"60\"/><template name=\"hi\"><seq begin=\"0\"><talk>Hello</talk>"
       "<hdmv type=\"0\" begin=\"0\" end=\"3s\" val=\"30\"/></seq></template>";
   const auto doc = read_ok(document("<story><behavior name=\"hi\"/></story>", model));
   ASSERT_EQ(doc.timeline.clips.size(), 4u);
   EXPECT_EQ(std::get<0>(spans(doc.timeline)[3]), "head_yaw");
-  EXPECT_DOUBLE_EQ(doc.timeline.clips[3].begin, 0.25);
-  EXPECT_DOUBLE_EQ(doc.timeline.clips[3].end, 3.25);
+  EXPECT_DOUBLE_EQ(doc.timeline.clips[3].begin, 0.28);
+  EXPECT_DOUBLE_EQ(doc.timeline.clips[3].end, 3.28);
   EXPECT_EQ(doc.templates, (std::vector<std::string>{"hi"}));
 }
 

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 
+#include "fapc/speech/engine.hpp"
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/codec/fba.hpp"
 #include "fapc/transcoder/timeline_from_frames.hpp"
@@ -25,6 +26,8 @@ Result<IncludedAnimation> load(const std::string& path, std::vector<std::string>
     auto nested = read_xmto(text, path, [&] {
       XmtoOptions options;
       options.including = including;
+      // Spoken as `fapc` speaks it: the goldens are shared with the command tests.
+      options.fml.synthesize = speech::engine();
       options.load_animation = [&](const std::string& inner, const Location&) {
         std::vector<std::string> chain = including;
         chain.push_back(path);

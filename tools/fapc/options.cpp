@@ -11,7 +11,8 @@ ConvertOptions convert_options(Args& args) {
   options.intra_period = args.integer("intra-period", 0, 0, 1 << 20);
   options.profile = args.value("profile");
   options.duration = args.decimal("duration", 0, 1e7);
-  if (const auto rate = args.decimal("speech-rate", 0.1, 100)) options.visemes_per_second = *rate;
+  if (const auto rate = args.decimal("speech-rate", 80, 450)) options.words_per_minute = *rate;  // words per minute
+  if (const auto voice = args.value("voice")) options.voice = *voice;
   // The resource limits (docs/security.md): only ever raised or lowered on purpose.
   options.limits.max_frames = args.integer("max-frames", static_cast<int>(options.limits.max_frames), 1, 1 << 30);
   options.limits.max_runs = args.integer("max-runs", static_cast<int>(options.limits.max_runs), 1, 1 << 30);

@@ -15,7 +15,7 @@ using pipeline::PictureSettings;
 
 inline const std::set<std::string> kConvertValued = {"fps", "profile", "event", "quant",
                                                       "intra-period", "ranges", "masks", "from", "to",
-                                                      "duration", "speech-rate", "fap-flavour",
+                                                      "duration", "speech-rate", "voice", "fap-flavour",
                                                       "allow-include", "max-frames", "max-runs",
                                                       "max-decompressed-bytes", "max-expansion",
                                                       "size", "frame-rate", "frame", "time", "sheet"};

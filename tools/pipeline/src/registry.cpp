@@ -51,6 +51,7 @@ Registry built_in() {
   r.add(builtin::png_output());
   r.add(builtin::webm_output());
   r.add(builtin::html_output());
+  r.add(builtin::wav_output());
   return r;
 }
 

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "fapc/transcoder/audio_mix.hpp"
 #include "fapc/transcoder/render.hpp"
 
 namespace fapc::pipeline {
@@ -36,7 +37,12 @@ Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
     if (error.where.file.empty()) error.where.file = name;  // a whole-animation problem
     return error;
   }
+  // The voice: every audio clip mixed into one track, as long as the frames may last.
+  Result<std::optional<AudioTrack>> audio =
+      mix_audio(timeline.audio, static_cast<double>(options.limits.max_frames) / options.fps);
+  if (!audio) return audio.error();
   Loaded loaded;
+  loaded.audio = std::move(*audio);
   loaded.frames = std::move(rendered->frames);
   loaded.curves = render_curves(timeline, CurveOptions{options.fps, 1e-6});
   loaded.timeline = std::move(timeline);

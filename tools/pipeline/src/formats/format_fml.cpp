@@ -2,6 +2,7 @@
 // indefinite loops, --profile names the parameters of param moves.
 #include "fapc/fml/fml.hpp"
 #include "formats.hpp"
+#include "speech_options.hpp"
 #include "timeline_input.hpp"
 
 namespace fapc::pipeline::builtin {
@@ -13,7 +14,7 @@ Result<xmt::FmlDocument> read_document(const std::string& path, const ConvertOpt
   fml.events = options.events;
   fml.duration = options.duration;
   fml.max_runs = options.limits.max_runs;
-  fml.visemes_per_second = options.visemes_per_second;
+  set_speech(fml, options);
   fml.profile = &profile;
   fml.includes = options.includes;
   return xmt::load_fml(path, fml);

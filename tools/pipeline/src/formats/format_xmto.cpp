@@ -7,6 +7,7 @@
 #include "fapc/transcoder/timeline_from_frames.hpp"
 #include "fapc/xmto/xmto.hpp"
 #include "formats.hpp"
+#include "speech_options.hpp"
 #include "input_chain.hpp"
 #include "timeline_input.hpp"
 
@@ -42,7 +43,7 @@ Result<xmt::XmtoDocument> read_document(const std::string& path, const ConvertOp
   xmt::XmtoOptions xmto;
   xmto.fml.events = options.events;
   xmto.fml.profile = &profile;
-  xmto.fml.visemes_per_second = options.visemes_per_second;
+  set_speech(xmto.fml, options);
   // The documents around this one (load() has put this one last): the reader names a cycle
   // among them at the animation element, before the loader is asked.
   xmto.including = inputs_being_read();

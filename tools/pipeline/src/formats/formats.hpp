@@ -27,5 +27,6 @@ OutputFormat timeline_output();
 OutputFormat png_output();   // the face (format_face.cpp)
 OutputFormat webm_output();
 OutputFormat html_output();
+OutputFormat wav_output();   // the voice (format_wav.cpp)
 
 }  // namespace fapc::pipeline::builtin

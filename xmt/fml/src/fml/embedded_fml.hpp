@@ -19,7 +19,8 @@ struct EmbeddedFmlMove {
 Result<EmbeddedFmlMove> read_embedded_fml_move(const xml::XmlDocument& doc, const xmlNode* move,
                                                const FmlOptions& options);
 
-// The viseme clips of one utterance from time 0, stretched to `duration`, weight 63.
-std::vector<Clip> viseme_clips(const Speech& speech, double duration, const Location& where);
+// A talk as a timeline from time 0: its viseme clips by the coarticulation rule, and its audio.
+// A spoken talk keeps its own length; a silent one (letters, .pho) is stretched to `duration`.
+Timeline talk_timeline(const FmlLeaf& talk, double duration, const Coarticulation& rule);
 
 }  // namespace fapc::xmt

@@ -8,6 +8,8 @@
 #include <map>
 #include <set>
 
+#include <libxml/tree.h>
+
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "fapc/codec/include_policy.hpp"
@@ -151,6 +153,7 @@ class FmlReader {
     schedule_options.max_runs = options_.max_runs;
     auto scheduled = schedule_tree(tree_.root, schedule_options);
     if (const auto* problem = std::get_if<ScheduleError>(&scheduled)) return scheduler_error(*problem);
+    tree_.coarticulation = options_.coarticulation;
     result_.timeline = lower_fml(tree_, std::get<Schedule>(scheduled));
     once_.finish();
     return std::move(result_);
@@ -169,6 +172,8 @@ class FmlReader {
   std::map<std::string, EventDeclaration> events_;
   HeadLimits limits_;
   std::set<std::string> expressions_;
+  std::string model_language_;  // the model's <character lang voice>: every talk's default
+  std::string model_voice_;
   double nodes_ = 0;
   // Per node of the tree, by its ScheduleNode::tag - 1: its element name, for scheduler errors.
   std::vector<std::string> element_names_;
@@ -226,8 +231,10 @@ class FmlReader {
     for (const xmlNode* item : xml::element_children(model)) {
       const std::string_view name = xml::local_name(item);
       if (name == "character") {
-        check_attributes(item, {"name"});
+        check_attributes(item, {"name", "lang", "voice"});
         result_.character = xml::attribute(item, "name").value_or("");
+        model_language_ = trim(xml::attribute(item, "lang").value_or(""));
+        model_voice_ = trim(xml::attribute(item, "voice").value_or(""));
       } else if (name == "img") {
         check_attributes(item, {"src", "type"});  // for the player's face model: no FAPs
       } else if (name == "param") {
@@ -656,7 +663,7 @@ class FmlReader {
   }
 
   std::optional<ScheduleNode> talk(const xmlNode* node, const FmlTiming& timing) {
-    check_attributes(node, kTiming, {"file", "ev_val", "event_value"});
+    check_attributes(node, kTiming, {"file", "ev_val", "event_value", "lang", "voice"});
     for (const xmlNode* child : xml::element_children(node)) {
       unknown(child, "inside talk is skipped with the text in it: talk says only its own text");
     }
@@ -682,15 +689,69 @@ class FmlReader {
         fail(doc_.error(node, "talk needs text to say or a phoneme file (file=\"x.pho\")"));
         return std::nullopt;
       }
+      if (!speak(node, text, leaf)) return std::nullopt;
+    }
+    // The talk lasts until its sound ends and the mouth is back at neutral.
+    leaf.natural = leaf.speech.duration;
+    for (const Clip& clip : talk_timeline(leaf, leaf.speech.duration, options_.coarticulation).clips)
+      leaf.natural = std::max(leaf.natural, clip.end);
+    const double intrinsic = leaf.natural;
+    return add_leaf(node, std::move(leaf), move_timing(timing, intrinsic));
+  }
+
+  // Talk text: spoken by the engine, or (built without one) the letter approximation, with a
+  // warning once per document.
+  bool speak(const xmlNode* node, const std::string& text, FmlLeaf& leaf) {
+    if (!options_.synthesize) {
+      once_.report("no speech engine", doc_.warning(node, "no speech engine (fapc built with FAPC_SPEECH=OFF, or none "
+                                                          "given): talk text becomes visemes by the letter table, with "
+                                                          "no voice"));
       std::string skipped;
-      leaf.speech = visemes_from_text(text, options_.visemes_per_second, skipped);
+      leaf.speech = visemes_from_text(text, options_.words_per_minute * 12 / 175, skipped);
       if (!skipped.empty()) {
         once_.report("skipped " + skipped, doc_.warning(node, "talk: the characters '" + skipped +
                                                                   "' have no letter-to-viseme rule and are silent"));
       }
+      return true;
     }
-    const double intrinsic = leaf.speech.duration;
-    return add_leaf(node, std::move(leaf), move_timing(timing, intrinsic));
+    SpeechRequest request;
+    request.text = text;
+    request.language = talk_language(node);
+    request.voice = xml::attribute(node, "voice") ? trim(*xml::attribute(node, "voice"))
+                    : !model_voice_.empty()       ? model_voice_
+                                                  : options_.voice;
+    request.words_per_minute = options_.words_per_minute;
+    request.max_seconds = options_.max_speech_seconds;
+    request.where = xml::attribute(node, "lang") ? doc_.where(node, "lang") : doc_.where(node);
+    Result<Utterance> spoken = options_.synthesize(request);
+    if (!spoken) {
+      Diagnostic refused = spoken.error();
+      refused.source_line = doc_.line_text(refused.where.line);
+      fail(std::move(refused));
+      return false;
+    }
+    for (Diagnostic& warning : spoken->warnings) {
+      warning.source_line = doc_.line_text(warning.where.line);
+      result_.warnings.push_back(std::move(warning));
+    }
+    if (std::find(result_.languages.begin(), result_.languages.end(), request.language) == result_.languages.end())
+      result_.languages.push_back(request.language);
+    leaf.speech.visemes = viseme_spans(spoken->phonemes);
+    leaf.speech.duration = spoken->duration;
+    leaf.audio = std::move(spoken->audio);
+    return true;
+  }
+
+  // The talk's `lang`, else the xml:lang in force there (on it or an ancestor), else the model's
+  // character lang, else the options' (--voice).
+  std::string talk_language(const xmlNode* node) const {
+    if (const auto lang = xml::attribute(node, "lang")) return trim(*lang);
+    if (xmlChar* inherited = xmlNodeGetLang(node)) {
+      std::string lang = trim(reinterpret_cast<const char*>(inherited));
+      xmlFree(inherited);
+      if (!lang.empty()) return lang;
+    }
+    return !model_language_.empty() ? model_language_ : options_.language;
   }
 
   // A .pho file's visemes; an empty speech for other files (the caller warns).

@@ -15,7 +15,7 @@ struct FmlLeaf {
   enum class Kind {
     move,    // expr, hdmv, fap, param: `target` ramps from its current value to `value`
     normal,  // expr type="normal": every expression placed before ramps to 0
-    talk,    // `speech`, stretched over each run
+    talk,    // `speech` (and `audio`, when spoken): see lower_fml
     wait,    // nothing
   };
   Kind kind = Kind::wait;
@@ -23,15 +23,20 @@ struct FmlLeaf {
   std::string target;
   double value = 0;
   Speech speech;
+  AudioClip audio;  // the voice of a spoken talk (no samples: a silent one, stretched to its runs)
+  double natural = 0;  // a talk's own length: its speech, or the last viseme's fade to neutral if later
 };
 
 struct FmlTree {
   ScheduleNode root;
   std::vector<FmlLeaf> leaves;  // indexed by ScheduleNode::leaf_id, in document order
+  Coarticulation coarticulation;
 };
 
 // Move runs are placed in order of their begin (document order on ties), each starting from the
 // value its target has just before: the latest placed clip of that target, frozen at its end.
+// A talk's visemes overlap by the coarticulation rule; a spoken talk keeps its own length (its
+// audio and visemes cut at the run's end), a silent one is stretched to the run.
 Timeline lower_fml(const FmlTree& tree, const Schedule& schedule);
 
 }  // namespace fapc::xmt

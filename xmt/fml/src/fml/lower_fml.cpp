@@ -2,6 +2,7 @@
 #include <map>
 
 #include "fapc/codec/fap_table.hpp"
+#include "fapc/transcoder/audio_mix.hpp"
 #include "fapc/transcoder/profile.hpp"
 #include "fml/embedded_fml.hpp"
 #include "fml/fml_tree.hpp"
@@ -32,32 +33,36 @@ double current_value(const std::map<std::string, Clip>& latest, const std::strin
   return clip.curve.value_at(clip.local_time(std::min(t, clip.end)));
 }
 
-// One run of a talk: its visemes from the run's (possibly cut) start, cut at the run's end.
-void place_talk(const FmlLeaf& leaf, const Occurrence& run, std::vector<Clip>& out) {
+// One run of a talk: its visemes and audio from the run's (possibly cut) start, cut at its end.
+void place_talk(const FmlLeaf& leaf, const Occurrence& run, const Coarticulation& rule, Timeline& out) {
   const double shift = run.begin - run.curve_offset;
-  for (Clip clip : viseme_clips(leaf.speech, run.simple_duration, leaf.where)) {
-    clip.begin = std::max(clip.begin + shift, run.begin);
-    clip.end = std::min(clip.end + shift, run.end);
-    if (clip.end > clip.begin) out.push_back(std::move(clip));
+  const Timeline talk = talk_timeline(leaf, run.simple_duration, rule);
+  for (const Clip& inner : talk.clips) {
+    Clip clip = inner;
+    clip.begin = std::max(inner.begin + shift, run.begin);
+    clip.end = std::min(inner.end + shift, run.end);
+    if (clip.end <= clip.begin) continue;
+    clip.curve_offset = inner.curve_offset + (clip.begin - (inner.begin + shift));
+    out.clips.push_back(std::move(clip));
   }
+  for (const AudioClip& voice : talk.audio)
+    if (auto placed = placed_audio(voice, shift, run.begin, run.end)) out.audio.push_back(std::move(*placed));
 }
 
 }  // namespace
 
-std::vector<Clip> viseme_clips(const Speech& speech, double duration, const Location& where) {
-  std::vector<Clip> clips;
-  if (speech.duration <= 0) return clips;
-  const double stretch = duration / speech.duration;
-  for (const VisemeSpan& span : speech.visemes) {
-    Clip clip;
-    clip.target = "viseme." + std::string(viseme_name(span.viseme));
-    clip.begin = span.begin * stretch;
-    clip.end = span.end * stretch;
-    clip.curve = Curve::constant(63);
-    clip.source = where;
-    clips.push_back(std::move(clip));
-  }
-  return clips;
+Timeline talk_timeline(const FmlLeaf& talk, double duration, const Coarticulation& rule) {
+  Timeline out;
+  const Speech& speech = talk.speech;
+  const double natural = std::max(talk.natural, speech.duration);
+  if (natural <= 0) return out;
+  const bool spoken = !talk.audio.samples.empty();
+  const double stretch = spoken ? 1.0 : duration / natural;
+  out.clips = coarticulated_viseme_clips(speech.visemes, stretch, rule, talk.where);
+  if (spoken) out.audio.push_back(talk.audio);
+  out.explicit_end = duration;
+  out.end_source = talk.where;
+  return out;
 }
 
 Timeline lower_fml(const FmlTree& tree, const Schedule& schedule) {
@@ -86,7 +91,7 @@ Timeline lower_fml(const FmlTree& tree, const Schedule& schedule) {
         break;
       }
       case FmlLeaf::Kind::talk:
-        place_talk(leaf, *run, timeline.clips);
+        place_talk(leaf, *run, tree.coarticulation, timeline);
         break;
       case FmlLeaf::Kind::wait:
         break;

@@ -1,5 +1,5 @@
 // What `talk` says, as MPEG-4 visemes in time (docs/fml.md, "talk"): text through a letter-to-viseme
-// approximation (fapc has no text-to-speech), or phoneme timings from an MBROLA .pho file through
+// approximation (the fallback when fapc is built without its speech engine), or phoneme timings from an MBROLA .pho file through
 // the standard's phoneme-to-viseme table. Times are seconds from the talk's start.
 #pragma once
 
@@ -8,15 +8,11 @@
 #include <vector>
 
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/transcoder/speech.hpp"
 
 namespace fapc::xmt {
 
-struct VisemeSpan {
-  int viseme = 0;  // 1..14 (fap_table.hpp viseme_name); silence is a gap, not a span
-  double begin = 0;
-  double end = 0;
-  friend bool operator==(const VisemeSpan&, const VisemeSpan&) = default;
-};
+using fapc::VisemeSpan;
 
 struct Speech {
   std::vector<VisemeSpan> visemes;  // in time order, not overlapping

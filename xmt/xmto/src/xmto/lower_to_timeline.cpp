@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <map>
 
+#include "fapc/transcoder/audio_mix.hpp"
 #include "fapc/transcoder/render.hpp"
 #include "xmto/xmto_tree.hpp"
 
@@ -12,10 +13,12 @@ struct TaggedClip {
   Clip clip;
 };
 
-// The included animation's clips for one run: shifted to the run's begin, cut at its end.
+// The included animation's clips and audio for one run: shifted to the run's begin, cut at its end.
 void place_included(const Leaf& leaf, std::size_t id, const Occurrence& run,
-                    std::vector<TaggedClip>& out) {
+                    std::vector<TaggedClip>& out, std::vector<AudioClip>& audio) {
   const double shift = run.begin - run.curve_offset;
+  for (const AudioClip& sound : leaf.included->audio)
+    if (auto placed = placed_audio(sound, shift, run.begin, run.end)) audio.push_back(std::move(*placed));
   for (const Clip& inner : leaf.included->clips) {
     Clip clip = inner;
     clip.begin = std::max(inner.begin + shift, run.begin);
@@ -65,13 +68,14 @@ void place_to_animations(const XmtoTree& tree, const std::map<std::size_t, std::
 
 Timeline lower_to_timeline(const XmtoTree& tree, const Schedule& schedule) {
   std::vector<TaggedClip> clips;
+  std::vector<AudioClip> audio;
   std::map<std::size_t, std::vector<Occurrence>> to_runs;
   for (const Occurrence& run : schedule.occurrences) {
     // A run cut to nothing (its parent ended first) contributes nothing, frozen or not.
     if (run.end <= run.begin) continue;
     const Leaf& leaf = tree.leaves[run.leaf_id];
     if (leaf.included) {
-      place_included(leaf, run.leaf_id, run, clips);
+      place_included(leaf, run.leaf_id, run, clips, audio);
     } else if (leaf.function.to_animation) {
       to_runs[run.leaf_id].push_back(run);
     } else {
@@ -85,6 +89,7 @@ Timeline lower_to_timeline(const XmtoTree& tree, const Schedule& schedule) {
   });
   Timeline timeline;
   for (TaggedClip& tagged : clips) timeline.clips.push_back(std::move(tagged.clip));
+  timeline.audio = std::move(audio);
   timeline.explicit_end = schedule.end;
   timeline.end_source =
       end_source(schedule, tree.root.source, [&](std::size_t leaf) { return tree.leaves[leaf].where; });

@@ -341,7 +341,7 @@ class DocumentReader {
         return scheduled_node(std::move(group), node);
       }
       case FmlLeaf::Kind::talk:
-        leaf.included = Timeline{viseme_clips(fml.speech, length, doc_.where(node)), length, doc_.where(node)};
+        leaf.included = talk_timeline(fml, length, options_.fml.coarticulation);
         break;
       case FmlLeaf::Kind::wait:
         leaf.included = Timeline{{}, length, doc_.where(node)};

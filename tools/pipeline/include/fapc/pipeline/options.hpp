@@ -29,7 +29,13 @@ struct ConvertOptions {
   std::optional<std::string> profile;         // a profile file; empty: the default profile
   std::optional<double> duration;             // the end of timelines that give none
   std::map<std::string, std::string> events;  // FML events, NAME -> VALUE
-  double visemes_per_second = 12;             // FML talk text
+  // FML talk text (docs/speech.md): the speaking rate in words per minute (--speech-rate, 80 to
+  // 450; the letter table without an engine speaks rate * 12 / 175 visemes per second), the voice
+  // (--voice LANGUAGE[+VARIANT] or +VARIANT) where the document names none, and whether to use the
+  // speech engine at all (false: the letter table, as in a build without one).
+  double words_per_minute = 175;
+  std::string voice;
+  bool speech_engine = true;
   int quant = 1;                              // fap_quant for .fba/.mp4 outputs
   int intra_period = 0;                       // 0: the encoder decides
   std::string ranges = "fit";                 // fit | max

@@ -16,6 +16,7 @@
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/include_policy.hpp"
 #include "fapc/transcoder/profile.hpp"
+#include "fapc/transcoder/speech.hpp"
 #include "fapc/transcoder/timeline.hpp"
 
 namespace fapc::xmt {
@@ -29,7 +30,16 @@ struct FmlOptions {
   std::int64_t max_runs = Limits{}.max_runs;
   // Names that `param` moves may use besides the FAP names; nullptr: the default profile.
   const Profile* profile = nullptr;
-  double visemes_per_second = 12;  // talk text: the speaking rate of the letter approximation
+  // talk text (docs/speech.md): spoken by `synthesize` (fapc::speech::engine()); without one, the
+  // letter-to-viseme approximation at words_per_minute * 12 / 175 visemes per second, with a
+  // warning. The language and voice variant apply where neither the talk nor the model's
+  // character names one.
+  Synthesizer synthesize;
+  std::string language = "en";
+  std::string voice;
+  double words_per_minute = 175;
+  double max_speech_seconds = 3600;  // per talk: longer is a limit_exceeded error
+  Coarticulation coarticulation;
   // Reads the phoneme file of `talk file=` (a path already resolved against the document's
   // folder); empty: read from disk.
   std::function<Result<std::string>(const std::string& path)> read_file;
@@ -43,6 +53,7 @@ struct FmlDocument {
   std::vector<std::pair<std::string, std::string>> events;  // name, the value used ("" when none)
   std::vector<std::string> templates;                      // model template names
   std::vector<std::string> phoneme_files;                  // resolved paths of talk file=
+  std::vector<std::string> languages;                      // the languages talk text was spoken in
   Diagnostics warnings;
 };
 

@@ -47,7 +47,7 @@ struct XmtoOptions {
   // tree. (The FML moves' talk files follow fml.includes.)
   IncludePolicy includes;
   // FML moves written in the document (docs/xmt-omega.md, "FML moves inside XMT-Omega"): event
-  // values for repeat, the profile for param. Their visemes_per_second is the talk rate.
+  // values for repeat, the profile for param, the speech engine and voice for talk.
   FmlOptions fml;
 };
 

@@ -1,0 +1,26 @@
+// The speech engine (docs/speech.md): eSpeak NG through its library API, synchronous, with
+// phoneme events. This library is the only part of fapc that links libespeak-ng (GPL-3.0+), so a
+// program that links it is GPL-3.0+ too; fapc::codec, fapc::transcoder and fapc::mpeg4 never do.
+// Built without the engine (-DFAPC_SPEECH=OFF, or libespeak-ng not found), engine() is empty and
+// callers fall back to the letter-to-viseme table with a warning.
+#pragma once
+
+#include <string>
+
+#include "fapc/transcoder/speech.hpp"
+
+namespace fapc::speech {
+
+// True when this build has the engine.
+bool available();
+
+// "eSpeak NG 1.51" (the library's own version), or "none".
+std::string engine_name();
+
+// A synthesizer that speaks with eSpeak NG; an empty function when !available(). Calls from any
+// thread are serialised (eSpeak NG keeps global state). Errors, at request.where: an unknown
+// language or voice variant, a rate outside 80..450 words per minute, speech longer than
+// request.max_seconds (limit_exceeded), an engine failure.
+Synthesizer engine();
+
+}  // namespace fapc::speech

@@ -1,0 +1,169 @@
+// eSpeak NG in synchronous mode: espeak_Synth calls back with blocks of samples and the events
+// of those samples, phoneme events included (espeakINITIALIZE_PHONEME_EVENTS). eSpeak NG keeps
+// its voice, rate and callback in globals, so one mutex covers every use of it.
+#include "fapc/speech/engine.hpp"
+
+#ifdef FAPC_HAVE_ESPEAK
+
+#include <espeak-ng/speak_lib.h>
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <mutex>
+#include <set>
+
+#include "fapc/speech/phoneme_visemes.hpp"
+
+namespace fapc::speech {
+namespace {
+
+std::mutex& engine_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+// What one espeak_Synth call collects. The callback reaches it through `collecting`, set while
+// the mutex is held (a block of samples may come with no event, so user_data cannot be relied on).
+struct Collect {
+  std::vector<std::int16_t> samples;
+  std::vector<std::pair<std::string, int>> phonemes;  // mnemonic, start in ms
+  std::size_t max_samples = 0;
+  bool too_long = false;
+};
+
+Collect* collecting = nullptr;
+
+int on_samples(short* wav, int count, espeak_EVENT* events) {
+  Collect* into = collecting;
+  if (into == nullptr) return 0;
+  for (espeak_EVENT* e = events; e != nullptr && e->type != espeakEVENT_LIST_TERMINATED; ++e) {
+    if (e->type == espeakEVENT_PHONEME) {
+      char name[9] = {};
+      std::memcpy(name, e->id.string, 8);
+      into->phonemes.emplace_back(name, e->audio_position);
+    }
+  }
+  if (wav == nullptr || count <= 0) return 0;
+  if (into->samples.size() + static_cast<std::size_t>(count) > into->max_samples) {
+    into->too_long = true;
+    return 1;  // stop the synthesis
+  }
+  into->samples.insert(into->samples.end(), wav, wav + count);
+  return 0;
+}
+
+struct Engine {
+  int sample_rate = 0;
+  std::filesystem::path data;  // espeak-ng-data: voices/!v holds the variants
+};
+
+// Initialised once, under the mutex; sample_rate 0 when eSpeak NG could not start.
+const Engine& started() {
+  static const Engine engine = [] {
+    Engine e;
+    e.sample_rate = espeak_Initialize(AUDIO_OUTPUT_SYNCHRONOUS, 0, nullptr,
+                                      espeakINITIALIZE_PHONEME_EVENTS | espeakINITIALIZE_DONT_EXIT);
+    if (e.sample_rate <= 0) e.sample_rate = 0;
+    const char* path = nullptr;
+    espeak_Info(&path);
+    if (path != nullptr) e.data = path;
+    espeak_SetSynthCallback(on_samples);
+    return e;
+  }();
+  return engine;
+}
+
+bool plain_name(const std::string& s) {
+  return !s.empty() && s.size() <= 40 &&
+         std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_'; });
+}
+
+Result<Utterance> speak(const SpeechRequest& request) {
+  const std::lock_guard lock(engine_mutex());
+  const Engine& engine = started();
+  if (engine.sample_rate == 0)
+    return make_error(ErrorKind::unsupported, request.where, "the speech engine (eSpeak NG) could not start: is espeak-ng-data installed?");
+  if (!plain_name(request.language))
+    return make_error(ErrorKind::bad_input, request.where, "'" + request.language + "' is not a language name (like en, en-us, fr, de)");
+  if (!request.voice.empty() &&
+      (!plain_name(request.voice) || !std::filesystem::is_regular_file(engine.data / "voices" / "!v" / request.voice))) {
+    return make_error(ErrorKind::bad_input, request.where,
+                      "unknown voice '" + request.voice + "' (voice variants of eSpeak NG: m1..m7, f1..f5, klatt, whisper, ...; `espeak-ng --voices=variant` lists them)");
+  }
+  if (espeak_SetVoiceByName(request.language.c_str()) != EE_OK)
+    return make_error(ErrorKind::bad_input, request.where,
+                      "unknown language '" + request.language + "' (`espeak-ng --voices` lists the languages)");
+  if (!request.voice.empty()) {
+    const std::string name = request.language + "+" + request.voice;
+    if (espeak_SetVoiceByName(name.c_str()) != EE_OK)
+      return make_error(ErrorKind::bad_input, request.where, "eSpeak NG refused the voice '" + name + "'");
+  }
+  const int rate = static_cast<int>(request.words_per_minute + 0.5);
+  if (rate < espeakRATE_MINIMUM || rate > espeakRATE_MAXIMUM)
+    return make_error(ErrorKind::bad_input, request.where, "the speech rate " + std::to_string(rate) + " words per minute is outside 80 to 450");
+  espeak_SetParameter(espeakRATE, rate, 0);
+
+  Collect collect;
+  collect.max_samples = static_cast<std::size_t>(std::max(0.0, request.max_seconds) * engine.sample_rate);
+  collecting = &collect;
+  const espeak_ERROR status = espeak_Synth(request.text.c_str(), request.text.size() + 1, 0, POS_CHARACTER, 0,
+                                           espeakCHARS_UTF8, nullptr, nullptr);
+  collecting = nullptr;
+  if (collect.too_long) {
+    return make_error(ErrorKind::limit_exceeded, request.where,
+                      "the speech would last more than " + std::to_string(request.max_seconds) +
+                          " s (the frame limit, --max-frames, at the frame rate)");
+  }
+  if (status != EE_OK) return make_error(ErrorKind::io, request.where, "eSpeak NG failed to synthesise this text");
+
+  Utterance out;
+  out.audio.sample_rate = engine.sample_rate;
+  out.audio.samples = std::move(collect.samples);
+  out.audio.source = request.where;
+  out.duration = static_cast<double>(out.audio.samples.size()) / engine.sample_rate;
+  std::set<std::string> unknown;
+  for (std::size_t i = 0; i < collect.phonemes.size(); ++i) {
+    const auto& [name, ms] = collect.phonemes[i];
+    if (name.empty() || name[0] == '(') continue;  // a language switch mark, not a sound
+    SpokenPhoneme p;
+    p.name = name;
+    p.begin = std::min(out.duration, ms / 1000.0);
+    p.end = i + 1 < collect.phonemes.size() ? std::min(out.duration, collect.phonemes[i + 1].second / 1000.0) : out.duration;
+    p.viseme = viseme_of_espeak_phoneme(request.language, name);
+    if (p.viseme < 0) {
+      if (unknown.insert(name).second)
+        out.warnings.push_back(make_warning(request.where, "the speech engine's phoneme '" + name + "' (" + request.language +
+                                                               ") has no viseme in fapc's table: the mouth keeps the shape around it"));
+      p.viseme = 0;
+    }
+    out.phonemes.push_back(std::move(p));
+  }
+  return out;
+}
+
+}  // namespace
+
+bool available() { return true; }
+
+std::string engine_name() {
+  const char* path = nullptr;
+  const char* version = espeak_Info(&path);
+  return std::string("eSpeak NG ") + (version != nullptr ? version : "");
+}
+
+Synthesizer engine() { return speak; }
+
+}  // namespace fapc::speech
+
+#else
+
+namespace fapc::speech {
+
+bool available() { return false; }
+std::string engine_name() { return "none"; }
+Synthesizer engine() { return {}; }
+
+}  // namespace fapc::speech
+
+#endif
