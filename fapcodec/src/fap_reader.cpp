@@ -91,6 +91,8 @@ class Reader {
     int first_column;
   };
   std::vector<FrameLine> value_lines_;
+  // The header's frame count, for the warning when the file holds another number of frames.
+  FrameLine header_count_at_{0, {}, 0};
   bool warned_float_ = false;
   bool warned_comment_after_header_ = false;
 };
@@ -118,7 +120,9 @@ std::optional<Diagnostic> Reader::read_header(const Line& line) {
                     "header frame count must be a non-negative integer, found '" +
                         std::string(count_token.text) + "'");
   facts.header_fps = *fps;
+  facts.header_fps_at = Location::text(file_, line.number, fps_token.column);
   facts.header_count = *count;
+  header_count_at_ = FrameLine{line.number, line.text, count_token.column};
   out_.sequence.name = facts.header_name;
   out_.sequence.fps = static_cast<int>(std::lround(*fps));
   if (std::floor(*fps) != *fps)
@@ -408,7 +412,7 @@ Result<FapReadResult> Reader::run() {
   if (auto e = place_frames_in_time()) return *e;
   const auto frames = static_cast<long long>(out_.sequence.frames.size());
   if (facts.has_header && facts.header_count != frames)
-    warn_file("header says " + std::to_string(facts.header_count) + " frames, file has " +
+    warn_at(header_count_at_, header_count_at_.first_column,"header says " + std::to_string(facts.header_count) + " frames, file has " +
               std::to_string(frames));
   if (frames == 0) warn_file("file has no frames");
   if (out_.sequence.name.empty()) out_.sequence.name = file_;

@@ -69,19 +69,31 @@ Result<std::string> gunzip(std::string_view bytes, const std::string& file, cons
   z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
   z.avail_in = static_cast<uInt>(bytes.size());
   int rc = Z_OK;
-  while (rc != Z_STREAM_END) {
+  for (;;) {
+    if (rc == Z_STREAM_END) {
+      // gzip allows members one after the other (RFC 1952 2.2; zcat reads them all): read each
+      // under the same limits. Anything else after a member is refused rather than ignored.
+      if (z.avail_in == 0) break;
+      const auto offset = static_cast<std::int64_t>(bytes.size() - z.avail_in);
+      if (!is_gzip(bytes.substr(static_cast<std::size_t>(offset)))) {
+        inflateEnd(&z);
+        return make_error(Location::binary(file, offset),
+                          "gzip: " + std::to_string(z.avail_in) + " bytes after the end of the gzip data");
+      }
+      inflateReset(&z);
+    }
     z.next_out = reinterpret_cast<Bytef*>(buffer);
     z.avail_out = sizeof buffer;
     rc = inflate(&z, Z_NO_FLUSH);
     if (rc != Z_OK && rc != Z_STREAM_END) {
-      const auto offset = static_cast<std::int64_t>(z.total_in);
+      const auto offset = static_cast<std::int64_t>(bytes.size() - z.avail_in);
       const std::string why = z.msg ? z.msg : (rc == Z_BUF_ERROR ? "truncated gzip data" : "bad gzip data");
       inflateEnd(&z);
       return make_error(Location::binary(file, offset), "gzip: " + why);
     }
     const std::size_t produced = sizeof buffer - z.avail_out;
     if (out.size() + produced > allowed) {
-      const auto offset = static_cast<std::int64_t>(z.total_in);
+      const auto offset = static_cast<std::int64_t>(bytes.size() - z.avail_in);
       inflateEnd(&z);
       return limit_error(Location::binary(file, offset),
                          "gzip data inflates to more than " + std::to_string(allowed) + " bytes",

@@ -35,6 +35,40 @@ TEST(AlgebraLimits, ALongDelayAtAHighRateIsRefusedBeforeAllocating) {
   EXPECT_TRUE(evaluate("joy.fap >> 60", animations(1000)).ok());
 }
 
+TEST(AlgebraLimits, ChainedDelaysAddUpAgainstTheLimitAndActAsOne) {
+  // 50 + 50 slots on a 50-slot animation: 150, past a limit of 120, though each '>>' alone is not.
+  const auto r = evaluate("joy.fap >> 2 >> 2", animations(25), 120);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().kind, ErrorKind::limit_exceeded);
+  EXPECT_EQ(r.error().where.column, 14);
+  // Applied once: the same slots as one delay of the sum (2,000 chained '>> 0.04' once copied
+  // the animation 2,000 times).
+  std::string chain = "joy.fap";
+  for (int i = 0; i < 2000; ++i) chain += " >> 0.04";
+  const auto chained = evaluate(chain, animations(25));
+  const auto single = evaluate("joy.fap >> 80", animations(25));
+  ASSERT_TRUE(chained.ok() && single.ok());
+  EXPECT_EQ(chained->animation.frames.size(), 2050u);
+  EXPECT_EQ(chained->animation.frames, single->animation.frames);
+}
+
+TEST(AlgebraLimits, AnAmplifierThatWouldSaturateAFapValueIsRefusedAtTheAmplifier) {
+  const OperandLoader jaw = [](const std::string&, int) -> Result<Value> {
+    Value v;
+    v.animation.fps = 25;
+    FacialState s;
+    s.at(3) = 500;
+    v.animation.frames.assign(2, s);
+    return v;
+  };
+  for (const char* text : {"1e308 * joy.fap", "joy.fap * -1e308", "1e7 * joy.fap"}) {
+    const auto r = evaluate(text, jaw);
+    ASSERT_FALSE(r.ok()) << text;
+    EXPECT_EQ(r.error().where.column, text[0] == 'j' ? 11 : 1) << text;
+  }
+  EXPECT_TRUE(evaluate("1e6 * joy.fap", jaw).ok());  // 5e8 still fits in 32 bits
+}
+
 TEST(AlgebraLimits, MeetingOnTheHigherRateCountsAgainstTheLimit) {
   // 2 s at 25 fps brought to 1000 fps is 2000 slots; the limit is 1000.
   const OperandLoader mixed = [](const std::string& name, int) -> Result<Value> {

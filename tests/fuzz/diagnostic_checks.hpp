@@ -15,15 +15,9 @@ inline bool is_placed(const Diagnostic& d) {
   return !d.where.file.empty() && (d.where.line > 0 || d.where.byte_offset >= 0);
 }
 
-// FAPC_FUZZ_UNPLACED_OK=1 lets a campaign look past an unplaced diagnostic that is already known,
-// for crashes behind it; by default it stops the run.
+// An unplaced diagnostic stops the run like a crash (there is no switch to look past one).
 inline void require_placed(const Diagnostic& d) {
   if (is_placed(d)) return;
-  static const bool tolerated = [] {
-    const char* value = std::getenv("FAPC_FUZZ_UNPLACED_OK");
-    return value && std::string_view(value) == "1";
-  }();
-  if (tolerated) return;
   std::fprintf(stderr, "unplaced diagnostic: %s\n", format_diagnostic(d).c_str());
   std::abort();
 }

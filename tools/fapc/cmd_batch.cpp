@@ -46,7 +46,11 @@ int run_batch(const std::vector<std::string>& argv) {
   if (!out_dir) return usage_error("batch", "missing -o DIR");
   if (args.positionals().empty()) return usage_error("batch", "expected at least one INPUT");
   auto jobs = pipeline::plan_batch(args.positionals(), *out_dir, split_list(args.value("to").value_or("fap")));
-  if (!jobs) return usage_error("batch", jobs.error().message);
+  if (!jobs) {
+    // A usage error about a named path is reported as a diagnostic on that path.
+    if (jobs.error().where.file.empty()) return usage_error("batch", jobs.error().message);
+    return report_outcome({}, jobs.error());
+  }
   // A folder given to batch is the inputs' tree: their includes may read anywhere in it.
   for (const std::string& input : args.positionals())
     if (std::filesystem::is_directory(input)) options.includes.allowed_folders.push_back(input);

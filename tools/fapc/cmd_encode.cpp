@@ -25,7 +25,7 @@ int run_encode(const std::vector<std::string>& argv) {
   auto loaded = pipeline::load(input, options);
   if (!loaded) return report_outcome({}, loaded.error());
   report_all(loaded->warnings);
-  auto encoded = pipeline::encode_checked(loaded->frames, options, input, args.flag("align-planes"));
+  auto encoded = pipeline::encode_checked(*loaded, options, input, args.flag("align-planes"));
   if (!encoded) return report_outcome({}, encoded.error());
   const std::string bytes(encoded->bytes.begin(), encoded->bytes.end());
   if (*output == "-") {

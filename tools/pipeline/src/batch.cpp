@@ -48,8 +48,10 @@ Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs,
   }
   if (kinds.empty()) return usage("no output kind in --to");
   std::error_code ec;
+  // Checked here, not by the command line, so every caller gets it: the error names the file.
   if (fs::exists(out_dir, ec) && !fs::is_directory(out_dir, ec))
-    return usage("-o " + out_dir + " names an existing file, not a folder");
+    return make_error(ErrorKind::usage, Location{out_dir, 0, 0, -1},
+                      "-o names an existing file, not a folder (batch writes into a folder)");
   const fs::path out_folder = fs::weakly_canonical(out_dir);
   struct Found {
     std::string input;

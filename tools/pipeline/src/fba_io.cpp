@@ -55,8 +55,18 @@ Result<DecodedFba> read_fba_file(const std::string& path, const Limits& limits) 
   return decode_fba(std::span<const std::uint8_t>(data, bytes->size()), options);
 }
 
-Result<EncodedFba> encode_checked(const FapSequence& sequence, const ConvertOptions& options,
+Result<EncodedFba> encode_checked(const Loaded& loaded, const ConvertOptions& options,
                                   const std::string& input, bool align_planes) {
+  const FapSequence& sequence = loaded.frames;
+  // The stream codes the rate in 8 bits (docs/fba-bitstream.md): a rate outside them is the
+  // input's, refused where the input wrote it (or, set by --fps, against the input as a whole).
+  if (sequence.fps < 1 || sequence.fps > kMaxFbaFrameRate) {
+    const bool written = !loaded.rate_at.file.empty() && loaded.rate_written == sequence.fps;
+    return make_error(written ? loaded.rate_at : Location{input, 0, 0, -1},
+                      "frame rate " + std::to_string(sequence.fps) +
+                          " cannot be coded in an FBA stream (1 to " + std::to_string(kMaxFbaFrameRate) +
+                          " frames per second)" + (written ? "" : "; --fps sets another"));
+  }
   FbaEncodeOptions fba = fba_encode_options(options);
   fba.align_planes = align_planes;
   auto encoded = encode_fba(sequence, fba);

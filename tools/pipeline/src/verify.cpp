@@ -187,7 +187,7 @@ VerifyResult verify_input(const std::string& path, const ConvertOptions& options
   if (!loaded) return failed(loaded.error());
   ConvertOptions checked = options;
   checked.verify = true;
-  auto encoded = encode_checked(loaded->frames, checked, path);
+  auto encoded = encode_checked(*loaded, checked, path);
   if (!encoded) return failed(encoded.error(), loaded->warnings);
   const double bits = loaded->frames.frames.empty()
                           ? 0.0

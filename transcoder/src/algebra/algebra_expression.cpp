@@ -187,6 +187,7 @@ class Evaluator {
 
   Result<Term> product() {
     if (number_ahead()) {
+      const std::size_t w_at = at_;
       Result<double> w = number();
       if (!w) return w.error();
       if (!accept("*")) return error(at_, "expected '*' after the amplifier " + format(*w));
@@ -196,15 +197,19 @@ class Evaluator {
       --depth_;
       if (!operand) return operand.error();
       if (auto bad = overlap_only(*operand); bad) return *bad;
+      if (auto bad = out_of_range(w_at, operand->value, *w); bad) return *bad;
       amplify_in_place(operand->value, *w);
       return operand;
     }
     Result<Term> operand = postfix();
     if (!operand) return operand.error();
     while (accept("*")) {
+      skip_blanks();
+      const std::size_t w_at = at_;
       Result<double> w = number();
       if (!w) return w.error();
       if (auto bad = overlap_only(*operand); bad) return *bad;
+      if (auto bad = out_of_range(w_at, operand->value, *w); bad) return *bad;
       amplify_in_place(operand->value, *w);
     }
     return operand;
@@ -213,6 +218,9 @@ class Evaluator {
   Result<Term> postfix() {
     Result<Term> term = primary();
     if (!term) return term.error();
+    // Chained delays ("x >> 1 >> 1 ...") add up and are applied once, when the term ends: one
+    // copy of the animation, not one per '>>' (1,500 of them once took seconds and gigabytes).
+    long delay_frames = 0;
     for (;;) {
       skip_blanks();
       const std::size_t at = at_;
@@ -239,16 +247,18 @@ class Evaluator {
         // operator only delays (docs/algebra.md).
         if (*seconds < 0 || *seconds > 86400)
           return error(at, "a delay is from 0 to 86400 s (a day); " + format(*seconds) + " is not");
+        const long frames = std::lround(*seconds * term->value.animation.fps);
         const double slots = static_cast<double>(term->value.animation.size()) +
-                             std::round(*seconds * term->value.animation.fps);
+                             static_cast<double>(delay_frames) + static_cast<double>(frames);
         if (slots > static_cast<double>(max_frames_)) {
           char what[96];
           std::snprintf(what, sizeof what, "the delayed animation spans %.15g frames at %d fps", slots,
                         term->value.animation.fps);
           return frames_limit(at, what);
         }
-        term->value.animation = shifted(term->value.animation, *seconds);
+        delay_frames += frames;
       } else {
+        if (delay_frames > 0) delay_in_place(term->value.animation, delay_frames);
         return term;
       }
     }
@@ -318,6 +328,26 @@ class Evaluator {
     }
     out.animation.carried &= t.mask->bits;
     return out;
+  }
+
+  // An amplifier that takes some FAP value past what a FAP value can hold (32 bits) would
+  // saturate it silently: refused at the amplifier, naming the first such value.
+  std::optional<Diagnostic> out_of_range(std::size_t offset, const Value& value, double w) const {
+    const auto check = [&](const FacialState& s) -> std::optional<Diagnostic> {
+      for (int fap = 3; fap <= kFapCount; ++fap) {
+        const double product = std::round(w * s.at(fap));
+        if (product <= 2147483647.0 && product >= -2147483648.0) continue;
+        return error(offset, "the amplifier " + format(w) + " takes FAP " + std::to_string(fap) + " from " +
+                                 std::to_string(s.at(fap)) + " to " + format(product) +
+                                 ", beyond the 32-bit range of FAP values");
+      }
+      return std::nullopt;
+    };
+    if (value.state) return check(*value.state);
+    for (const auto& frame : value.animation.frames)
+      if (frame)
+        if (auto bad = check(*frame)) return bad;
+    return std::nullopt;
   }
 
   static void amplify_in_place(Value& value, double w) {

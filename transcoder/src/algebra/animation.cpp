@@ -113,6 +113,10 @@ Animation shifted(const Animation& a, double seconds) {
   return out;
 }
 
+void delay_in_place(Animation& a, long frames) {
+  if (frames > 0) a.frames.insert(a.frames.begin(), static_cast<std::size_t>(frames), std::nullopt);
+}
+
 Animation sum(const Animation& a, const Animation& b, double v) {
   return frame_by_frame(a, b, [v](const FacialState& s, const FacialState& t) { return sum(s, t, v); });
 }

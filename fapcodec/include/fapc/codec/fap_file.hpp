@@ -20,6 +20,7 @@ struct FapFileFacts {
   std::string header_name;    // everything between version and fps, joined by single spaces
   double header_fps = 0;      // as written (may be fractional)
   long long header_count = -1;  // as written; -1 when there is no header
+  Location header_fps_at;       // where the header's frame rate is written
   bool crlf = false;                 // V1
   bool trailing_spaces = false;      // V2
   bool final_newline = true;         // V3 when false

@@ -64,6 +64,9 @@ struct EncodedFba {
   std::vector<CodedPlane> planes;
 };
 
+// The highest frame rate the stream can code (8 bits, docs/fba-bitstream.md).
+inline constexpr int kMaxFbaFrameRate = 255;
+
 // Frame numbers are coded relative to the first frame; gaps become skip counts. Errors (a value
 // no range can carry, a frame rate above 255, bad FAP 1/2 fields) carry no file name: the caller
 // knows which input the sequence came from.

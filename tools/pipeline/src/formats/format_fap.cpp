@@ -28,6 +28,10 @@ Result<Loaded> load_fap(const std::string& path, const ConvertOptions& options) 
   if (!read) return read.error();
   Loaded loaded;
   loaded.frames = std::move(read->sequence);
+  if (read->facts.has_header) {
+    loaded.rate_at = read->facts.header_fps_at;
+    loaded.rate_written = loaded.frames.fps;
+  }
   loaded.warnings = std::move(read->warnings);
   if (options.facts) loaded.facts = facts_of(read->facts);
   return loaded;

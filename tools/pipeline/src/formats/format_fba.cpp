@@ -54,7 +54,7 @@ Result<Loaded> load_fba(const std::string& path, const ConvertOptions& options) 
 }
 
 Result<std::string> write_fba(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
-  auto encoded = encode_checked(loaded.frames, options, loaded.named(path));
+  auto encoded = encode_checked(loaded, options, loaded.named(path));
   if (!encoded) return encoded.error();
   return std::string(encoded->bytes.begin(), encoded->bytes.end());
 }

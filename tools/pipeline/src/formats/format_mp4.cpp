@@ -131,7 +131,7 @@ Result<std::string> write_mp4_file(const Loaded& loaded, const std::string& path
   // An empty input would make a track without samples: say so about the input.
   if (loaded.frames.frames.empty())
     return make_error(Location{loaded.named(path), 0, 0, -1}, "no frames to write: an MP4 FBA track needs at least one");
-  auto encoded = encode_checked(loaded.frames, options, loaded.named(path), /*align_planes=*/true);
+  auto encoded = encode_checked(loaded, options, loaded.named(path), /*align_planes=*/true);
   if (!encoded) return encoded.error();
   std::optional<xmt::AudioTrackInput> voice;
   if (loaded.audio) {

@@ -83,6 +83,8 @@ FapSequence sequence_from(const Animation& a, const std::string& name);
 Animation resample(const Animation& a, int fps);
 // Delayed by `seconds` (whole frames at its own rate), earlier slots empty.
 Animation shifted(const Animation& a, double seconds);
+// Delayed by `frames` (>= 0) empty slots, in place: no copy of the frames already there.
+void delay_in_place(Animation& a, long frames);
 
 // Frame by frame on a common rate (the higher one): both present -> the operator; one present ->
 // that state; neither -> the neutral state (Algebra definition 5, used for every operator).

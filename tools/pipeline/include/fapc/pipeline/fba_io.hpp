@@ -5,6 +5,7 @@
 #include <string>
 
 #include "fapc/codec/fba.hpp"
+#include "fapc/pipeline/loaded.hpp"
 #include "fapc/pipeline/options.hpp"
 #include "fapc/mpeg4/fba_track.hpp"
 #include "fapc/mpeg4/mp4_reader.hpp"
@@ -17,9 +18,10 @@ FbaEncodeOptions fba_encode_options(const ConvertOptions& options);
 // Reads and decodes a .fba file (gzip inflated transparently).
 Result<DecodedFba> read_fba_file(const std::string& path, const Limits& limits = {});
 
-// Encodes `sequence`, which came from `input`: errors name the input. With options.verify, the
-// stream is decoded and checked too (ErrorKind::verification_failed when it does not match).
-Result<EncodedFba> encode_checked(const FapSequence& sequence, const ConvertOptions& options,
+// Encodes the frames of `loaded`, which came from `input`: errors name the input (a frame rate
+// the stream cannot code, the place the input wrote it). With options.verify, the stream is
+// decoded and checked too (ErrorKind::verification_failed when it does not match).
+Result<EncodedFba> encode_checked(const Loaded& loaded, const ConvertOptions& options,
                                   const std::string& input, bool align_planes = false);
 
 // The MP4 FBA track of an encoding made with align_planes: each plane, started by its start

@@ -23,6 +23,10 @@ struct Loaded {
   // The file errors about these frames name: the input, or `output` when there is none.
   const std::string& named(const std::string& output) const { return origin.empty() ? output : origin; }
   FapSequence frames;
+  // Where the input wrote the frames' rate (a .fap header), for errors about the rate; empty
+  // when it came from an option or a default. `rate_written` is the rate written there.
+  Location rate_at;
+  int rate_written = 0;
   std::optional<Curves> curves;
   std::optional<Timeline> timeline;
   // The sound that goes with the frames (the timeline's audio mixed, or a container's audio
