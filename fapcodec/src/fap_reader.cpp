@@ -1,5 +1,6 @@
 // The tolerant .fap reader of docs/fap-files.md: line-based, any whitespace, every variant found in
 // real files, and a positioned error for anything else.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -17,6 +18,20 @@ using fapfile::Token;
 
 std::optional<long long> parse_integer(std::string_view s) {
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  // Most tokens are short integers: read them here (no more than 18 digits cannot overflow),
+  // and leave the rest, with its errors, to std::from_chars.
+  if (!s.empty() && s.size() <= 18) {
+    std::size_t i = s.front() == '-' ? 1 : 0;
+    if (i < s.size()) {
+      long long magnitude = 0;
+      for (; i < s.size(); ++i) {
+        const unsigned digit = static_cast<unsigned char>(s[i]) - unsigned{'0'};
+        if (digit > 9) break;
+        magnitude = magnitude * 10 + digit;
+      }
+      if (i == s.size()) return s.front() == '-' ? -magnitude : magnitude;
+    }
+  }
   long long v = 0;
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
   if (ec != std::errc{} || end != s.data() + s.size()) return std::nullopt;
@@ -52,7 +67,7 @@ constexpr const char* kExpressionField[kExpressionFieldCount] = {
 class Reader {
  public:
   Reader(std::string_view text, const std::string& file, const FapReadOptions& options)
-      : split_(fapfile::split_lines(text)), file_(file), options_(options) {}
+      : lines_(text), file_(file), options_(options) {}
 
   Result<FapReadResult> run();
 
@@ -71,6 +86,11 @@ class Reader {
   }
 
   std::optional<Diagnostic> read_header(const Line& line);
+  // The fast path's side of the facts: tabs and trailing blanks seen.
+  void note_layout(const fapfile::IntegerLine& line);
+  // A value line of integers for a mask without FAP 1/2: the frame, or false (nothing changed)
+  // when the line needs the general reading (and perhaps a diagnostic).
+  bool read_plain_values(const fapfile::IntegerLine& line, const std::bitset<kFapCount>& mask);
   std::optional<Diagnostic> read_mask(const Line& line, std::bitset<kFapCount>& mask);
   std::optional<Diagnostic> read_values(const Line& line, const std::bitset<kFapCount>& mask,
                                         FapFrame& frame);
@@ -79,18 +99,22 @@ class Reader {
                                        std::int32_t& value);
   std::optional<Diagnostic> place_frames_in_time();
 
-  fapfile::SplitText split_;
+  fapfile::LineCursor lines_;
   const std::string& file_;
   const FapReadOptions& options_;
   FapReadResult out_;
   std::optional<long long> semaine_time_;
-  // Per frame, where its value line is, for the timing diagnostics after reading.
+  // Per frame, the number of its value line, for the timing diagnostics after reading.
+  std::vector<int> value_lines_;
+  // Frame k's value line again, tokenized, with the column of its first token.
   struct FrameLine {
     int number;
     std::string_view text;
     int first_column;
   };
-  std::vector<FrameLine> value_lines_;
+  FrameLine frame_line(std::size_t k) const;
+  // The lines of several frames (ascending), found in one walk over the text.
+  std::vector<FrameLine> frame_lines(const std::vector<std::size_t>& frames) const;
   bool warned_float_ = false;
   bool warned_comment_after_header_ = false;
 };
@@ -119,6 +143,12 @@ std::optional<Diagnostic> Reader::read_header(const Line& line) {
                         std::string(count_token.text) + "'");
   facts.header_fps = *fps;
   facts.header_count = *count;
+  // Room for the frames the header announces, as far as the text can hold them (a frame takes
+  // two lines, the mask alone 136 bytes) and the limit allows: no copying as they are read.
+  constexpr long long kLeastFrameBytes = 138;
+  out_.sequence.frames.reserve(static_cast<std::size_t>(
+      std::min({*count, static_cast<long long>(lines_.text_size()) / kLeastFrameBytes + 1,
+                static_cast<long long>(options_.max_frames)})));
   out_.sequence.name = facts.header_name;
   out_.sequence.fps = static_cast<int>(std::lround(*fps));
   if (std::floor(*fps) != *fps)
@@ -174,7 +204,13 @@ std::optional<Diagnostic> Reader::read_value(const Line& line, const Token& toke
     return fap > 0 ? "value of FAP " + std::to_string(fap) : std::string(field_name);
   };
   double number = 0;
+  const bool scaled = options_.vreng_divide_v20 && out_.facts.version == "2.0" && fap > 0;
   if (const auto integer = parse_integer(token.text)) {
+    // An integer needs no rounding: checked as it is, unless it is to be scaled.
+    if (!scaled && *integer >= low && *integer <= high) {
+      value = static_cast<std::int32_t>(*integer);
+      return std::nullopt;
+    }
     number = static_cast<double>(*integer);
   } else if (const auto real = parse_number(token.text)) {
     number = *real;
@@ -189,7 +225,7 @@ std::optional<Diagnostic> Reader::read_value(const Line& line, const Token& toke
                     what() + " must be a number, found '" + std::string(token.text) + "'");
   }
   // VREng's private scaling applies to FAP values, not to the viseme and expression fields.
-  if (options_.vreng_divide_v20 && out_.facts.version == "2.0" && fap > 0) number /= 20;
+  if (scaled) number /= 20;
   const double rounded = std::round(number);  // std::round: halves away from zero
   if (rounded < static_cast<double>(low) || rounded > static_cast<double>(high))
     return error_at(line, token.column,
@@ -283,7 +319,7 @@ std::optional<Diagnostic> Reader::place_frames_in_time() {
   FapFileFacts& facts = out_.facts;
   for (std::size_t i = 1; i < frames.size(); ++i)
     if (frames[i].number <= frames[i - 1].number) {
-      const FrameLine& line = value_lines_[i];
+      const FrameLine line = frame_line(i);
       return error_at(line, line.first_column,
                       "frame number " + std::to_string(frames[i].number) +
                           " does not follow frame " + std::to_string(frames[i - 1].number) +
@@ -306,7 +342,7 @@ std::optional<Diagnostic> Reader::place_frames_in_time() {
     for (std::size_t i = 0; i < frames.size(); ++i) {
       const long long offset = frames[i].number - first;
       if (offset % step != 0) {
-        const FrameLine& line = value_lines_[i];
+        const FrameLine line = frame_line(i);
         return error_at(line, line.first_column,
                         "time stamp " + std::to_string(frames[i].number) + " ms is not on the " +
                             std::to_string(step) + " ms grid of the first frame");
@@ -323,7 +359,7 @@ std::optional<Diagnostic> Reader::place_frames_in_time() {
   // Writers fill gaps and the Algebra allocates a slot per frame: the span is what costs.
   for (std::size_t i = 1; i < frames.size(); ++i)
     if (frames[i].number - frames.front().number >= options_.max_frames) {
-      const FrameLine& line = value_lines_[i];
+      const FrameLine line = frame_line(i);
       Limits limits;
       limits.max_frames = options_.max_frames;
       return limit_error(Location::text(file_, line.number, line.first_column),
@@ -338,30 +374,92 @@ std::optional<Diagnostic> Reader::place_frames_in_time() {
     for (FapFrame& f : frames) --f.number;
     warn_file("frames are numbered from 1; renumbered from 0");
   }
+  std::vector<std::size_t> after_gap;
   for (std::size_t i = 1; i < frames.size(); ++i)
-    if (frames[i].number != frames[i - 1].number + 1) {
-      facts.frame_gaps = true;
-      const FrameLine& line = value_lines_[i];
-      warn_at(line, line.first_column,
-              "frames " + std::to_string(frames[i - 1].number + 1) + " to " +
-                  std::to_string(frames[i].number - 1) + " are absent");
-    }
+    if (frames[i].number != frames[i - 1].number + 1) after_gap.push_back(i);
+  facts.frame_gaps = !after_gap.empty();
+  const std::vector<FrameLine> lines = frame_lines(after_gap);
+  for (std::size_t g = 0; g < after_gap.size(); ++g) {
+    const std::size_t i = after_gap[g];
+    warn_at(lines[g], lines[g].first_column,
+            "frames " + std::to_string(frames[i - 1].number + 1) + " to " +
+                std::to_string(frames[i].number - 1) + " are absent");
+  }
   return std::nullopt;
+}
+
+void Reader::note_layout(const fapfile::IntegerLine& line) {
+  if (line.has_tab) out_.facts.tabs = true;
+  if (line.trailing_blank) out_.facts.trailing_spaces = true;
+}
+
+bool Reader::read_plain_values(const fapfile::IntegerLine& line, const std::bitset<kFapCount>& mask) {
+  // FAP 1/2 fields, counts that do not match the mask and values out of range go the general way.
+  if (mask.test(0) || mask.test(1) || static_cast<std::size_t>(line.count - 1) != mask.count()) return false;
+  const long long number = line.values[0];
+  if (number > kMaxFrameNumber || number < -kMaxFrameNumber) return false;
+  constexpr long long kLimit = std::numeric_limits<std::int32_t>::max();
+  for (int k = 1; k < line.count; ++k)
+    if (line.values[static_cast<std::size_t>(k)] > kLimit || line.values[static_cast<std::size_t>(k)] < -kLimit)
+      return false;
+  FapFrame& frame = out_.sequence.frames.emplace_back();
+  frame.number = number;
+  frame.mask = mask;
+  std::size_t next = 1;
+  for (std::size_t i = 2; i < kFapCount; ++i)  // FAP 3 on
+    if (mask[i]) frame.values[i] = static_cast<std::int32_t>(line.values[next++]);
+  if (mask.none()) out_.facts.zero_active_faps = true;
+  return true;
+}
+
+Reader::FrameLine Reader::frame_line(std::size_t k) const { return frame_lines({k}).front(); }
+
+std::vector<Reader::FrameLine> Reader::frame_lines(const std::vector<std::size_t>& frames) const {
+  std::vector<FrameLine> found;
+  found.reserve(frames.size());
+  fapfile::LineCursor again = lines_.from_start();
+  fapfile::RawLine raw{0, {}};
+  fapfile::Line line;
+  for (const std::size_t k : frames) {
+    while (raw.number < value_lines_[k] && again.next(raw)) {
+    }
+    fapfile::tokenize(raw, line);
+    found.push_back(FrameLine{raw.number, raw.text, line.tokens.empty() ? 1 : line.tokens.front().column});
+  }
+  return found;
 }
 
 Result<FapReadResult> Reader::run() {
   FapFileFacts& facts = out_.facts;
-  facts.crlf = split_.crlf;
-  facts.final_newline = split_.final_newline;
-  facts.utf8_bom = split_.utf8_bom;
+  facts.utf8_bom = lines_.utf8_bom();
+  facts.final_newline = lines_.final_newline();
 
   enum class Expect { header, mask, values } expect = Expect::header;
   std::bitset<kFapCount> mask;
   fapfile::RawLine mask_line{0, {}};
-  out_.sequence.frames.reserve(split_.lines.size() / 2);
   Line line;
   line.tokens.reserve(72);  // a mask line has 68 or 69 tokens
-  for (const fapfile::RawLine& raw : split_.lines) {
+  // Lines of integers that need no diagnostic are read on a fast path (fast_line); any other line,
+  // and any line the fast path doubts, is tokenized and read in full.
+  fapfile::IntegerLine integers;
+  const bool scaled_values = options_.vreng_divide_v20;
+  for (fapfile::RawLine raw{0, {}}; lines_.next(raw);) {
+    if (expect == Expect::mask && fapfile::scan_integers(raw.text, integers) && integers.count == 68 &&
+        integers.bits) {
+      mask.reset();
+      for (std::size_t i = 0; i < kFapCount; ++i) mask[i] = integers.values[i] != 0;
+      note_layout(integers);
+      mask_line = raw;
+      expect = Expect::values;
+      continue;
+    }
+    if (expect == Expect::values && !scaled_values && fapfile::scan_integers(raw.text, integers) &&
+        read_plain_values(integers, mask)) {
+      note_layout(integers);
+      value_lines_.push_back(raw.number);
+      expect = Expect::mask;
+      continue;
+    }
     fapfile::tokenize(raw, line);
     if (line.tokens.empty()) continue;  // blank lines carry nothing
     if (line.first_is_comment()) {
@@ -398,10 +496,11 @@ Result<FapReadResult> Reader::run() {
       if (auto e = read_values(line, mask, frame)) return *e;
       if (frame.mask.none()) facts.zero_active_faps = true;
       out_.sequence.frames.push_back(frame);
-      value_lines_.push_back(FrameLine{line.number, line.text, line.tokens.front().column});
+      value_lines_.push_back(line.number);
       expect = Expect::mask;
     }
   }
+  facts.crlf = lines_.crlf();
   if (expect == Expect::values)
     return error_at(mask_line, static_cast<int>(mask_line.text.size()) + 1,
                     "mask line without the value line that must follow it");

@@ -6,6 +6,7 @@
 #include <zlib.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -47,6 +48,17 @@ class Descriptor {
  private:
   int fd_;
 };
+
+// A name for the temporary file of one output: unique among this process's outputs (a counter),
+// and among processes (the process id, and a random number drawn once per process in case ids
+// are reused: building a std::random_device for every output cost 5 % of a batch). Safe to call
+// from several threads.
+std::string temporary_name() {
+  static const std::uint32_t process_seed = std::random_device{}();
+  static std::atomic<std::uint64_t> counter{0};
+  return std::to_string(::getpid()) + "-" + std::to_string(process_seed) + "-" +
+         std::to_string(counter.fetch_add(1, std::memory_order_relaxed));
+}
 
 }  // namespace
 
@@ -120,17 +132,23 @@ Result<std::string> read_file_bytes(const std::string& path, const Limits& limit
   if (file.get() < 0) return io_error(path, "cannot open file");
   if (::fstat(file.get(), &info) != 0) return io_error(path, "cannot read file");
   if (const char* why = not_readable_type(info.st_mode)) return make_error(ErrorKind::io, whole_file, why);
+  // Read straight into the string, sized by the file's length plus one byte, which sees the end
+  // of the file: one allocation and no copy unless the file grows while it is read.
   std::string bytes;
-  char buffer[65536];
+  std::size_t used = 0;
+  bytes.resize(static_cast<std::size_t>(std::max<off_t>(info.st_size, 0)) + 1);
   for (;;) {
-    const ssize_t got = ::read(file.get(), buffer, sizeof buffer);
+    if (used == bytes.size())
+      bytes.resize(std::max(bytes.size() * 2, used + (std::size_t{1} << 20)));
+    const ssize_t got = ::read(file.get(), bytes.data() + used, bytes.size() - used);
     if (got == 0) break;
     if (got < 0) {
       if (errno == EINTR) continue;
       return io_error(path, "cannot read file");
     }
-    bytes.append(buffer, static_cast<std::size_t>(got));
+    used += static_cast<std::size_t>(got);
   }
+  bytes.resize(used);
   if (is_gzip(bytes)) return gunzip(bytes, path, limits);
   return bytes;
 }
@@ -143,9 +161,8 @@ Status write_file_atomic(const std::string& path, std::string_view bytes) {
   }
   const auto slash = path.find_last_of('/');
   const std::string folder = slash == std::string::npos ? "." : path.substr(0, slash);
-  std::random_device seed;
   const std::string temp =
-      folder + "/.fapc-tmp-" + std::to_string(seed()) + "-" +
+      folder + "/.fapc-tmp-" + temporary_name() + "-" +
       (slash == std::string::npos ? path : path.substr(slash + 1));
   {
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);
