@@ -41,6 +41,8 @@ class LineCursor {
   bool final_newline() const { return final_newline_; }
   bool utf8_bom() const { return utf8_bom_; }
   std::size_t text_size() const { return text_.size(); }
+  // Bytes of the text before the next line (the BOM included).
+  std::size_t offset() const { return next_ + (utf8_bom_ ? 3 : 0); }
   // A cursor at the first line again: the diagnostics made after reading keep only line numbers
   // per frame, and find their lines by walking the text once more.
   LineCursor from_start() const { return LineCursor(text_, utf8_bom_); }

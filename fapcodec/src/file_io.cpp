@@ -1,6 +1,7 @@
 #include "fapc/codec/file_io.hpp"
 
 #include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <zlib.h>
@@ -10,7 +11,6 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <random>
 
 namespace fapc {
@@ -153,33 +153,108 @@ Result<std::string> read_file_bytes(const std::string& path, const Limits& limit
   return bytes;
 }
 
+Result<MappedFile> MappedFile::open(const std::string& path) {
+  const Location whole_file{path, 0, 0, -1};
+  struct stat info {};
+  if (::stat(path.c_str(), &info) == 0) {
+    if (const char* why = not_readable_type(info.st_mode)) return make_error(ErrorKind::io, whole_file, why);
+  }
+  const Descriptor file(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
+  if (file.get() < 0) return io_error(path, "cannot open file");
+  if (::fstat(file.get(), &info) != 0) return io_error(path, "cannot read file");
+  if (const char* why = not_readable_type(info.st_mode)) return make_error(ErrorKind::io, whole_file, why);
+  const auto size = static_cast<std::size_t>(info.st_size);
+  if (size == 0) return MappedFile(nullptr, 0);
+  void* data = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, file.get(), 0);
+  if (data == MAP_FAILED) return io_error(path, "cannot read file");
+  ::madvise(data, size, MADV_SEQUENTIAL);
+  return MappedFile(static_cast<const char*>(data), size);
+}
+
+MappedFile::MappedFile(MappedFile&& other) noexcept : data_(other.data_), size_(other.size_) {
+  other.data_ = nullptr;
+  other.size_ = 0;
+}
+
+MappedFile& MappedFile::operator=(MappedFile&& other) noexcept {
+  std::swap(data_, other.data_);
+  std::swap(size_, other.size_);
+  return *this;
+}
+
+MappedFile::~MappedFile() {
+  if (data_) ::munmap(const_cast<char*>(data_), size_);
+}
+
+void MappedFile::release(std::size_t offset) const {
+  const auto page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+  const std::size_t end = std::min(offset, size_) / page * page;
+  if (data_ && end > 0) ::madvise(const_cast<char*>(data_), end, MADV_DONTNEED);
+}
+
+namespace {
+
+std::string temporary_path(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  const std::string folder = slash == std::string::npos ? "." : path.substr(0, slash);
+  return folder + "/.fapc-tmp-" + temporary_name() + "-" +
+         (slash == std::string::npos ? path : path.substr(slash + 1));
+}
+
+}  // namespace
+
+Result<AtomicFile> AtomicFile::create(const std::string& path) {
+  std::string temp = temporary_path(path);
+  std::FILE* file = std::fopen(temp.c_str(), "wbe");
+  if (!file) return io_error(path, "cannot create output");
+  return AtomicFile(path, std::move(temp), file);
+}
+
+AtomicFile::AtomicFile(AtomicFile&& other) noexcept
+    : path_(std::move(other.path_)), temp_(std::move(other.temp_)), file_(other.file_) {
+  other.file_ = nullptr;
+}
+
+AtomicFile::~AtomicFile() {
+  if (!file_) return;
+  std::fclose(file_);
+  std::remove(temp_.c_str());
+}
+
+Status AtomicFile::write(std::string_view bytes) {
+  if (!file_ || std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size())
+    return io_error(path_, "cannot write output");
+  return ok_status();
+}
+
+Status AtomicFile::commit() {
+  if (!file_) return io_error(path_, "cannot write output");
+  const bool flushed = std::fflush(file_) == 0 && !std::ferror(file_);
+  const bool closed = std::fclose(file_) == 0;
+  file_ = nullptr;
+  if (!flushed || !closed) {
+    const Diagnostic error = io_error(path_, "cannot write output");
+    std::remove(temp_.c_str());
+    return error;
+  }
+  if (std::rename(temp_.c_str(), path_.c_str()) != 0) {
+    const Diagnostic error = io_error(path_, "cannot replace output");
+    std::remove(temp_.c_str());
+    return error;
+  }
+  return ok_status();
+}
+
 Status write_file_atomic(const std::string& path, std::string_view bytes) {
   std::string data;
   if (ends_with(path, ".gz")) {
     data = gzip(bytes);
     bytes = data;
   }
-  const auto slash = path.find_last_of('/');
-  const std::string folder = slash == std::string::npos ? "." : path.substr(0, slash);
-  const std::string temp =
-      folder + "/.fapc-tmp-" + temporary_name() + "-" +
-      (slash == std::string::npos ? path : path.substr(slash + 1));
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) return io_error(path, "cannot create output");
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.flush();
-    if (!out) {
-      std::remove(temp.c_str());
-      return io_error(path, "cannot write output");
-    }
-  }
-  if (std::rename(temp.c_str(), path.c_str()) != 0) {
-    const Diagnostic error = io_error(path, "cannot replace output");
-    std::remove(temp.c_str());
-    return error;
-  }
-  return ok_status();
+  auto file = AtomicFile::create(path);
+  if (!file) return file.error();
+  if (auto written = file->write(bytes); !written) return written;
+  return file->commit();
 }
 
 }  // namespace fapc

@@ -46,11 +46,15 @@ Status check_fields(const FapFrame& f) {
   return ok_status();
 }
 
-Status check_setup(int fps, const FbaEncodeOptions& options) {
+Status check_options(const FbaEncodeOptions& options) {
   if (options.quant < 0 || options.quant > fba::kMaxFapQuant)
     return make_error(Location{}, "fap_quant must be 0..31, not " + std::to_string(options.quant));
   if (options.intra_period < 0)
     return make_error(Location{}, "the intra period must not be negative");
+  return ok_status();
+}
+
+Status check_rate(int fps) {
   if (fps < 1 || fps >= (1 << fba::kFrameRateBits))
     return make_error(Location{}, "frame rate " + std::to_string(fps) +
                                       " cannot be coded (the stream carries 1 to 255 frames per second)");
@@ -60,8 +64,7 @@ Status check_setup(int fps, const FbaEncodeOptions& options) {
 }  // namespace
 
 struct FbaEncoder::State {
-  State(int fps, const FbaEncodeOptions& chosen)
-      : options(chosen), setup(check_setup(fps, chosen)), planner(window, chosen), writer(window, fps, chosen) {
+  explicit State(const FbaEncodeOptions& chosen) : options(chosen), setup(check_options(chosen)), planner(window, chosen) {
     if (chosen.masks == FbaMaskMode::fit) masks.emplace(chosen.quant);
   }
 
@@ -71,7 +74,7 @@ struct FbaEncoder::State {
       auto gop = planner.next(input_ended);
       if (!gop) return gop.error();
       if (!*gop) return ok_status();
-      writer.write(**gop);
+      writer->write(**gop);
       window.erase(window.begin(), window.begin() + static_cast<std::ptrdiff_t>((*gop)->end));
     }
   }
@@ -87,13 +90,21 @@ struct FbaEncoder::State {
   std::size_t added = 0;
   std::vector<FapFrame> window;  // one group of frames as coded, and the frame after it
   fba::GopPlanner planner;
-  fba::PlaneWriter writer;
+  std::optional<fba::PlaneWriter> writer;  // from start()
 };
 
-FbaEncoder::FbaEncoder(int fps, const FbaEncodeOptions& options) : state_(std::make_unique<State>(fps, options)) {}
+FbaEncoder::FbaEncoder(const FbaEncodeOptions& options) : state_(std::make_unique<State>(options)) {}
 FbaEncoder::~FbaEncoder() = default;
 FbaEncoder::FbaEncoder(FbaEncoder&&) noexcept = default;
 FbaEncoder& FbaEncoder::operator=(FbaEncoder&&) noexcept = default;
+
+Status FbaEncoder::start(int fps) {
+  State& s = *state_;
+  if (!s.setup) return s.setup;
+  if (auto status = check_rate(fps); !status) return status;
+  if (!s.writer) s.writer.emplace(s.window, fps, s.options);
+  return ok_status();
+}
 
 Status FbaEncoder::check(const FapFrame& frame) {
   State& s = *state_;
@@ -121,6 +132,7 @@ Status FbaEncoder::check(const FapFrame& frame) {
 Status FbaEncoder::add(const FapFrame& frame) {
   State& s = *state_;
   if (!s.setup) return s.setup;
+  if (!s.writer) return make_error(ErrorKind::usage, Location{}, "FbaEncoder: a frame added before start()");
   if (s.added >= s.checked)
     return make_error(ErrorKind::usage, Location{}, "FbaEncoder: a frame added that the first pass did not check");
   if (s.masks && !s.fitter) s.fitter.emplace(std::move(*s.masks).finish());
@@ -132,14 +144,16 @@ Status FbaEncoder::add(const FapFrame& frame) {
 Result<EncodedFba> FbaEncoder::finish() {
   State& s = *state_;
   if (!s.setup) return s.setup.error();
+  if (!s.writer) return make_error(ErrorKind::usage, Location{}, "FbaEncoder: finished before start()");
   if (s.added != s.checked)
     return make_error(ErrorKind::usage, Location{}, "FbaEncoder: the second pass added fewer frames than the first checked");
   if (auto status = s.write_groups(true); !status) return status.error();
-  return s.writer.finish();
+  return s.writer->finish();
 }
 
 Result<EncodedFba> encode_fba(const FapSequence& sequence, const FbaEncodeOptions& options) {
-  FbaEncoder encoder(sequence.fps, options);
+  FbaEncoder encoder(options);
+  if (auto status = encoder.start(sequence.fps); !status) return status.error();
   for (const FapFrame& frame : sequence.frames)
     if (auto status = encoder.check(frame); !status) return status.error();
   for (const FapFrame& frame : sequence.frames)

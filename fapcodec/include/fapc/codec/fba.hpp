@@ -77,14 +77,17 @@ Result<EncodedFba> encode_fba(const FapSequence& sequence, const FbaEncodeOption
 // of planes and the frame after it. The bytes are those encode_fba gives for the same frames.
 class FbaEncoder {
  public:
-  FbaEncoder(int fps, const FbaEncodeOptions& options = {});
+  explicit FbaEncoder(const FbaEncodeOptions& options = {});
   ~FbaEncoder();
   FbaEncoder(FbaEncoder&&) noexcept;
   FbaEncoder& operator=(FbaEncoder&&) noexcept;
 
-  // First pass: every frame, in order. Fails on the first frame encode_fba would refuse (or on
-  // the options or frame rate, which every call reports until they are mended).
+  // First pass: every frame, in order. Fails on the first frame encode_fba would refuse, or on
+  // the options (which every call reports).
   Status check(const FapFrame& frame);
+  // Before the first add (and before or after the first pass): the sequence's frame rate, which
+  // the stream must be able to carry (1 to 255). Fails on the options first, as encode_fba does.
+  Status start(int fps);
   // Second pass: the same frames, in the same order, after every one was checked.
   Status add(const FapFrame& frame);
   // After the last add: the stream.
