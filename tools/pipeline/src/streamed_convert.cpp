@@ -136,7 +136,6 @@ std::optional<ConvertResult> convert_streamed(const std::string& input, const st
   }
   if (encoder && !encode_error)
     if (auto status = encoder->start(scan->read.sequence.fps); !status) encode_error = status.error();
-  if (encode_error) encode_error->where.file = input;  // as encode_checked names the input
 
   // Pass 2: the frames again, numbered as placed in time, to the encoder and the .fap text.
   FapOutputs fap(*scan, options);
@@ -172,8 +171,9 @@ std::optional<ConvertResult> convert_streamed(const std::string& input, const st
   if (encoder && !encode_error) {
     auto finished = encoder->finish();
     if (finished) encoded = std::move(*finished);
-    else encode_error = finished.error(), encode_error->where.file = input;
+    else encode_error = finished.error();
   }
+  if (encode_error) encode_error->where.file = input;  // as encode_checked names the input
 
   // The outputs in request order, up to the first that failed (as the usual way writes them).
   for (std::size_t i = 0; i < outputs.size(); ++i) {
