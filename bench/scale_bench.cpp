@@ -247,7 +247,29 @@ struct Bench {
   }
 
 #ifdef FAPC_SCALE_SCRIPTS
-  void run_scripts() {}
+  // Each front end's script of n elements (issue 19a's generators) compiled to .fba at 10 fps,
+  // where 10^6 elements fit the default frame limit: the whole compile, parse to encode.
+  void run_scripts() {
+    for (const fapc::bench::ScriptKind kind : fapc::bench::kScriptKinds) {
+      const std::string kind_name = fapc::bench::name(kind);
+      const std::vector<std::int64_t> sizes{1'000, 10'000, 100'000, 1'000'000};
+      series(kind_name + " -> .fba (10 fps)", sizes, [&](std::int64_t n) {
+        const fs::path script = folder / ("script-" + std::to_string(n) + fapc::bench::extension(kind));
+        in_child([&](std::string&) {
+          std::ofstream(script, std::ios::binary) << fapc::bench::generate_script(kind, static_cast<std::size_t>(n));
+          return 0.0;
+        });
+        return in_child([&](std::string& note) {
+          fp::ConvertOptions options;
+          options.fps = 10;
+          const auto start = std::chrono::steady_clock::now();
+          const fp::ConvertResult r = fp::convert(script.string(), {{(folder / "script.fba").string(), ""}}, options);
+          if (!r.ok()) return note = fapc::format_diagnostic(*r.error), -1.0;
+          return since(start);
+        });
+      }, "elements");
+    }
+  }
 #endif
 };
 
