@@ -49,7 +49,8 @@ bool scan_integers(std::string_view text, IntegerLine& line) {
   const char* at = text.data();
   const char* const end = at + text.size();
   for (;;) {
-    while (at != end && is_blank(*at)) line.has_tab = line.has_tab || *at++ == '\t';
+    for (; at != end && is_blank(*at); ++at)
+      if (*at == '\t') line.has_tab = true;
     if (at == end) break;
     if (line.count == IntegerLine::kMaxTokens) return false;
     const bool negative = *at == '-';
