@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstring>
 #include <random>
+#include <utility>
 
 namespace fapc {
 
@@ -44,10 +45,27 @@ class Descriptor {
   Descriptor(const Descriptor&) = delete;
   Descriptor& operator=(const Descriptor&) = delete;
   int get() const { return fd_; }
+  int release() { return std::exchange(fd_, -1); }
 
  private:
   int fd_;
 };
+
+// Opens an input for reading, or says why not; `info` receives its status. The type is checked
+// before opening (opening a device can have effects of its own) and again on the open
+// descriptor, in case the name changed in between. O_NONBLOCK: opening a FIFO without a writer
+// would otherwise wait forever.
+Result<int> open_input(const std::string& path, struct stat& info) {
+  const Location whole_file{path, 0, 0, -1};
+  if (::stat(path.c_str(), &info) == 0) {
+    if (const char* why = not_readable_type(info.st_mode)) return make_error(ErrorKind::io, whole_file, why);
+  }
+  Descriptor file(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
+  if (file.get() < 0) return io_error(path, "cannot open file");
+  if (::fstat(file.get(), &info) != 0) return io_error(path, "cannot read file");
+  if (const char* why = not_readable_type(info.st_mode)) return make_error(ErrorKind::io, whole_file, why);
+  return file.release();
+}
 
 // A name for the temporary file of one output: unique among this process's outputs (a counter),
 // and among processes (the process id, and a random number drawn once per process in case ids
@@ -120,18 +138,10 @@ std::string gzip(std::string_view bytes) {
 }
 
 Result<std::string> read_file_bytes(const std::string& path, const Limits& limits) {
-  const Location whole_file{path, 0, 0, -1};
-  // The type is checked before opening (opening a device can have effects of its own) and again
-  // on the open descriptor, in case the name changed in between. O_NONBLOCK: opening a FIFO
-  // without a writer would otherwise wait forever.
   struct stat info {};
-  if (::stat(path.c_str(), &info) == 0) {
-    if (const char* why = not_readable_type(info.st_mode)) return make_error(ErrorKind::io, whole_file, why);
-  }
-  const Descriptor file(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
-  if (file.get() < 0) return io_error(path, "cannot open file");
-  if (::fstat(file.get(), &info) != 0) return io_error(path, "cannot read file");
-  if (const char* why = not_readable_type(info.st_mode)) return make_error(ErrorKind::io, whole_file, why);
+  auto opened = open_input(path, info);
+  if (!opened) return opened.error();
+  const Descriptor file(*opened);
   // Read straight into the string, sized by the file's length plus one byte, which sees the end
   // of the file: one allocation and no copy unless the file grows while it is read.
   std::string bytes;
@@ -154,15 +164,10 @@ Result<std::string> read_file_bytes(const std::string& path, const Limits& limit
 }
 
 Result<MappedFile> MappedFile::open(const std::string& path) {
-  const Location whole_file{path, 0, 0, -1};
   struct stat info {};
-  if (::stat(path.c_str(), &info) == 0) {
-    if (const char* why = not_readable_type(info.st_mode)) return make_error(ErrorKind::io, whole_file, why);
-  }
-  const Descriptor file(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
-  if (file.get() < 0) return io_error(path, "cannot open file");
-  if (::fstat(file.get(), &info) != 0) return io_error(path, "cannot read file");
-  if (const char* why = not_readable_type(info.st_mode)) return make_error(ErrorKind::io, whole_file, why);
+  auto opened = open_input(path, info);
+  if (!opened) return opened.error();
+  const Descriptor file(*opened);
   const auto size = static_cast<std::size_t>(info.st_size);
   if (size == 0) return MappedFile(nullptr, 0);
   void* data = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, file.get(), 0);
