@@ -1,4 +1,4 @@
-// Reader throughput over the whole .fap corpus, in MB/s of input text.
+// Reader throughput over the whole .fap corpus and over a long file, in MB/s of input text.
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
@@ -6,6 +6,7 @@
 #include <iterator>
 
 #include "fapc/codec/fap_file.hpp"
+#include "fapc/codec/file_io.hpp"
 
 namespace {
 
@@ -49,6 +50,50 @@ void BM_WriteCorpus(benchmark::State& state) {
   state.SetBytesProcessed(static_cast<std::int64_t>(bytes));
 }
 BENCHMARK(BM_WriteCorpus)->Unit(benchmark::kMillisecond);
+
+// A long file (issue 19: reading at the speed of the disk): the Xface emotions of the corpus,
+// repeated and renumbered to 100,000 frames (some 30 MB), read from memory and from a file.
+const std::string& long_text() {
+  static const std::string text = [] {
+    std::vector<fapc::FapFrame> real;
+    for (const auto& entry : std::filesystem::directory_iterator(FAPC_SOURCE_DIR "/corpus/fap/bestdpf__xface-new")) {
+      std::ifstream in(entry.path(), std::ios::binary);
+      const std::string file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      const auto read = fapc::read_fap_text(file, "c");
+      for (const auto& f : read->sequence.frames) real.push_back(f);
+    }
+    fapc::FapSequence long_sequence{"long", 25, {}};
+    for (std::size_t k = 0; k < 100'000; ++k) long_sequence.frames.push_back(real[k % real.size()]);
+    return fapc::write_fap_text(long_sequence);
+  }();
+  return text;
+}
+
+void BM_ReadLongText(benchmark::State& state) {
+  const std::string& text = long_text();
+  for (auto _ : state) {
+    auto read = fapc::read_fap_text(text, "long.fap");
+    benchmark::DoNotOptimize(read);
+  }
+  state.SetBytesProcessed(static_cast<std::int64_t>(text.size() * state.iterations()));
+}
+BENCHMARK(BM_ReadLongText)->Unit(benchmark::kMillisecond);
+
+void BM_ReadLongFile(benchmark::State& state) {
+  const std::string path = std::filesystem::temp_directory_path() / "fap_reader_bench_long.fap";
+  {
+    std::ofstream out(path, std::ios::binary);
+    out << long_text();
+  }
+  for (auto _ : state) {
+    auto bytes = fapc::read_file_bytes(path);
+    auto read = fapc::read_fap_text(*bytes, path);
+    benchmark::DoNotOptimize(read);
+  }
+  std::filesystem::remove(path);
+  state.SetBytesProcessed(static_cast<std::int64_t>(long_text().size() * state.iterations()));
+}
+BENCHMARK(BM_ReadLongFile)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

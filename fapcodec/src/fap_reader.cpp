@@ -1,5 +1,6 @@
 // The tolerant .fap reader of docs/fap-files.md: line-based, any whitespace, every variant found in
 // real files, and a positioned error for anything else.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -17,6 +18,20 @@ using fapfile::Token;
 
 std::optional<long long> parse_integer(std::string_view s) {
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  // Most tokens are short integers: read them here (no more than 18 digits cannot overflow),
+  // and leave the rest, with its errors, to std::from_chars.
+  if (!s.empty() && s.size() <= 18) {
+    std::size_t i = s.front() == '-' ? 1 : 0;
+    if (i < s.size()) {
+      long long magnitude = 0;
+      for (; i < s.size(); ++i) {
+        const unsigned digit = static_cast<unsigned char>(s[i]) - unsigned{'0'};
+        if (digit > 9) break;
+        magnitude = magnitude * 10 + digit;
+      }
+      if (i == s.size()) return s.front() == '-' ? -magnitude : magnitude;
+    }
+  }
   long long v = 0;
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
   if (ec != std::errc{} || end != s.data() + s.size()) return std::nullopt;
@@ -51,10 +66,12 @@ constexpr const char* kExpressionField[kExpressionFieldCount] = {
 
 class Reader {
  public:
-  Reader(std::string_view text, const std::string& file, const FapReadOptions& options)
-      : split_(fapfile::split_lines(text)), file_(file), options_(options) {}
+  Reader(std::string_view text, const std::string& file, const FapReadOptions& options,
+         FapFrameSink sink = {}, std::function<void(std::size_t)> progress = {})
+      : lines_(text), file_(file), options_(options), sink_(std::move(sink)), progress_(std::move(progress)) {}
 
   Result<FapReadResult> run();
+  std::vector<std::int64_t> take_numbers() { return std::move(numbers_); }
 
  private:
   template <class AnyLine>
@@ -71,6 +88,15 @@ class Reader {
   }
 
   std::optional<Diagnostic> read_header(const Line& line);
+  // The fast path's side of the facts: tabs and trailing blanks seen.
+  void note_layout(const fapfile::IntegerLine& line);
+  // A value line of integers for a mask without FAP 1/2: the frame, or false (nothing changed)
+  // when the line needs the general reading (and perhaps a diagnostic).
+  bool read_plain_values(const fapfile::IntegerLine& line, const std::bitset<kFapCount>& mask,
+                         FapFrame& frame);
+  // A frame read: its number and line kept for placing the frames in time, the frame stored
+  // or handed to the caller's sink.
+  std::optional<Diagnostic> deliver(const FapFrame& frame, int line_number);
   std::optional<Diagnostic> read_mask(const Line& line, std::bitset<kFapCount>& mask);
   std::optional<Diagnostic> read_values(const Line& line, const std::bitset<kFapCount>& mask,
                                         FapFrame& frame);
@@ -79,18 +105,27 @@ class Reader {
                                        std::int32_t& value);
   std::optional<Diagnostic> place_frames_in_time();
 
-  fapfile::SplitText split_;
+  fapfile::LineCursor lines_;
   const std::string& file_;
   const FapReadOptions& options_;
   FapReadResult out_;
   std::optional<long long> semaine_time_;
-  // Per frame, where its value line is, for the timing diagnostics after reading.
+  // Per frame, its number (as written, then as placed in time) and the number of its value line,
+  // for placing the frames in time and the diagnostics about it after reading.
+  std::vector<std::int64_t> numbers_;
+  std::vector<int> value_lines_;
+  FapFrameSink sink_;  // empty: frames are kept in out_.sequence
+  std::function<void(std::size_t)> progress_;
+  std::size_t reported_ = 0;  // bytes last reported to progress_
+  // Frame k's value line again, tokenized, with the column of its first token.
   struct FrameLine {
     int number;
     std::string_view text;
     int first_column;
   };
-  std::vector<FrameLine> value_lines_;
+  FrameLine frame_line(std::size_t k) const;
+  // The lines of several frames (ascending), found in one walk over the text.
+  std::vector<FrameLine> frame_lines(const std::vector<std::size_t>& frames) const;
   // The header's frame count, for the warning when the file holds another number of frames.
   FrameLine header_count_at_{0, {}, 0};
   bool warned_float_ = false;
@@ -123,6 +158,15 @@ std::optional<Diagnostic> Reader::read_header(const Line& line) {
   facts.header_fps_at = Location::text(file_, line.number, fps_token.column);
   facts.header_count = *count;
   header_count_at_ = FrameLine{line.number, line.text, count_token.column};
+  // Room for the frames the header announces, as far as the text can hold them (a frame takes
+  // two lines, the mask alone 136 bytes) and the limit allows: no copying as they are read.
+  constexpr long long kLeastFrameBytes = 138;
+  const auto room = static_cast<std::size_t>(
+      std::min({*count, static_cast<long long>(lines_.text_size()) / kLeastFrameBytes + 1,
+                static_cast<long long>(options_.max_frames)}));
+  if (!sink_) out_.sequence.frames.reserve(room);
+  numbers_.reserve(room);
+  value_lines_.reserve(room);
   out_.sequence.name = facts.header_name;
   out_.sequence.fps = static_cast<int>(std::lround(*fps));
   if (std::floor(*fps) != *fps)
@@ -178,7 +222,13 @@ std::optional<Diagnostic> Reader::read_value(const Line& line, const Token& toke
     return fap > 0 ? "value of FAP " + std::to_string(fap) : std::string(field_name);
   };
   double number = 0;
+  const bool scaled = options_.vreng_divide_v20 && out_.facts.version == "2.0" && fap > 0;
   if (const auto integer = parse_integer(token.text)) {
+    // An integer needs no rounding: checked as it is, unless it is to be scaled.
+    if (!scaled && *integer >= low && *integer <= high) {
+      value = static_cast<std::int32_t>(*integer);
+      return std::nullopt;
+    }
     number = static_cast<double>(*integer);
   } else if (const auto real = parse_number(token.text)) {
     number = *real;
@@ -193,7 +243,7 @@ std::optional<Diagnostic> Reader::read_value(const Line& line, const Token& toke
                     what() + " must be a number, found '" + std::string(token.text) + "'");
   }
   // VREng's private scaling applies to FAP values, not to the viseme and expression fields.
-  if (options_.vreng_divide_v20 && out_.facts.version == "2.0" && fap > 0) number /= 20;
+  if (scaled) number /= 20;
   const double rounded = std::round(number);  // std::round: halves away from zero
   if (rounded < static_cast<double>(low) || rounded > static_cast<double>(high))
     return error_at(line, token.column,
@@ -283,39 +333,39 @@ std::optional<Diagnostic> Reader::read_values(const Line& line,
 
 // docs/fap-files.md section 6: what the frame numbers mean.
 std::optional<Diagnostic> Reader::place_frames_in_time() {
-  auto& frames = out_.sequence.frames;
+  auto& frames = numbers_;
   FapFileFacts& facts = out_.facts;
   for (std::size_t i = 1; i < frames.size(); ++i)
-    if (frames[i].number <= frames[i - 1].number) {
-      const FrameLine& line = value_lines_[i];
+    if (frames[i] <= frames[i - 1]) {
+      const FrameLine line = frame_line(i);
       return error_at(line, line.first_column,
-                      "frame number " + std::to_string(frames[i].number) +
-                          " does not follow frame " + std::to_string(frames[i - 1].number) +
+                      "frame number " + std::to_string(frames[i]) +
+                          " does not follow frame " + std::to_string(frames[i - 1]) +
                           "; frame numbers must ascend");
     }
   if (frames.empty()) return std::nullopt;
 
   long long step = 0;  // the smallest gap between consecutive numbers
   for (std::size_t i = 1; i < frames.size(); ++i) {
-    const long long gap = frames[i].number - frames[i - 1].number;
+    const long long gap = frames[i] - frames[i - 1];
     step = step == 0 ? gap : std::min(step, gap);
   }
   const bool stamps = !facts.has_header && (semaine_time_ || (step > 1 && 1000 % step == 0));
   if (stamps) {
-    if (step == 0) step = semaine_time_ ? frames.front().number - *semaine_time_ : 40;
+    if (step == 0) step = semaine_time_ ? frames.front() - *semaine_time_ : 40;
     if (step <= 0 || 1000 % step != 0) step = 40;  // SEMAINE's grid (25 fps)
     facts.millisecond_stamps = true;
     out_.sequence.fps = static_cast<int>(1000 / step);
-    const long long first = frames.front().number;
+    const long long first = frames.front();
     for (std::size_t i = 0; i < frames.size(); ++i) {
-      const long long offset = frames[i].number - first;
+      const long long offset = frames[i] - first;
       if (offset % step != 0) {
-        const FrameLine& line = value_lines_[i];
+        const FrameLine line = frame_line(i);
         return error_at(line, line.first_column,
-                        "time stamp " + std::to_string(frames[i].number) + " ms is not on the " +
+                        "time stamp " + std::to_string(frames[i]) + " ms is not on the " +
                             std::to_string(step) + " ms grid of the first frame");
       }
-      frames[i].number = offset / step;
+      frames[i] = offset / step;
     }
     warn_file("no header; frame numbers read as millisecond time stamps (" +
               std::to_string(out_.sequence.fps) + " fps, first frame at " +
@@ -326,46 +376,123 @@ std::optional<Diagnostic> Reader::place_frames_in_time() {
   }
   // Writers fill gaps and the Algebra allocates a slot per frame: the span is what costs.
   for (std::size_t i = 1; i < frames.size(); ++i)
-    if (frames[i].number - frames.front().number >= options_.max_frames) {
-      const FrameLine& line = value_lines_[i];
+    if (frames[i] - frames.front() >= options_.max_frames) {
+      const FrameLine line = frame_line(i);
       Limits limits;
       limits.max_frames = options_.max_frames;
       return limit_error(Location::text(file_, line.number, line.first_column),
-                         "frames " + std::to_string(frames.front().number) + " to " +
-                             std::to_string(frames[i].number) + " span " +
-                             std::to_string(frames[i].number - frames.front().number + 1) + " frames",
+                         "frames " + std::to_string(frames.front()) + " to " +
+                             std::to_string(frames[i]) + " span " +
+                             std::to_string(frames[i] - frames.front() + 1) + " frames",
                          Limit::frames, limits);
     }
-  if (facts.has_header && frames.front().number == 1 &&
-      frames.back().number == static_cast<long long>(frames.size())) {
+  if (facts.has_header && frames.front() == 1 &&
+      frames.back() == static_cast<long long>(frames.size())) {
     facts.frames_from_one = true;
-    for (FapFrame& f : frames) --f.number;
+    for (std::int64_t& number : frames) --number;
     warn_file("frames are numbered from 1; renumbered from 0");
   }
+  std::vector<std::size_t> after_gap;
   for (std::size_t i = 1; i < frames.size(); ++i)
-    if (frames[i].number != frames[i - 1].number + 1) {
-      facts.frame_gaps = true;
-      const FrameLine& line = value_lines_[i];
-      warn_at(line, line.first_column,
-              "frames " + std::to_string(frames[i - 1].number + 1) + " to " +
-                  std::to_string(frames[i].number - 1) + " are absent");
-    }
+    if (frames[i] != frames[i - 1] + 1) after_gap.push_back(i);
+  facts.frame_gaps = !after_gap.empty();
+  const std::vector<FrameLine> lines = frame_lines(after_gap);
+  for (std::size_t g = 0; g < after_gap.size(); ++g) {
+    const std::size_t i = after_gap[g];
+    warn_at(lines[g], lines[g].first_column,
+            "frames " + std::to_string(frames[i - 1] + 1) + " to " +
+                std::to_string(frames[i] - 1) + " are absent");
+  }
   return std::nullopt;
+}
+
+std::optional<Diagnostic> Reader::deliver(const FapFrame& frame, int line_number) {
+  if (frame.mask.none()) out_.facts.zero_active_faps = true;
+  numbers_.push_back(frame.number);
+  value_lines_.push_back(line_number);
+  if (!sink_) {
+    out_.sequence.frames.push_back(frame);
+    return std::nullopt;
+  }
+  if (auto status = sink_(frame); !status) return status.error();
+  return std::nullopt;
+}
+
+void Reader::note_layout(const fapfile::IntegerLine& line) {
+  if (line.has_tab) out_.facts.tabs = true;
+  if (line.trailing_blank) out_.facts.trailing_spaces = true;
+}
+
+bool Reader::read_plain_values(const fapfile::IntegerLine& line, const std::bitset<kFapCount>& mask,
+                               FapFrame& frame) {
+  // FAP 1/2 fields, counts that do not match the mask and values out of range go the general way.
+  if (mask.test(0) || mask.test(1) || static_cast<std::size_t>(line.count - 1) != mask.count()) return false;
+  const long long number = line.values[0];
+  if (number > kMaxFrameNumber || number < -kMaxFrameNumber) return false;
+  constexpr long long kLimit = std::numeric_limits<std::int32_t>::max();
+  for (int k = 1; k < line.count; ++k)
+    if (line.values[static_cast<std::size_t>(k)] > kLimit || line.values[static_cast<std::size_t>(k)] < -kLimit)
+      return false;
+  frame.number = number;
+  frame.mask = mask;
+  frame.values = {};
+  std::size_t next = 1;
+  for (std::size_t i = 2; i < kFapCount; ++i)  // FAP 3 on
+    if (mask[i]) frame.values[i] = static_cast<std::int32_t>(line.values[next++]);
+  return true;
+}
+
+Reader::FrameLine Reader::frame_line(std::size_t k) const { return frame_lines({k}).front(); }
+
+std::vector<Reader::FrameLine> Reader::frame_lines(const std::vector<std::size_t>& frames) const {
+  std::vector<FrameLine> found;
+  found.reserve(frames.size());
+  fapfile::LineCursor again = lines_.from_start();
+  fapfile::RawLine raw{0, {}};
+  fapfile::Line line;
+  for (const std::size_t k : frames) {
+    while (raw.number < value_lines_[k] && again.next(raw)) {
+    }
+    fapfile::tokenize(raw, line);
+    found.push_back(FrameLine{raw.number, raw.text, line.tokens.empty() ? 1 : line.tokens.front().column});
+  }
+  return found;
 }
 
 Result<FapReadResult> Reader::run() {
   FapFileFacts& facts = out_.facts;
-  facts.crlf = split_.crlf;
-  facts.final_newline = split_.final_newline;
-  facts.utf8_bom = split_.utf8_bom;
+  facts.utf8_bom = lines_.utf8_bom();
+  facts.final_newline = lines_.final_newline();
 
   enum class Expect { header, mask, values } expect = Expect::header;
   std::bitset<kFapCount> mask;
   fapfile::RawLine mask_line{0, {}};
-  out_.sequence.frames.reserve(split_.lines.size() / 2);
   Line line;
   line.tokens.reserve(72);  // a mask line has 68 or 69 tokens
-  for (const fapfile::RawLine& raw : split_.lines) {
+  // Lines of integers that need no diagnostic are read on a fast path (fast_line); any other line,
+  // and any line the fast path doubts, is tokenized and read in full.
+  fapfile::IntegerLine integers;
+  FapFrame plain;
+  const bool scaled_values = options_.vreng_divide_v20;
+  for (fapfile::RawLine raw{0, {}}; lines_.next(raw);) {
+    constexpr std::size_t kReportEvery = std::size_t{16} << 20;
+    if (progress_ && lines_.offset() - reported_ >= kReportEvery) progress_(reported_ = lines_.offset());
+    if (expect == Expect::mask && fapfile::scan_integers(raw.text, integers) && integers.count == 68 &&
+        integers.bits) {
+      mask.reset();
+      for (std::size_t i = 0; i < kFapCount; ++i) mask[i] = integers.values[i] != 0;
+      note_layout(integers);
+      mask_line = raw;
+      expect = Expect::values;
+      continue;
+    }
+    if (expect == Expect::values && !scaled_values && fapfile::scan_integers(raw.text, integers) &&
+        read_plain_values(integers, mask, plain)) {
+      note_layout(integers);
+      if (auto e = deliver(plain, raw.number)) return *e;
+      expect = Expect::mask;
+      continue;
+    }
     fapfile::tokenize(raw, line);
     if (line.tokens.empty()) continue;  // blank lines carry nothing
     if (line.first_is_comment()) {
@@ -400,20 +527,21 @@ Result<FapReadResult> Reader::run() {
     } else {
       FapFrame frame;
       if (auto e = read_values(line, mask, frame)) return *e;
-      if (frame.mask.none()) facts.zero_active_faps = true;
-      out_.sequence.frames.push_back(frame);
-      value_lines_.push_back(FrameLine{line.number, line.text, line.tokens.front().column});
+      if (auto e = deliver(frame, line.number)) return *e;
       expect = Expect::mask;
     }
   }
+  facts.crlf = lines_.crlf();
   if (expect == Expect::values)
     return error_at(mask_line, static_cast<int>(mask_line.text.size()) + 1,
                     "mask line without the value line that must follow it");
   if (auto e = place_frames_in_time()) return *e;
-  const auto frames = static_cast<long long>(out_.sequence.frames.size());
+  for (std::size_t k = 0; k < out_.sequence.frames.size(); ++k) out_.sequence.frames[k].number = numbers_[k];
+  const auto frames = static_cast<long long>(numbers_.size());
   if (facts.has_header && facts.header_count != frames)
-    warn_at(header_count_at_, header_count_at_.first_column,"header says " + std::to_string(facts.header_count) + " frames, file has " +
-              std::to_string(frames));
+    warn_at(header_count_at_, header_count_at_.first_column,
+            "header says " + std::to_string(facts.header_count) + " frames, file has " +
+                std::to_string(frames));
   if (frames == 0) warn_file("file has no frames");
   if (out_.sequence.name.empty()) out_.sequence.name = file_;
   return std::move(out_);
@@ -424,6 +552,14 @@ Result<FapReadResult> Reader::run() {
 Result<FapReadResult> read_fap_text(std::string_view text, const std::string& file,
                                     const FapReadOptions& options) {
   return Reader(text, file, options).run();
+}
+
+Result<FapScanResult> scan_fap_text(std::string_view text, const std::string& file, const FapReadOptions& options,
+                                    const FapFrameSink& sink, const std::function<void(std::size_t)>& progress) {
+  Reader reader(text, file, options, sink, progress);
+  auto read = reader.run();
+  if (!read) return read.error();
+  return FapScanResult{std::move(*read), reader.take_numbers()};
 }
 
 }  // namespace fapc

@@ -2,6 +2,7 @@
 // Private to the .fap reader.
 #pragma once
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -29,14 +30,47 @@ struct RawLine {
   std::string_view text;
 };
 
-struct SplitText {
-  std::vector<RawLine> lines;
-  bool crlf = false;
-  bool final_newline = true;
-  bool utf8_bom = false;
+// The physical lines of a text, one at a time (a file of millions of lines is never split into a
+// list first). What the line ends show is known once every line has been taken.
+class LineCursor {
+ public:
+  explicit LineCursor(std::string_view text);
+  // The next line, false at the end of the text.
+  bool next(RawLine& line);
+  bool crlf() const { return crlf_; }
+  bool final_newline() const { return final_newline_; }
+  bool utf8_bom() const { return utf8_bom_; }
+  std::size_t text_size() const { return text_.size(); }
+  // Bytes of the text before the next line (the BOM included).
+  std::size_t offset() const { return next_ + (utf8_bom_ ? 3 : 0); }
+  // A cursor at the first line again: the diagnostics made after reading keep only line numbers
+  // per frame, and find their lines by walking the text once more.
+  LineCursor from_start() const { return LineCursor(text_, utf8_bom_); }
+
+ private:
+  LineCursor(std::string_view text, bool utf8_bom) : text_(text), utf8_bom_(utf8_bom) {}
+  std::string_view text_;
+  std::size_t next_ = 0;
+  int number_ = 0;
+  bool crlf_ = false;
+  bool final_newline_ = true;
+  bool utf8_bom_ = false;
 };
 
-SplitText split_lines(std::string_view text);
 void tokenize(const RawLine& raw, Line& line);
+
+// A line of nothing but integers, read in one go: the mask and value lines of nearly every file.
+struct IntegerLine {
+  static constexpr int kMaxTokens = 80;  // a value line has at most 1 + 4 + 6 + 66 tokens
+  int count = 0;
+  bool has_tab = false;
+  bool trailing_blank = false;
+  bool bits = true;  // every token is one character, 0 or 1
+  std::array<long long, kMaxTokens> values;
+};
+// False when the line is anything else (empty, a comment, a token that is not '-'? and at most 18
+// digits, more than kMaxTokens tokens): the reader then tokenizes it and reads it the general way,
+// which gives every diagnostic.
+bool scan_integers(std::string_view text, IntegerLine& line);
 
 }  // namespace fapc::fapfile

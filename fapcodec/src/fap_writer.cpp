@@ -1,6 +1,7 @@
 // The .fap writer: the safe form every known reader accepts (docs/fap-files.md section 5), and
 // the flavour of each player family (docs/fap-files.md, "Flavours").
 #include <array>
+#include <charconv>
 #include <string>
 
 #include "fapc/codec/fap_file.hpp"
@@ -50,8 +51,10 @@ bool single_expression(const ExpressionFields& e) {
 }
 
 void append_int(std::string& out, long long v) {
-  out += std::to_string(v);
-  out += ' ';
+  char text[24];
+  char* end = std::to_chars(text, text + sizeof text, v).ptr;
+  *end++ = ' ';
+  out.append(text, end);
 }
 
 void end_line(std::string& out, bool trailing_space) {
@@ -85,14 +88,20 @@ Diagnostic cannot_carry(FapFlavour flavour, const std::string& what) {
                     "the " + std::string(fap_flavour_name(flavour)) + " .fap flavour cannot carry " + what);
 }
 
-std::optional<Diagnostic> check_carried(const FapSequence& sequence, FapFlavour flavour, const Layout& layout) {
-  if (layout.millisecond_numbers && (sequence.fps <= 0 || 1000 % sequence.fps != 0))
-    return cannot_carry(flavour, std::to_string(sequence.fps) +
+std::optional<Diagnostic> check_rate(int fps, FapFlavour flavour, const Layout& layout) {
+  if (layout.millisecond_numbers && (fps <= 0 || 1000 % fps != 0))
+    return cannot_carry(flavour, std::to_string(fps) +
                                      " frames per second: it numbers frames in whole milliseconds (25 fps, Greta's "
                                      "rate, is 40 ms a frame)");
-  if (!layout.single_fap12) return std::nullopt;
-  for (const FapFrame& frame : sequence.frames) {
-    const std::string at = "frame " + std::to_string(frame.number) + ": ";
+  return std::nullopt;
+}
+
+std::optional<Diagnostic> check_frame(const FapFrame& frame, FapFlavour flavour, const Layout& layout) {
+  if (!layout.single_fap12 || ((!frame.has(1) || single_viseme(frame.viseme)) &&
+                               (!frame.has(2) || single_expression(frame.expression))))
+    return std::nullopt;
+  {
+    const auto at = "frame " + std::to_string(frame.number) + ": ";
     if (frame.has(1) && !single_viseme(frame.viseme))
       return cannot_carry(flavour, at + "FAP 1 is one value there (viseme_select1 shown alone, blend 63); this "
                                         "viseme record needs the safe, xface or greta-cpp flavour, or FAP 1 masked off");
@@ -102,35 +111,6 @@ std::optional<Diagnostic> check_carried(const FapSequence& sequence, FapFlavour 
                                         "off");
   }
   return std::nullopt;
-}
-
-std::string write_layout(const FapSequence& sequence, const Layout& layout, const FapWriteOptions& options) {
-  const auto& frames = sequence.frames;
-  const bool renumber = options.renumber || options.flavour != FapFlavour::safe;
-  // With renumbering, absent frames (gaps in the numbers) are filled by repeating the frame
-  // before them, so the written frames 0..n-1 keep the sequence's timing.
-  long long count = static_cast<long long>(frames.size());
-  if (renumber && !frames.empty()) count = frames.back().number - frames.front().number + 1;
-  std::string out;
-  out.reserve(frames.size() * 400 + 128);
-  // SEMAINE's messages open with a time 40 ms (one frame) before the first frame's stamp; the
-  // stamps then start one frame in, as in its 2008 files (280 -> 320).
-  const long long ms_per_frame = layout.millisecond_numbers ? 1000 / sequence.fps : 0;
-  if (layout.header)
-    out += "2.1 " + safe_header_name(sequence.name) + " " + std::to_string(sequence.fps) + " " + std::to_string(count) + "\n";
-  else if (layout.millisecond_numbers)
-    out += "0\n";
-  const auto number_of = [&](long long n) { return layout.millisecond_numbers ? (n + 1) * ms_per_frame : n; };
-  for (std::size_t i = 0; i < frames.size(); ++i) {
-    if (!renumber) {
-      append_frame(out, frames[i], frames[i].number, layout, options);
-      continue;
-    }
-    const long long first = frames[i].number - frames.front().number;
-    const long long until = i + 1 < frames.size() ? frames[i + 1].number - frames.front().number : first + 1;
-    for (long long n = first; n < until; ++n) append_frame(out, frames[i], number_of(n), layout, options);
-  }
-  return out;
 }
 
 }  // namespace
@@ -166,16 +146,76 @@ std::string safe_header_name(std::string_view name) {
   return out.empty() ? "fapc" : out;
 }
 
+FapTextWriter::FapTextWriter(const std::string& name, int fps, std::size_t frames, std::int64_t first_number,
+                             std::int64_t last_number, const FapWriteOptions& options)
+    : options_(options), fps_(fps), first_(first_number) {
+  renumber_ = options.renumber || options.flavour != FapFlavour::safe;
+  count_ = static_cast<long long>(frames);
+  if (renumber_ && frames > 0) count_ = last_number - first_number + 1;
+  name_ = safe_header_name(name);
+}
+
+FapTextWriter::~FapTextWriter() = default;
+
+Status FapTextWriter::begin(std::string& out) {
+  if (auto problem = check_rate(fps_, options_.flavour, layout_of(options_.flavour))) return *problem;
+  if (layout_of(options_.flavour).header)
+    out += "2.1 " + name_ + " " + std::to_string(fps_) + " " + std::to_string(count_) + "\n";
+  else if (layout_of(options_.flavour).millisecond_numbers)
+    out += "0\n";
+  return ok_status();
+}
+
+Status FapTextWriter::add(const FapFrame& frame, std::string& out) {
+  if (auto problem = check_frame(frame, options_.flavour, layout_of(options_.flavour))) return *problem;
+  if (pending_) write_pending(frame.number, out);
+  pending_ = frame;
+  return ok_status();
+}
+
+void FapTextWriter::finish(std::string& out) {
+  if (pending_) write_pending(pending_->number + 1, out);
+  pending_.reset();
+}
+
+void FapTextWriter::write_pending(std::int64_t next_number, std::string& out) {
+  const FapFrame& frame = *pending_;
+  if (!renumber_) {
+    append_frame(out, frame, frame.number, layout_of(options_.flavour), options_);
+    return;
+  }
+  // Gaps are filled by repeating the frame before them: players read frame k at row k.
+  const long long ms_per_frame = layout_of(options_.flavour).millisecond_numbers ? 1000 / fps_ : 0;
+  for (long long n = frame.number - first_; n < next_number - first_; ++n)
+    append_frame(out, frame, layout_of(options_.flavour).millisecond_numbers ? (n + 1) * ms_per_frame : n, layout_of(options_.flavour), options_);
+}
+
+namespace {
+
+Result<std::string> write_layout(const FapSequence& sequence, const FapWriteOptions& options) {
+  const auto& frames = sequence.frames;
+  FapTextWriter writer(sequence.name, sequence.fps, frames.size(), frames.empty() ? 0 : frames.front().number,
+                       frames.empty() ? 0 : frames.back().number, options);
+  std::string out;
+  out.reserve(frames.size() * 400 + 128);
+  // Every frame is checked before any text is made: the first frame the flavour cannot carry.
+  if (auto status = writer.begin(out); !status) return status.error();
+  for (const FapFrame& frame : frames)
+    if (auto status = writer.add(frame, out); !status) return status.error();
+  writer.finish(out);
+  return out;
+}
+
+}  // namespace
+
 Result<std::string> write_fap_flavour(const FapSequence& sequence, const FapWriteOptions& options) {
-  const Layout layout = layout_of(options.flavour);
-  if (auto problem = check_carried(sequence, options.flavour, layout)) return *problem;
-  return write_layout(sequence, layout, options);
+  return write_layout(sequence, options);
 }
 
 std::string write_fap_text(const FapSequence& sequence, const FapWriteOptions& options) {
   FapWriteOptions safe = options;
   safe.flavour = FapFlavour::safe;
-  return write_layout(sequence, layout_of(FapFlavour::safe), safe);
+  return *write_layout(sequence, safe);
 }
 
 }  // namespace fapc

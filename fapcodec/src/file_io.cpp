@@ -1,16 +1,18 @@
 #include "fapc/codec/file_io.hpp"
 
 #include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <zlib.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <random>
+#include <utility>
 
 namespace fapc {
 
@@ -43,10 +45,38 @@ class Descriptor {
   Descriptor(const Descriptor&) = delete;
   Descriptor& operator=(const Descriptor&) = delete;
   int get() const { return fd_; }
+  int release() { return std::exchange(fd_, -1); }
 
  private:
   int fd_;
 };
+
+// Opens an input for reading, or says why not; `info` receives its status. The type is checked
+// before opening (opening a device can have effects of its own) and again on the open
+// descriptor, in case the name changed in between. O_NONBLOCK: opening a FIFO without a writer
+// would otherwise wait forever.
+Result<int> open_input(const std::string& path, struct stat& info) {
+  const Location whole_file{path, 0, 0, -1};
+  if (::stat(path.c_str(), &info) == 0) {
+    if (const char* why = not_readable_type(info.st_mode)) return make_error(ErrorKind::io, whole_file, why);
+  }
+  Descriptor file(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
+  if (file.get() < 0) return io_error(path, "cannot open file");
+  if (::fstat(file.get(), &info) != 0) return io_error(path, "cannot read file");
+  if (const char* why = not_readable_type(info.st_mode)) return make_error(ErrorKind::io, whole_file, why);
+  return file.release();
+}
+
+// A name for the temporary file of one output: unique among this process's outputs (a counter),
+// and among processes (the process id, and a random number drawn once per process in case ids
+// are reused: building a std::random_device for every output cost 5 % of a batch). Safe to call
+// from several threads.
+std::string temporary_name() {
+  static const std::uint32_t process_seed = std::random_device{}();
+  static std::atomic<std::uint64_t> counter{0};
+  return std::to_string(::getpid()) + "-" + std::to_string(process_seed) + "-" +
+         std::to_string(counter.fetch_add(1, std::memory_order_relaxed));
+}
 
 }  // namespace
 
@@ -120,31 +150,116 @@ std::string gzip(std::string_view bytes) {
 }
 
 Result<std::string> read_file_bytes(const std::string& path, const Limits& limits) {
-  const Location whole_file{path, 0, 0, -1};
-  // The type is checked before opening (opening a device can have effects of its own) and again
-  // on the open descriptor, in case the name changed in between. O_NONBLOCK: opening a FIFO
-  // without a writer would otherwise wait forever.
   struct stat info {};
-  if (::stat(path.c_str(), &info) == 0) {
-    if (const char* why = not_readable_type(info.st_mode)) return make_error(ErrorKind::io, whole_file, why);
-  }
-  const Descriptor file(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
-  if (file.get() < 0) return io_error(path, "cannot open file");
-  if (::fstat(file.get(), &info) != 0) return io_error(path, "cannot read file");
-  if (const char* why = not_readable_type(info.st_mode)) return make_error(ErrorKind::io, whole_file, why);
+  auto opened = open_input(path, info);
+  if (!opened) return opened.error();
+  const Descriptor file(*opened);
+  // Read straight into the string, sized by the file's length plus one byte, which sees the end
+  // of the file: one allocation and no copy unless the file grows while it is read.
   std::string bytes;
-  char buffer[65536];
+  std::size_t used = 0;
+  bytes.resize(static_cast<std::size_t>(std::max<off_t>(info.st_size, 0)) + 1);
   for (;;) {
-    const ssize_t got = ::read(file.get(), buffer, sizeof buffer);
+    if (used == bytes.size())
+      bytes.resize(std::max(bytes.size() * 2, used + (std::size_t{1} << 20)));
+    const ssize_t got = ::read(file.get(), bytes.data() + used, bytes.size() - used);
     if (got == 0) break;
     if (got < 0) {
       if (errno == EINTR) continue;
       return io_error(path, "cannot read file");
     }
-    bytes.append(buffer, static_cast<std::size_t>(got));
+    used += static_cast<std::size_t>(got);
   }
+  bytes.resize(used);
   if (is_gzip(bytes)) return gunzip(bytes, path, limits);
   return bytes;
+}
+
+Result<MappedFile> MappedFile::open(const std::string& path) {
+  struct stat info {};
+  auto opened = open_input(path, info);
+  if (!opened) return opened.error();
+  const Descriptor file(*opened);
+  const auto size = static_cast<std::size_t>(info.st_size);
+  if (size == 0) return MappedFile(nullptr, 0);
+  void* data = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, file.get(), 0);
+  if (data == MAP_FAILED) return io_error(path, "cannot read file");
+  ::madvise(data, size, MADV_SEQUENTIAL);
+  return MappedFile(static_cast<const char*>(data), size);
+}
+
+MappedFile::MappedFile(MappedFile&& other) noexcept : data_(other.data_), size_(other.size_) {
+  other.data_ = nullptr;
+  other.size_ = 0;
+}
+
+MappedFile& MappedFile::operator=(MappedFile&& other) noexcept {
+  std::swap(data_, other.data_);
+  std::swap(size_, other.size_);
+  return *this;
+}
+
+MappedFile::~MappedFile() {
+  if (data_) ::munmap(const_cast<char*>(data_), size_);
+}
+
+void MappedFile::release(std::size_t offset) const {
+  const auto page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+  const std::size_t end = std::min(offset, size_) / page * page;
+  if (data_ && end > 0) ::madvise(const_cast<char*>(data_), end, MADV_DONTNEED);
+}
+
+namespace {
+
+std::string temporary_path(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  const std::string folder = slash == std::string::npos ? "." : path.substr(0, slash);
+  return folder + "/.fapc-tmp-" + temporary_name() + "-" +
+         (slash == std::string::npos ? path : path.substr(slash + 1));
+}
+
+}  // namespace
+
+Result<AtomicFile> AtomicFile::create(const std::string& path) {
+  std::string temp = temporary_path(path);
+  std::FILE* file = std::fopen(temp.c_str(), "wbe");
+  if (!file) return io_error(path, "cannot create output");
+  return AtomicFile(path, std::move(temp), file);
+}
+
+AtomicFile::AtomicFile(AtomicFile&& other) noexcept
+    : path_(std::move(other.path_)), temp_(std::move(other.temp_)), file_(other.file_) {
+  other.file_ = nullptr;
+}
+
+AtomicFile::~AtomicFile() {
+  if (!file_) return;
+  std::fclose(file_);
+  std::remove(temp_.c_str());
+}
+
+Status AtomicFile::write(std::string_view bytes) {
+  if (!file_ || std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size())
+    return io_error(path_, "cannot write output");
+  return ok_status();
+}
+
+Status AtomicFile::commit() {
+  if (!file_) return io_error(path_, "cannot write output");
+  const bool flushed = std::fflush(file_) == 0 && !std::ferror(file_);
+  const bool closed = std::fclose(file_) == 0;
+  file_ = nullptr;
+  if (!flushed || !closed) {
+    const Diagnostic error = io_error(path_, "cannot write output");
+    std::remove(temp_.c_str());
+    return error;
+  }
+  if (std::rename(temp_.c_str(), path_.c_str()) != 0) {
+    const Diagnostic error = io_error(path_, "cannot replace output");
+    std::remove(temp_.c_str());
+    return error;
+  }
+  return ok_status();
 }
 
 Status write_file_atomic(const std::string& path, std::string_view bytes) {
@@ -153,28 +268,10 @@ Status write_file_atomic(const std::string& path, std::string_view bytes) {
     data = gzip(bytes);
     bytes = data;
   }
-  const auto slash = path.find_last_of('/');
-  const std::string folder = slash == std::string::npos ? "." : path.substr(0, slash);
-  std::random_device seed;
-  const std::string temp =
-      folder + "/.fapc-tmp-" + std::to_string(seed()) + "-" +
-      (slash == std::string::npos ? path : path.substr(slash + 1));
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) return io_error(path, "cannot create output");
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.flush();
-    if (!out) {
-      std::remove(temp.c_str());
-      return io_error(path, "cannot write output");
-    }
-  }
-  if (std::rename(temp.c_str(), path.c_str()) != 0) {
-    const Diagnostic error = io_error(path, "cannot replace output");
-    std::remove(temp.c_str());
-    return error;
-  }
-  return ok_status();
+  auto file = AtomicFile::create(path);
+  if (!file) return file.error();
+  if (auto written = file->write(bytes); !written) return written;
+  return file->commit();
 }
 
 }  // namespace fapc

@@ -1,4 +1,6 @@
-// encode_fba: checks the input, then lets the planner decide and the plane writer write.
+// encode_fba and FbaEncoder: check the input, then let the planner decide and the plane writer
+// write, one group of planes at a time.
+#include <optional>
 #include <string>
 
 #include "fapc/codec/fba.hpp"
@@ -44,49 +46,119 @@ Status check_fields(const FapFrame& f) {
   return ok_status();
 }
 
-Status check_input(const FapSequence& sequence, const FbaEncodeOptions& options) {
+Status check_options(const FbaEncodeOptions& options) {
   if (options.quant < 0 || options.quant > fba::kMaxFapQuant)
     return make_error(Location{}, "fap_quant must be 0..31, not " + std::to_string(options.quant));
   if (options.intra_period < 0)
     return make_error(Location{}, "the intra period must not be negative");
-  if (sequence.fps < 1 || sequence.fps >= (1 << fba::kFrameRateBits))
-    return make_error(Location{}, "frame rate " + std::to_string(sequence.fps) +
+  return ok_status();
+}
+
+Status check_rate(int fps) {
+  if (fps < 1 || fps >= (1 << fba::kFrameRateBits))
+    return make_error(Location{}, "frame rate " + std::to_string(fps) +
                                       " cannot be coded (the stream carries 1 to 255 frames per second)");
-  const auto& frames = sequence.frames;
-  for (std::size_t k = 0; k < frames.size(); ++k) {
-    if (k > 0) {
-      const std::int64_t gap = frames[k].number - frames[k - 1].number - 1;
-      if (gap < 0) return input_error(frames[k], "frame numbers must ascend");
-      // Gaps cost 4 bits per 15 skipped frames; the span bounds them all.
-      if (frames[k].number - frames.front().number >= options.max_frames) {
-        Limits limits;
-        limits.max_frames = options.max_frames;
-        return limit_error(Location{}, "frames " + std::to_string(frames.front().number) + " to " +
-                                           std::to_string(frames[k].number) + " span " +
-                                           std::to_string(frames[k].number - frames.front().number + 1) + " frames",
-                           Limit::frames, limits);
-      }
-    }
-    if (auto status = check_fields(frames[k]); !status) return status;
-  }
   return ok_status();
 }
 
 }  // namespace
 
-Result<EncodedFba> encode_fba(const FapSequence& sequence, const FbaEncodeOptions& options) {
-  if (auto status = check_input(sequence, options); !status) return status.error();
-  FapSequence fitted;
-  if (options.masks == FbaMaskMode::fit) fitted = {sequence.name, sequence.fps, fba::fit_masks(sequence.frames, options.quant)};
-  const FapSequence& coded = options.masks == FbaMaskMode::fit ? fitted : sequence;
-  fba::GopPlanner planner(coded, options);
-  fba::PlaneWriter writer(coded, options);
-  while (planner.has_next()) {
-    auto gop = planner.next();
-    if (!gop) return gop.error();
-    writer.write(*gop);
+struct FbaEncoder::State {
+  explicit State(const FbaEncodeOptions& chosen) : options(chosen), setup(check_options(chosen)), planner(window, chosen) {
+    if (chosen.masks == FbaMaskMode::fit) masks.emplace(chosen.quant);
   }
-  return writer.finish();
+
+  // Writes every group the window completes; `input_ended` lets the last one end at the window's end.
+  Status write_groups(bool input_ended) {
+    for (;;) {
+      auto gop = planner.next(input_ended);
+      if (!gop) return gop.error();
+      if (!*gop) return ok_status();
+      writer->write(**gop);
+      window.erase(window.begin(), window.begin() + static_cast<std::ptrdiff_t>((*gop)->end));
+    }
+  }
+
+  FbaEncodeOptions options;
+  Status setup;
+  // First pass.
+  std::optional<fba::MaskPlanner> masks;
+  std::int64_t first_number = 0, previous_number = 0;
+  std::size_t checked = 0;
+  // Second pass.
+  std::optional<fba::MaskFitter> fitter;
+  std::size_t added = 0;
+  std::vector<FapFrame> window;  // one group of frames as coded, and the frame after it
+  fba::GopPlanner planner;
+  std::optional<fba::PlaneWriter> writer;  // from start()
+};
+
+FbaEncoder::FbaEncoder(const FbaEncodeOptions& options) : state_(std::make_unique<State>(options)) {}
+FbaEncoder::~FbaEncoder() = default;
+FbaEncoder::FbaEncoder(FbaEncoder&&) noexcept = default;
+FbaEncoder& FbaEncoder::operator=(FbaEncoder&&) noexcept = default;
+
+Status FbaEncoder::start(int fps) {
+  State& s = *state_;
+  if (!s.setup) return s.setup;
+  if (auto status = check_rate(fps); !status) return status;
+  if (!s.writer) s.writer.emplace(s.window, fps, s.options);
+  return ok_status();
+}
+
+Status FbaEncoder::check(const FapFrame& frame) {
+  State& s = *state_;
+  if (!s.setup) return s.setup;
+  if (s.checked == 0) s.first_number = frame.number;
+  if (s.checked > 0) {
+    if (frame.number - s.previous_number - 1 < 0) return input_error(frame, "frame numbers must ascend");
+    // Gaps cost 4 bits per 15 skipped frames; the span bounds them all.
+    if (frame.number - s.first_number >= s.options.max_frames) {
+      Limits limits;
+      limits.max_frames = s.options.max_frames;
+      return limit_error(Location{}, "frames " + std::to_string(s.first_number) + " to " +
+                                         std::to_string(frame.number) + " span " +
+                                         std::to_string(frame.number - s.first_number + 1) + " frames",
+                         Limit::frames, limits);
+    }
+  }
+  if (auto status = check_fields(frame); !status) return status;
+  s.previous_number = frame.number;
+  ++s.checked;
+  if (s.masks) s.masks->add(frame);
+  return ok_status();
+}
+
+Status FbaEncoder::add(const FapFrame& frame) {
+  State& s = *state_;
+  if (!s.setup) return s.setup;
+  if (!s.writer) return make_error(ErrorKind::usage, Location{}, "FbaEncoder: a frame added before start()");
+  if (s.added >= s.checked)
+    return make_error(ErrorKind::usage, Location{}, "FbaEncoder: a frame added that the first pass did not check");
+  if (s.masks && !s.fitter) s.fitter.emplace(std::move(*s.masks).finish());
+  ++s.added;
+  s.window.push_back(s.fitter ? s.fitter->fit(frame) : frame);
+  return s.write_groups(false);
+}
+
+Result<EncodedFba> FbaEncoder::finish() {
+  State& s = *state_;
+  if (!s.setup) return s.setup.error();
+  if (!s.writer) return make_error(ErrorKind::usage, Location{}, "FbaEncoder: finished before start()");
+  if (s.added != s.checked)
+    return make_error(ErrorKind::usage, Location{}, "FbaEncoder: the second pass added fewer frames than the first checked");
+  if (auto status = s.write_groups(true); !status) return status.error();
+  return s.writer->finish();
+}
+
+Result<EncodedFba> encode_fba(const FapSequence& sequence, const FbaEncodeOptions& options) {
+  FbaEncoder encoder(options);
+  if (auto status = encoder.start(sequence.fps); !status) return status.error();
+  for (const FapFrame& frame : sequence.frames)
+    if (auto status = encoder.check(frame); !status) return status.error();
+  for (const FapFrame& frame : sequence.frames)
+    if (auto status = encoder.add(frame); !status) return status.error();
+  return encoder.finish();
 }
 
 std::array<std::uint8_t, 14> fba_decoder_specific_info() {

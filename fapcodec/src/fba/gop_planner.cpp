@@ -39,8 +39,8 @@ LevelOptions level_options(std::int64_t value, std::int64_t step, std::int64_t l
 
 }  // namespace
 
-GopPlanner::GopPlanner(const FapSequence& sequence, const FbaEncodeOptions& options)
-    : frames_(sequence.frames), options_(options) {
+GopPlanner::GopPlanner(const std::vector<FapFrame>& window, const FbaEncodeOptions& options)
+    : frames_(window), options_(options) {
   quant_.fap_quant = options.quant;
   limit_ = kMaxRangeValue * kRangeDelta / quant_.range_scaler();
 }
@@ -137,8 +137,8 @@ void GopPlanner::fit_ranges(Gop& gop) const {
     gop.codes[kIntraMax][kFap4] = 1;
 }
 
-Result<Gop> GopPlanner::next() {
-  Gop gop;
+Status GopPlanner::begin_group() {
+  Gop& gop = current_.emplace();
   gop.first = next_;
   gop.mask = frames_[next_].mask;
   for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap)
@@ -150,20 +150,35 @@ Result<Gop> GopPlanner::next() {
     legal_.push_back(fap_table()[FaceState::index(fap)].legal_max());
   }
   nearest_levels(next_, gop, nearest_);
-  if (auto status = check_intra(gop); !status) return status.error();
+  if (auto status = check_intra(gop); !status) return status;
+  scan_ = next_ + 1;
+  return ok_status();
+}
+
+Result<std::optional<Gop>> GopPlanner::next(bool input_ended) {
+  if (frames_.size() <= next_) return std::optional<Gop>{};
+  if (!current_)
+    if (auto status = begin_group(); !status) return status.error();
   // The group ends where the next intra plane must go. Whether a range can carry each difference
   // is judged on the nearest levels; the chooser then keeps to the same bound.
-  std::size_t k = next_ + 1;
-  for (; k < frames_.size() && !needs_intra(k, gop.first); ++k) {
+  for (; scan_ < frames_.size(); ++scan_) {
+    if (needs_intra(scan_, current_->first)) return std::optional<Gop>{complete_group(scan_)};
     previous_nearest_.swap(nearest_);
-    nearest_levels(k, gop, nearest_);
+    nearest_levels(scan_, *current_, nearest_);
     bool fits = true;
     for (std::size_t j = 0; j < nearest_.size(); ++j) fits = fits && within(nearest_[j] - previous_nearest_[j]);
-    if (!fits) break;
+    if (!fits) return std::optional<Gop>{complete_group(scan_)};
   }
-  choose_levels(gop, k - next_);
-  for (std::size_t f = next_; f < k; ++f) quantise_fields(f, f == next_, gop);
-  gop.end = next_ = k;
+  if (input_ended) return std::optional<Gop>{complete_group(scan_)};
+  return std::optional<Gop>{};
+}
+
+Gop GopPlanner::complete_group(std::size_t end) {
+  Gop gop = std::move(*current_);
+  current_.reset();
+  choose_levels(gop, end - next_);
+  for (std::size_t f = next_; f < end; ++f) quantise_fields(f, f == next_, gop);
+  gop.end = end;
   fit_ranges(gop);
   return gop;
 }

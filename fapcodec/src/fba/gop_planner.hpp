@@ -7,6 +7,7 @@
 
 #include <bitset>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "fapc/codec/diagnostic.hpp"
@@ -30,17 +31,23 @@ struct Gop {
   RangeCodes codes{};  // the four range lists the intra plane signals
 };
 
+// Plans groups over a window of frames that the caller fills as frames come (the encoder
+// streams: it holds one group and the frame after it, never the sequence). The group always starts
+// at the window's first frame; the caller removes a group's frames once it has written them.
 class GopPlanner {
  public:
-  GopPlanner(const FapSequence& sequence, const FbaEncodeOptions& options);
+  GopPlanner(const std::vector<FapFrame>& window, const FbaEncodeOptions& options);
 
-  bool has_next() const { return next_ < frames_.size(); }
-  // The next group, from the current frame up to the next frame that needs an intra plane: a
-  // mask change, the intra period, or a difference no range can carry. Fails when an intra value
-  // lies beyond the largest range the bitstream can carry.
-  Result<Gop> next();
+  // The next group, from the window's first frame up to the next frame that needs an intra plane:
+  // a mask change, the intra period, or a difference no range can carry. Empty while the window
+  // does not reach that frame yet and more frames are to come (`input_ended` false); the scan goes
+  // on from where it stopped at the next call, so a group costs one scan however often it is
+  // asked for. Fails when an intra value lies beyond the largest range the bitstream can carry.
+  Result<std::optional<Gop>> next(bool input_ended);
 
  private:
+  Status begin_group();
+  Gop complete_group(std::size_t end);
   bool needs_intra(std::size_t k, std::size_t gop_first) const;
   // The standard's rounding of every FAP of the group in frame k, into `levels`.
   void nearest_levels(std::size_t k, const Gop& gop, std::vector<std::int64_t>& levels) const;
@@ -50,11 +57,13 @@ class GopPlanner {
   void fit_ranges(Gop& gop) const;
   bool within(std::int64_t q) const { return q <= limit_ && q >= -limit_; }
 
-  const std::vector<FapFrame>& frames_;
+  const std::vector<FapFrame>& frames_;  // the window
   FbaEncodeOptions options_;
+  std::optional<Gop> current_;  // the group being scanned; begun, not complete
+  std::size_t scan_ = 0;        // the next frame of the window to scan
   FaceState quant_;  // only fap_quant, steps and field limits are used
   std::int32_t limit_;  // the largest |q| any range can carry: 31 * 60 / scaler
-  std::size_t next_ = 0;
+  const std::size_t next_ = 0;  // groups start at the window's first frame
   std::vector<std::int64_t> steps_;  // of the group's FAPs, in coding order
   std::vector<std::int64_t> legal_;  // and their legal ranges (FapInfo::legal_max)
   std::vector<std::int64_t> nearest_, previous_nearest_;  // nearest levels of two frames

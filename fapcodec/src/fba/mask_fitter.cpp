@@ -32,50 +32,57 @@ class PartnerSwap {
   Mask first_, second_;  // the lower and the higher FAP of each pair
 };
 
+}  // namespace
+
 // Per frame, the FAPs that are free (see the header). A FAP is near zero in a frame when 0 is
 // within tolerance of what every player shows: the value it holds (a present FAP shows its value
 // to all three players, which is also what it holds) and, when it is absent, its partner's value.
-std::vector<Mask> free_bits(std::span<const FapFrame> frames, int quant) {
-  std::array<std::int64_t, kFapCount> tolerance{};
-  for (int fap = 3; fap <= kFapCount; ++fap) tolerance[bit(fap)] = fba_tolerance(fap, quant);
-  Mask low_level;
-  for (int fap = 3; fap <= kFapCount; ++fap) low_level.set(bit(fap));
-  const PartnerSwap swap;
-  std::vector<Mask> free(frames.size());
-  Mask holds_far;                    // FAPs whose held value is beyond tolerance
-  Mask was_near = low_level;         // before the first frame: the neutral face
-  for (std::size_t k = 0; k < frames.size(); ++k) {
-    const FapFrame& frame = frames[k];
-    for (std::size_t i = bit(3); i < kFapCount; ++i)
-      if (frame.mask[i]) holds_far[i] = std::llabs(frame.values[i]) > tolerance[i];
-    const Mask near = low_level & ~holds_far & ~(swap(holds_far & frame.mask) & ~frame.mask);
-    free[k] = near & was_near & ~swap(low_level & ~near);
-    was_near = near;
-  }
-  return free;
+MaskPlanner::MaskPlanner(int quant) {
+  for (int fap = 3; fap <= kFapCount; ++fap) tolerance_[bit(fap)] = fba_tolerance(fap, quant);
+  for (int fap = 3; fap <= kFapCount; ++fap) low_level_.set(bit(fap));
+  was_near_ = low_level_;  // before the first frame: the neutral face
 }
 
-}  // namespace
+void MaskPlanner::add(const FapFrame& frame) {
+  static const PartnerSwap swap;
+  for (std::size_t i = bit(3); i < kFapCount; ++i)
+    if (frame.mask[i]) holds_far_[i] = std::llabs(frame.values[i]) > tolerance_[i];
+  const Mask near = low_level_ & ~holds_far_ & ~(swap(holds_far_ & frame.mask) & ~frame.mask);
+  plan_.free.push_back(near & was_near_ & ~swap(low_level_ & ~near));
+  plan_.ahead.push_back(frame.mask);
+  was_near_ = near;
+}
 
-std::vector<FapFrame> fit_masks(std::span<const FapFrame> frames, int quant) {
-  const std::vector<Mask> free = free_bits(frames, quant);
+MaskPlanner::Plan MaskPlanner::finish() && {
   // ahead[k]: per FAP, the input's bit in the first frame from k on where the FAP is not free (0
   // if it is free to the end). Choosing it at a change of mask puts off the next change.
-  std::vector<Mask> ahead(frames.size());
   Mask next;
-  for (std::size_t k = frames.size(); k-- > 0;) {
-    next = (next & free[k]) | (frames[k].mask & ~free[k]);
-    ahead[k] = next;
+  for (std::size_t k = plan_.free.size(); k-- > 0;) {
+    next = (next & plan_.free[k]) | (plan_.ahead[k] & ~plan_.free[k]);
+    plan_.ahead[k] = next;
   }
-  std::vector<FapFrame> coded(frames.begin(), frames.end());
-  Mask mask;
-  for (std::size_t k = 0; k < frames.size(); ++k) {
-    if (k == 0 || ((mask ^ frames[k].mask) & ~free[k]).any()) mask = ahead[k];
-    const Mask filled = mask & ~frames[k].mask;
-    for (int fap = 3; fap <= kFapCount; ++fap)
-      if (filled.test(bit(fap))) coded[k].values[bit(fap)] = 0;
-    coded[k].mask = mask;
-  }
+  return std::move(plan_);
+}
+
+FapFrame MaskFitter::fit(const FapFrame& frame) {
+  const std::size_t k = next_++;
+  const Mask& free = plan_.free[k];
+  if (k == 0 || ((mask_ ^ frame.mask) & ~free).any()) mask_ = plan_.ahead[k];
+  FapFrame coded = frame;
+  const Mask filled = mask_ & ~frame.mask;
+  for (int fap = 3; fap <= kFapCount; ++fap)
+    if (filled.test(bit(fap))) coded.values[bit(fap)] = 0;
+  coded.mask = mask_;
+  return coded;
+}
+
+std::vector<FapFrame> fit_masks(std::span<const FapFrame> frames, int quant) {
+  MaskPlanner planner(quant);
+  for (const FapFrame& frame : frames) planner.add(frame);
+  MaskFitter fitter(std::move(planner).finish());
+  std::vector<FapFrame> coded;
+  coded.reserve(frames.size());
+  for (const FapFrame& frame : frames) coded.push_back(fitter.fit(frame));
   return coded;
 }
 

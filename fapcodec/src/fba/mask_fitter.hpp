@@ -12,6 +12,7 @@
 // is not free, the input's mask bit stands. Private to fapcodec.
 #pragma once
 
+#include <bitset>
 #include <span>
 #include <vector>
 
@@ -19,8 +20,42 @@
 
 namespace fapc::fba {
 
-// The frames as coded: the masks fitted, FAPs sent where the input leaves them out carry 0.
-// `quant` is fap_quant, which sets the tolerance (half a step).
+using FapMask = std::bitset<kFapCount>;
+
+// What fitting needs to know of the whole sequence, frame by frame: which FAPs are free, and per
+// FAP the input's bit in the first frame from there on where the FAP is not free (the bit a change
+// of mask should choose, to put off the next change). Gathered by one pass over the frames (add),
+// then a backward pass over the two bitsets (finish): 32 bytes a frame, never the frames.
+class MaskPlanner {
+ public:
+  explicit MaskPlanner(int quant);  // fap_quant, which sets the tolerance (half a step)
+  void add(const FapFrame& frame);
+  struct Plan {
+    std::vector<FapMask> free, ahead;
+  };
+  Plan finish() &&;
+
+ private:
+  std::array<std::int64_t, kFapCount> tolerance_{};
+  FapMask low_level_, holds_far_, was_near_;
+  Plan plan_;  // ahead holds the input's masks until finish
+};
+
+// The frames as coded, one at a time and in order: the masks fitted, FAPs sent where the input
+// leaves them out carry 0.
+class MaskFitter {
+ public:
+  explicit MaskFitter(MaskPlanner::Plan plan) : plan_(std::move(plan)) {}
+  // Frame k of the sequence the plan was made from, as coded.
+  FapFrame fit(const FapFrame& frame);
+
+ private:
+  MaskPlanner::Plan plan_;
+  std::size_t next_ = 0;
+  FapMask mask_;
+};
+
+// The whole sequence at once (both passes).
 std::vector<FapFrame> fit_masks(std::span<const FapFrame> frames, int quant);
 
 }  // namespace fapc::fba

@@ -12,8 +12,8 @@ constexpr std::size_t kMaxZerosBeforeStartCode = 8;
 
 }  // namespace
 
-PlaneWriter::PlaneWriter(const FapSequence& sequence, const FbaEncodeOptions& options)
-    : frames_(sequence.frames), options_(options), fps_(sequence.fps) {
+PlaneWriter::PlaneWriter(const std::vector<FapFrame>& window, int fps, const FbaEncodeOptions& options)
+    : frames_(window), options_(options), fps_(fps) {
   state_.fap_quant = options.quant;
   out_.put_bits(kFbaObjectStartCode, kStartCodeBits);
   // Aligned planes each start with a plane start code, which needs stuffing before it; every
@@ -32,7 +32,8 @@ void PlaneWriter::write_plane(const Gop& gop, std::size_t k) {
   CodedPlane plane;
   plane.bit_offset = out_.bit_count();
   plane.intra = intra;
-  plane.first_frame = frames_[k].number - frames_.front().number;
+  if (!first_number_) first_number_ = frames_[k].number;
+  plane.first_frame = frames_[k].number - *first_number_;
   plane.frames = static_cast<int>(skip + 1);
 
   if (options_.align_planes) out_.put_bits(kFbaObjectPlaneStartCode, kStartCodeBits);

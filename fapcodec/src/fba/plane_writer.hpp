@@ -3,6 +3,7 @@
 // range lists, arithmetic-coded segments), stuffing and end code. Private to fapcodec.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "fapc/codec/fba.hpp"
@@ -14,9 +15,11 @@ namespace fapc::fba {
 
 class PlaneWriter {
  public:
-  PlaneWriter(const FapSequence& sequence, const FbaEncodeOptions& options);
+  // `window`: the planner's window of frames (GopPlanner); `fps`: the sequence's frame rate.
+  PlaneWriter(const std::vector<FapFrame>& window, int fps, const FbaEncodeOptions& options);
 
-  // Every plane of the group, in order.
+  // Every plane of the group, in order. The window holds the frame after the group unless the
+  // group ends the sequence (a plane's skip count is the gap to the next frame).
   void write(const Gop& gop);
   // Stuffing and the end code; the stream and where each plane went.
   EncodedFba finish();
@@ -30,8 +33,9 @@ class PlaneWriter {
   void write_intra_face_header(const Gop& gop);
   void write_segments(const Gop& gop, std::size_t k, bool intra);
 
-  const std::vector<FapFrame>& frames_;
+  const std::vector<FapFrame>& frames_;  // the window
   FbaEncodeOptions options_;
+  std::optional<std::int64_t> first_number_;  // of the sequence's first frame
   int fps_;
   BitWriter out_;
   ArithEncoder coder_{out_};

@@ -183,11 +183,9 @@ std::vector<BatchOutcome> run_batch(const std::vector<BatchJob>& jobs, const Con
 
 std::string batch_summary_line(const BatchJob& job, const BatchOutcome& outcome) {
   if (!outcome.result.ok()) return "FAILED " + job.input;
-  const FapSequence& seq = outcome.result.loaded.frames;
-  std::bitset<kFapCount> used;
-  for (const FapFrame& f : seq.frames) used |= f.mask;
+  const ConvertResult::FramesSeen& seen = outcome.result.frames;
   std::ostringstream line;
-  line << job.input << ": " << seq.frames.size() << " frames, " << seq.fps << " fps, " << used.count() << " FAPs, "
+  line << job.input << ": " << seen.count << " frames, " << seen.fps << " fps, " << seen.faps.count() << " FAPs, "
        << outcome.result.warnings.size() << " warnings ->";
   for (const std::string& output : outcome.result.written) line << ' ' << output;
   return line.str();

@@ -1,6 +1,7 @@
 #include "fapc/pipeline/convert.hpp"
 
 #include "fapc/codec/file_io.hpp"
+#include "streamed_convert.hpp"
 
 namespace fapc::pipeline {
 
@@ -53,11 +54,18 @@ std::optional<Diagnostic> find_writers(const std::vector<OutputRequest>& outputs
   return std::nullopt;
 }
 
+ConvertResult::FramesSeen frames_seen(const FapSequence& sequence) {
+  ConvertResult::FramesSeen seen{sequence.frames.size(), sequence.fps, {}};
+  for (const FapFrame& frame : sequence.frames) seen.faps |= frame.mask;
+  return seen;
+}
+
 }  // namespace
 
 ConvertResult write_outputs(Loaded loaded, const std::vector<OutputRequest>& outputs, const ConvertOptions& options) {
   ConvertResult result;
   result.loaded = std::move(loaded);
+  result.frames = frames_seen(result.loaded.frames);
   std::vector<const OutputFormat*> writers;
   if ((result.error = find_writers(outputs, writers))) return result;
   write_all(result, writers, outputs, options);
@@ -68,12 +76,15 @@ ConvertResult convert(const std::string& input, const std::vector<OutputRequest>
   ConvertResult result;
   std::vector<const OutputFormat*> writers;
   if ((result.error = find_writers(outputs, writers))) return result;
+  // A long .fap to .fba or .fap goes through without its frames in memory.
+  if (auto streamed = convert_streamed(input, outputs, writers, options)) return std::move(*streamed);
   auto loaded = load(input, options);
   if (!loaded) {
     result.error = loaded.error();
     return result;
   }
   result.loaded = std::move(*loaded);
+  result.frames = frames_seen(result.loaded.frames);
   result.warnings = result.loaded.warnings;
   if (options.strict && !result.warnings.empty()) {
     result.error = make_error(ErrorKind::bad_input, Location{input, 0, 0, -1},

@@ -1,7 +1,7 @@
 #include "fapc/pipeline/info.hpp"
 
 #include <algorithm>
-#include <map>
+#include <array>
 
 #include "fapc/pipeline/json_output.hpp"
 #include "fapc/pipeline/registry.hpp"
@@ -17,14 +17,14 @@ struct Range {
 
 nlohmann::ordered_json summarise(const std::string& path, const std::string& kind, const Loaded& loaded) {
   const FapSequence& seq = loaded.frames;
-  std::map<int, Range> ranges;
+  std::array<Range, kFapCount + 1> ranges{};  // by FAP number (an array: this loop sees every value)
   for (const FapFrame& frame : seq.frames)
     for (int fap = 1; fap <= kFapCount; ++fap) {
       if (!frame.has(fap)) continue;
       const long long v = fap == 1   ? frame.viseme.select1
                           : fap == 2 ? frame.expression.select1
                                      : frame.value(fap);
-      Range& r = ranges[fap];
+      Range& r = ranges[static_cast<std::size_t>(fap)];
       r.min = r.frames ? std::min(r.min, v) : v;
       r.max = r.frames ? std::max(r.max, v) : v;
       ++r.frames;
@@ -38,7 +38,9 @@ nlohmann::ordered_json summarise(const std::string& path, const std::string& kin
   out["frames"] = seq.frames.size();
   out["duration"] = seq.duration_seconds();
   nlohmann::ordered_json faps = nlohmann::ordered_json::array();
-  for (const auto& [fap, r] : ranges) {
+  for (int fap = 1; fap <= kFapCount; ++fap) {
+    const Range& r = ranges[static_cast<std::size_t>(fap)];
+    if (r.frames == 0) continue;
     const FapInfo& info = *find_fap(fap);
     faps.push_back({{"number", fap}, {"name", info.name}, {"unit", fapu_name(info.unit)},
                     {"min", r.min}, {"max", r.max}, {"frames", r.frames}});

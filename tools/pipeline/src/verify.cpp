@@ -59,10 +59,14 @@ std::optional<long long> max_error(const FapSequence& input, const EncodedFba& e
 std::vector<int> intra_periods(const FapSequence& frames, const FbaStreamInfo& info) {
   std::vector<int> periods{0};
   std::size_t previous = 0;
+  // Intra planes and frames both ascend, so one walk finds every intra plane's frame (a search
+  // from the first frame for each made verify grow with the square of the intra planes).
+  auto it = frames.frames.begin();
   for (const FbaIntraPlane& intra : info.intra_planes) {
-    const auto it = std::find_if(frames.frames.begin(), frames.frames.end(),
-                                 [&](const FapFrame& f) { return f.number == intra.frame; });
-    const auto k = static_cast<std::size_t>(it - frames.frames.begin());
+    it = std::find_if(it, frames.frames.end(), [&](const FapFrame& f) { return f.number >= intra.frame; });
+    const auto k = it != frames.frames.end() && it->number == intra.frame
+                       ? static_cast<std::size_t>(it - frames.frames.begin())
+                       : frames.frames.size();
     if (k > 0 && k < frames.frames.size() && frames.frames[k].mask == frames.frames[k - 1].mask)
       periods.push_back(static_cast<int>(k - previous));
     previous = k;

@@ -2,6 +2,7 @@
 // one form every known player reads. See docs/fap-files.md.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -63,6 +64,24 @@ struct FapReadResult {
 Result<FapReadResult> read_fap_text(std::string_view text, const std::string& file,
                                     const FapReadOptions& options = {});
 
+// Frames one at a time, for inputs too long to hold as frames (an error stops the reading).
+using FapFrameSink = std::function<Status(const FapFrame&)>;
+
+struct FapScanResult {
+  FapReadResult read;  // its sequence has no frames: they went to the sink
+  // Frame k's number as read_fap_text would give it. The sink sees the numbers as the file writes
+  // them: what they mean (millisecond stamps, frames from 1) is known only at the end of the file.
+  std::vector<std::int64_t> numbers;
+};
+
+// The reader of read_fap_text, with the same checks, diagnostics and facts, handing each frame to
+// `sink` instead of keeping it: 12 bytes a frame are kept (its number and line). `progress`, when
+// given, is told now and then how many bytes of `text` are read and will not be looked at again
+// unless for a diagnostic (a caller reading a mapped file lets those pages go).
+Result<FapScanResult> scan_fap_text(std::string_view text, const std::string& file, const FapReadOptions& options,
+                                    const FapFrameSink& sink,
+                                    const std::function<void(std::size_t)>& progress = {});
+
 // The .fap layouts of the player families (docs/fap-files.md, "Flavours"): each writes exactly
 // the header, mask width, FAP 1/2 form, separators and line ends that family's reader expects.
 enum class FapFlavour {
@@ -99,6 +118,32 @@ Result<std::string> write_fap_flavour(const FapSequence& sequence, const FapWrit
 // with all their fields (4 and 6 values: the reference codec, Xface 1.0 and Greta's C++ reader),
 // integer values, LF line ends. options.flavour is not used.
 std::string write_fap_text(const FapSequence& sequence, const FapWriteOptions& options = {});
+
+// The .fap writer frame by frame, for sequences too long to hold: the text of write_fap_flavour,
+// in pieces. The header needs the frame count, so the caller says what the whole sequence holds
+// (how many frames, the first and last numbers). A frame's text is made when the next frame
+// comes (a gap is filled by repeating the frame before it) or at finish.
+class FapTextWriter {
+ public:
+  FapTextWriter(const std::string& name, int fps, std::size_t frames, std::int64_t first_number,
+                std::int64_t last_number, const FapWriteOptions& options = {});
+  ~FapTextWriter();
+  // The header; fails when the flavour cannot carry the frame rate.
+  Status begin(std::string& out);
+  // Fails (nothing appended) when the flavour cannot carry the frame.
+  Status add(const FapFrame& frame, std::string& out);
+  void finish(std::string& out);
+
+ private:
+  void write_pending(std::int64_t next_number, std::string& out);
+  FapWriteOptions options_;
+  int fps_;
+  std::int64_t first_;
+  bool renumber_ = true;
+  long long count_ = 0;
+  std::string name_;
+  std::optional<FapFrame> pending_;
+};
 
 // The header name written for `name`: one token (whitespace replaced by '_'), below 128 chars.
 std::string safe_header_name(std::string_view name);

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -71,6 +72,34 @@ inline constexpr int kMaxFbaFrameRate = 255;
 // no range can carry, a frame rate above 255, bad FAP 1/2 fields) carry no file name: the caller
 // knows which input the sequence came from.
 Result<EncodedFba> encode_fba(const FapSequence& sequence, const FbaEncodeOptions& options = {});
+
+// The same encoder fed frame by frame, for sequences too long to hold (a frame file read in
+// slices, a timeline rendered frame by frame). It takes the frames twice: a first pass checks
+// every frame (so that no error can come after output has begun) and gathers what fitting masks
+// needs from the whole sequence (32 bytes a frame); the second pass codes them, holding one group
+// of planes and the frame after it. The bytes are those encode_fba gives for the same frames.
+class FbaEncoder {
+ public:
+  explicit FbaEncoder(const FbaEncodeOptions& options = {});
+  ~FbaEncoder();
+  FbaEncoder(FbaEncoder&&) noexcept;
+  FbaEncoder& operator=(FbaEncoder&&) noexcept;
+
+  // First pass: every frame, in order. Fails on the first frame encode_fba would refuse, or on
+  // the options (which every call reports).
+  Status check(const FapFrame& frame);
+  // Before the first add (and before or after the first pass): the sequence's frame rate, which
+  // the stream must be able to carry (1 to 255). Fails on the options first, as encode_fba does.
+  Status start(int fps);
+  // Second pass: the same frames, in the same order, after every one was checked.
+  Status add(const FapFrame& frame);
+  // After the last add: the stream.
+  Result<EncodedFba> finish();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 // The decoder configuration an MP4 track carries (docs/mp4-and-xmta.md section 6.2): visual object
 // sequence header with profile-level 0x63 (Simple FBA L1), visual object header of type FBA, and

@@ -2,6 +2,7 @@
 // that a failed run never leaves a partial output behind.
 #pragma once
 
+#include <cstdio>
 #include <string>
 #include <string_view>
 
@@ -17,6 +18,29 @@ namespace fapc {
 // Permission denied" and other errors of the system; limit_exceeded for a gzip bomb.
 Result<std::string> read_file_bytes(const std::string& path, const Limits& limits = {});
 
+// A file's bytes mapped into memory, for readers that go through a long input once (or twice)
+// without holding it: release() lets the pages already read go, so the process keeps only what
+// it is reading (the pages come back from the page cache if looked at again). Opened with the
+// checks of read_file_bytes; a gzip file cannot be mapped (the caller reads it whole instead).
+class MappedFile {
+ public:
+  static Result<MappedFile> open(const std::string& path);
+  MappedFile(MappedFile&& other) noexcept;
+  MappedFile& operator=(MappedFile&& other) noexcept;
+  MappedFile(const MappedFile&) = delete;
+  MappedFile& operator=(const MappedFile&) = delete;
+  ~MappedFile();
+
+  std::string_view bytes() const { return {data_, size_}; }
+  // The pages wholly before byte `offset` are not needed now.
+  void release(std::size_t offset) const;
+
+ private:
+  MappedFile(const char* data, std::size_t size) : data_(data), size_(size) {}
+  const char* data_ = nullptr;
+  std::size_t size_ = 0;
+};
+
 bool is_gzip(std::string_view bytes);
 // Refuses (limit_exceeded, at the compressed byte reached) before the output would pass
 // limits.max_decompressed_bytes, or max_expansion times the input's size once past
@@ -27,5 +51,26 @@ std::string gzip(std::string_view bytes);
 // Writes to a temporary file in the target's folder, then renames it over the target.
 // A path ending in ".gz" is compressed first.
 Status write_file_atomic(const std::string& path, std::string_view bytes);
+
+// The same, in pieces, for outputs too long to hold: the bytes go to a temporary file in the
+// target's folder, which commit() renames over the target. Until then the target is untouched,
+// and a file never committed is removed (an error found late still leaves nothing). No gzip.
+class AtomicFile {
+ public:
+  static Result<AtomicFile> create(const std::string& path);
+  AtomicFile(AtomicFile&& other) noexcept;
+  AtomicFile& operator=(AtomicFile&&) = delete;
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+  ~AtomicFile();
+
+  Status write(std::string_view bytes);
+  Status commit();
+
+ private:
+  AtomicFile(std::string path, std::string temp, std::FILE* file) : path_(std::move(path)), temp_(std::move(temp)), file_(file) {}
+  std::string path_, temp_;
+  std::FILE* file_ = nullptr;  // null once committed or moved from
+};
 
 }  // namespace fapc

@@ -2,6 +2,7 @@
 // result carries every warning and the error, for the caller to show.
 #pragma once
 
+#include <bitset>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +22,13 @@ struct ConvertResult {
   std::optional<Diagnostic> error;   // the first error; outputs after it were not written
   std::vector<std::string> written;  // the files written, in request order
   std::string standard_output;       // the bytes of a "-" output
+  // What the frames were, for summaries, also when they went through without being held
+  // (a long .fap streamed to .fba and .fap, in which case loaded.frames has none).
+  struct FramesSeen {
+    std::size_t count = 0;
+    int fps = 25;
+    std::bitset<kFapCount> faps;  // used by any frame
+  } frames;
   bool ok() const { return !error; }
 };
 
