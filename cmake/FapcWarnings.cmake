@@ -15,6 +15,14 @@ if(FAPC_SANITIZE)
     -fno-sanitize-recover=all)
   target_link_options(fapc_flags INTERFACE -fsanitize=address,undefined)
 endif()
+if(FAPC_TSAN)
+  if(FAPC_SANITIZE)
+    message(FATAL_ERROR "FAPC_TSAN and FAPC_SANITIZE cannot be combined: ThreadSanitizer excludes AddressSanitizer")
+  endif()
+  # The batch runs conversions on several threads (docs/testing.md, "Data races").
+  target_compile_options(fapc_flags INTERFACE -fsanitize=thread -fno-omit-frame-pointer)
+  target_link_options(fapc_flags INTERFACE -fsanitize=thread)
+endif()
 if(FAPC_FUZZ)
   # libFuzzer needs every library instrumented for coverage; the fuzz programs add the driver.
   # Every sanitizer report is fatal: a UB report that only prints would let the fuzzer run on

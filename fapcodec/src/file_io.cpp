@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstring>
 #include <random>
+#include <system_error>
 #include <utility>
 
 namespace fapc {
@@ -22,8 +23,10 @@ bool ends_with(std::string_view s, std::string_view suffix) {
   return s.size() >= suffix.size() && s.substr(s.size() - suffix.size()) == suffix;
 }
 
+// The system's reason by generic_category (strerror_r underneath): strerror may fill a buffer
+// shared by every thread, and the batch reads and writes on several.
 Diagnostic io_error(const std::string& path, const std::string& what) {
-  return make_error(ErrorKind::io, Location{path, 0, 0, -1}, what + ": " + std::strerror(errno));
+  return make_error(ErrorKind::io, Location{path, 0, 0, -1}, what + ": " + std::generic_category().message(errno));
 }
 
 // Why a file of this type cannot be read as an input, or nullptr for a regular file.

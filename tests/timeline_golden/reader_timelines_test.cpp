@@ -97,5 +97,20 @@ TEST(ReaderTimelines, Mp4) {
   expect_frames_dump("mp4", source, decoded->sequence);
 }
 
+// The Algebra of Expressions' result has frames, not a timeline, like the frame inputs: the
+// program combines the bundled .combine (its operands are in ../fap, hence --allow-include), the
+// .fap it writes is read back (a .fap keeps every value), and its frames are lifted.
+TEST(ReaderTimelines, Combine) {
+  const std::string source = "corpus/examples/algebra/smiling-mouth-angry-eyes.combine";
+  const std::string written = test::binary_dir() + "/timeline-golden/smiling-mouth-angry-eyes.fap";
+  fs::create_directories(fs::path(written).parent_path());
+  const test::CommandRun run =
+      test::run_fapc("compile " + source + " --allow-include corpus/examples -o '" + written + "'");
+  ASSERT_EQ(run.exit_status, 0) << run.err;
+  const auto fap = read_fap_text(read_bytes(fs::relative(written, test::source_dir()).string()), source);
+  ASSERT_TRUE(fap.ok()) << format_diagnostic(fap.error());
+  expect_frames_dump("combine", source, fap->sequence);
+}
+
 }  // namespace
 }  // namespace fapc

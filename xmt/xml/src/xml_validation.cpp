@@ -3,6 +3,7 @@
 #include "fapc/xml/xml_validation.hpp"
 
 #include <algorithm>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -11,6 +12,10 @@
 #include <xercesc/framework/MemBufInputSource.hpp>
 #include <xercesc/framework/XMLPScanToken.hpp>
 #include <xercesc/framework/XMLValidityCodes.hpp>
+#include <xercesc/framework/psvi/PSVIAttribute.hpp>
+#include <xercesc/framework/psvi/PSVIAttributeList.hpp>
+#include <xercesc/framework/psvi/PSVIHandler.hpp>
+#include <xercesc/framework/psvi/XSSimpleTypeDefinition.hpp>
 #include <xercesc/parsers/SAX2XMLReaderImpl.hpp>
 #include <xercesc/sax/EntityResolver.hpp>
 #include <xercesc/sax/Locator.hpp>
@@ -24,9 +29,11 @@
 #include <xercesc/util/XMLException.hpp>
 #include <xercesc/util/XMLString.hpp>
 #include <xercesc/validators/common/Grammar.hpp>
+#include <xercesc/validators/schema/SchemaSymbols.hpp>
 
 #include "fapc/codec/deep_stack.hpp"
 #include "schema_registry.hpp"
+#include "xml_tag_scan.hpp"
 #include "fapc/xml/xml_document.hpp"
 
 namespace fapc::xmt {
@@ -111,8 +118,50 @@ bool is_number_list(std::string_view s) {
   return i == s.size();
 }
 
-// Collects problems with their positions; remembers the root element when asked to.
-class Collector : public xc::DefaultHandler {
+// Which attribute a problem is about, as Xerces' API says (never its message): the problem is
+// moved there from the end of the start tag where Xerces reports it.
+struct AttributeTarget {
+  std::string name;     // local name
+  bool at_value = true; // point at the value (false: at the name, for an undeclared attribute)
+  std::string token;    // within the value: this token (an IDREFS item), or empty for the start
+};
+
+// What Xerces' error codes say a problem is: a validity code, or a datatype validator's
+// exception code (Xerces reports a value its type rejects in the exception domain).
+struct ProblemCode {
+  unsigned validity = 0;  // an XMLValid::Codes, 0: none
+  bool datatype = false;  // an XMLExcepts::Codes from a datatype validator
+};
+
+// Whether a problem reported at the end of a start tag is about one of its attributes.
+bool about_an_attribute(const ProblemCode& code) {
+  using v = xc::XMLValid;
+  if (code.datatype) return true;
+  switch (code.validity) {
+    case v::AttNotDefined: case v::AttNotDefinedForElement: case v::DatatypeError:
+    case v::DatatypeValidationFailure: case v::ProhibitedAttributePresent: case v::AttributeNotQualified:
+    case v::AttributeNotUnQualified: case v::InvalidEmptyAttValue: case v::AttrValNotName:
+    case v::ReusedIDValue: case v::BadEntityRefAttr: case v::UnknownEntityRefAttr: case v::UnknownNotRefAttr:
+    case v::AttrDupToken:
+      return true;
+    default:
+      return false;
+  }
+}
+
+// Whether a schema type is (derived from) the built-in `name` (ID, IDREF), or a list of it.
+bool is_of_type(xc::XSTypeDefinition* type, const XMLCh* name, bool or_list_of_it) {
+  if (!type || type->getTypeCategory() != xc::XSTypeDefinition::SIMPLE_TYPE) return false;
+  if (type->derivedFrom(xc::SchemaSymbols::fgURI_SCHEMAFORSCHEMA, name)) return true;
+  auto* simple = static_cast<xc::XSSimpleTypeDefinition*>(type);
+  return or_list_of_it && simple->getVariety() == xc::XSSimpleTypeDefinition::VARIETY_LIST &&
+         is_of_type(simple->getItemType(), name, false);
+}
+
+// Collects problems with their positions; remembers the root element when asked to. As the PSVI
+// handler of the validating pass it learns which attributes of each start tag are invalid, and
+// the document's IDs and ID references.
+class Collector : public xc::DefaultHandler, public xc::PSVIHandler {
  public:
   explicit Collector(const std::string& file, bool xmto_lists = false) : file_(file), xmto_lists_(xmto_lists) {}
 
@@ -130,6 +179,61 @@ class Collector : public xc::DefaultHandler {
   void error(const xc::SAXParseException& e) override { add(Severity::error, e); }
   void fatalError(const xc::SAXParseException& e) override { add(Severity::error, e); }
 
+  // Called after a start tag's attributes are validated: their problems are reported by then, at
+  // the end of the start tag, where the locator still is.
+  void handleAttributesPSVI(const XMLCh*, const XMLCh*, xc::PSVIAttributeList* list) override {
+    std::vector<AttributeTarget> invalid;
+    for (XMLSize_t i = 0; list && i < list->getLength(); ++i) {
+      xc::PSVIAttribute* attribute = list->getAttributePSVIAtIndex(i);
+      if (!attribute) continue;
+      const std::string name = text(list->getAttributeNameAtIndex(i));
+      if (attribute->getValidity() == xc::PSVIItem::VALIDITY_INVALID)
+        invalid.push_back({name, attribute->getAttributeDeclaration() != nullptr, {}});
+      xc::XSTypeDefinition* type = attribute->getTypeDefinition();
+      const std::string value = text(attribute->getSchemaNormalizedValue());
+      if (is_of_type(type, xc::XMLUni::fgIDString, false)) ids_.insert(value);
+      if (is_of_type(type, xc::XMLUni::fgIDRefString, true))
+        for (std::size_t at = 0; (at = value.find_first_not_of(" \t\r\n", at)) != std::string::npos;) {
+          const std::size_t end = std::min(value.find_first_of(" \t\r\n", at), value.size());
+          references_.push_back({here(), {name, true, value.substr(at, end - at)}});
+          at = end;
+        }
+    }
+    std::vector<std::size_t> about;  // this start tag's problems about an attribute, in order
+    const Location end_of_tag = here();
+    for (std::size_t k = start_tag_first_; k < problems.size(); ++k)
+      if (about_an_attribute(codes_[k]) && problems[k].where.line == end_of_tag.line &&
+          problems[k].where.column == end_of_tag.column)
+        about.push_back(k);
+    // Xerces validates attributes in order, one problem for each invalid one: paired in order
+    // when the counts agree; otherwise the problems stay at the end of the start tag.
+    if (about.size() == invalid.size())
+      for (std::size_t k = 0; k < about.size(); ++k) targets[about[k]] = invalid[k];
+    start_tag_first_ = problems.size();
+  }
+  void handleElementPSVI(const XMLCh*, const XMLCh*, xc::PSVIElement*) override {}
+
+  // Xerces reports each ID reference naming no ID once, at the end of the document. Those
+  // problems are replaced by one per such name, in document order, where it is first used, when
+  // the references this collector saw account for all of them.
+  void place_unresolved_references() {
+    std::vector<std::size_t> reported;
+    for (std::size_t k = 0; k < problems.size(); ++k)
+      if (codes_[k].validity == xc::XMLValid::IDNotDeclared) reported.push_back(k);
+    if (reported.empty()) return;
+    std::vector<std::pair<Diagnostic, AttributeTarget>> found;
+    std::set<std::string> named;
+    for (const auto& [where, target] : references_)
+      if (!ids_.count(target.token) && named.insert(target.token).second)
+        found.push_back({make_error(where, "ID attribute '" + target.token + "' is referenced but was never declared"),
+                         target});
+    if (found.size() != reported.size()) return;
+    for (std::size_t k = 0; k < reported.size(); ++k) {
+      problems[reported[k]] = found[k].first;
+      targets[reported[k]] = found[k].second;
+    }
+  }
+
   // Nothing outside the document is ever read: DTDs and entities named by it resolve to nothing.
   xc::InputSource* resolveEntity(const XMLCh*, const XMLCh*) override {
     static const XMLByte nothing[] = "";
@@ -139,13 +243,16 @@ class Collector : public xc::DefaultHandler {
   bool root_seen = false;
   std::string root_ns, root_name;
   Diagnostics problems;
-  // Which problems (indices into `problems`) are IDREFs naming no ID (Xerces reports those at
-  // the end of the document).
-  std::set<std::size_t> unresolved_references;
-  // Set by CodedReader around each report: what Xerces' error code says the next problem is.
-  bool next_is_unresolved_reference = false;
+  std::map<std::size_t, AttributeTarget> targets;  // problem index -> the attribute it is about
+  // Set by CodedReader around each report: Xerces' code for the next problem.
+  ProblemCode next_code;
 
  private:
+  Location here() const {
+    return Location::text(file_, locator_ ? static_cast<int>(locator_->getLineNumber()) : 0,
+                          locator_ ? static_cast<int>(locator_->getColumnNumber()) : 0);
+  }
+
   // values and keyTimes of an XMT-Omega animate (their schema type checks only the characters).
   void check_number_lists(const xc::Attributes& attributes) {
     for (XMLSize_t i = 0; i < attributes.getLength(); ++i) {
@@ -153,11 +260,10 @@ class Collector : public xc::DefaultHandler {
       if (name != "values" && name != "keyTimes") continue;
       const std::string value = text(attributes.getValue(i));
       if (is_number_list(value)) continue;
-      const int line = locator_ ? static_cast<int>(locator_->getLineNumber()) : 0;
-      const int column = locator_ ? static_cast<int>(locator_->getColumnNumber()) : 0;
       const std::string shown = value.size() > 40 ? value.substr(0, 40) + "..." : value;
-      problems.push_back(make_error(Location::text(file_, line, column),
-                                    "'" + name + "': '" + shown + "' is not a list of numbers separated by ';'"));
+      targets[problems.size()] = {name, false, {}};
+      problems.push_back(make_error(here(), "'" + name + "': '" + shown + "' is not a list of numbers separated by ';'"));
+      codes_.push_back({});
     }
   }
 
@@ -166,11 +272,15 @@ class Collector : public xc::DefaultHandler {
                                   Location::text(file_, static_cast<int>(e.getLineNumber()),
                                                  static_cast<int>(e.getColumnNumber())),
                                   text(e.getMessage()), {}});
-    if (next_is_unresolved_reference) unresolved_references.insert(problems.size() - 1);
+    codes_.push_back(next_code);
   }
   const std::string& file_;
   bool xmto_lists_;
   const xc::Locator* locator_ = nullptr;
+  std::vector<ProblemCode> codes_;  // parallel to `problems`
+  std::size_t start_tag_first_ = 0;
+  std::set<std::string> ids_;
+  std::vector<std::pair<Location, AttributeTarget>> references_;  // where each ID reference is
 };
 
 // The SAX2 reader, seeing each error's code before the SAX handler gets only its text: the
@@ -181,10 +291,10 @@ class CodedReader : public xc::SAX2XMLReaderImpl {
   void error(const unsigned int code, const XMLCh* const domain, const xc::XMLErrorReporter::ErrTypes type,
              const XMLCh* const message, const XMLCh* const system_id, const XMLCh* const public_id,
              const XMLFileLoc line, const XMLFileLoc column) override {
-    collector_.next_is_unresolved_reference =
-        code == xc::XMLValid::IDNotDeclared && xc::XMLString::equals(domain, xc::XMLUni::fgValidityDomain);
+    collector_.next_code = {xc::XMLString::equals(domain, xc::XMLUni::fgValidityDomain) ? code : 0,
+                            xc::XMLString::equals(domain, xc::XMLUni::fgExceptDomain)};
     xc::SAX2XMLReaderImpl::error(code, domain, type, message, system_id, public_id, line, column);
-    collector_.next_is_unresolved_reference = false;
+    collector_.next_code = {};
   }
 
  private:
@@ -197,7 +307,9 @@ struct ReaderDeleter {
 using Reader = std::unique_ptr<xc::SAX2XMLReader, ReaderDeleter>;
 
 Reader make_reader(Collector& collector, xc::SecurityManager& security, bool validate) {
-  Reader reader(new CodedReader(collector));
+  auto* coded = new CodedReader(collector);
+  Reader reader(coded);
+  if (validate) coded->setPSVIHandler(&collector);
   reader->setFeature(xc::XMLUni::fgSAX2CoreNameSpaces, true);
   reader->setFeature(xc::XMLUni::fgXercesLoadExternalDTD, false);
   reader->setFeature(xc::XMLUni::fgXercesDisableDefaultEntityResolution, true);
@@ -216,8 +328,8 @@ Reader make_reader(Collector& collector, xc::SecurityManager& security, bool val
 }
 
 // Xerces places attribute errors at the end of the start tag and unresolved IDREFs at the end of
-// the document. This moves such a diagnostic to the attribute (or value) its message quotes, when
-// that can be found, and attaches the source line for the caret.
+// the document. This moves a diagnostic whose attribute the collector learnt from the API to that
+// attribute's name or value in the text, and attaches the source line for the caret.
 class Positions {
  public:
   explicit Positions(std::string_view text) : text_(text) {
@@ -226,29 +338,38 @@ class Positions {
       if (text[i] == '\n') starts_.push_back(i + 1);
   }
 
-  void refine(Diagnostic& d, bool unresolved_reference) const {
-    const std::string quoted = quoted_token(d.message);
-    if (!quoted.empty()) {
-      if (unresolved_reference) {
-        move_to(d, text_.find("=\"" + quoted + "\""), 2);
-      } else if (d.where.line >= 1 && static_cast<std::size_t>(d.where.line) <= starts_.size()) {
-        const std::string_view line = line_text(d.where.line);
-        const std::size_t before = std::min<std::size_t>(line.size(), static_cast<std::size_t>(std::max(d.where.column, 1)));
-        std::size_t at = line.rfind(" " + quoted + "=", before);
-        if (at != std::string_view::npos) ++at;
-        else if ((at = line.rfind("\"" + quoted + "\"", before)) != std::string_view::npos) ++at;
-        if (at != std::string_view::npos) d.where.column = static_cast<int>(at) + 1;
-      }
-    }
+  void refine(Diagnostic& d, const AttributeTarget* target) {
+    if (target && d.where.line >= 1 && static_cast<std::size_t>(d.where.line) <= starts_.size())
+      if (const std::optional<std::size_t> at = attribute_offset(offset_of(d.where), *target)) move_to(d, *at);
     if (d.where.line >= 1 && static_cast<std::size_t>(d.where.line) <= starts_.size())
       d.source_line = std::string(line_text(d.where.line));
   }
 
  private:
-  static std::string quoted_token(const std::string& message) {
-    const std::size_t open = message.find('\'');
-    const std::size_t close = open == std::string::npos ? open : message.find('\'', open + 1);
-    return close == std::string::npos ? std::string{} : message.substr(open + 1, close - open - 1);
+  std::size_t offset_of(const Location& where) const {
+    const std::size_t line_start = starts_[static_cast<std::size_t>(where.line - 1)];
+    return std::min(text_.size(), line_start + static_cast<std::size_t>(std::max(where.column - 1, 0)));
+  }
+  // In the start tag that ends at or before `end` (where Xerces reports it): the offset of the
+  // attribute's name, or of its value (or of a token in it).
+  std::optional<std::size_t> attribute_offset(std::size_t end, const AttributeTarget& target) {
+    if (!tags_) tags_ = xml::scan_start_tags(text_);
+    auto tag = std::lower_bound(tags_->begin(), tags_->end(), end,
+                                [](const xml::ScannedTag& t, std::size_t at) { return t.offset < at; });
+    if (tag == tags_->begin()) return std::nullopt;
+    --tag;
+    for (const auto& [written, at] : tag->attributes) {
+      const std::size_t colon = written.find(':');
+      if ((colon == std::string::npos ? written : written.substr(colon + 1)) != target.name) continue;
+      if (!target.at_value) return at;
+      const std::size_t quote = text_.find_first_of("\"'", at + written.size());
+      if (quote == std::string_view::npos) return std::nullopt;
+      if (target.token.empty()) return quote + 1;
+      const std::size_t close = text_.find(text_[quote], quote + 1);
+      const std::size_t token = text_.substr(0, close).find(target.token, quote + 1);
+      return token == std::string_view::npos ? quote + 1 : token;
+    }
+    return std::nullopt;
   }
   std::string_view line_text(int line) const {
     const std::size_t begin = starts_[static_cast<std::size_t>(line - 1)];
@@ -257,16 +378,14 @@ class Positions {
     if (end > begin && text_[end - 1] == '\r') --end;
     return text_.substr(begin, end - begin);
   }
-  // Points `d` at file offset `offset + skip`, when found.
-  void move_to(Diagnostic& d, std::size_t offset, std::size_t skip) const {
-    if (offset == std::string_view::npos) return;
-    offset += skip;
+  void move_to(Diagnostic& d, std::size_t offset) const {
     const auto line = std::upper_bound(starts_.begin(), starts_.end(), offset) - starts_.begin();
     d.where.line = static_cast<int>(line);
     d.where.column = static_cast<int>(offset - starts_[static_cast<std::size_t>(line - 1)]) + 1;
   }
   std::string_view text_;
   std::vector<std::size_t> starts_;
+  std::optional<std::vector<xml::ScannedTag>> tags_;  // scanned when first needed
 };
 
 Result<ValidationReport> validate_with_xerces(std::string_view text_in, const std::string& file) {
@@ -313,9 +432,12 @@ Result<ValidationReport> validate_with_xerces(std::string_view text_in, const st
   }
   xc::MemBufInputSource in(reinterpret_cast<const XMLByte*>(text_in.data()), text_in.size(), id.get(), false);
   reader->parse(in);
-  const Positions positions(text_in);
-  for (std::size_t i = 0; i < collector.problems.size(); ++i)
-    positions.refine(collector.problems[i], collector.unresolved_references.count(i) > 0);
+  collector.place_unresolved_references();
+  Positions positions(text_in);
+  for (std::size_t i = 0; i < collector.problems.size(); ++i) {
+    const auto target = collector.targets.find(i);
+    positions.refine(collector.problems[i], target == collector.targets.end() ? nullptr : &target->second);
+  }
   return ValidationReport{std::string(binding->kind), std::string(binding->schema), std::move(collector.problems)};
 }
 
