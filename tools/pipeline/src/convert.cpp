@@ -1,5 +1,7 @@
 #include "fapc/pipeline/convert.hpp"
 
+#include <algorithm>
+
 #include "fapc/codec/file_io.hpp"
 
 namespace fapc::pipeline {
@@ -68,7 +70,9 @@ ConvertResult convert(const std::string& input, const std::vector<OutputRequest>
   ConvertResult result;
   std::vector<const OutputFormat*> writers;
   if ((result.error = find_writers(outputs, writers))) return result;
-  auto loaded = load(input, options);
+  ConvertOptions load_options = options;
+  load_options.curves = std::any_of(writers.begin(), writers.end(), [](const OutputFormat* w) { return w->uses_curves; });
+  auto loaded = load(input, load_options);
   if (!loaded) {
     result.error = loaded.error();
     return result;

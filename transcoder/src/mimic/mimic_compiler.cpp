@@ -27,7 +27,6 @@ using Kind = ScheduleNode::Kind;
 
 // Far more than any hand-written program expands to (an hour of animation at eight actions a
 // second is 28800), and small enough to refuse within a second (an action costs a few µs).
-constexpr std::size_t kMaxActions = 200000;
 
 struct Target {
   std::string name;
@@ -190,11 +189,15 @@ class Compiler {
     }
     // Macros that use each other twice double with every level: forty lines can ask for 2^40
     // actions. Counted over the whole compilation (the macro bodies' own checks included).
-    if (++actions_built_ > kMaxActions) {
-      return make_error(ErrorKind::limit_exceeded, location(action.at),
-                        "the program has more than " + std::to_string(kMaxActions) +
-                            " actions with macros expanded: fapc refuses to schedule so many",
-                        source_line(source_, action.at.line));
+    // The bound is the run limit (each action is at least one run), so a program of 10^6
+    // honest actions passes with the defaults.
+    if (++actions_built_ > static_cast<std::size_t>(std::max<std::int64_t>(options_.max_runs, 0))) {
+      Limits limits;
+      limits.max_runs = options_.max_runs;
+      Diagnostic refused =
+          limit_error(location(action.at), "the program has too many actions with macros expanded", Limit::runs, limits);
+      refused.source_line = source_line(source_, action.at.line);
+      return refused;
     }
     Result<ActionParams> params = read(action.params);
     if (!params) return params.error();

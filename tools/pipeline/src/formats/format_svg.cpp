@@ -15,6 +15,6 @@ Result<std::string> write_svg(const Loaded& loaded, const std::string& path, con
 
 }  // namespace
 
-OutputFormat svg_output() { return {"svg", {".svg"}, write_svg}; }
+OutputFormat svg_output() { return {"svg", {".svg"}, write_svg, true}; }
 
 }  // namespace fapc::pipeline::builtin
