@@ -169,7 +169,7 @@ namespace {
 
 // Worked out by hand from SMIL: an empty par (or an excl whose event picked no branch) lasts 0 s.
 // It used to make its sequence's length unknown, and the sequence then repeated itself until the
-// run limit ("story repeats to more than 4000000 runs").
+// run limit ("story repeats to more than 1000000 runs").
 TEST(ScheduleEmptyGroups, AnEmptyParallelBesideATimedLeafLastsNothing) {
   const auto s = schedule(group(Kind::sequence, {group(Kind::parallel, {}), leaf(0, 2)}));
   ASSERT_TRUE(s.ok()) << s.error().message;

@@ -21,7 +21,7 @@ struct Limits {
   // script (and the actions of a Mimic program with its macros expanded): a 1 ms animation
   // repeated for a day would otherwise make 86 million clips. Four times the 10^6 elements of a
   // large honest script, whose repeats and templates make more runs than elements
-  // (docs/security.md, "Runs").
+  // (docs/security.md, "Resource limits").
   std::int64_t max_runs = 4'000'000;
   // Bytes a compressed (gzip) input may inflate to, whatever its size.
   std::int64_t max_decompressed_bytes = std::int64_t{1} << 30;
