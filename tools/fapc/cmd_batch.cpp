@@ -1,4 +1,4 @@
-// fapc batch INPUT... -o DIR [--to LIST] [--jobs N] [--report junit.xml] [--keep-going]:
+// fapc batch INPUT... -o DIR [--to LIST] [--jobs N] [--report junit.xml] [--report-json FILE] [--keep-going]:
 // converts every supported file under the inputs into DIR (fapc::pipeline::plan_batch and
 // run_batch), one output per kind in --to, and prints a summary line per input, in input order,
 // as the jobs finish. Ctrl-C stops starting new jobs; the summary and the report still come.
@@ -14,6 +14,7 @@
 #include "fapc/commands.hpp"
 #include "fapc/options.hpp"
 #include "fapc/pipeline/batch.hpp"
+#include "fapc/pipeline/json_output.hpp"
 #include "fapc/report.hpp"
 
 namespace fapc::cli {
@@ -36,7 +37,7 @@ std::vector<std::string> split_list(const std::string& list) {
 }
 
 int run_batch(const std::vector<std::string>& argv) {
-  Args args(argv, [] { auto v = kConvertValued; v.insert({"output", "jobs", "report"}); return v; }(),
+  Args args(argv, [] { auto v = kConvertValued; v.insert({"output", "jobs", "report", "report-json"}); return v; }(),
             [] { auto f = kConvertFlags; f.insert("keep-going"); return f; }());
   ConvertOptions options = convert_options(args);
   const int threads = args.integer("jobs", 0, 1, 256);  // absent: one per core
@@ -90,12 +91,17 @@ int run_batch(const std::vector<std::string>& argv) {
     if (auto written = write_file_atomic(*report_path, pipeline::junit_report(*jobs, outcomes)); !written)
       status = worse_status(status, report_outcome({}, written.error()));
   }
+  if (const auto report_path = args.value("report-json")) {
+    const std::string text = pipeline::batch_report_json(*jobs, outcomes, interrupted).dump(2) + "\n";
+    if (auto written = write_file_atomic(*report_path, text); !written)
+      status = worse_status(status, report_outcome({}, written.error()));
+  }
   if (interrupted && status == kExitOk) status = kExitBadInput;  // not everything was converted
   return status;
 }
 
 const RegisterCommand batch_command{
-    "batch", "fapc batch INPUT... -o DIR [--to LIST] [--jobs N] [--report junit.xml] [--keep-going]", run_batch};
+    "batch", "fapc batch INPUT... -o DIR [--to LIST] [--jobs N] [--report junit.xml] [--report-json FILE] [--keep-going]", run_batch};
 
 }  // namespace
 

@@ -7,6 +7,7 @@
 
 #include "fapc/commands.hpp"
 #include "fapc/options.hpp"
+#include "fapc/pipeline/json_output.hpp"
 #include "fapc/pipeline/verify.hpp"
 #include "fapc/report.hpp"
 
@@ -20,19 +21,18 @@ int run_verify(const std::vector<std::string>& argv) {
   if (!args.ok()) return usage_error("verify", args.error());
   if (args.positionals().empty()) return usage_error("verify", "expected at least one FILE");
   int status = kExitOk;
-  nlohmann::ordered_json results = nlohmann::ordered_json::array();
+  std::vector<nlohmann::ordered_json> results;
   for (const std::string& path : args.positionals()) {
     const pipeline::VerifyResult verified = pipeline::verify(path, options);
     const int file_status = report_outcome(verified.warnings, verified.error);
     status = worse_status(status, file_status);
     if (args.flag("json")) {
-      results.push_back({{"file", path}, {"ok", verified.ok()}, {"status", file_status},
-                         {"message", verified.ok() ? verified.summary : format_diagnostic(*verified.error)}});
+      results.push_back(pipeline::verify_file_json(path, verified, file_status));
     } else if (verified.ok()) {
       std::cout << path << ": ok: " << verified.summary << '\n';
     }
   }
-  if (args.flag("json")) std::cout << results.dump(2) << '\n';
+  if (args.flag("json")) std::cout << pipeline::verify_document(std::move(results)).dump(2) << '\n';
   return status;
 }
 

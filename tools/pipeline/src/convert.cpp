@@ -11,7 +11,7 @@ Result<const OutputFormat*> writer_for(const OutputRequest& request) {
       request.kind.empty() ? formats().output_for(request.path) : formats().output_named(request.kind);
   if (!writer)
     return make_error(ErrorKind::unsupported, Location{request.path, 0, 0, -1},
-                      "unknown output kind (expected .fap, .fap.gz, .fba, .mp4, .xmt, .json, .svg, .png, .webm or .html)");
+                      "unknown output kind (expected .fap, .fap.gz, .fba, .mp4, .xmt, .json, .svg, .pdf, .csv, .png, .webm or .html)");
   return writer;
 }
 

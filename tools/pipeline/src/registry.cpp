@@ -45,6 +45,8 @@ Registry built_in() {
   r.add(builtin::xmta_commands_output());
   r.add(builtin::curves_json_output());
   r.add(builtin::svg_output());
+  r.add(builtin::pdf_output());
+  r.add(builtin::csv_output());
   r.add(builtin::timeline_output());
   r.add(builtin::png_output());
   r.add(builtin::webm_output());
