@@ -101,7 +101,7 @@ TEST_F(HostileInputs, MimicMacrosThatDoubleAreRefused) {
   }
   write("double.mimic", program + "main { m40; }\n");
   refused("compile " + at("double.mimic") + " -o " + at("out.fap"),
-          "error: the program has more than 200000 actions with macros expanded", at("out.fap"));
+          "error: the program has too many actions with macros expanded: more than the limit of 4000000 runs", at("out.fap"));
 }
 
 TEST_F(HostileInputs, FmlTemplateChainsDeeperThanTheLimit) {

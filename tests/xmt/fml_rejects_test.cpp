@@ -85,7 +85,7 @@ const std::map<std::string, std::string>& expected_errors() {
        "                       ^"},
       {"repeats-beside-a-long-sibling.fml",
        "repeats-beside-a-long-sibling.fml:5:7: error: seq repeats to too many runs: more than the limit of "
-       "1000000 runs (--max-runs N raises it)\n"
+       "4000000 runs (--max-runs N raises it)\n"
        "      <seq repeat=\"indefinite\"><wait dur=\"100\"/></seq>\n"
        "      ^"},
       {"talk-empty.fml",

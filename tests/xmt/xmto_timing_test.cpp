@@ -204,14 +204,14 @@ TEST(XmtoTiming, ClockFormsInAttributes) {
 }
 
 TEST(XmtoTiming, RefusesToScheduleMillionsOfRuns) {
-  // 1e9 runs of 1 ms; 3000 runs of a group of 1000 runs each (3 s, 1 ms animations).
+  // 1e9 runs of 1 ms; 5000 runs of a group of 1000 runs each (5 s, 1 ms animations).
   EXPECT_EQ(read_error(document(jaw("dur=\"1ms\" repeatCount=\"1e9\""))),
             "t.xmt:3:1: error: animate brings the document to too many clips (repeats of repeats?): "
-            "more than the limit of 1000000 runs (--max-runs N raises it)");
-  EXPECT_EQ(read_error(document("<par dur=\"3000s\"><seq dur=\"1s\" repeatCount=\"indefinite\">" +
+            "more than the limit of 4000000 runs (--max-runs N raises it)");
+  EXPECT_EQ(read_error(document("<par dur=\"5000s\"><seq dur=\"1s\" repeatCount=\"indefinite\">" +
                                 jaw("dur=\"1ms\" repeatCount=\"1000\"") + "</seq></par>")),
             "t.xmt:3:57: error: animate brings the document to too many clips (repeats of repeats?): "
-            "more than the limit of 1000000 runs (--max-runs N raises it)");
+            "more than the limit of 4000000 runs (--max-runs N raises it)");
   // Repeats of repeats below the limit are fine: 100 x 100 runs.
   EXPECT_EQ(read_ok(document("<seq repeatCount=\"100\">" + jaw("dur=\"1ms\" repeatCount=\"100\"") + "</seq>"))
                 .timeline.clips.size(),

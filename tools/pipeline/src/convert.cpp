@@ -1,5 +1,7 @@
 #include "fapc/pipeline/convert.hpp"
 
+#include <algorithm>
+
 #include "fapc/codec/file_io.hpp"
 #include "streamed_convert.hpp"
 
@@ -78,7 +80,10 @@ ConvertResult convert(const std::string& input, const std::vector<OutputRequest>
   if ((result.error = find_writers(outputs, writers))) return result;
   // A long .fap to .fba or .fap goes through without its frames in memory.
   if (auto streamed = convert_streamed(input, outputs, writers, options)) return std::move(*streamed);
-  auto loaded = load(input, options);
+  // Curves only when a writer reads them (the curves JSON, the plots): half of a script's compile.
+  ConvertOptions load_options = options;
+  load_options.curves = std::any_of(writers.begin(), writers.end(), [](const OutputFormat* w) { return w->uses_curves; });
+  auto loaded = load(input, load_options);
   if (!loaded) {
     result.error = loaded.error();
     return result;

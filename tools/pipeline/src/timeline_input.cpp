@@ -44,7 +44,7 @@ Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
   Loaded loaded;
   loaded.audio = std::move(*audio);
   loaded.frames = std::move(rendered->frames);
-  loaded.curves = render_curves(timeline, CurveOptions{options.fps, 1e-6});
+  if (options.curves) loaded.curves = render_curves(timeline, CurveOptions{options.fps, 1e-6});
   loaded.timeline = std::move(timeline);
   loaded.warnings = std::move(warnings);
   loaded.facts = std::move(facts);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <unordered_map>
 #include <sstream>
 
@@ -27,7 +28,6 @@ using Kind = ScheduleNode::Kind;
 
 // Far more than any hand-written program expands to (an hour of animation at eight actions a
 // second is 28800), and small enough to refuse within a second (an action costs a few µs).
-constexpr std::size_t kMaxActions = 200000;
 
 struct Target {
   std::string name;
@@ -72,6 +72,11 @@ class Compiler {
 
   Result<MimicProgram> run() {
     if (auto defined = collect_definitions(); !defined) return defined.error();
+    // Macro bombs are refused before anything is built: sizes are counted once per definition.
+    for (const Definition& d : program_.definitions) {
+      if (!d.expression && expanded_size(d.group) > run_limit()) return too_many_actions(d.group);
+    }
+    if (expanded_size(program_.main) > run_limit()) return too_many_actions(overflowing(program_.main, run_limit()));
     // Macro bodies are checked where they are written, even when no one uses them.
     for (const Definition& d : program_.definitions) {
       if (d.expression) continue;
@@ -111,11 +116,58 @@ class Compiler {
   std::vector<Leaf> leaves_;
   std::vector<std::string> stack_;  // macros being expanded, for recursion errors
   std::size_t actions_built_ = 0;
+  std::map<std::string, double> sizes_;  // per macro: its body's expanded_size()
+  std::set<std::string> sizing_;         // macros being sized (recursion)
   // Per clip of the timeline being built: empty when it does not connect, else the explicit end
   // value of `connect=x` (empty inside: take the next clip's value).
   std::vector<std::optional<std::optional<double>>> connects_;
   Diagnostics warnings_;
   std::unordered_map<std::string, std::vector<FapContribution>> resolved_;  // per target name
+
+  double run_limit() const { return static_cast<double>(std::max<std::int64_t>(options_.max_runs, 0)); }
+
+  Diagnostic too_many_actions(const Action& action) const {
+    Limits limits;
+    limits.max_runs = options_.max_runs;
+    Diagnostic refused =
+        limit_error(location(action.at), "the program has too many actions with macros expanded", Limit::runs, limits);
+    refused.source_line = source_line(source_, action.at.line);
+    return refused;
+  }
+
+  // How many times build() runs for `action` (groups, macro uses, atomic actions), macros
+  // memoised: a chain of forty macros that each use the one before twice costs forty steps, not 2^40.
+  double expanded_size(const Action& action) {
+    if (action.kind != Action::Kind::named) {
+      double n = 1;
+      for (const Action& child : action.children) n += expanded_size(child);
+      return n;
+    }
+    const auto macro = macros_.find(action.name);
+    if (macro == macros_.end() || macro->second->expression) return 1;
+    if (const auto known = sizes_.find(action.name); known != sizes_.end()) return 1 + known->second;
+    if (!sizing_.insert(action.name).second) return 1;  // a macro that uses itself: build() says so
+    const double body = expanded_size(macro->second->group);
+    sizing_.erase(action.name);
+    sizes_[action.name] = body;
+    return 1 + body;
+  }
+
+  // The action inside `action` where the count passes `budget`: where the error points.
+  const Action& overflowing(const Action& action, double budget) {
+    double left = budget - 1;
+    if (action.kind == Action::Kind::named) {
+      const auto macro = macros_.find(action.name);
+      if (macro == macros_.end() || macro->second->expression || left < 0) return action;
+      return overflowing(macro->second->group, left);
+    }
+    for (const Action& child : action.children) {
+      const double size = expanded_size(child);
+      if (size > left) return overflowing(child, left);
+      left -= size;
+    }
+    return action;
+  }
 
   const std::vector<FapContribution>& contributions(const std::string& target) {
     const auto found = resolved_.find(target);
@@ -190,12 +242,9 @@ class Compiler {
     }
     // Macros that use each other twice double with every level: forty lines can ask for 2^40
     // actions. Counted over the whole compilation (the macro bodies' own checks included).
-    if (++actions_built_ > kMaxActions) {
-      return make_error(ErrorKind::limit_exceeded, location(action.at),
-                        "the program has more than " + std::to_string(kMaxActions) +
-                            " actions with macros expanded: fapc refuses to schedule so many",
-                        source_line(source_, action.at.line));
-    }
+    // The bound is the run limit (each action is at least one run), so a program of 10^6
+    // honest actions passes with the defaults. run() refuses most programs over it up front.
+    if (static_cast<double>(++actions_built_) > run_limit()) return too_many_actions(action);
     Result<ActionParams> params = read(action.params);
     if (!params) return params.error();
     Timing timing;

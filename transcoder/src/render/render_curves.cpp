@@ -93,7 +93,7 @@ void add_strongest_curve(const TimelineIndex& index, int fap, const char* name, 
 }  // namespace
 
 Curves render_curves(const Timeline& timeline, const CurveOptions& options) {
-  const TimelineIndex index(timeline);
+  const TimelineIndex index(timeline.clips);
   Curves out;
   out.fps = options.fps;
   out.duration = timeline.end();

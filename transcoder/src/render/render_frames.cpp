@@ -147,7 +147,7 @@ Result<Rendered> render_frames(const Timeline& timeline, const RenderOptions& op
     return limit_error(where_it_ends(timeline), text, Limit::frames, limits);
   }
   const Profile& profile = options.profile ? *options.profile : default_profile();
-  const TimelineIndex index(timeline);
+  const TimelineIndex index(timeline.clips);
   std::vector<Driver> drivers;
   for (const auto& [target, target_index] : index.targets) {
     Driver driver{&target_index, resolve_target(target, profile), -1};

@@ -120,7 +120,7 @@ Blended blend(const std::vector<Clip>& all, std::span<const std::uint32_t> activ
   return result;
 }
 
-TimelineIndex::TimelineIndex(const Timeline& timeline) : clips(timeline.clips) {
+TimelineIndex::TimelineIndex(const std::vector<Clip>& timeline_clips) : clips(timeline_clips) {
   std::map<std::string, std::vector<std::uint32_t>> by_target;
   for (std::size_t i = 0; i < clips.size(); ++i) {
     by_target[clips[i].target].push_back(static_cast<std::uint32_t>(i));
@@ -136,12 +136,15 @@ Blended TimelineIndex::value_at(const TargetIndex& target, double t, bool from_l
 
 // ---- the public face -----------------------------------------------------------------------
 
+// The evaluator may outlive the timeline it was built from, so it keeps its own clips.
 struct TimelineEvaluator::Impl {
+  explicit Impl(const Timeline& timeline) : clips(timeline.clips), index(clips) {}
+  Impl(const Impl&) = delete;
+  std::vector<Clip> clips;
   TimelineIndex index;
 };
 
-TimelineEvaluator::TimelineEvaluator(const Timeline& timeline)
-    : impl_(std::make_shared<const Impl>(Impl{TimelineIndex(timeline)})) {}
+TimelineEvaluator::TimelineEvaluator(const Timeline& timeline) : impl_(std::make_shared<const Impl>(timeline)) {}
 
 std::vector<std::string> TimelineEvaluator::targets() const {
   std::vector<std::string> names;

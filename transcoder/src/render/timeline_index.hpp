@@ -41,10 +41,11 @@ double clip_value(const Clip& clip, double t, bool from_left = false);
 Blended blend(const std::vector<Clip>& all, std::span<const std::uint32_t> active, double t,
               bool from_left);
 
+// Refers to the timeline's clips (no copy: a clip may hold long curves): the timeline must outlive it.
 struct TimelineIndex {
-  explicit TimelineIndex(const Timeline& timeline);
+  explicit TimelineIndex(const std::vector<Clip>& timeline_clips);
 
-  std::vector<Clip> clips;
+  const std::vector<Clip>& clips;
   std::map<std::string, TargetIndex> targets;
 
   Blended value_at(const TargetIndex& target, double t, bool from_left) const;

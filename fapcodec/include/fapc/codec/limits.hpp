@@ -18,9 +18,11 @@ struct Limits {
   // combination. 2^20 frames is 11.6 hours at 25 fps; some 350 MB of frames in memory.
   std::int64_t max_frames = std::int64_t{1} << 20;
   // Scheduled runs (clips after repeats and template expansion) of one Mimic, FML or XMT-Omega
-  // script: a 1 ms animation repeated for a day would otherwise make 86 million clips. A run costs
-  // about 500 bytes through scheduling and lowering.
-  std::int64_t max_runs = 1'000'000;
+  // script (and the actions of a Mimic program with its macros expanded): a 1 ms animation
+  // repeated for a day would otherwise make 86 million clips. Four times the 10^6 elements of a
+  // large honest script, whose repeats and templates make more runs than elements
+  // (docs/security.md, "Resource limits").
+  std::int64_t max_runs = 4'000'000;
   // Bytes a compressed (gzip) input may inflate to, whatever its size.
   std::int64_t max_decompressed_bytes = std::int64_t{1} << 30;
   // ... and at most this many times its compressed size once past kExpansionFloor: a 1 MB gzip

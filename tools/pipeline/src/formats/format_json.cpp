@@ -47,6 +47,6 @@ Result<std::string> write_curves_json(const Loaded& loaded, const std::string&,
 
 }  // namespace
 
-OutputFormat curves_json_output() { return {"json", {".json"}, write_curves_json}; }
+OutputFormat curves_json_output() { return {"json", {".json"}, write_curves_json, true}; }
 
 }  // namespace fapc::pipeline::builtin

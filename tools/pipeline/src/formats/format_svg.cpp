@@ -17,7 +17,8 @@ OutputFormat plot_output(std::string kind, std::string extension, PlotKind plot_
             auto plot = plot_loaded(loaded, loaded.named(path), plot_kind, options);
             if (!plot) return plot.error();
             return std::move(plot->bytes);
-          }};
+          },
+          /*uses_curves=*/true};
 }
 
 }  // namespace

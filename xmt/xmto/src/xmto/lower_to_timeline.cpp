@@ -1,7 +1,10 @@
 #include <algorithm>
 #include <map>
+#include <set>
+#include <string_view>
 
 #include "fapc/transcoder/audio_mix.hpp"
+#include "fapc/transcoder/growing_timeline.hpp"
 #include "fapc/transcoder/render.hpp"
 #include "xmto/xmto_tree.hpp"
 
@@ -44,23 +47,47 @@ Clip animate_clip(const Leaf& leaf, const Occurrence& run, double underlying) {
 }
 
 // To-animations start from the value their target has without them when each run begins, so
-// they are placed after everything else, element by element in order of their first begin.
+// they are placed after everything else, element by element in order of their first begin; each
+// element sees the clips placed before it (to-animations of earlier elements included), not its
+// own runs. One GrowingTimeline over the targets that have to-animations answers every run in
+// O(log n) instead of an evaluator built per element over all its target's clips.
 void place_to_animations(const XmtoTree& tree, const std::map<std::size_t, std::vector<Occurrence>>& runs,
                          std::vector<TaggedClip>& clips) {
+  if (runs.empty()) return;
   std::vector<std::size_t> order;
   for (const auto& [id, list] : runs) order.push_back(id);
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return runs.at(a).front().begin < runs.at(b).front().begin;
   });
+  std::set<std::string_view> targets;
+  for (const std::size_t id : order) targets.insert(tree.leaves[id].target);
+  // Every clip the growing timeline will hold: those placed so far, then the runs in order.
+  std::vector<Clip> planned;
+  std::vector<std::size_t> placed;  // indices into `clips` of the planned clips placed so far
+  for (std::size_t i = 0; i < clips.size(); ++i) {
+    if (!targets.contains(clips[i].clip.target)) continue;
+    placed.push_back(i);
+    Clip shape = clips[i].clip;
+    shape.curve = Curve{};
+    planned.push_back(std::move(shape));
+  }
+  for (const std::size_t id : order) {
+    for (const Occurrence& run : runs.at(id)) {
+      Clip shape = animate_clip(tree.leaves[id], run, 0);
+      shape.curve = Curve{};
+      planned.push_back(std::move(shape));
+    }
+  }
+  GrowingTimeline underneath(planned);
+  std::size_t next = 0;
+  for (const std::size_t i : placed) underneath.add(next++, clips[i].clip);
   for (const std::size_t id : order) {
     const Leaf& leaf = tree.leaves[id];
-    Timeline underneath;
-    for (const TaggedClip& tagged : clips)
-      if (tagged.clip.target == leaf.target) underneath.clips.push_back(tagged.clip);
-    const TimelineEvaluator evaluator(underneath);
+    const std::size_t first = clips.size();
     for (const Occurrence& run : runs.at(id)) {
-      clips.push_back(TaggedClip{id, animate_clip(leaf, run, evaluator.value_at(leaf.target, run.begin))});
+      clips.push_back(TaggedClip{id, animate_clip(leaf, run, underneath.value_at(leaf.target, run.begin))});
     }
+    for (std::size_t i = first; i < clips.size(); ++i) underneath.add(next++, clips[i].clip);
   }
 }
 

@@ -49,6 +49,9 @@ struct ConvertOptions {
   // What a load does beyond the frames (see Loaded):
   bool facts = false;   // fill Loaded::facts (what `fapc info` shows of the format)
   bool render = true;   // false: timeline inputs stop at the timeline (no frames, no curves)
+  // false: timeline inputs leave Loaded::curves empty. convert() sets it from its outputs
+  // (OutputFormat::uses_curves): curves cost as much as the frames and most outputs never read them.
+  bool curves = true;
 };
 
 }  // namespace fapc::pipeline

@@ -24,6 +24,9 @@ struct OutputFormat {
   std::vector<std::string> extensions;  // the first one names batch outputs
   // The bytes to write for `path` (the name may go into the output, e.g. an .xmt's stream source).
   std::function<Result<std::string>(const Loaded&, const std::string& path, const ConvertOptions&)> write;
+  // The writer reads Loaded::curves (a script's own curves): convert() has them computed only
+  // when some output does (ConvertOptions::curves).
+  bool uses_curves = false;
 };
 
 class Registry {
