@@ -13,7 +13,9 @@ namespace fapc::pipeline {
 
 // {"file", "kind", "name", "fps", "frames", "duration", "faps used", "faps": [{number, name, unit,
 // min, max, frames}], "format": {...facts}, "warnings": ["FILE:...: warning: ..."]}.
-// `limits`: the resource limits of the read (docs/security.md).
-Result<nlohmann::ordered_json> describe(const std::string& path, const Limits& limits = {});
+// `limits`: the resource limits of the read (docs/security.md); `kind`: the input's kind whatever
+// its name (--from), empty: from the extension.
+Result<nlohmann::ordered_json> describe(const std::string& path, const Limits& limits = {},
+                                        const std::string& kind = {});
 
 }  // namespace fapc::pipeline
