@@ -47,5 +47,24 @@ TEST(GoldenOutputs, AlgebraExamples) {
   }
 }
 
+// `fapc plot` SVGs (docs/cli.md "Plot"): per-clip panels, an overlay of a group with its legend
+// and a zero parameter left out, a single-frame input drawn as points.
+TEST(GoldenOutputs, Plots) {
+  const std::string dir = test::binary_dir() + "/golden-plots";
+  std::filesystem::create_directories(dir);
+  const std::vector<std::pair<std::string, std::string>> plots = {
+      {"table2-per-clip", "corpus/mimic/table2.mimic --per-clip"},
+      {"figure3-lips-overlay", "corpus/examples/mimic/figure3.mimic --faps lips,jaw --overlay"},
+      {"greta-lips-points", "corpus/examples/fap/greta-lips.fap --faps 3-8"},
+      {"joy-panels", "corpus/examples/fap/joy.fap --faps brows,head"}};
+  for (const auto& [name, args] : plots) {
+    const std::string out = dir + "/" + name + ".svg";
+    const test::CommandRun run = test::run_fapc("plot " + args + " -o '" + out + "'");
+    ASSERT_EQ(run.exit_status, 0) << args << ": " << run.err;
+    test::expect_golden("golden/plot/" + name + ".svg", test::read_text(out));
+  }
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace fapc

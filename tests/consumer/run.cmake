@@ -57,6 +57,72 @@ string(REPLACE "@WORK@" "${WORK_DIR}" ARGS "${ARGS}")
 run("running ${program_path}" ${program_path} ${ARGS})
 message(STATUS "${run_output}")
 
+# The codec consumer once more, built by pkg-config alone (docs/building.md, "pkg-config"), and
+# what else the install puts in place: the licence, the docs, the man page and the completions.
+if(CONSUMER STREQUAL "codec")
+  file(GLOB_RECURSE pc_files ${prefix}/*/fapc-codec.pc)
+  if(NOT pc_files)
+    message(FATAL_ERROR "no fapc-codec.pc under ${prefix}")
+  endif()
+  list(GET pc_files 0 pc_file)
+  get_filename_component(pc_dir ${pc_file} DIRECTORY)
+  set(ENV{PKG_CONFIG_PATH} ${pc_dir})
+  set(ENV{PKG_CONFIG_LIBDIR} ${pc_dir}:/usr/lib/x86_64-linux-gnu/pkgconfig:/usr/lib/pkgconfig:/usr/share/pkgconfig)
+  run("pkg-config --cflags --static --libs fapc-codec" pkg-config --cflags --static --libs fapc-codec)
+  separate_arguments(pc_flags UNIX_COMMAND "${run_output}")
+  if(NOT run_output MATCHES "-lfapc_codec" OR NOT run_output MATCHES "-lz")
+    message(FATAL_ERROR "pkg-config --static --libs fapc-codec should name fapc_codec and zlib: ${run_output}")
+  endif()
+  run("pkg-config --print-requires-private fapc-xml" pkg-config --print-requires-private fapc-xml)
+  if(NOT run_output MATCHES "xerces-c")
+    message(FATAL_ERROR "fapc-xml.pc should require xerces-c privately: ${run_output}")
+  endif()
+  set(pc_program ${WORK_DIR}/fap_roundtrip_pkgconfig)
+  run("building tests/consumer/codec with pkg-config" ${CXX_COMPILER}
+      ${SOURCE_DIR}/tests/consumer/codec/fap_roundtrip.cpp -o ${pc_program} ${pc_flags})
+  set(pc_args ${ARGS})
+  string(REPLACE "@WORK@" "${WORK_DIR}" pc_args "${pc_args}")
+  list(TRANSFORM pc_args REPLACE "\\.fba$" "-pkgconfig.fba")
+  # pkg-config gives no run path: a shared build's libraries are found as an installed system's
+  # would be through ld.so, here through LD_LIBRARY_PATH.
+  get_filename_component(pc_libdir ${pc_dir} DIRECTORY)
+  set(ENV{LD_LIBRARY_PATH} ${pc_libdir})
+  run("running ${pc_program}" ${pc_program} ${pc_args})
+  unset(ENV{LD_LIBRARY_PATH})
+
+  foreach(installed LICENSE COPYING.LGPL-2.1 README.md docs/json.md docs/json/info.schema.json)
+    if(NOT EXISTS ${prefix}/share/doc/fapc/${installed})
+      message(FATAL_ERROR "cmake --install did not install ${installed}")
+    endif()
+  endforeach()
+  # The man page and completions come with the command-line work (issue 18a): once the build
+  # installs them (its tools/CMakeLists.txt names MANDIR) they must be there and work.
+  file(READ ${SOURCE_DIR}/tools/CMakeLists.txt tools_cmake)
+  if(tools_cmake MATCHES "CMAKE_INSTALL_MANDIR")
+    foreach(installed share/man/man1/fapc.1 share/bash-completion/completions/fapc share/zsh/vendor-completions/_fapc)
+      if(NOT EXISTS ${prefix}/${installed})
+        message(FATAL_ERROR "cmake --install did not install ${installed}")
+      endif()
+    endforeach()
+    set(ENV{MANPATH} ${prefix}/share/man)
+    set(ENV{MANWIDTH} 80)
+    run("MANPATH=${prefix}/share/man man fapc" man -P cat fapc)
+    if(NOT run_output MATCHES "fapc")
+      message(FATAL_ERROR "man fapc shows no page:\n${run_output}")
+    endif()
+    run("man -l fapc.1" man -P cat -l ${prefix}/share/man/man1/fapc.1)
+    # The bash completion loads and completes fapc; the zsh one is a function file (#compdef).
+    run("loading the bash completion" bash -c
+        "source '${prefix}/share/bash-completion/completions/fapc' && complete -p fapc")
+    file(READ ${prefix}/share/zsh/vendor-completions/_fapc zsh_completion)
+    if(NOT zsh_completion MATCHES "^#compdef fapc")
+      message(FATAL_ERROR "share/zsh/vendor-completions/_fapc does not start with '#compdef fapc'")
+    endif()
+  else()
+    message(STATUS "no man page or completion installed yet (issue 18a): not checked")
+  endif()
+endif()
+
 # SAME_AS_FAPC: the consumer's output (the last argument) must be byte for byte what the installed
 # program writes when given the same arguments after that subcommand.
 if(SAME_AS_FAPC)

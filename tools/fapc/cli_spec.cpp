@@ -33,9 +33,9 @@ const std::vector<CommandSpec> kCommands = {
     {"combine", "EXPRESSION -o OUTPUT", "evaluate an Algebra of Expressions over files (docs/algebra.md)",
      "Evaluates EXPRESSION (quote it) over facial states (.xpr) and animations (any input) and writes "
      "the result; with --states, prints one state as 66 integers instead."},
-    {"plot", "INPUT -o OUT.svg", "draw the curves of an input, one panel per parameter",
-     "The input's curves (a script's own, or the frames') as a figure; with --per-clip every clip's own "
-     "curve too, labelled by its source line."},
+    {"plot", "INPUT -o OUT.svg|OUT.png|OUT.pdf|OUT.csv", "draw the curves of an input, one panel per parameter",
+     "The input's curves (a script's own, or the frames') as a figure (SVG, PNG or PDF) or a .csv of curves "
+     "and frames; with --per-clip every clip's own curve too, labelled by its source line."},
     {"render", "INPUT -o OUT.png|OUT.webm|OUT.html", "show any input as a face: a picture, a video or a preview page",
      "Draws the face the input animates (docs/render.md): one frame or a contact sheet as .png, a .webm "
      "video, or an .html page that plays it."},
@@ -101,9 +101,13 @@ const std::vector<OptionSpec> kOptions = {
     {"points", 0, "", "mark and number the feature points on a .png", FAPC_CONVERTERS},
     // One subcommand each.
     {"per-clip", 0, "", "draw every clip's own curve under the blended one", "plot"},
+    {"faps", 0, "LIST", "the FAPs or groups to draw (lips,jaw,3-18,open_jaw)", "plot"},
+    {"overlay", 0, "", "draw the chosen curves in one panel with a legend", "plot"},
+    {"title", 0, "TEXT", "the figure's title (default: the input's name)", "plot"},
     {"states", 0, "", "print one state of the result as 66 integers instead of writing it", "combine"},
     {"jobs", 'j', "N", "conversions at a time (default one per core)", "batch"},
     {"report", 0, "FILE", "write a JUnit XML report of the inputs that ran", "batch", false, VC::file},
+    {"report-json", 0, "FILE", "write a JSON report of the inputs that ran (docs/json.md)", "batch", false, VC::file},
     {"keep-going", 0, "", "try every input even after a failure", "batch"},
     {"json", 0, "", "print the results as JSON on standard output", "verify info formats faps"},
     {"man", 0, "", "print the man page (roff)", "help"},

@@ -1,4 +1,4 @@
-// fapc batch INPUT... -o DIR [--to LIST] [--jobs N] [--report junit.xml] [--keep-going]:
+// fapc batch INPUT... -o DIR [--to LIST] [--jobs N] [--report junit.xml] [--report-json FILE] [--keep-going]:
 // converts every supported file under the inputs into DIR (fapc::pipeline::plan_batch and
 // run_batch), one output per kind in --to, and prints a summary line per input, in input order,
 // as the jobs finish. Ctrl-C stops starting new jobs; the summary and the report still come.
@@ -13,6 +13,7 @@
 #include "fapc/commands.hpp"
 #include "fapc/options.hpp"
 #include "fapc/pipeline/batch.hpp"
+#include "fapc/pipeline/json_output.hpp"
 #include "fapc/progress.hpp"
 #include "fapc/report.hpp"
 
@@ -90,6 +91,11 @@ int run_batch(const std::vector<std::string>& argv) {
             << " not run" << (interrupted ? " (interrupted)" : "") << '\n';
   if (const auto report_path = args.value("report")) {
     if (auto written = write_file_atomic(*report_path, pipeline::junit_report(*jobs, outcomes)); !written)
+      status = worse_status(status, report_outcome({}, written.error()));
+  }
+  if (const auto report_path = args.value("report-json")) {
+    const std::string text = pipeline::batch_report_json(*jobs, outcomes, interrupted).dump(2) + "\n";
+    if (auto written = write_file_atomic(*report_path, text); !written)
       status = worse_status(status, report_outcome({}, written.error()));
   }
   if (interrupted && status == kExitOk) status = kExitBadInput;  // not everything was converted

@@ -8,6 +8,7 @@
 #include "fapc/commands.hpp"
 #include "fapc/options.hpp"
 #include "fapc/pipeline/info.hpp"
+#include "fapc/pipeline/json_output.hpp"
 #include "fapc/report.hpp"
 #include "fapc/streams.hpp"
 
@@ -15,8 +16,26 @@ namespace fapc::cli {
 
 namespace {
 
+// "header_name" -> "header name": the text output keeps words apart as before the JSON keys
+// became snake_case (docs/json.md).
+std::string key_text(std::string key) {
+  for (char& c : key)
+    if (c == '_') c = ' ';
+  return key == "fap quant" ? "fap_quant" : key;
+}
+
 std::string scalar_text(const nlohmann::ordered_json& v) {
   if (v.is_string()) return v.get<std::string>();
+  if (v.is_null()) return "none";
+  if (v.is_object() && v.contains("intra_min")) {  // a quantised range: "open_jaw I -1..1 P -2..2"
+    return v["name"].get<std::string>() + " I " + v["intra_min"].dump() + ".." + v["intra_max"].dump() + " P " +
+           v["predictive_min"].dump() + ".." + v["predictive_max"].dump();
+  }
+  if (v.is_object()) {
+    std::string out;
+    for (const auto& [k, item] : v.items()) out += (out.empty() ? "" : ", ") + key_text(k) + " " + scalar_text(item);
+    return out.empty() ? "none" : out;
+  }
   if (v.is_array()) {
     std::string out;
     for (const auto& item : v) out += (out.empty() ? "" : ", ") + scalar_text(item);
@@ -34,10 +53,17 @@ void print_text(const nlohmann::ordered_json& info) {
   for (const auto& [key, value] : info.items()) {
     if (key == "faps" || key == "warnings") continue;
     if (value.is_object()) {
-      std::cout << key << ":\n";
-      for (const auto& [k, v] : value.items()) std::cout << "  " << k << ": " << scalar_text(v) << '\n';
-    } else {
-      std::cout << key << ": " << scalar_text(value) << '\n';
+      std::cout << key_text(key) << ":\n";
+      for (const auto& [k, v] : value.items()) {
+        if (v.is_object() && !v.empty()) {  // names to values (FML events, XMT-Omega meta): one line each
+          for (const auto& [name, text] : v.items())
+            std::cout << "  " << key_text(k) << " " << name << ": " << scalar_text(text) << '\n';
+        } else {
+          std::cout << "  " << key_text(k) << ": " << scalar_text(v) << '\n';
+        }
+      }
+    } else if (key != "schema_version") {
+      std::cout << key_text(key) << ": " << scalar_text(value) << '\n';
     }
   }
   for (const auto& f : info["faps"]) {
@@ -47,7 +73,7 @@ void print_text(const nlohmann::ordered_json& info) {
               << f["frames"].get<long long>() << " frames\n";
   }
   std::cout << "warnings: " << info["warnings"].size() << '\n';
-  for (const auto& w : info["warnings"]) std::cout << "  " << w.get<std::string>() << '\n';
+  for (const auto& w : info["warnings"]) std::cout << "  " << w["text"].get<std::string>() << '\n';
 }
 
 int run_info(const std::vector<std::string>& argv) {
@@ -59,7 +85,10 @@ int run_info(const std::vector<std::string>& argv) {
   StandardInputCopy copy;
   if (const auto error = resolve_input(args, input, parsed, copy)) return usage_error("info", *error);
   auto info = pipeline::describe(input, parsed.limits, parsed.input_kind);
-  if (!info) return report_outcome({}, info.error());
+  if (!info) {
+    if (args.flag("json")) std::cout << pipeline::error_document(info.error()).dump(2) << '\n';
+    return report_outcome({}, info.error());
+  }
   if (input != args.positionals().front()) (*info)["file"] = args.positionals().front();  // not the copy's name
   if (args.flag("json")) {
     std::cout << info->dump(2) << '\n';

@@ -1,12 +1,14 @@
-// fapc plot INPUT -o OUT.svg [--per-clip]: the blended curves, and with --per-clip every action's
-// own curve labelled by its source line (Mimic Figure 1, docs/mimic.md).
+// fapc plot INPUT -o OUT.svg|.png|.pdf|.csv [--faps LIST] [--overlay] [--per-clip] [--title TEXT]:
+// the curves of any input as a figure (fapc::pipeline::plot_loaded); -o - writes standard output
+// (SVG unless --to says otherwise).
 #include <filesystem>
+#include <iostream>
 
 #include "fapc/codec/file_io.hpp"
 #include "fapc/commands.hpp"
 #include "fapc/options.hpp"
+#include "fapc/pipeline/plot.hpp"
 #include "fapc/pipeline/registry.hpp"
-#include "fapc/pipeline/svg_plot.hpp"
 #include "fapc/report.hpp"
 #include "fapc/streams.hpp"
 
@@ -20,10 +22,12 @@ int run_plot(const std::vector<std::string>& argv) {
   if (!args.ok()) return usage_error("plot", args.error());
   if (args.positionals().size() != 1) return usage_error("plot", "expected one INPUT");
   const auto output = args.value("output");
-  if (!output) return usage_error("plot", "missing -o OUT.svg");
-  // A plot is SVG; --to says so for -o - (and is checked, so that --to png fails here, not later).
-  const std::string to = output_kind(args, *output, "svg");
-  if (to != "svg") return usage_error("plot", "plot writes svg, not '" + to + "'");
+  if (!output) return usage_error("plot", "missing -o OUT (.svg, .png, .pdf or .csv)");
+  // --to names the kind as an extension would; -o - without it is SVG.
+  const std::string to = output_kind(args, *output, *output == "-" ? "svg" : "");
+  pipeline::PlotKind kind{};
+  if (!pipeline::plot_kind_for(to.empty() ? *output : "x." + to, kind))
+    return usage_error("plot", "the output must be .svg, .png, .pdf or .csv: '" + (to.empty() ? *output : to) + "'");
   std::string input = args.positionals().front();
   StandardInputCopy copy;
   if (const auto error = resolve_input(args, input, options, copy)) return usage_error("plot", *error);
@@ -32,12 +36,19 @@ int run_plot(const std::vector<std::string>& argv) {
   if (!loaded) return report_outcome({}, loaded.error());
   report_all(loaded->warnings);
   const std::string& named = args.positionals().front();
-  auto svg = pipeline::plot_loaded(*loaded, input, std::filesystem::path(named).filename().string(),
-                                   args.flag("per-clip"), options.fps);
-  if (!svg) return report_outcome({}, svg.error());
+  pipeline::PlotOptions plot_options;
+  plot_options.title = args.value("title").value_or(std::filesystem::path(named).filename().string());
+  plot_options.faps = args.value("faps").value_or("");
+  plot_options.overlay = args.flag("overlay");
+  plot_options.per_clip = args.flag("per-clip");
+  plot_options.fps = options.fps;
+  auto plot = pipeline::plot_loaded(*loaded, input, kind, plot_options);
+  if (!plot) return report_outcome({}, plot.error());
+  if (verbosity() != Verbosity::quiet)
+    for (const std::string& note : plot->notes) std::cerr << "fapc plot: note: " << note << '\n';
   tell("read " + named + " (" + std::to_string(loaded->frames.frames.size()) + " frames); plot for " + *output);
-  if (*output == "-") return write_standard_output(*svg) ? kExitOk : kExitBadInput;
-  if (auto written = write_file_atomic(*output, *svg); !written) return report_outcome({}, written.error());
+  if (*output == "-") return write_standard_output(plot->bytes) ? kExitOk : kExitBadInput;
+  if (auto written = write_file_atomic(*output, plot->bytes); !written) return report_outcome({}, written.error());
   return kExitOk;
 }
 

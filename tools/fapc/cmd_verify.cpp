@@ -7,6 +7,7 @@
 
 #include "fapc/commands.hpp"
 #include "fapc/options.hpp"
+#include "fapc/pipeline/json_output.hpp"
 #include "fapc/pipeline/verify.hpp"
 #include "fapc/report.hpp"
 #include "fapc/streams.hpp"
@@ -21,7 +22,7 @@ int run_verify(const std::vector<std::string>& argv) {
   if (!args.ok()) return usage_error("verify", args.error());
   if (args.positionals().empty()) return usage_error("verify", "expected at least one FILE");
   int status = kExitOk;
-  nlohmann::ordered_json results = nlohmann::ordered_json::array();
+  std::vector<nlohmann::ordered_json> results;
   StandardInputCopy copy;
   for (const std::string& path : args.positionals()) {
     std::string input = path;
@@ -30,13 +31,12 @@ int run_verify(const std::vector<std::string>& argv) {
     const int file_status = report_outcome(verified.warnings, verified.error);
     status = worse_status(status, file_status);
     if (args.flag("json")) {
-      results.push_back({{"file", path}, {"ok", verified.ok()}, {"status", file_status},
-                         {"message", verified.ok() ? verified.summary : format_diagnostic(*verified.error)}});
+      results.push_back(pipeline::verify_file_json(path, verified, file_status));
     } else if (verified.ok()) {
       std::cout << path << ": ok: " << verified.summary << '\n';
     }
   }
-  if (args.flag("json")) std::cout << results.dump(2) << '\n';
+  if (args.flag("json")) std::cout << pipeline::verify_document(std::move(results)).dump(2) << '\n';
   return status;
 }
 

@@ -22,7 +22,7 @@ Result<const OutputFormat*> writer_for(const OutputRequest& request) {
                           " (fapc formats lists them)");
   const std::string extension = std::filesystem::path(request.path).extension().string();
   return make_error(ErrorKind::unsupported, Location{request.path, 0, 0, -1},
-                    "unknown output kind (expected .fap, .fap.gz, .fba, .mp4, .xmt, .json, .svg, .png, .webm or .html)" +
+                    "unknown output kind (expected .fap, .fap.gz, .fba, .mp4, .xmt, .json, .svg, .pdf, .csv, .png, .webm or .html)" +
                         (extension.empty() ? std::string() : did_you_mean(extension, extensions)));
 }
 

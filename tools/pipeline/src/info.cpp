@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 
+#include "fapc/pipeline/json_output.hpp"
 #include "fapc/pipeline/registry.hpp"
 #include "input_chain.hpp"
 
@@ -29,6 +30,7 @@ nlohmann::ordered_json summarise(const std::string& path, const std::string& kin
       ++r.frames;
     }
   nlohmann::ordered_json out;
+  out["schema_version"] = kJsonSchemaVersion;
   out["file"] = path;
   out["kind"] = kind;
   out["name"] = seq.name;
@@ -41,7 +43,7 @@ nlohmann::ordered_json summarise(const std::string& path, const std::string& kin
     faps.push_back({{"number", fap}, {"name", info.name}, {"unit", fapu_name(info.unit)},
                     {"min", r.min}, {"max", r.max}, {"frames", r.frames}});
   }
-  out["faps used"] = faps.size();
+  out["faps_used"] = faps.size();
   out["faps"] = faps;
   return out;
 }
@@ -60,8 +62,7 @@ Result<nlohmann::ordered_json> describe(const std::string& path, const Limits& l
   if (!loaded) return loaded.error();
   nlohmann::ordered_json info = summarise(path, format->kind, *loaded);
   if (!loaded->facts.empty()) info["format"] = std::move(loaded->facts);
-  info["warnings"] = nlohmann::ordered_json::array();
-  for (const Diagnostic& w : loaded->warnings) info["warnings"].push_back(format_diagnostic(w));
+  info["warnings"] = diagnostics_json(loaded->warnings);
   return info;
 }
 

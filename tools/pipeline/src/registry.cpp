@@ -70,6 +70,8 @@ Registry built_in() {
   r.add(described(builtin::xmta_commands_output(), "XMT-A BIFS commands setting the FAPs frame by frame", {}));
   r.add(described(builtin::curves_json_output(), "the curves (time-value lists) of each target, as JSON", {}));
   r.add(described(builtin::svg_output(), "a plot of the curves, one panel per target", {}));
+  r.add(described(builtin::pdf_output(), "the same plot as a PDF page", {}));
+  r.add(described(builtin::csv_output(), "the curves and frames as comma-separated values", {}));
   r.add(described(builtin::timeline_output(), "the timeline of a script as text, for tests and debugging", {}));
   r.add(described(builtin::png_output(), "a picture of the face: one frame or a contact sheet",
                   {"size", "frame", "time", "sheet", "points"}));

@@ -3,6 +3,7 @@
 #include "fapc/pipeline/verify.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <functional>
 #include <iomanip>
 #include <sstream>
@@ -29,11 +30,28 @@ VerifyResult failed(Diagnostic d, Diagnostics warnings = {}) {
   return result;
 }
 
-VerifyResult passed(std::string text, Diagnostics warnings) {
+VerifyResult passed(std::size_t frames, std::size_t bytes, double bits_per_frame, int quant, Diagnostics warnings) {
   VerifyResult result;
   result.warnings = std::move(warnings);
-  result.summary = std::move(text);
+  result.summary = summary(frames, bytes, bits_per_frame, quant);
+  result.frames = frames;
+  result.bytes = bytes;
+  result.bits_per_frame = bits_per_frame;
+  result.quant = quant;
   return result;
+}
+
+// The largest difference between what was encoded and what decodes, over FAPs 3-68.
+std::optional<long long> max_error(const FapSequence& input, const EncodedFba& encoded) {
+  auto decoded = decode_fba(encoded.bytes);
+  if (!decoded || decoded->sequence.frames.size() != input.frames.size()) return std::nullopt;
+  long long worst = 0;
+  for (std::size_t k = 0; k < input.frames.size(); ++k)
+    for (int fap = 3; fap <= kFapCount; ++fap)
+      if (input.frames[k].has(fap) && decoded->sequence.frames[k].has(fap))
+        worst = std::max(worst, std::llabs(static_cast<long long>(input.frames[k].value(fap)) -
+                                           static_cast<long long>(decoded->sequence.frames[k].value(fap))));
+  return worst;
 }
 
 // Plane distances between intra planes that no mask change explains: candidates for the period.
@@ -82,7 +100,7 @@ VerifyResult reencode_matches(const std::string& path, const DecodedFba& decoded
           options.list_every_mask = listed;
           auto again = encode_fba(decoded.sequence, options);
           if (again && same(*again))
-            return passed(summary(decoded.sequence.frames.size(), bytes, info.bits_per_frame(), options.quant),
+            return passed(decoded.sequence.frames.size(), bytes, info.bits_per_frame(), options.quant,
                           decoded.warnings);
         }
   return failure("re-encoding the decoded frames does not give the same bytes (a stream fapc did not write?)");
@@ -137,7 +155,9 @@ VerifyResult verify_input(const std::string& path, const ConvertOptions& options
                           ? 0.0
                           : 8.0 * static_cast<double>(encoded->bytes.size()) /
                                 static_cast<double>(loaded->frames.frames.back().number - loaded->frames.frames.front().number + 1);
-  return passed(summary(loaded->frames.frames.size(), encoded->bytes.size(), bits, options.quant), loaded->warnings);
+  VerifyResult result = passed(loaded->frames.frames.size(), encoded->bytes.size(), bits, options.quant, loaded->warnings);
+  result.max_error = max_error(loaded->frames, *encoded);
+  return result;
 }
 
 }  // namespace

@@ -12,8 +12,8 @@ nlohmann::ordered_json facts_of(const FapFileFacts& facts) {
   out["variant"] = facts.variant();
   if (facts.has_header) {
     out["version"] = facts.version;
-    out["header name"] = facts.header_name;
-    out["header frame count"] = facts.header_count;
+    out["header_name"] = facts.header_name;
+    out["header_frame_count"] = facts.header_count;
   }
   out["deviations"] = facts.deviations();
   return out;

@@ -8,37 +8,37 @@ namespace fapc::pipeline::builtin {
 
 namespace {
 
-std::string range_text(const FbaRange& r) { return std::to_string(r.min) + ".." + std::to_string(r.max); }
 
 nlohmann::ordered_json facts_of(const FbaStreamInfo& info) {
   nlohmann::ordered_json out;
-  out["stream bytes"] = info.bytes;
-  if (info.profile_and_level >= 0) out["profile and level"] = info.profile_and_level;
+  out["stream_bytes"] = info.bytes;
+  if (info.profile_and_level >= 0) out["profile_and_level"] = info.profile_and_level;
   out["planes"] = info.planes;
-  out["intra planes"] = info.intra_planes.size();
+  out["intra_planes"] = info.intra_planes.size();
   std::vector<std::int64_t> intra_frames;
   std::vector<int> quants;
   for (const FbaIntraPlane& intra : info.intra_planes) {
     intra_frames.push_back(intra.frame);
     if (quants.empty() || quants.back() != intra.fap_quant) quants.push_back(intra.fap_quant);
   }
-  out["intra at frames"] = intra_frames;
+  out["intra_frames"] = intra_frames;
   out["fap_quant"] = quants;
-  out["frames covered"] = info.frames;
-  out["skipped frames"] = info.skipped_frames;
-  out["bits per frame"] = info.bits_per_frame();
-  out["frame rate"] = info.frame_rate;
-  out["plane start codes"] = info.plane_start_codes;
-  if (info.body_planes > 0) out["body planes (ignored)"] = info.body_planes;
+  out["frames_covered"] = info.frames;
+  out["skipped_frames"] = info.skipped_frames;
+  out["bits_per_frame"] = info.bits_per_frame();
+  out["frame_rate"] = info.frame_rate;
+  out["plane_start_codes"] = info.plane_start_codes;
+  if (info.body_planes > 0) out["body_planes_ignored"] = info.body_planes;
   // The widest ranges signalled, in quantised units: intra, then predictive.
-  std::vector<std::string> ranges;
+  nlohmann::ordered_json ranges = nlohmann::ordered_json::array();
   for (int fap = 3; fap <= kFapCount; ++fap) {
     const auto i = static_cast<std::size_t>(fap - 1);
     if (!info.ranged[i]) continue;
-    ranges.push_back(std::string(fap_table()[i].name) + " I " + range_text(info.intra_range[i]) + " P " +
-                     range_text(info.pred_range[i]));
+    ranges.push_back({{"fap", fap}, {"name", fap_table()[i].name}, {"intra_min", info.intra_range[i].min},
+                      {"intra_max", info.intra_range[i].max}, {"predictive_min", info.pred_range[i].min},
+                      {"predictive_max", info.pred_range[i].max}});
   }
-  out["ranges (quantised)"] = ranges;
+  out["quantised_ranges"] = ranges;
   return out;
 }
 

@@ -23,9 +23,13 @@ nlohmann::ordered_json facts_of(const xmt::FmlDocument& document) {
   nlohmann::ordered_json out;
   out["format"] = "FML";
   if (!document.character.empty()) out["character"] = document.character;
-  for (const auto& [name, value] : document.events) out["event " + name] = value.empty() ? "(no value)" : value;
+  if (!document.events.empty()) {
+    nlohmann::ordered_json events = nlohmann::ordered_json::object();
+    for (const auto& [name, value] : document.events) events[name] = value;  // "" when it has no value
+    out["events"] = events;
+  }
   if (!document.templates.empty()) out["templates"] = document.templates;
-  if (!document.phoneme_files.empty()) out["phoneme files"] = document.phoneme_files;
+  if (!document.phoneme_files.empty()) out["phoneme_files"] = document.phoneme_files;
   out["clips"] = document.timeline.clips.size();
   return out;
 }

@@ -22,7 +22,7 @@ Result<Loaded> load_mimic(const std::string& path, const ConvertOptions& options
   nlohmann::ordered_json facts = nlohmann::ordered_json::object();
   if (options.facts) {
     facts["clips"] = program->timeline.clips.size();
-    facts["timeline end"] = program->timeline.end();
+    facts["timeline_end"] = program->timeline.end();
   }
   return loaded_from_timeline(std::move(program->timeline), path, *profile, options, std::move(program->warnings),
                               std::move(facts));

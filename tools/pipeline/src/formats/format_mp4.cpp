@@ -27,7 +27,7 @@ std::string track_line(const xmt::Mp4Track& t, const xmt::Mp4Track* fba) {
     const xmt::DecoderConfig& c = t.es->config;
     const char* role = &t == fba                                   ? "FBA stream"
                        : c.stream_type == xmt::kSceneDescriptionStream ? "scene description"
-                       : c.stream_type == xmt::kObjectDescriptorStream ? "object descriptors"
+                       : c.stream_type == xmt::kObjectDescriptorStream ? "object_descriptors"
                                                                         : "stream";
     s << ", " << role << " (streamType " << int{c.stream_type} << ", objectTypeIndication "
       << hex_byte(c.object_type) << ")";
@@ -48,14 +48,14 @@ std::string profiles_text(const xmt::ProfileLevels& p) {
 
 nlohmann::ordered_json facts_of(const xmt::Mp4File* mp4) {
   nlohmann::ordered_json out;
-  std::string brands;
-  for (const std::string& b : mp4->compatible_brands) brands += (brands.empty() ? "" : ", ") + b;
-  out["brand"] = mp4->major_brand + " (" + brands + ")";
-  out["movie duration"] = mp4->timescale ? static_cast<double>(mp4->duration) / mp4->timescale : 0.0;
-  if (mp4->iod) out["profile-levels"] = profiles_text(mp4->iod->profiles);
+  out["major_brand"] = mp4->major_brand;
+  out["compatible_brands"] = mp4->compatible_brands;
+  out["movie_duration"] = mp4->timescale ? static_cast<double>(mp4->duration) / mp4->timescale : 0.0;
+  if (mp4->iod) out["profile_levels"] = profiles_text(mp4->iod->profiles);
   const xmt::Mp4Track* fba = xmt::find_fba_track(*mp4);
-  // Flat keys, one line each in `fapc info`'s text output.
-  for (const xmt::Mp4Track& t : mp4->tracks) out["track " + std::to_string(t.id)] = track_line(t, fba);
+  nlohmann::ordered_json tracks = nlohmann::ordered_json::array();
+  for (const xmt::Mp4Track& t : mp4->tracks) tracks.push_back({{"id", t.id}, {"description", track_line(t, fba)}});
+  out["tracks"] = tracks;
   // A scene or descriptors outside what fapc decodes are shown as the reason, not as a failure.
   auto scene = xmt::read_scene(*mp4);
   out["scene"] = scene ? xmt::scene_text(scene->scene) : "not shown: " + format_diagnostic(scene.error());
@@ -67,9 +67,9 @@ nlohmann::ordered_json facts_of(const xmt::Mp4File* mp4) {
       for (std::uint32_t id : o.track_ids) line += " track " + std::to_string(id);
       ods.push_back(line);
     }
-    out["object descriptors"] = ods;
+    out["object_descriptors"] = ods;
   } else {
-    out["object descriptors"] = "not shown: " + format_diagnostic(objects.error());
+    out["object_descriptors"] = "not shown: " + format_diagnostic(objects.error());
   }
   if (auto stream = xmt::read_fba_track(*mp4)) {
     const std::uint8_t level = *xmt::fba_profile_level(stream->decoder_specific_info);
@@ -80,11 +80,11 @@ nlohmann::ordered_json facts_of(const xmt::Mp4File* mp4) {
       ticks += s.duration;
       intra += s.sync ? 1 : 0;
     }
-    out["fba profile-level"] = hex_byte(level) + " " + std::string(xmt::fba_profile_name(level));
-    out["fba planes"] = stream->samples.size();
-    out["fba intra planes"] = intra;
-    out["fba bytes"] = bytes;
-    out["fba duration"] = static_cast<double>(ticks) / stream->timescale;
+    out["fba_profile_level"] = hex_byte(level) + " " + std::string(xmt::fba_profile_name(level));
+    out["fba_planes"] = stream->samples.size();
+    out["fba_intra_planes"] = intra;
+    out["fba_bytes"] = bytes;
+    out["fba_duration"] = static_cast<double>(ticks) / stream->timescale;
   }
   return out;
 }

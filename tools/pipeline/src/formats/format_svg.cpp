@@ -1,20 +1,29 @@
-// .svg output: the blended curves plotted (`fapc plot` adds the per-clip curves).
+// .svg, .pdf and .csv outputs of compile and batch: the plot of `fapc plot` with its defaults
+// (every parameter, one panel each). A .png output is the face (format_face.cpp), not a plot.
 #include <filesystem>
 
-#include "fapc/pipeline/svg_plot.hpp"
+#include "fapc/pipeline/plot.hpp"
 #include "formats.hpp"
 
 namespace fapc::pipeline::builtin {
 
 namespace {
 
-Result<std::string> write_svg(const Loaded& loaded, const std::string& path, const ConvertOptions&) {
-  const Curves curves = loaded.curves ? *loaded.curves : curves_from_frames(loaded.frames);
-  return plot_svg(curves, nullptr, std::filesystem::path(path).stem().string());
+OutputFormat plot_output(std::string kind, std::string extension, PlotKind plot_kind) {
+  return {std::move(kind), {std::move(extension)},
+          [plot_kind](const Loaded& loaded, const std::string& path, const ConvertOptions&) -> Result<std::string> {
+            PlotOptions options;
+            options.title = std::filesystem::path(path).stem().string();
+            auto plot = plot_loaded(loaded, loaded.named(path), plot_kind, options);
+            if (!plot) return plot.error();
+            return std::move(plot->bytes);
+          }};
 }
 
 }  // namespace
 
-OutputFormat svg_output() { return {"svg", {".svg"}, write_svg}; }
+OutputFormat svg_output() { return plot_output("svg", ".svg", PlotKind::svg); }
+OutputFormat pdf_output() { return plot_output("pdf", ".pdf", PlotKind::pdf); }
+OutputFormat csv_output() { return plot_output("csv", ".csv", PlotKind::csv); }
 
 }  // namespace fapc::pipeline::builtin

@@ -61,7 +61,11 @@ Result<xmt::XmtoDocument> read_document(const std::string& path, const ConvertOp
 nlohmann::ordered_json facts_of(const xmt::XmtoDocument& document) {
   nlohmann::ordered_json out;
   out["format"] = "XMT-Omega";
-  for (const auto& [name, content] : document.meta) out["meta " + name] = content;
+  if (!document.meta.empty()) {
+    nlohmann::ordered_json meta = nlohmann::ordered_json::object();
+    for (const auto& [name, content] : document.meta) meta[name] = content;
+    out["meta"] = meta;
+  }
   out["clips"] = document.timeline.clips.size();
   if (!document.included.empty()) out["included"] = document.included;
   return out;

@@ -20,7 +20,9 @@ OutputFormat mp4_output();
 OutputFormat xmta_scene_output();
 OutputFormat xmta_commands_output();
 OutputFormat curves_json_output();
-OutputFormat svg_output();
+OutputFormat svg_output();  // the plots (format_svg.cpp)
+OutputFormat pdf_output();
+OutputFormat csv_output();
 OutputFormat timeline_output();
 OutputFormat png_output();   // the face (format_face.cpp)
 OutputFormat webm_output();

@@ -17,6 +17,14 @@ struct VerifyResult {
   Diagnostics warnings;             // the reader's
   std::optional<Diagnostic> error;  // verification_failed when a check fails; else why it could not run
   std::string summary;              // "N frames, B bytes, X bits/frame at fap_quant Q" when ok
+  // The same figures as fields (docs/json.md), when ok.
+  std::size_t frames = 0;
+  std::size_t bytes = 0;
+  double bits_per_frame = 0;
+  int quant = 0;
+  // The largest |decoded - input| over FAPs 3-68, in FAP units: for inputs that are encoded here;
+  // absent for .fba and .mp4, whose check is that re-encoding gives the same bytes.
+  std::optional<long long> max_error;
   bool ok() const { return !error; }
 };
 
