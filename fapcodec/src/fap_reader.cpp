@@ -79,12 +79,12 @@ class Reader {
     return make_error(Location::text(file_, line.number, column), message, std::string(line.text));
   }
   template <class AnyLine>
-  void warn_at(const AnyLine& line, int column, const std::string& message) {
+  void warn_at(WarningCode code, const AnyLine& line, int column, const std::string& message) {
     out_.warnings.push_back(
-        make_warning(Location::text(file_, line.number, column), message, std::string(line.text)));
+        make_warning(code, Location::text(file_, line.number, column), message, std::string(line.text)));
   }
-  void warn_file(const std::string& message) {
-    out_.warnings.push_back(make_warning(Location{file_, 0, 0, -1}, message));
+  void warn_file(WarningCode code, const std::string& message) {
+    out_.warnings.push_back(make_warning(code, Location{file_, 0, 0, -1}, message));
   }
 
   std::optional<Diagnostic> read_header(const Line& line);
@@ -170,16 +170,16 @@ std::optional<Diagnostic> Reader::read_header(const Line& line) {
   out_.sequence.name = facts.header_name;
   out_.sequence.fps = static_cast<int>(std::lround(*fps));
   if (std::floor(*fps) != *fps)
-    warn_at(line, fps_token.column,
+    warn_at({"fap.fractional_fps"}, line, fps_token.column,
             "frame rate " + std::string(fps_token.text) + " is not an integer; using " +
                 std::to_string(out_.sequence.fps));
   if (facts.version == "2.0") {
-    warn_at(line, tokens.front().column,
+    warn_at({"fap.vreng_v20"}, line, tokens.front().column,
             options_.vreng_divide_v20
                 ? "version 2.0: values divided by 20 (VREng's convention, as asked)"
                 : "version 2.0: values kept as written (VREng divides them by 20)");
   } else if (facts.version != "2.1") {
-    warn_at(line, tokens.front().column,
+    warn_at({"fap.version"}, line, tokens.front().column,
             "version " + facts.version + " (2.1 expected); reading it as 2.1");
   }
   return std::nullopt;
@@ -189,7 +189,7 @@ std::optional<Diagnostic> Reader::read_mask(const Line& line, std::bitset<kFapCo
   const auto& tokens = line.tokens;
   if (tokens.size() == 69 && tokens.back().text == "0") {
     if (!out_.facts.mask_69_tokens)  // once per file, without the (long) source line
-      out_.warnings.push_back(make_warning(
+      out_.warnings.push_back(make_warning({"fap.mask_69_values"},
           Location::text(file_, line.number, tokens.back().column),
           "mask lines have 69 values (Greta's writer); the 69th, always 0, is ignored"));
     out_.facts.mask_69_tokens = true;
@@ -233,7 +233,7 @@ std::optional<Diagnostic> Reader::read_value(const Line& line, const Token& toke
   } else if (const auto real = parse_number(token.text)) {
     number = *real;
     if (!warned_float_)
-      warn_at(line, token.column,
+      warn_at({"fap.value"}, line, token.column,
               "value '" + std::string(token.text) +
                   "' is not an integer; values are rounded half away from zero");
     warned_float_ = true;
@@ -367,12 +367,12 @@ std::optional<Diagnostic> Reader::place_frames_in_time() {
       }
       frames[i] = offset / step;
     }
-    warn_file("no header; frame numbers read as millisecond time stamps (" +
+    warn_file({"fap.no_header"}, "no header; frame numbers read as millisecond time stamps (" +
               std::to_string(out_.sequence.fps) + " fps, first frame at " +
               std::to_string(first) + " ms taken as time 0)");
   } else if (!facts.has_header) {
     out_.sequence.fps = options_.headerless_fps;
-    warn_file("no header; assuming " + std::to_string(options_.headerless_fps) + " fps");
+    warn_file({"fap.no_header"}, "no header; assuming " + std::to_string(options_.headerless_fps) + " fps");
   }
   // Writers fill gaps and the Algebra allocates a slot per frame: the span is what costs.
   for (std::size_t i = 1; i < frames.size(); ++i)
@@ -390,7 +390,7 @@ std::optional<Diagnostic> Reader::place_frames_in_time() {
       frames.back() == static_cast<long long>(frames.size())) {
     facts.frames_from_one = true;
     for (std::int64_t& number : frames) --number;
-    warn_file("frames are numbered from 1; renumbered from 0");
+    warn_file({"fap.numbered_from_1"}, "frames are numbered from 1; renumbered from 0");
   }
   std::vector<std::size_t> after_gap;
   for (std::size_t i = 1; i < frames.size(); ++i)
@@ -399,7 +399,7 @@ std::optional<Diagnostic> Reader::place_frames_in_time() {
   const std::vector<FrameLine> lines = frame_lines(after_gap);
   for (std::size_t g = 0; g < after_gap.size(); ++g) {
     const std::size_t i = after_gap[g];
-    warn_at(lines[g], lines[g].first_column,
+    warn_at({"fap.missing_frames"}, lines[g], lines[g].first_column,
             "frames " + std::to_string(frames[i - 1] + 1) + " to " +
                 std::to_string(frames[i] - 1) + " are absent");
   }
@@ -498,7 +498,7 @@ Result<FapReadResult> Reader::run() {
     if (line.first_is_comment()) {
       ++facts.comment_lines;
       if (expect != Expect::header && !warned_comment_after_header_) {
-        warn_at(line, line.tokens.front().column,
+        warn_at({"fap.comment_after_header"}, line, line.tokens.front().column,
                 "comment line after the header (Xface and Greta's Java reader cannot read it)");
         warned_comment_after_header_ = true;
       }
@@ -539,10 +539,10 @@ Result<FapReadResult> Reader::run() {
   for (std::size_t k = 0; k < out_.sequence.frames.size(); ++k) out_.sequence.frames[k].number = numbers_[k];
   const auto frames = static_cast<long long>(numbers_.size());
   if (facts.has_header && facts.header_count != frames)
-    warn_at(header_count_at_, header_count_at_.first_column,
+    warn_at({"fap.frame_count"}, header_count_at_, header_count_at_.first_column,
             "header says " + std::to_string(facts.header_count) + " frames, file has " +
                 std::to_string(frames));
-  if (frames == 0) warn_file("file has no frames");
+  if (frames == 0) warn_file({"fap.no_frames"}, "file has no frames");
   if (out_.sequence.name.empty()) out_.sequence.name = file_;
   return std::move(out_);
 }

@@ -146,39 +146,17 @@ const FapInfo* find_fap_by_name_or_number(std::string_view text) {
 }
 
 std::vector<std::string_view> closest_fap_names(std::string_view name, std::size_t how_many) {
-  std::vector<std::pair<std::size_t, std::string_view>> scored;
-  for (const FapInfo& f : kFaps) scored.emplace_back(edit_distance(name, f.name), f.name);
-  std::stable_sort(scored.begin(), scored.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::string> names;
+  for (const FapInfo& f : kFaps) names.emplace_back(f.name);
   std::vector<std::string_view> best;
-  for (std::size_t i = 0; i < scored.size() && i < how_many; ++i) best.push_back(scored[i].second);
+  for (const std::string& n : closest_names(name, names, how_many)) best.push_back(find_fap(n)->name);
   return best;
 }
 
 std::string unknown_fap_message(std::string_view name) {
-  std::string message = "unknown FAP name '" + std::string(name) + "'; did you mean ";
-  const auto best = closest_fap_names(name);
-  for (std::size_t i = 0; i < best.size(); ++i) {
-    if (i > 0) message += i + 1 == best.size() ? " or " : ", ";
-    message += best[i];
-  }
-  return message + "?";
-}
-
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + cost});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
+  std::vector<std::string> best;
+  for (const std::string_view n : closest_fap_names(name)) best.emplace_back(n);
+  return "unknown FAP name '" + std::string(name) + "'; did you mean " + or_list(best) + "?";
 }
 
 std::string_view viseme_name(int viseme) {

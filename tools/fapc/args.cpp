@@ -4,41 +4,82 @@
 #include <iostream>
 #include <sstream>
 
+#include "fapc/cli_spec.hpp"
+#include "fapc/codec/did_you_mean.hpp"
 #include "fapc/commands.hpp"
 
 namespace fapc::cli {
 
-Args::Args(const std::vector<std::string>& argv, std::set<std::string> valued,
-           std::set<std::string> flags) {
-  for (std::size_t i = 0; i < argv.size(); ++i) {
-    std::string arg = argv[i];
-    if (arg == "-o") arg = "--output";
-    if (arg.size() < 3 || arg.compare(0, 2, "--") != 0) {
-      positionals_.push_back(argv[i]);  // includes "-" (standard input/output)
-      continue;
-    }
-    std::string name = arg.substr(2);
-    std::optional<std::string> inline_value;
-    if (const auto eq = name.find('='); eq != std::string::npos) {
-      inline_value = name.substr(eq + 1);
-      name.resize(eq);
-    }
-    if (valued.count(name)) {
-      if (inline_value) {
-        values_[name].push_back(*inline_value);
-      } else if (i + 1 < argv.size()) {
-        values_[name].push_back(argv[++i]);
-      } else {
-        error_ = "option --" + name + " needs a value";
-        return;
-      }
-    } else if (flags.count(name) && !inline_value) {
-      flags_seen_.insert(name);
-    } else {
-      error_ = "unknown option " + arg;
+Args::Args(const std::string& command, const std::vector<std::string>& argv) {
+  for (std::size_t i = 0; i < argv.size() && ok(); ++i) {
+    if (argv[i] == "--") {
+      positionals_.insert(positionals_.end(), argv.begin() + static_cast<std::ptrdiff_t>(i) + 1, argv.end());
       return;
     }
+    take(command, argv, i);
   }
+}
+
+void Args::take(const std::string& command, const std::vector<std::string>& argv, std::size_t& i) {
+  const std::string& arg = argv[i];
+  if (arg.size() < 2 || arg[0] != '-') {
+    positionals_.push_back(arg);  // includes "-" (standard input/output)
+    return;
+  }
+  const OptionSpec* option = nullptr;
+  std::optional<std::string> attached;
+  if (arg[1] == '-') {
+    std::string name = arg.substr(2);
+    if (const auto eq = name.find('='); eq != std::string::npos) {
+      attached = name.substr(eq + 1);
+      name.resize(eq);
+    }
+    option = find_option(name);
+  } else {
+    option = find_short_option(arg[1]);
+    if (arg.size() > 2) {
+      // -oFILE: the rest is the value; -qv and the like are not taken (one letter per argument).
+      if (option && option->takes_value()) {
+        attached = arg.substr(2);
+      } else {
+        option = nullptr;
+      }
+    }
+  }
+  if (!option || !option->applies_to(command)) {
+    fail(unknown_option_message(command, attached ? arg.substr(0, arg.find('=')) : arg));
+    return;
+  }
+  const std::string name(option->name);
+  if (!option->takes_value()) {
+    if (attached) {
+      fail("option --" + name + " takes no value");
+      return;
+    }
+    flags_seen_.insert(name);
+    return;
+  }
+  if (attached) {
+    values_[name].push_back(*attached);
+  } else if (i + 1 < argv.size()) {
+    values_[name].push_back(argv[++i]);
+  } else {
+    fail("option --" + name + " needs a value (" + std::string(option->value_name) + ")");
+  }
+}
+
+std::string unknown_option_message(const std::string& command, const std::string& option) {
+  std::string message = "unknown option " + option;
+  std::string bare = option;
+  while (!bare.empty() && bare.front() == '-') bare.erase(bare.begin());
+  if (const OptionSpec* elsewhere = bare.size() == 1 ? find_short_option(bare[0]) : find_option(bare)) {
+    if (!elsewhere->applies_to(command))
+      return message + " (--" + std::string(elsewhere->name) + " is an option of " +
+             std::string(elsewhere->commands) + ", not " + command + ")";
+  }
+  std::vector<std::string> candidates;
+  for (const OptionSpec* o : options_of(command)) candidates.push_back("--" + std::string(o->name));
+  return message + did_you_mean("--" + bare, candidates);
 }
 
 std::optional<std::string> Args::value(const std::string& name) const {
@@ -82,8 +123,8 @@ std::optional<double> Args::decimal(const std::string& name, double low, double 
 
 int usage_error(const std::string& command, const std::string& message) {
   std::cerr << "fapc " << command << ": " << message << '\n';
-  const auto it = commands().find(command);
-  if (it != commands().end()) std::cerr << "usage: " << it->second.usage << '\n';
+  if (const CommandSpec* spec = find_command_spec(command))
+    std::cerr << "usage: " << usage_line(*spec) << " (fapc " << command << " --help lists them)\n";
   return kExitUsage;
 }
 

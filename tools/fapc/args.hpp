@@ -1,6 +1,8 @@
-// A small argument parser for the subcommands: positionals, `--flag`, `--opt VALUE`,
-// `--opt=VALUE`, repeatable options, `-o` as an alias for `--output`. Errors are usage errors
-// (exit status 2).
+// The parser of a subcommand's arguments, driven by the declaration in cli_spec.hpp: positionals
+// (with "-" for standard input or output), `--flag`, `--opt VALUE`, `--opt=VALUE`, short names
+// (`-o FILE`, `-oFILE`, `-q`), repeatable options, and `--` after which everything is a
+// positional. An option the subcommand does not declare is a usage error (exit status 2) with the
+// closest spellings suggested.
 #pragma once
 
 #include <map>
@@ -13,9 +15,7 @@ namespace fapc::cli {
 
 class Args {
  public:
-  // `valued` lists options that take a value, `flags` those that do not (names without "--").
-  Args(const std::vector<std::string>& argv, std::set<std::string> valued,
-       std::set<std::string> flags);
+  Args(const std::string& command, const std::vector<std::string>& argv);
 
   bool ok() const { return error_.empty(); }
   const std::string& error() const { return error_; }
@@ -34,13 +34,18 @@ class Args {
   }
 
  private:
+  void take(const std::string& command, const std::vector<std::string>& argv, std::size_t& i);
+
   std::vector<std::string> positionals_;
   std::map<std::string, std::vector<std::string>> values_;
   std::set<std::string> flags_seen_;
   std::string error_;
 };
 
-// Prints "fapc: USAGE-ERROR" and the command's usage line; returns kExitUsage.
+// "unknown option --fsp; did you mean --fps?" (and where an option of another subcommand belongs).
+std::string unknown_option_message(const std::string& command, const std::string& option);
+
+// Prints "fapc COMMAND: USAGE-ERROR" and the command's usage line; returns kExitUsage.
 int usage_error(const std::string& command, const std::string& message);
 
 }  // namespace fapc::cli

@@ -2,10 +2,9 @@
 // converts every supported file under the inputs into DIR (fapc::pipeline::plan_batch and
 // run_batch), one output per kind in --to, and prints a summary line per input, in input order,
 // as the jobs finish. Ctrl-C stops starting new jobs; the summary and the report still come.
-#include <unistd.h>
-
 #include <atomic>
 #include <csignal>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -15,6 +14,7 @@
 #include "fapc/options.hpp"
 #include "fapc/pipeline/batch.hpp"
 #include "fapc/pipeline/json_output.hpp"
+#include "fapc/progress.hpp"
 #include "fapc/report.hpp"
 
 namespace fapc::cli {
@@ -37,8 +37,7 @@ std::vector<std::string> split_list(const std::string& list) {
 }
 
 int run_batch(const std::vector<std::string>& argv) {
-  Args args(argv, [] { auto v = kConvertValued; v.insert({"output", "jobs", "report", "report-json"}); return v; }(),
-            [] { auto f = kConvertFlags; f.insert("keep-going"); return f; }());
+  Args args("batch", argv);
   ConvertOptions options = convert_options(args);
   const int threads = args.integer("jobs", 0, 1, 256);  // absent: one per core
   if (!args.ok()) return usage_error("batch", args.error());
@@ -60,13 +59,17 @@ int run_batch(const std::vector<std::string>& argv) {
   run.keep_going = args.flag("keep-going");
   run.stop = &interrupted;
   // Each job's diagnostics and summary are printed together, in input order.
+  ProgressBar bar(progress_wanted());
   run.in_order = [&](std::size_t index, const pipeline::BatchOutcome& outcome) {
     report_outcome(outcome.result.warnings, outcome.result.error);
     std::cout << pipeline::batch_summary_line((*jobs)[index], outcome) << '\n' << std::flush;
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%.3f s", outcome.seconds);
+    tell((*jobs)[index].input + ": " + seconds);
   };
-  if (::isatty(STDERR_FILENO) != 0)
-    run.progress = [](std::size_t finished, std::size_t total) {
-      std::cerr << "\r[" << finished << "/" << total << "] " << std::flush;
+  if (bar.enabled())
+    run.progress = [&bar](std::size_t finished, std::size_t total) {
+      bar.update("inputs", static_cast<std::int64_t>(finished), static_cast<std::int64_t>(total));
     };
   struct sigaction action {};
   action.sa_handler = on_interrupt;
@@ -76,7 +79,6 @@ int run_batch(const std::vector<std::string>& argv) {
   const std::vector<pipeline::BatchOutcome> outcomes = pipeline::run_batch(*jobs, options, run);
   ::sigaction(SIGINT, &old_int, nullptr);
   ::sigaction(SIGTERM, &old_term, nullptr);
-  if (run.progress) std::cerr << "\r\n";
 
   std::size_t failed = 0, converted = 0;
   int status = kExitOk;
@@ -104,8 +106,7 @@ int run_batch(const std::vector<std::string>& argv) {
   return status;
 }
 
-const RegisterCommand batch_command{
-    "batch", "fapc batch INPUT... -o DIR [--to LIST] [--jobs N] [--report junit.xml] [--report-json FILE] [--keep-going]", run_batch};
+const RegisterCommand batch_command{"batch", run_batch};
 
 }  // namespace
 

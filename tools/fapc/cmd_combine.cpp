@@ -8,6 +8,7 @@
 #include "fapc/pipeline/combine.hpp"
 #include "fapc/pipeline/convert.hpp"
 #include "fapc/report.hpp"
+#include "fapc/streams.hpp"
 
 namespace fapc::cli {
 
@@ -39,8 +40,7 @@ int print_state(const Value& value, const Args& args) {
 }
 
 int run_combine(const std::vector<std::string>& argv) {
-  Args args(argv, [] { auto v = kConvertValued; v.insert("output"); v.insert("frame"); return v; }(),
-            [] { auto f = kConvertFlags; f.insert("states"); return f; }());
+  Args args("combine", argv);
   const ConvertOptions options = convert_options(args);
   if (!args.ok()) return usage_error("combine", args.error());
   if (args.positionals().size() != 1) return usage_error("combine", "expected one EXPRESSION (quote it)");
@@ -55,18 +55,15 @@ int run_combine(const std::vector<std::string>& argv) {
   pipeline::Loaded loaded;
   loaded.origin = "<expression>";  // what errors about the frames name, as expression errors do
   loaded.frames = pipeline::frames_of(*value, options.fps, std::filesystem::path(*output).stem().string());
-  const pipeline::ConvertResult result =
-      pipeline::write_outputs(std::move(loaded), {{*output, args.value("to").value_or("")}}, options);
+  const std::string to = output_kind(args, *output);
+  if (!args.ok()) return usage_error("combine", args.error());
+  const pipeline::ConvertResult result = pipeline::write_outputs(std::move(loaded), {{*output, to}}, options);
   const int status = report_outcome({}, result.error);
-  if (status == kExitOk && *output == "-") std::cout << result.standard_output << std::flush;
+  if (status == kExitOk && *output == "-" && !write_standard_output(result.standard_output)) return kExitBadInput;
   return status;
 }
 
-const RegisterCommand combine_command{
-    "combine",
-    "fapc combine EXPRESSION -o OUTPUT [--profile FILE] [--to KIND] | fapc combine --states "
-    "EXPRESSION [--frame K]",
-    run_combine};
+const RegisterCommand combine_command{"combine", run_combine};
 
 }  // namespace
 

@@ -1,35 +1,41 @@
 // fapc decode IN.fba|IN.mp4 -o OUT.fap: a stream back to frames, written as any output kind
 // (normally .fap).
 #include "fapc/commands.hpp"
+#include "fapc/conversion.hpp"
 #include "fapc/options.hpp"
 #include "fapc/pipeline/convert.hpp"
 #include "fapc/report.hpp"
-
-#include <iostream>
+#include "fapc/streams.hpp"
 
 namespace fapc::cli {
 
 namespace {
 
 int run_decode(const std::vector<std::string>& argv) {
-  Args args(argv, with_limits({"output", "to", "fap-flavour"}), {"strict"});
+  Args args("decode", argv);
   ConvertOptions options = convert_options(args);
   if (!args.ok()) return usage_error("decode", args.error());
   if (args.positionals().size() != 1) return usage_error("decode", "expected one input stream");
   const auto output = args.value("output");
   if (!output) return usage_error("decode", "missing -o OUT.fap");
-  const std::string& input = args.positionals().front();
-  const pipeline::InputFormat* format = pipeline::formats().input_for(input);
+  const std::string to = output_kind(args, *output, "fap");
+  std::string input = args.positionals().front();
+  StandardInputCopy copy;
+  if (const auto error = resolve_input(args, input, options, copy)) return usage_error("decode", *error);
+  const pipeline::InputFormat* format = pipeline::reader_for(input, options);
   if (format && format->kind != "fba" && format->kind != "mp4")
-    return usage_error("decode", "decode reads .fba or .mp4 streams; use compile for '" + input + "'");
-  const pipeline::ConvertResult result = pipeline::convert(input, {{*output, args.value("to").value_or("")}}, options);
+    return usage_error("decode", "decode reads .fba or .mp4 streams; use compile for '" + args.positionals().front() + "'");
+  const ConversionWatch watch(options);
+  // Without --to the output's extension decides, as it always has; -o - writes .fap text.
+  const pipeline::ConvertResult result =
+      pipeline::convert(input, {{*output, args.value("to") || *output == "-" ? to : ""}}, options);
   const int status = report_outcome(result.warnings, result.error);
-  if (status == kExitOk && *output == "-") std::cout << result.standard_output << std::flush;
+  watch.tell_done(args.positionals().front(), result);
+  if (status == kExitOk && *output == "-" && !write_standard_output(result.standard_output)) return kExitBadInput;
   return status;
 }
 
-const RegisterCommand decode_command{"decode", "fapc decode IN.fba|IN.mp4 -o OUT.fap [--strict] [--to KIND] [--fap-flavour F]",
-                                     run_decode};
+const RegisterCommand decode_command{"decode", run_decode};
 
 }  // namespace
 

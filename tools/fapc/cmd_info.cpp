@@ -10,6 +10,7 @@
 #include "fapc/pipeline/info.hpp"
 #include "fapc/pipeline/json_output.hpp"
 #include "fapc/report.hpp"
+#include "fapc/streams.hpp"
 
 namespace fapc::cli {
 
@@ -76,15 +77,19 @@ void print_text(const nlohmann::ordered_json& info) {
 }
 
 int run_info(const std::vector<std::string>& argv) {
-  Args args(argv, kLimitValued, {"json"});
-  const ConvertOptions parsed = convert_options(args);
+  Args args("info", argv);
+  ConvertOptions parsed = convert_options(args);
   if (!args.ok()) return usage_error("info", args.error());
   if (args.positionals().size() != 1) return usage_error("info", "expected one FILE");
-  auto info = pipeline::describe(args.positionals().front(), parsed.limits);
+  std::string input = args.positionals().front();
+  StandardInputCopy copy;
+  if (const auto error = resolve_input(args, input, parsed, copy)) return usage_error("info", *error);
+  auto info = pipeline::describe(input, parsed.limits, parsed.input_kind);
   if (!info) {
     if (args.flag("json")) std::cout << pipeline::error_document(info.error()).dump(2) << '\n';
     return report_outcome({}, info.error());
   }
+  if (input != args.positionals().front()) (*info)["file"] = args.positionals().front();  // not the copy's name
   if (args.flag("json")) {
     std::cout << info->dump(2) << '\n';
   } else {
@@ -93,7 +98,7 @@ int run_info(const std::vector<std::string>& argv) {
   return kExitOk;
 }
 
-const RegisterCommand info_command{"info", "fapc info FILE [--json]", run_info};
+const RegisterCommand info_command{"info", run_info};
 
 }  // namespace
 

@@ -1,16 +1,18 @@
 // fapc render INPUT -o OUT.png|.webm|.html: any input shown as a face (docs/render.md).
 #include "fapc/commands.hpp"
+#include "fapc/conversion.hpp"
 #include "fapc/options.hpp"
 #include "fapc/pipeline/convert.hpp"
 #include "fapc/report.hpp"
+#include "fapc/streams.hpp"
 
 namespace fapc::cli {
 
 namespace {
 
 int run_render(const std::vector<std::string>& argv) {
-  Args args(argv, [] { auto v = kConvertValued; v.insert("output"); return v; }(), kConvertFlags);
-  const ConvertOptions options = convert_options(args);
+  Args args("render", argv);
+  ConvertOptions options = convert_options(args);
   if (!args.ok()) return usage_error("render", args.error());
   if (args.positionals().size() != 1) return usage_error("render", "expected one INPUT");
   const PictureSettings& picture = options.picture;
@@ -19,19 +21,24 @@ int run_render(const std::vector<std::string>& argv) {
     return usage_error("render", "--sheet picks its own frames; drop --frame/--time");
   const auto output = args.value("output");
   if (!output) return usage_error("render", "missing -o OUT.png, OUT.webm or OUT.html");
-  const pipeline::OutputFormat* format = pipeline::formats().output_for(*output);
+  const std::string to = output_kind(args, *output);
+  if (!args.ok()) return usage_error("render", args.error());
+  const pipeline::OutputFormat* format =
+      to.empty() ? pipeline::formats().output_for(*output) : pipeline::formats().output_named(to);
   if (!format || (format->kind != "png" && format->kind != "webm" && format->kind != "html"))
     return usage_error("render", "the output must end in .png, .webm or .html: '" + *output + "'");
-  const pipeline::ConvertResult result =
-      pipeline::convert(args.positionals().front(), {{*output, ""}}, options);
-  return report_outcome(result.warnings, result.error);
+  std::string input = args.positionals().front();
+  StandardInputCopy copy;
+  if (const auto error = resolve_input(args, input, options, copy)) return usage_error("render", *error);
+  const ConversionWatch watch(options);
+  const pipeline::ConvertResult result = pipeline::convert(input, {{*output, to}}, options);
+  const int status = report_outcome(result.warnings, result.error);
+  watch.tell_done(args.positionals().front(), result);
+  if (status == kExitOk && *output == "-" && !write_standard_output(result.standard_output)) return kExitBadInput;
+  return status;
 }
 
-const RegisterCommand render_command{
-    "render",
-    "fapc render INPUT -o OUT.png|OUT.webm|OUT.html [--size WxH] [--frame K | --time T | --sheet N] "
-    "[--frame-rate N] [--points] [--fps N] [--profile FILE]",
-    run_render};
+const RegisterCommand render_command{"render", run_render};
 
 }  // namespace
 

@@ -7,12 +7,13 @@
 #include "fapc/commands.hpp"
 #include "fapc/pipeline/validate.hpp"
 #include "fapc/report.hpp"
+#include "fapc/streams.hpp"
 
 namespace fapc::cli {
 
 namespace {
 
-bool validate_one(const std::string& path) {
+bool validate_one(const std::string& path, const std::string& named) {
   auto checked = pipeline::validate(path);
   if (!checked) {
     report(checked.error());
@@ -20,20 +21,26 @@ bool validate_one(const std::string& path) {
   }
   report_all(checked->problems);
   if (!checked->valid()) return false;
-  std::cout << path << ": valid " << checked->kind << " (" << checked->schema << ")\n";
+  std::cout << named << ": valid " << checked->kind << " (" << checked->schema << ")\n";
   return true;
 }
 
 int run_validate(const std::vector<std::string>& argv) {
-  Args args(argv, {}, {});
+  Args args("validate", argv);
   if (!args.ok()) return usage_error("validate", args.error());
   if (args.positionals().empty()) return usage_error("validate", "expected at least one FILE");
   bool all_valid = true;
-  for (const std::string& path : args.positionals()) all_valid = validate_one(path) && all_valid;
+  StandardInputCopy copy;
+  for (const std::string& path : args.positionals()) {
+    // The root element picks the schema, so standard input needs no --from here.
+    std::string input = path == "-" ? copy.path() : path;
+    if (path == "-") show_file_as(input, "-");
+    all_valid = validate_one(input, path) && all_valid;
+  }
   return all_valid ? kExitOk : kExitBadInput;
 }
 
-const RegisterCommand validate_command{"validate", "fapc validate FILE...", run_validate};
+const RegisterCommand validate_command{"validate", run_validate};
 
 }  // namespace
 

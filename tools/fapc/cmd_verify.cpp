@@ -10,20 +10,24 @@
 #include "fapc/pipeline/json_output.hpp"
 #include "fapc/pipeline/verify.hpp"
 #include "fapc/report.hpp"
+#include "fapc/streams.hpp"
 
 namespace fapc::cli {
 
 namespace {
 
 int run_verify(const std::vector<std::string>& argv) {
-  Args args(argv, with_limits({"quant", "intra-period", "ranges", "masks"}), {"json"});
-  const ConvertOptions options = convert_options(args);
+  Args args("verify", argv);
+  ConvertOptions options = convert_options(args);
   if (!args.ok()) return usage_error("verify", args.error());
   if (args.positionals().empty()) return usage_error("verify", "expected at least one FILE");
   int status = kExitOk;
   std::vector<nlohmann::ordered_json> results;
+  StandardInputCopy copy;
   for (const std::string& path : args.positionals()) {
-    const pipeline::VerifyResult verified = pipeline::verify(path, options);
+    std::string input = path;
+    if (const auto error = resolve_input(args, input, options, copy)) return usage_error("verify", *error);
+    const pipeline::VerifyResult verified = pipeline::verify(input, options);
     const int file_status = report_outcome(verified.warnings, verified.error);
     status = worse_status(status, file_status);
     if (args.flag("json")) {
@@ -36,8 +40,7 @@ int run_verify(const std::vector<std::string>& argv) {
   return status;
 }
 
-const RegisterCommand verify_command{
-    "verify", "fapc verify FILE... [--quant Q] [--intra-period N] [--ranges fit|max] [--masks fit|keep] [--json]", run_verify};
+const RegisterCommand verify_command{"verify", run_verify};
 
 }  // namespace
 

@@ -13,8 +13,8 @@ std::map<std::string, Command>& command_table() {
 
 }  // namespace
 
-RegisterCommand::RegisterCommand(std::string name, std::string usage, CommandFn run) {
-  command_table()[name] = Command{name, std::move(usage), run};
+RegisterCommand::RegisterCommand(std::string name, CommandFn run) {
+  command_table()[name] = Command{name, run};
 }
 
 const std::map<std::string, Command>& commands() { return command_table(); }

@@ -40,14 +40,14 @@ constexpr int worse_status(int a, int b) {
 
 using CommandFn = int (*)(const std::vector<std::string>& args);
 
+// What a subcommand does; what it is called and takes is declared in cli_spec.cpp.
 struct Command {
   std::string name;
-  std::string usage;  // one line, as in docs/cli.md
   CommandFn run;
 };
 
 struct RegisterCommand {
-  RegisterCommand(std::string name, std::string usage, CommandFn run);
+  RegisterCommand(std::string name, CommandFn run);
 };
 
 const std::map<std::string, Command>& commands();

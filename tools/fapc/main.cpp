@@ -1,39 +1,74 @@
-// fapc: one program, subcommands registered by their own files (see registry.hpp).
+// fapc: one program, subcommands registered by their own files (commands.hpp), declared with their
+// options in cli_spec.cpp. main() handles what every subcommand shares: --help, -q/-v, the
+// version, "did you mean" for a misspelt subcommand, and the warning counts at the end.
+#include <csignal>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
 
+#include "fapc/args.hpp"
+#include "fapc/cli_spec.hpp"
+#include "fapc/codec/did_you_mean.hpp"
 #include "fapc/commands.hpp"
+#include "fapc/help.hpp"
+#include "fapc/report.hpp"
 
 namespace {
 
-int print_help(std::ostream& out) {
-  out << "fapc: the MPEG-4 face animation transcoder\n\nusage:\n";
-  for (const auto& [name, command] : fapc::cli::commands()) out << "  " << command.usage << '\n';
-  out << "\nSee docs/cli.md for the contract.\n";
-  return fapc::cli::kExitOk;
+using namespace fapc::cli;
+
+int unknown_command(const std::string& name, const std::vector<std::string>& args) {
+  std::vector<std::string> names;
+  for (const CommandSpec& c : command_specs()) names.emplace_back(c.name);
+  std::string hint = fapc::did_you_mean(name, names);
+  // `fapc x.mimic -o x.mp4`: a file where the subcommand goes.
+  if (hint.empty() && std::filesystem::is_regular_file(name)) {
+    hint = "; did you mean fapc compile " + name;
+    for (std::size_t i = 1; i < args.size(); ++i) hint += " " + args[i];
+    hint += "?";
+  }
+  std::cerr << "fapc: unknown command '" << name << "'" << hint << " (try fapc --help)\n";
+  return kExitUsage;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A closed pipe is an error the writer reports (streams.hpp), not a silent death that would
+  // skip the removal of temporary files.
+  std::signal(SIGPIPE, SIG_IGN);
   std::vector<std::string> args(argv + 1, argv + argc);
+  // -q and -v may come before the subcommand too.
+  while (!args.empty() && (args.front() == "-q" || args.front() == "--quiet" || args.front() == "-v" ||
+                           args.front() == "--verbose")) {
+    set_verbosity(args.front() == "-q" || args.front() == "--quiet" ? Verbosity::quiet : Verbosity::verbose);
+    args.erase(args.begin());
+  }
   if (args.empty()) {
-    print_help(std::cerr);
-    return fapc::cli::kExitUsage;
+    print_overview(std::cerr);
+    return kExitUsage;
   }
   const std::string name = args.front();
-  if (name == "--help" || name == "-h" || name == "help") return print_help(std::cout);
-  if (name == "--version") {
-    std::cout << "fapc 0.1.0\n";
-    return fapc::cli::kExitOk;
+  if (name == "--help" || name == "-h") return commands().at("help").run({});
+  if (name == "--version" || name == "-V") {
+    std::cout << version_text() << '\n';
+    return kExitOk;
   }
-  const auto& table = fapc::cli::commands();
+  const auto& table = commands();
   const auto it = table.find(name);
-  if (it == table.end()) {
-    std::cerr << "fapc: unknown command '" << name << "' (try fapc --help)\n";
-    return fapc::cli::kExitUsage;
-  }
+  if (it == table.end() || !find_command_spec(name)) return unknown_command(name, args);
   args.erase(args.begin());
-  return it->second.run(args);
+  // What every subcommand shares; the subcommand parses again for its own options (and reports
+  // their errors), so a parse error here only stops the search.
+  const Args common(name, args);
+  if (common.flag("help")) {
+    print_command_help(*find_command_spec(name), std::cout);
+    return kExitOk;
+  }
+  if (common.flag("quiet")) set_verbosity(Verbosity::quiet);
+  if (common.flag("verbose")) set_verbosity(Verbosity::verbose);
+  const int status = it->second.run(args);
+  finish_reports();
+  return status;
 }

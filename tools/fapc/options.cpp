@@ -1,6 +1,9 @@
 #include "fapc/options.hpp"
 
 #include <cstdio>
+#include <sstream>
+
+#include "fapc/codec/did_you_mean.hpp"
 
 namespace fapc::cli {
 
@@ -53,7 +56,12 @@ ConvertOptions convert_options(Args& args) {
   for (const std::string& folder : args.values("allow-include")) options.includes.allowed_folders.push_back(folder);
   if (const auto flavour = args.value("fap-flavour")) {
     const auto known = fap_flavour_named(*flavour);
-    if (!known) args.fail("--fap-flavour takes " + fap_flavour_names() + ", not '" + *flavour + "'");
+    if (!known) {
+      std::vector<std::string> names;
+      std::istringstream all(fap_flavour_names());
+      for (std::string name; std::getline(all, name, '|');) names.push_back(name);
+      args.fail("--fap-flavour takes " + fap_flavour_names() + ", not '" + *flavour + "'" + did_you_mean(*flavour, names));
+    }
     options.fap_flavour = known.value_or(FapFlavour::safe);
   }
   for (const std::string& event : args.values("event")) {

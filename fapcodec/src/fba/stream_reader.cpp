@@ -98,7 +98,7 @@ void StreamReader::set_frame_rate(double rate) {
     info.frame_rate = rate;
     info.frame_rate_sent = true;
   } else if (rate != info.frame_rate && !rate_change_warned_) {
-    out_.warnings.push_back(make_warning(Location::binary(c_.file, c_.in.byte_offset()),
+    out_.warnings.push_back(make_warning({"fba.frame_rate_change"}, Location::binary(c_.file, c_.in.byte_offset()),
                                          "the frame rate changes to " + std::to_string(rate) +
                                              "; frames keep counting at the first rate"));
     rate_change_warned_ = true;
@@ -176,7 +176,7 @@ Status StreamReader::read_plane() {
   }
   if (object_mask & kObjectMaskBody) {
     if (!body_warned_) {
-      out_.warnings.push_back(make_warning(Location::binary(c_.file, start_byte),
+      out_.warnings.push_back(make_warning({"fba.body_ignored"}, Location::binary(c_.file, start_byte),
                                            "body animation (BAP) data is parsed and ignored: fapc handles faces only"));
       body_warned_ = true;
     }
@@ -230,15 +230,15 @@ Result<DecodedFba> StreamReader::run() {
     if (auto status = read_plane(); !status) return explain(status.error());
   }
   if (!c_.in.at_end())
-    out_.warnings.push_back(make_warning(Location::binary(c_.file, c_.in.byte_offset()),
+    out_.warnings.push_back(make_warning({"fba.trailing_bytes"}, Location::binary(c_.file, c_.in.byte_offset()),
                                          std::to_string(c_.in.size_bits() / 8 - static_cast<std::size_t>(c_.in.byte_offset())) +
                                              " bytes after the end code are ignored"));
   FbaStreamInfo& info = out_.info;
   if (!info.frame_rate_sent && !out_.sequence.frames.empty())
-    out_.warnings.push_back(make_warning(Location::binary(c_.file, 0), "the stream never gives its frame rate; assuming 30 frames per second"));
+    out_.warnings.push_back(make_warning({"fba.no_frame_rate"}, Location::binary(c_.file, 0), "the stream never gives its frame rate; assuming 30 frames per second"));
   out_.sequence.fps = static_cast<int>(std::lround(info.frame_rate));
   if (std::abs(info.frame_rate - out_.sequence.fps) > 1e-9)
-    out_.warnings.push_back(make_warning(Location::binary(c_.file, 0), "frame rate " + std::to_string(info.frame_rate) +
+    out_.warnings.push_back(make_warning({"fba.frame_rate_rounded"}, Location::binary(c_.file, 0), "frame rate " + std::to_string(info.frame_rate) +
                                                                          " rounded to " + std::to_string(out_.sequence.fps)));
   return std::move(out_);
 }

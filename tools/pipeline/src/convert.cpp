@@ -1,7 +1,9 @@
 #include "fapc/pipeline/convert.hpp"
 
 #include <algorithm>
+#include <filesystem>
 
+#include "fapc/codec/did_you_mean.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "streamed_convert.hpp"
 
@@ -10,10 +12,20 @@ namespace fapc::pipeline {
 Result<const OutputFormat*> writer_for(const OutputRequest& request) {
   const OutputFormat* writer =
       request.kind.empty() ? formats().output_for(request.path) : formats().output_named(request.kind);
-  if (!writer)
+  if (writer) return writer;
+  std::vector<std::string> kinds, extensions;
+  for (const OutputFormat& f : formats().outputs()) {
+    kinds.push_back(f.kind);
+    extensions.insert(extensions.end(), f.extensions.begin(), f.extensions.end());
+  }
+  if (!request.kind.empty())
     return make_error(ErrorKind::unsupported, Location{request.path, 0, 0, -1},
-                      "unknown output kind (expected .fap, .fap.gz, .fba, .mp4, .xmt, .json, .svg, .pdf, .csv, .png, .webm or .html)");
-  return writer;
+                      "unknown output kind '" + request.kind + "'" + did_you_mean(request.kind, kinds) +
+                          " (fapc formats lists them)");
+  const std::string extension = std::filesystem::path(request.path).extension().string();
+  return make_error(ErrorKind::unsupported, Location{request.path, 0, 0, -1},
+                    "unknown output kind (expected .fap, .fap.gz, .fba, .mp4, .xmt, .json, .svg, .pdf, .csv, .png, .webm or .html)" +
+                        (extension.empty() ? std::string() : did_you_mean(extension, extensions)));
 }
 
 Result<std::string> render_output(const Loaded& loaded, const OutputRequest& request, const ConvertOptions& options) {
@@ -27,7 +39,10 @@ namespace {
 // Writes every output, the writers having been found already.
 void write_all(ConvertResult& result, const std::vector<const OutputFormat*>& writers,
                const std::vector<OutputRequest>& outputs, const ConvertOptions& options) {
+  // Progress counts the read (done before this) and each output written.
+  const auto total = static_cast<std::int64_t>(outputs.size()) + 1;
   for (std::size_t i = 0; i < outputs.size(); ++i) {
+    if (options.progress) options.progress("writing " + outputs[i].path, static_cast<std::int64_t>(i) + 1, total);
     auto bytes = writers[i]->write(result.loaded, outputs[i].path, options);
     if (!bytes) {
       result.error = bytes.error();
@@ -43,6 +58,7 @@ void write_all(ConvertResult& result, const std::vector<const OutputFormat*>& wr
     }
     result.written.push_back(outputs[i].path);
   }
+  if (options.progress) options.progress("done", total, total);
 }
 
 // Every writer, or the first unknown kind: a typo in -o should not cost a long compile.
@@ -80,6 +96,7 @@ ConvertResult convert(const std::string& input, const std::vector<OutputRequest>
   if ((result.error = find_writers(outputs, writers))) return result;
   // A long .fap to .fba or .fap goes through without its frames in memory.
   if (auto streamed = convert_streamed(input, outputs, writers, options)) return std::move(*streamed);
+  if (options.progress) options.progress("reading " + input, 0, static_cast<std::int64_t>(outputs.size()) + 1);
   // Curves only when a writer reads them (the curves JSON, the plots): half of a script's compile.
   ConvertOptions load_options = options;
   load_options.curves = std::any_of(writers.begin(), writers.end(), [](const OutputFormat* w) { return w->uses_curves; });

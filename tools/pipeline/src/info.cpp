@@ -52,12 +52,13 @@ nlohmann::ordered_json summarise(const std::string& path, const std::string& kin
 
 }  // namespace
 
-Result<nlohmann::ordered_json> describe(const std::string& path, const Limits& limits) {
-  const InputFormat* format = formats().input_for(path);
-  if (!format) return make_error(ErrorKind::unsupported, Location{path, 0, 0, -1}, "unknown input kind");
+Result<nlohmann::ordered_json> describe(const std::string& path, const Limits& limits, const std::string& kind) {
   ConvertOptions options;
   options.facts = true;  // the format's facts come from this one read
   options.limits = limits;
+  options.input_kind = kind;
+  const InputFormat* format = reader_for(path, options);
+  if (!format) return unknown_input_kind(path, options);
   const ReadingInput reading(path, options);  // for its includes, as load() would
   auto loaded = format->load(path, reading.options());
   if (!loaded) return loaded.error();

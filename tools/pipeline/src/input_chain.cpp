@@ -28,6 +28,7 @@ std::filesystem::path resolved_path(const std::string& path) {
 }  // namespace
 
 ReadingInput::ReadingInput(const std::string& path, const ConvertOptions& options) : options_(options) {
+  options_.input_kind.clear();  // --from names the top input's kind, not its includes'
   IncludePolicy& includes = options_.includes;
   if (reading_chain.empty()) {
     const std::string own = includes.base_folder.empty()

@@ -1,5 +1,8 @@
 #include "fapc/pipeline/registry.hpp"
 
+#include <filesystem>
+
+#include "fapc/codec/did_you_mean.hpp"
 #include "formats/formats.hpp"
 #include "input_chain.hpp"
 
@@ -29,29 +32,52 @@ const Format* by_kind(const std::vector<Format>& table, const std::string& kind)
 
 // The one list of built-in formats. Order matters only between entries sharing an extension:
 // the longer one wins (".bifs.xmt" before ".xmt"), whatever its place.
+// What `fapc formats` says of each: what it carries and the options (as the command line names
+// them, without "--") that change how it is read or written.
+template <class Format>
+Format described(Format format, std::string carries, std::vector<std::string> options) {
+  format.carries = std::move(carries);
+  format.options = std::move(options);
+  return format;
+}
+
+const std::vector<std::string> kScriptOptions = {"fps", "profile", "duration", "allow-include", "max-runs",
+                                                 "max-expansion", "max-frames"};
+
 Registry built_in() {
   Registry r;
-  r.add(builtin::fap_input());
-  r.add(builtin::fba_input());
-  r.add(builtin::mp4_input());
-  r.add(builtin::mimic_input());
-  r.add(builtin::fml_input());
-  r.add(builtin::xmto_input());
-  r.add(builtin::combine_input());
-  r.add(builtin::fap_output());
-  r.add(builtin::fba_output());
-  r.add(builtin::mp4_output());
-  r.add(builtin::xmta_scene_output());
-  r.add(builtin::xmta_commands_output());
-  r.add(builtin::curves_json_output());
-  r.add(builtin::svg_output());
-  r.add(builtin::pdf_output());
-  r.add(builtin::csv_output());
-  r.add(builtin::timeline_output());
-  r.add(builtin::png_output());
-  r.add(builtin::webm_output());
-  r.add(builtin::html_output());
-  r.add(builtin::wav_output());
+  r.add(described(builtin::fap_input(), "frames of FAP values as text (every known flavour; gzip too)",
+                  {"max-frames", "max-decompressed-bytes"}));
+  r.add(described(builtin::fba_input(), "a raw MPEG-4 FBA elementary stream (gzip too)",
+                  {"max-frames", "max-decompressed-bytes"}));
+  r.add(described(builtin::mp4_input(), "an MPEG-4 file's FBA track", {"max-frames"}));
+  r.add(described(builtin::mimic_input(), "a Mimic script: timed actions on animation parameters", kScriptOptions));
+  r.add(described(builtin::fml_input(), "an FML document: events, excl/par/seq/repeat, talk text", [] {
+                    auto options = kScriptOptions;
+                    options.insert(options.end(), {"event", "speech-rate"});
+                    return options;
+                  }()));
+  r.add(described(builtin::xmto_input(), "an XMT-Omega document animating FAPs (XMT-A is an output)", kScriptOptions));
+  r.add(described(builtin::combine_input(), "an Algebra of Expressions over other inputs (docs/algebra.md)",
+                  kScriptOptions));
+  r.add(described(builtin::fap_output(), "frames of FAP values as text (.fap.gz compressed)", {"fap-flavour"}));
+  r.add(described(builtin::fba_output(), "a raw MPEG-4 FBA elementary stream",
+                  {"quant", "intra-period", "ranges", "masks", "verify"}));
+  r.add(described(builtin::mp4_output(), "an MPEG-4 file with a scene and the FBA track",
+                  {"quant", "intra-period", "ranges", "masks", "verify"}));
+  r.add(described(builtin::xmta_scene_output(), "an XMT-A scene that plays the FBA stream beside it",
+                  {"quant", "intra-period", "ranges", "masks"}));
+  r.add(described(builtin::xmta_commands_output(), "XMT-A BIFS commands setting the FAPs frame by frame", {}));
+  r.add(described(builtin::curves_json_output(), "the curves (time-value lists) of each target, as JSON", {}));
+  r.add(described(builtin::svg_output(), "a plot of the curves, one panel per target", {}));
+  r.add(described(builtin::pdf_output(), "the same plot as a PDF page", {}));
+  r.add(described(builtin::csv_output(), "the curves and frames as comma-separated values", {}));
+  r.add(described(builtin::timeline_output(), "the timeline of a script as text, for tests and debugging", {}));
+  r.add(described(builtin::png_output(), "a picture of the face: one frame or a contact sheet",
+                  {"size", "frame", "time", "sheet", "points"}));
+  r.add(described(builtin::webm_output(), "a VP9 video of the face", {"size", "frame-rate"}));
+  r.add(described(builtin::html_output(), "a page that plays the face in a browser", {"size", "frame-rate"}));
+  r.add(described(builtin::wav_output(), "the voice (speech or a recording) as 16-bit PCM WAV", {"voice", "speech-rate"}));
   return r;
 }
 
@@ -67,11 +93,29 @@ const Registry& formats() {
   return registry;
 }
 
+const InputFormat* reader_for(const std::string& path, const ConvertOptions& options) {
+  return options.input_kind.empty() ? formats().input_for(path) : formats().input_named(options.input_kind);
+}
+
+Diagnostic unknown_input_kind(const std::string& path, const ConvertOptions& options) {
+  std::vector<std::string> kinds, extensions;
+  for (const InputFormat& f : formats().inputs()) {
+    kinds.push_back(f.kind);
+    extensions.insert(extensions.end(), f.extensions.begin(), f.extensions.end());
+  }
+  if (!options.input_kind.empty())
+    return make_error(ErrorKind::usage, Location{path, 0, 0, -1},
+                      "unknown input kind '" + options.input_kind + "'" + did_you_mean(options.input_kind, kinds) +
+                          " (fapc formats lists them)");
+  const std::string extension = std::filesystem::path(path).extension().string();
+  return make_error(ErrorKind::unsupported, Location{path, 0, 0, -1},
+                    "unknown input kind (expected .fap, .fap.gz, .fba, .mp4, .mimic, .fml or .xmt)" +
+                        (extension.empty() ? std::string() : did_you_mean(extension, extensions)));
+}
+
 Result<Loaded> load(const std::string& path, const ConvertOptions& options) {
-  const InputFormat* format = formats().input_for(path);
-  if (!format)
-    return make_error(ErrorKind::unsupported, Location{path, 0, 0, -1},
-                      "unknown input kind (expected .fap, .fap.gz, .fba, .mp4, .mimic, .fml or .xmt)");
+  const InputFormat* format = reader_for(path, options);
+  if (!format) return unknown_input_kind(path, options);
   const ReadingInput reading(path, options);
   Result<Loaded> loaded = format->load(path, reading.options());
   if (loaded) loaded->origin = path;

@@ -205,7 +205,7 @@ VerifyResult verify_input(const std::string& path, const ConvertOptions& options
 }  // namespace
 
 VerifyResult verify(const std::string& path, const ConvertOptions& options) {
-  const InputFormat* format = formats().input_for(path);
+  const InputFormat* format = reader_for(path, options);
   const std::string kind = format ? format->kind : "";
   if (kind == "fba") return verify_stream(path, options.limits);
   if (kind == "mp4") return verify_mp4(path, options.limits);

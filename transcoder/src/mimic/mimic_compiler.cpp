@@ -410,7 +410,7 @@ class Compiler {
           const double fap_value = written * target.factor * c.scale;
           if (fap_value >= low && fap_value <= high) continue;
           warnings_.push_back(make_warning(
-              location(n->at),
+              {"mimic.out_of_range"}, location(n->at),
               "value " + format_number(n->value) + " of '" + target.name + "' is " +
                   format_number(fap_value) + " in " + std::string(find_fap(c.fap)->name) +
                   " units, outside " + std::to_string(low) + ".." + std::to_string(high) +

@@ -113,7 +113,7 @@ class FrameRenderer {
       std::ostringstream message;
       message << what << " of '" << clip.target << "' reaches " << rounded << " at " << t
               << " s, outside " << low << ".." << high << "; clamped";
-      warnings_.push_back(make_warning(clip.source, message.str()));
+      warnings_.push_back(make_warning({"render.clamped"}, clip.source, message.str()));
     }
     return static_cast<int>(std::clamp(rounded, double(low), double(high)));
   }

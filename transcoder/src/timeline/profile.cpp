@@ -114,23 +114,16 @@ std::vector<FapContribution> resolve_target(std::string_view target, const Profi
 }
 
 std::string unknown_parameter_message(std::string_view name, const Profile& profile) {
-  std::vector<std::pair<std::size_t, std::string>> candidates;
-  for (const auto& [parameter, contributions] : profile.parameters) {
-    candidates.emplace_back(edit_distance(name, parameter), parameter);
-  }
-  for (const std::string_view fap : closest_fap_names(name, 5)) {
+  std::vector<std::string> candidates;
+  for (const auto& [parameter, contributions] : profile.parameters) candidates.push_back(parameter);
+  for (const FapInfo& fap : fap_table()) {
     // FAP 1 and 2 are reached through viseme.<name> / expression.<name>, not by their own names.
-    if (fap == "viseme" || fap == "expression") continue;
-    candidates.emplace_back(edit_distance(name, fap), std::string(fap));
+    if (fap.number > 2) candidates.emplace_back(fap.name);
   }
-  std::stable_sort(candidates.begin(), candidates.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  const std::vector<std::string> best = closest_names(name, candidates, 3);
   std::string message = "unknown animation parameter '" + std::string(name) + "'";
-  const std::size_t shown = std::min<std::size_t>(3, candidates.size());
-  for (std::size_t i = 0; i < shown; ++i) {
-    message += (i == 0 ? "; did you mean " : ", ") + candidates[i].second;
-  }
-  return message + (shown > 0 ? "?" : "");
+  for (std::size_t i = 0; i < best.size(); ++i) message += (i == 0 ? "; did you mean " : ", ") + best[i];
+  return message + (best.empty() ? "" : "?");
 }
 
 }  // namespace fapc

@@ -361,7 +361,7 @@ class Mp4Parser {
     return box_error(file_, offset, message);
   }
   void warn(std::uint64_t offset, const std::string& message) {
-    out_.warnings.push_back(make_warning(Location::binary(file_, static_cast<std::int64_t>(offset)), message));
+    out_.warnings.push_back(make_warning({"mp4.ignored"}, Location::binary(file_, static_cast<std::int64_t>(offset)), message));
   }
 
   Mp4File& out_;

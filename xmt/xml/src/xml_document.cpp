@@ -31,7 +31,7 @@ void collect_error(void* user_data, xmlErrorPtr error) {
   const Location where = Location::text(report->file, std::max(0, error->line), std::max(0, error->int2));
   const std::string message = trimmed_message(error->message);
   if (error->level == XML_ERR_WARNING) {
-    report->warnings.push_back(make_warning(where, "XML: " + message));
+    report->warnings.push_back(make_warning({"xml.parser"}, where, "XML: " + message));
   } else if (!report->first_error) {
     const char* kind = error->domain == XML_FROM_NAMESPACE ? "XML namespace error: " : "not well-formed XML: ";
     report->first_error = make_error(where, kind + message);

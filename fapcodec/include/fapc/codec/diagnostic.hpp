@@ -50,6 +50,14 @@ struct Diagnostic {
   // The source line the diagnostic points into, when there is one, so a caret can be drawn.
   std::string source_line;
   ErrorKind kind = ErrorKind::bad_input;  // meaningful for errors; warnings keep the default
+  // What sort of warning this is, as a stable dotted name ("mimic.value_clamped"): the command
+  // line counts repeated warnings by it (never by their wording). Empty for errors.
+  std::string code{};
+};
+
+// A warning's code, a type of its own so that it cannot be mistaken for a message.
+struct WarningCode {
+  const char* name;
 };
 
 using Diagnostics = std::vector<Diagnostic>;
@@ -61,17 +69,35 @@ std::string format_diagnostic(const Diagnostic& d);
 // format_diagnostic plus, when the source line is known, the line and a caret under the column.
 std::string render_with_caret(const Diagnostic& d);
 
+// Built field by field: Diagnostic grows fields (code) that most diagnostics leave empty.
+inline Diagnostic make_diagnostic(Severity severity, ErrorKind kind, Location where, std::string message,
+                                  std::string source_line, const char* code) {
+  Diagnostic d;
+  d.severity = severity;
+  d.where = std::move(where);
+  d.message = std::move(message);
+  d.source_line = std::move(source_line);
+  d.kind = kind;
+  d.code = code;
+  return d;
+}
 inline Diagnostic make_error(Location where, std::string message, std::string source_line = {}) {
-  return Diagnostic{Severity::error, std::move(where), std::move(message), std::move(source_line)};
+  return make_diagnostic(Severity::error, ErrorKind::bad_input, std::move(where), std::move(message),
+                         std::move(source_line), "");
 }
 inline Diagnostic make_error(ErrorKind kind, Location where, std::string message,
                              std::string source_line = {}) {
-  return Diagnostic{Severity::error, std::move(where), std::move(message), std::move(source_line),
-                    kind};
+  return make_diagnostic(Severity::error, kind, std::move(where), std::move(message), std::move(source_line), "");
 }
+// A warning without a code is always shown (never counted with others).
 inline Diagnostic make_warning(Location where, std::string message, std::string source_line = {}) {
-  return Diagnostic{Severity::warning, std::move(where), std::move(message),
-                    std::move(source_line)};
+  return make_diagnostic(Severity::warning, ErrorKind::bad_input, std::move(where), std::move(message),
+                         std::move(source_line), "");
+}
+inline Diagnostic make_warning(WarningCode code, Location where, std::string message,
+                               std::string source_line = {}) {
+  return make_diagnostic(Severity::warning, ErrorKind::bad_input, std::move(where), std::move(message),
+                         std::move(source_line), code.name);
 }
 
 // A value or the error that prevented it. Warnings travel beside the value where a reader

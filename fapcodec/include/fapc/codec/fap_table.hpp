@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "fapc/codec/did_you_mean.hpp"  // edit_distance, closest_names
+
 namespace fapc {
 
 inline constexpr int kFapCount = 68;
@@ -49,9 +51,6 @@ const FapInfo* find_fap(int number);
 const FapInfo* find_fap(std::string_view name);
 // Accepts "open_jaw", "3", "fap3" and "FAP3": the forms users type.
 const FapInfo* find_fap_by_name_or_number(std::string_view text);
-
-// Levenshtein distance: how "did you mean" messages rank candidate names.
-std::size_t edit_distance(std::string_view a, std::string_view b);
 
 // The standard names closest to `name` (edit distance), best first, for "did you mean" messages.
 std::vector<std::string_view> closest_fap_names(std::string_view name, std::size_t how_many = 3);

@@ -330,7 +330,7 @@ class FmlReader {
   void check_given_events() {
     for (const auto& [name, value] : options_.events) {
       if (!events_.count(name)) {
-        result_.warnings.push_back(make_warning(Location{doc_.file(), 0, 0, -1},
+        result_.warnings.push_back(make_warning({"fml.unused_event"}, Location{doc_.file(), 0, 0, -1},
                                                 "--event " + name + " is not declared in the model; it is unused"));
       }
     }

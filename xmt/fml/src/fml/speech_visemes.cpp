@@ -179,7 +179,7 @@ Result<Speech> visemes_from_pho(std::string_view text, const std::string& file_n
     int viseme = viseme_of_phoneme(phoneme);
     if (viseme < 0) {
       if (unknown.insert(std::string(phoneme)).second) {
-        warnings.push_back(make_warning(Location::text(file_name, line_number, column(phoneme)),
+        warnings.push_back(make_warning({"fml.phoneme_silence"}, Location::text(file_name, line_number, column(phoneme)),
                                         "phoneme '" + std::string(phoneme) +
                                             "' has no MPEG-4 viseme and is treated as silence",
                                         std::string(line)));

@@ -14,7 +14,9 @@ namespace fapc::pipeline {
 // {"schema_version", "file", "kind", "name", "fps", "frames", "duration", "faps_used", "faps":
 // [{number, name, unit, min, max, frames}], "format": {...facts}, "warnings": [diagnostics]}:
 // the `info --json` document of docs/json.md.
-// `limits`: the resource limits of the read (docs/security.md).
-Result<nlohmann::ordered_json> describe(const std::string& path, const Limits& limits = {});
+// `limits`: the resource limits of the read (docs/security.md); `kind`: the input's kind whatever
+// its name (--from), empty: from the extension.
+Result<nlohmann::ordered_json> describe(const std::string& path, const Limits& limits = {},
+                                        const std::string& kind = {});
 
 }  // namespace fapc::pipeline

@@ -2,9 +2,11 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/codec/include_policy.hpp"
@@ -23,8 +25,16 @@ struct PictureSettings {
   bool points = false;                // .png: the feature points marked and numbered
 };
 
+// How far a long job is: `done` of `total` steps of `stage` ("writing x.webm"). Called on the
+// thread doing the work; the library never prints, the program decides what to show.
+using ProgressFn = std::function<void(std::string_view stage, std::int64_t done, std::int64_t total)>;
+
 struct ConvertOptions {
   int fps = 25;
+  // --from: the kind of the top input whatever its name (standard input has none); empty: from the
+  // extension. Inputs it includes never inherit it.
+  std::string input_kind;
+  ProgressFn progress;  // empty: nobody is told
   PictureSettings picture;                    // the face outputs
   std::optional<std::string> profile;         // a profile file; empty: the default profile
   std::optional<double> duration;             // the end of timelines that give none

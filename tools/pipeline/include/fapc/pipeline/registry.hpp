@@ -17,6 +17,8 @@ struct InputFormat {
   std::string kind;                     // "fap", "fba", "mimic", ...
   std::vector<std::string> extensions;  // ".fap", ".fap.gz"
   std::function<Result<Loaded>(const std::string& path, const ConvertOptions&)> load;
+  std::string carries{};                // what a file of this kind holds, for `fapc formats`
+  std::vector<std::string> options{};   // the command-line options that change how it is read
 };
 
 struct OutputFormat {
@@ -27,6 +29,8 @@ struct OutputFormat {
   // The writer reads Loaded::curves (a script's own curves): convert() has them computed only
   // when some output does (ConvertOptions::curves).
   bool uses_curves = false;
+  std::string carries{};               // what a file of this kind holds, for `fapc formats`
+  std::vector<std::string> options{};  // the command-line options that change what is written
 };
 
 class Registry {
@@ -51,7 +55,14 @@ class Registry {
 // Every built-in reader and writer. Built on first use; safe to share between threads.
 const Registry& formats();
 
-// Loads any input the built-in readers know (by extension), or says why not (unsupported for an
+// The reader of a top input: options.input_kind's when given, else the one its extension names;
+// null if none.
+const InputFormat* reader_for(const std::string& path, const ConvertOptions& options);
+
+// "unknown input kind 'fbx'; did you mean fba?" or, by extension, the kinds expected.
+Diagnostic unknown_input_kind(const std::string& path, const ConvertOptions& options);
+
+// Loads any input the built-in readers know (by --from or extension), or says why not (unsupported for an
 // unknown extension). Includes and operands inside inputs are loaded through this too.
 Result<Loaded> load(const std::string& path, const ConvertOptions& options);
 

@@ -1,0 +1,185 @@
+#include "fapc/cli_spec.hpp"
+
+#include <algorithm>
+
+namespace fapc::cli {
+
+namespace {
+
+// The subcommands that take the conversion options (docs/cli.md): they load an input and write
+// one or more outputs.
+#define FAPC_CONVERTERS "compile render plot combine batch"
+// Every subcommand that reads inputs (and so takes the resource limits).
+#define FAPC_READERS FAPC_CONVERTERS " encode decode verify info"
+
+using VC = ValueCompletion;
+
+const std::vector<CommandSpec> kCommands = {
+    {"compile", "INPUT -o OUTPUT", "convert any input to any output (the kinds come from the extensions)",
+     "Loads INPUT (a Mimic, FML, XMT or .combine script, a .fap, .fba or .mp4 file) and writes it as "
+     "OUTPUT, whose kind comes from its extension or --to: .fap, .fba, .mp4, .xmt, .json curves, "
+     ".svg plot, .png/.webm/.html face, .timeline dump. `fapc formats` lists them all."},
+    {"encode", "INPUT -o OUT.fba", "encode frames as a raw MPEG-4 FBA stream, with the encoder's settings in view",
+     "Any input, encoded as an FBA elementary stream with the given quantiser, intra period, ranges and "
+     "masks; with --verify the stream is decoded and checked before it is written."},
+    {"decode", "IN.fba|IN.mp4 -o OUT.fap", "decode an FBA stream or an .mp4's FBA track to frames",
+     "Decodes a .fba stream or the FBA track of an .mp4 and writes the frames, normally as a .fap file."},
+    {"verify", "FILE...", "check that files decode and re-encode to the same bytes",
+     "A .fba or .mp4 decodes and encodes again to the same bytes; any other input encodes, decodes within "
+     "half a quantiser step and re-encodes identically. Exit status 3 when a check fails."},
+    {"info", "FILE", "say what a file holds: kind, frames, fps, the FAPs used and their ranges",
+     "One read of FILE: its kind, frame count, frame rate, duration, the FAPs it uses with their ranges, "
+     "what the reader saw of the format, and its warnings."},
+    {"combine", "EXPRESSION -o OUTPUT", "evaluate an Algebra of Expressions over files (docs/algebra.md)",
+     "Evaluates EXPRESSION (quote it) over facial states (.xpr) and animations (any input) and writes "
+     "the result; with --states, prints one state as 66 integers instead."},
+    {"plot", "INPUT -o OUT.svg|OUT.png|OUT.pdf|OUT.csv", "draw the curves of an input, one panel per parameter",
+     "The input's curves (a script's own, or the frames') as a figure (SVG, PNG or PDF) or a .csv of curves "
+     "and frames; with --per-clip every clip's own curve too, labelled by its source line."},
+    {"render", "INPUT -o OUT.png|OUT.webm|OUT.html", "show any input as a face: a picture, a video or a preview page",
+     "Draws the face the input animates (docs/render.md): one frame or a contact sheet as .png, a .webm "
+     "video, or an .html page that plays it."},
+    {"validate", "FILE...", "check XML documents against the project's schemas",
+     "The root element of each file picks the schema (FML, XMT-Omega, XMT-A...); problems go to standard "
+     "error with line and column. Exit status 1 when a file has an error."},
+    {"batch", "INPUT... -o DIR", "convert many files and folders into a folder, in parallel",
+     "Every supported file under the inputs becomes one output per kind in --to, mirroring the input tree "
+     "under DIR; a summary line per input, then the counts. A progress bar on a terminal."},
+    {"formats", "", "list every input and output kind: extensions, what it carries, which options apply",
+     "The pipeline's reader and writer tables as a table (or JSON with --json)."},
+    {"faps", "", "list the 68 MPEG-4 face animation parameters",
+     "Number, name, unit (FAPU), group, direction, legal range and quantiser step of every FAP, from the "
+     "codec's table (or JSON with --json)."},
+    {"help", "[COMMAND]", "show the help of fapc or of one subcommand",
+     "Without COMMAND, the list of subcommands; with one, its options. The other forms print what "
+     "packagers install: the man page, the shell completions, the option tables of docs/cli.md."},
+};
+
+const std::vector<OptionSpec> kOptions = {
+    // Every subcommand.
+    {"help", 'h', "", "show this subcommand's help and exit", "*"},
+    {"quiet", 'q', "", "print errors only: no warnings, no summaries of warnings, no progress", "*"},
+    {"verbose", 'v', "", "also say what is read and written, with timings", "*"},
+    // Inputs and outputs.
+    {"output", 'o', "FILE", "where the result goes; - is standard output (give --to); a folder for batch",
+     "compile encode decode combine plot render batch", false, VC::file},
+    {"from", 0, "KIND", "read the input as this kind whatever its name; needed for - (standard input)",
+     "compile encode decode verify info plot render", false, VC::input_kinds},
+    {"to", 0, "KIND", "write this output kind whatever the output's name; needed for -o -; batch takes a "
+     "comma-separated list (default fap)",
+     "compile decode combine plot render batch", false, VC::output_kinds},
+    // Scripts.
+    {"fps", 0, "N", "frames per second of the frames made from a script (default 25)", FAPC_CONVERTERS},
+    {"profile", 0, "FILE", "the profile that maps script targets to FAPs (docs/profiles.md)", FAPC_CONVERTERS,
+     false, VC::file},
+    {"event", 0, "NAME=VALUE", "set an FML event (excl branches, loops; docs/fml.md)", FAPC_CONVERTERS, true},
+    {"duration", 0, "S", "end what the source leaves open (indefinite repeats) after S seconds",
+     FAPC_CONVERTERS},
+    {"speech-rate", 0, "N", "words per minute of FML talk speech, 80 to 450 (default 175; docs/speech.md)",
+     FAPC_CONVERTERS},
+    {"voice", 0, "LANG[+VARIANT]", "the speech engine's voice for FML talk text without its own (docs/speech.md)",
+     FAPC_CONVERTERS},
+    {"allow-include", 0, "DIR", "a folder includes may read besides the input's own tree (docs/security.md)",
+     FAPC_CONVERTERS, true, VC::folder},
+    {"strict", 0, "", "treat every warning as an error; nothing is written", FAPC_CONVERTERS " decode"},
+    {"fap-flavour", 0, "F", "the .fap layout of one player family (docs/fap-files.md, \"Flavours\")",
+     FAPC_CONVERTERS " decode", false, VC::fap_flavours},
+    // The FBA encoder.
+    {"quant", 0, "Q", "fap_quant of .fba/.mp4 outputs, 0 (lossless) to 31 (default 1)",
+     FAPC_CONVERTERS " encode verify"},
+    {"intra-period", 0, "N", "frames between intra frames; 0 lets the encoder decide",
+     FAPC_CONVERTERS " encode verify"},
+    {"ranges", 0, "fit|max", "quantiser ranges fitted to the frames or the largest", FAPC_CONVERTERS " encode verify",
+     false, VC::words, "fit max"},
+    {"masks", 0, "fit|keep", "FAP masks fitted to the values used or kept as the input gives them",
+     FAPC_CONVERTERS " encode verify", false, VC::words, "fit keep"},
+    {"verify", 0, "", "decode every encoded stream and check it before writing", FAPC_CONVERTERS " encode"},
+    {"align-planes", 0, "", "start each plane on a byte boundary with a start code (MP4 samples)", "encode"},
+    // The face outputs.
+    {"size", 0, "WxH", "picture size of .png/.webm/.html outputs (default 640x480)", FAPC_CONVERTERS},
+    {"frame-rate", 0, "N", "frames per second of a .webm (default: the input's)", FAPC_CONVERTERS},
+    {"frame", 0, "K", "the frame a .png shows (combine --states: the frame printed)", FAPC_CONVERTERS},
+    {"time", 0, "T", "the time (seconds) of the frame a .png shows", FAPC_CONVERTERS},
+    {"sheet", 0, "N", "a .png contact sheet of N frames", FAPC_CONVERTERS},
+    {"points", 0, "", "mark and number the feature points on a .png", FAPC_CONVERTERS},
+    // One subcommand each.
+    {"per-clip", 0, "", "draw every clip's own curve under the blended one", "plot"},
+    {"faps", 0, "LIST", "the FAPs or groups to draw (lips,jaw,3-18,open_jaw)", "plot"},
+    {"overlay", 0, "", "draw the chosen curves in one panel with a legend", "plot"},
+    {"title", 0, "TEXT", "the figure's title (default: the input's name)", "plot"},
+    {"states", 0, "", "print one state of the result as 66 integers instead of writing it", "combine"},
+    {"jobs", 'j', "N", "conversions at a time (default one per core)", "batch"},
+    {"report", 0, "FILE", "write a JUnit XML report of the inputs that ran", "batch", false, VC::file},
+    {"report-json", 0, "FILE", "write a JSON report of the inputs that ran (docs/json.md)", "batch", false, VC::file},
+    {"keep-going", 0, "", "try every input even after a failure", "batch"},
+    {"json", 0, "", "print the results as JSON on standard output", "verify info formats faps"},
+    {"man", 0, "", "print the man page (roff)", "help"},
+    {"bash-completion", 0, "", "print the bash completion script", "help"},
+    {"zsh-completion", 0, "", "print the zsh completion script", "help"},
+    {"markdown", 0, "", "print the command and option tables of docs/cli.md", "help"},
+    // The resource limits (docs/security.md).
+    {"max-frames", 0, "N", "refuse inputs of more frames (default 1048576)", FAPC_READERS},
+    {"max-runs", 0, "N", "refuse inputs of more runs or clips (default 1000000)", FAPC_READERS},
+    {"max-decompressed-bytes", 0, "N", "refuse compressed inputs that inflate to more bytes (default 2^30)",
+     FAPC_READERS},
+    {"max-expansion", 0, "F", "refuse scripts that expand more than F times (default 100)", FAPC_READERS},
+};
+
+#undef FAPC_READERS
+#undef FAPC_CONVERTERS
+
+}  // namespace
+
+bool OptionSpec::applies_to(std::string_view command) const {
+  if (commands == "*") return true;
+  std::string_view rest = commands;
+  while (!rest.empty()) {
+    const std::size_t space = rest.find(' ');
+    if (rest.substr(0, space) == command) return true;
+    if (space == std::string_view::npos) break;
+    rest.remove_prefix(space + 1);
+  }
+  return false;
+}
+
+std::string OptionSpec::label() const {
+  std::string text = short_name ? std::string("-") + short_name + ", --" : "--";
+  text += name;
+  if (takes_value()) text += " " + std::string(value_name);
+  return text;
+}
+
+const std::vector<OptionSpec>& option_specs() { return kOptions; }
+const std::vector<CommandSpec>& command_specs() { return kCommands; }
+
+const CommandSpec* find_command_spec(std::string_view name) {
+  const auto it = std::find_if(kCommands.begin(), kCommands.end(), [&](const CommandSpec& c) { return c.name == name; });
+  return it == kCommands.end() ? nullptr : &*it;
+}
+
+std::vector<const OptionSpec*> options_of(std::string_view command) {
+  std::vector<const OptionSpec*> out;
+  for (const OptionSpec& o : kOptions)
+    if (o.applies_to(command)) out.push_back(&o);
+  return out;
+}
+
+const OptionSpec* find_option(std::string_view name) {
+  for (const OptionSpec& o : kOptions)
+    if (o.name == name) return &o;
+  return nullptr;
+}
+
+const OptionSpec* find_short_option(char name) {
+  for (const OptionSpec& o : kOptions)
+    if (name != 0 && o.short_name == name) return &o;
+  return nullptr;
+}
+
+std::string usage_line(const CommandSpec& command) {
+  std::string line = "fapc " + std::string(command.name);
+  if (!command.operands.empty()) line += " " + std::string(command.operands);
+  return line + " [options]";
+}
+
+}  // namespace fapc::cli
