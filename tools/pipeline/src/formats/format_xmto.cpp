@@ -53,6 +53,7 @@ Result<xmt::XmtoDocument> read_document(const std::string& path, const ConvertOp
   xmto.duration = options.duration;
   xmto.max_runs = options.limits.max_runs;
   xmto.fml.max_runs = options.limits.max_runs;
+  xmto.max_audio_bytes = options.limits.max_decompressed_bytes;
   xmto.load_animation = [&options](const std::string& included, const Location& where) {
     return load_animation(included, where, options);
   };

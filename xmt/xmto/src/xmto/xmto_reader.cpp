@@ -12,6 +12,7 @@
 #include "fapc/xml/xml_document.hpp"
 #include "xmto/animation_function.hpp"
 #include "xmto/animation_include.hpp"
+#include "xmto/audio_element.hpp"
 #include "xmto/attribute_target.hpp"
 #include "fapc/xml/once_per_name.hpp"
 #include "xmto/run_budget.hpp"
@@ -190,7 +191,7 @@ class DocumentReader {
     }
     const std::string_view name = xml::local_name(node);
     const bool group = name == "par" || name == "seq" || name == "excl" || name == "body";
-    if (!group && name != "animate" && name != "set" && name != "animation") {
+    if (!group && name != "animate" && name != "set" && name != "animation" && name != "audio") {
       unsupported(node);
       return std::nullopt;
     }
@@ -203,6 +204,7 @@ class DocumentReader {
     const Fill fill = timing->effective_fill(inherited);
     if (group) return time_container(node, *timing, fill, budget.inside(*timing, std::nullopt));
     if (name == "animation") return animation(node, *timing, fill, budget);
+    if (name == "audio") return audio(node, *timing, budget);
     return animate_or_set(node, *timing, fill, budget);
   }
 
@@ -370,6 +372,27 @@ class DocumentReader {
     const double clips_per_run = std::max<double>(1, static_cast<double>(included->animation.timeline.clips.size()));
     if (!within_budget(node, budget.inside(timing, length).repeats * clips_per_run)) return std::nullopt;
     leaf.included = std::move(included->animation.timeline);
+    return add_leaf(node, std::move(leaf), to_schedule_timing(timing, length));
+  }
+
+  // A recording (and the visemes of the .pho beside it) placed like an included animation whose
+  // length is the recording's (cut by clipEnd); dur, end and repeats act on it as on any element.
+  std::optional<ScheduleNode> audio(const xmlNode* node, const SmilTiming& timing, const RunBudget& budget) {
+    check_attributes(node, kTimingAttributes, {"src", "clipEnd"});
+    check_text(node);
+    Result<Recording> recording = load_recording(doc_, node, options_, result_.warnings);
+    if (!recording) {
+      fail(with_source_line(recording.error()));
+      return std::nullopt;
+    }
+    result_.included.push_back(recording->wav_path);
+    if (recording->pho_path) result_.included.push_back(*recording->pho_path);
+    Leaf leaf;
+    leaf.fill = Fill::remove;  // a recording's mouth closes when it ends, whatever the fill
+    const double length = recording->timeline.end();
+    const double clips_per_run = std::max<double>(1, static_cast<double>(recording->timeline.clips.size()));
+    if (!within_budget(node, budget.inside(timing, length).repeats * clips_per_run)) return std::nullopt;
+    leaf.included = std::move(recording->timeline);
     return add_leaf(node, std::move(leaf), to_schedule_timing(timing, length));
   }
 };

@@ -46,6 +46,9 @@ struct XmtoOptions {
   // Which files `animation src` may name (docs/security.md); by default the document's folder
   // tree. (The FML moves' talk files follow fml.includes.)
   IncludePolicy includes;
+  // The largest file an `audio` element may read (its WAV, the .pho beside it), checked before
+  // reading: Limits::max_decompressed_bytes, --max-decompressed-bytes.
+  std::int64_t max_audio_bytes = Limits{}.max_decompressed_bytes;
   // FML moves written in the document (docs/xmt-omega.md, "FML moves inside XMT-Omega"): event
   // values for repeat, the profile for param, the speech engine and voice for talk.
   FmlOptions fml;
@@ -54,7 +57,7 @@ struct XmtoOptions {
 struct XmtoDocument {
   Timeline timeline;                                      // explicit_end: the body's end
   std::vector<std::pair<std::string, std::string>> meta;  // head/meta name and content
-  std::vector<std::string> included;                      // resolved paths of `animation` inputs
+  std::vector<std::string> included;  // resolved paths of `animation` inputs, `audio` WAV and .pho files
   Diagnostics warnings;
 };
 
