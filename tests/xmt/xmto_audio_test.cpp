@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "fapc/transcoder/wav.hpp"
-#include "test_support.hpp"
+#include "support/test_support.hpp"
 #include "xmto_test_helpers.hpp"
 
 namespace fapc::xmt {

@@ -81,7 +81,7 @@ TEST(XmtoCorpus, UsesEverySupportedElementAndAttribute) {
   for (const char* needle :
        {"<head>", "<meta ", "<body>", "<par", "<seq", "<excl", "<animate ", "<set ", "<animation ",
         " begin=", " dur=", " end=", " repeatCount=", " repeatDur=", " fill=", " attributeName=",
-        " from=", " to=", " by=", " values=", " keyTimes=", "calcMode=\"linear\"",
+        "<audio ", " from=", " to=", " by=", " values=", " keyTimes=", "calcMode=\"linear\"",
         "calcMode=\"discrete\"", "calcMode=\"paced\"", "additive=\"sum\"", "additive=\"replace\"",
         "accumulate=\"sum\"", " src=", " ref=", "viseme.", "expression.", "repeatCount=\"indefinite\""}) {
     EXPECT_NE(all.find(needle), std::string::npos) << needle;
