@@ -54,8 +54,10 @@ TEST(XmtoAudioCommand, TheMp4HasTheFaceAndTheSound) {
   ASSERT_EQ(run.exit_status, 0) << run.err;
   const test::CommandRun info = test::run_fapc("info '" + out + "'");
   ASSERT_EQ(info.exit_status, 0) << info.err;
-  EXPECT_NE(info.out.find("audio"), std::string::npos) << info.out;
-  EXPECT_NE(info.out.find("fba"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("FBA stream"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("audio sample rate: 22050"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("audio start: 1.000"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("viseme"), std::string::npos) << info.out;  // the .pho's visemes
 }
 
 TEST(XmtoAudioCommand, ABadRecordingIsAnErrorAndNoFile) {

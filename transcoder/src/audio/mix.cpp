@@ -63,7 +63,9 @@ Result<std::optional<AudioTrack>> mix_audio(const std::vector<AudioClip>& clips,
   AudioTrack track;
   track.sample_rate = rate;
   track.start = start;
-  const auto length = static_cast<std::size_t>(std::ceil((end - start) * rate));
+  // Less 1e-6 like the cuts above: a clip of n samples moved to 1 s ends at 1 + n/rate, which
+  // times the rate can round to just over n and would add a silent sample.
+  const auto length = static_cast<std::size_t>(std::max(0.0, std::ceil((end - start) * rate - 1e-6)));
   std::vector<double> sum(length, 0.0);
   for (const AudioClip& clip : clips) {
     if (clip.sample_rate <= 0 || clip.samples.empty()) continue;
