@@ -17,14 +17,14 @@ namespace fs = std::filesystem;
 const std::string kRecording = "/xmto/recording.xmt";
 
 AudioClip fixture_wav() {
-  const std::string path = test::corpus_dir() + "/xmto/recording/mama.wav";
-  auto clip = read_wav(test::read_text(path), path);
+  const std::string path = fapc::test::corpus_dir() + "/xmto/recording/mama.wav";
+  auto clip = read_wav(fapc::test::read_text(path), path);
   EXPECT_TRUE(clip.ok());
   return clip.ok() ? *clip : AudioClip{};
 }
 
 TEST(XmtoAudio, TheRecordingIsPlacedAtTheElementsBegin) {
-  const auto doc = load_xmto(test::corpus_dir() + kRecording);
+  const auto doc = load_xmto(fapc::test::corpus_dir() + kRecording);
   ASSERT_TRUE(doc.ok()) << format_diagnostic(doc.error());
   const AudioClip wav = fixture_wav();
   ASSERT_EQ(doc->timeline.audio.size(), 1u);
@@ -33,7 +33,7 @@ TEST(XmtoAudio, TheRecordingIsPlacedAtTheElementsBegin) {
   EXPECT_EQ(placed.sample_rate, wav.sample_rate);
   EXPECT_EQ(placed.samples, wav.samples);
   EXPECT_EQ(placed.source.line, 7);
-  EXPECT_EQ(placed.source.file, test::corpus_dir() + kRecording);
+  EXPECT_EQ(placed.source.file, fapc::test::corpus_dir() + kRecording);
   // The .pho was read and both files are named as the document's inputs.
   ASSERT_EQ(doc->included.size(), 2u);
   EXPECT_TRUE(doc->included[0].ends_with("mama.wav"));
@@ -44,7 +44,7 @@ TEST(XmtoAudio, TheRecordingIsPlacedAtTheElementsBegin) {
 // recording's start, which is 1 s. With the 60 ms cross-fades of docs/speech.md PP (closed lips)
 // is at full weight over [0.04, 0.07] and [0.19, 0.21], and 0 where the a between them is whole.
 TEST(XmtoAudio, ThePhoBesideItGivesVisemesAtItsTimes) {
-  const auto doc = load_xmto(test::corpus_dir() + kRecording);
+  const auto doc = load_xmto(fapc::test::corpus_dir() + kRecording);
   ASSERT_TRUE(doc.ok()) << format_diagnostic(doc.error());
   EXPECT_DOUBLE_EQ(test::value_at(doc->timeline, "viseme.PP", 1.055), 63);
   EXPECT_DOUBLE_EQ(test::value_at(doc->timeline, "viseme.PP", 1.20), 63);
