@@ -45,6 +45,16 @@ Result<std::string> read_bounded(const xml::XmlDocument& doc, const xmlNode* ele
   return bytes;
 }
 
+// `name` through the include rules, refused at the element's src with the line shown.
+Result<std::string> allowed(const xml::XmlDocument& doc, const xmlNode* element, const std::string& name,
+                            const XmtoOptions& options) {
+  Result<std::string> path = resolve_include(name, doc.file(), options.includes, doc.where(element, "src"));
+  if (path) return path;
+  Diagnostic refused = path.error();
+  refused.source_line = doc.line_text(refused.where.line);
+  return refused;
+}
+
 }  // namespace
 
 Result<Recording> load_recording(const xml::XmlDocument& doc, const xmlNode* element,
@@ -57,12 +67,8 @@ Result<Recording> load_recording(const xml::XmlDocument& doc, const xmlNode* ele
   if (name.empty()) return doc.error(element, "src", "src is empty");
   if (name.find("://") != std::string::npos)
     return doc.error(element, "src", "src '" + name + "': only local files can be placed, not URLs");
-  Result<std::string> path = resolve_include(name, doc.file(), options.includes, doc.where(element, "src"));
-  if (!path) {
-    Diagnostic refused = path.error();
-    refused.source_line = doc.line_text(refused.where.line);
-    return refused;
-  }
+  Result<std::string> path = allowed(doc, element, name, options);
+  if (!path) return path.error();
   Result<std::string> bytes = read_bounded(doc, element, name, *path, options);
   if (!bytes) return bytes.error();
   Result<AudioClip> sound = read_wav(*bytes, *path);
@@ -86,12 +92,8 @@ Result<Recording> load_recording(const xml::XmlDocument& doc, const xmlNode* ele
   const std::string pho_name = fs::path(name).replace_extension(".pho").string();
   std::error_code error;
   if (fs::is_regular_file(fs::path(*path).replace_extension(".pho"), error)) {
-    Result<std::string> pho_path = resolve_include(pho_name, doc.file(), options.includes, doc.where(element, "src"));
-    if (!pho_path) {
-      Diagnostic refused = pho_path.error();
-      refused.source_line = doc.line_text(refused.where.line);
-      return refused;
-    }
+    Result<std::string> pho_path = allowed(doc, element, pho_name, options);
+    if (!pho_path) return pho_path.error();
     Result<std::string> text = read_bounded(doc, element, pho_name, *pho_path, options);
     if (!text) return text.error();
     Result<Speech> speech = visemes_from_pho(*text, *pho_path, warnings);
