@@ -18,7 +18,8 @@ const std::vector<CommandSpec> kCommands = {
     {"compile", "INPUT -o OUTPUT", "convert any input to any output (the kinds come from the extensions)",
      "Loads INPUT (a Mimic, FML, XMT or .combine script, a .fap, .fba or .mp4 file) and writes it as "
      "OUTPUT, whose kind comes from its extension or --to: .fap, .fba, .mp4, .xmt, .json curves, "
-     ".svg plot, .png/.webm/.html face, .timeline dump. `fapc formats` lists them all."},
+     ".svg/.pdf plot, .csv frames, .png/.webm/.html face, .wav voice, .timeline dump. `fapc formats` "
+     "lists them all."},
     {"encode", "INPUT -o OUT.fba", "encode frames as a raw MPEG-4 FBA stream, with the encoder's settings in view",
      "Any input, encoded as an FBA elementary stream with the given quantiser, intra period, ranges and "
      "masks; with --verify the stream is decoded and checked before it is written."},

@@ -22,12 +22,7 @@ int run_compile(const std::vector<std::string>& argv) {
   std::string input = args.positionals().front();
   StandardInputCopy copy;
   if (const auto error = resolve_input(args, input, options, copy)) return usage_error("compile", *error);
-  const ConversionWatch watch(options);
-  const pipeline::ConvertResult result = pipeline::convert(input, {{*output, to}}, options);
-  const int status = report_outcome(result.warnings, result.error);
-  watch.tell_done(args.positionals().front(), result);
-  if (status == kExitOk && *output == "-" && !write_standard_output(result.standard_output)) return kExitBadInput;
-  return status;
+  return convert_one(args.positionals().front(), input, *output, to, options);
 }
 
 const RegisterCommand compile_command{"compile", run_compile};

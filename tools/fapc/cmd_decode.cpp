@@ -25,14 +25,8 @@ int run_decode(const std::vector<std::string>& argv) {
   const pipeline::InputFormat* format = pipeline::reader_for(input, options);
   if (format && format->kind != "fba" && format->kind != "mp4")
     return usage_error("decode", "decode reads .fba or .mp4 streams; use compile for '" + args.positionals().front() + "'");
-  const ConversionWatch watch(options);
   // Without --to the output's extension decides, as it always has; -o - writes .fap text.
-  const pipeline::ConvertResult result =
-      pipeline::convert(input, {{*output, args.value("to") || *output == "-" ? to : ""}}, options);
-  const int status = report_outcome(result.warnings, result.error);
-  watch.tell_done(args.positionals().front(), result);
-  if (status == kExitOk && *output == "-" && !write_standard_output(result.standard_output)) return kExitBadInput;
-  return status;
+  return convert_one(args.positionals().front(), input, *output, args.value("to") || *output == "-" ? to : "", options);
 }
 
 const RegisterCommand decode_command{"decode", run_decode};

@@ -30,12 +30,7 @@ int run_render(const std::vector<std::string>& argv) {
   std::string input = args.positionals().front();
   StandardInputCopy copy;
   if (const auto error = resolve_input(args, input, options, copy)) return usage_error("render", *error);
-  const ConversionWatch watch(options);
-  const pipeline::ConvertResult result = pipeline::convert(input, {{*output, to}}, options);
-  const int status = report_outcome(result.warnings, result.error);
-  watch.tell_done(args.positionals().front(), result);
-  if (status == kExitOk && *output == "-" && !write_standard_output(result.standard_output)) return kExitBadInput;
-  return status;
+  return convert_one(args.positionals().front(), input, *output, to, options);
 }
 
 const RegisterCommand render_command{"render", run_render};

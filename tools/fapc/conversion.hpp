@@ -1,5 +1,5 @@
-// What compile, render, decode and plot share around one conversion: -v's account of what was read
-// and written, and the progress of a long job on a terminal.
+// What compile, render and decode share around one conversion: -v's account of what was read
+// and written, the progress of a long job on a terminal, and standard output for -o -.
 #pragma once
 
 #include <chrono>
@@ -23,5 +23,11 @@ class ConversionWatch {
   std::shared_ptr<ProgressBar> bar_;
   std::chrono::steady_clock::time_point start_;
 };
+
+// Converts `input` (the operand as resolved: a copy of standard input is a temporary file) to
+// one output with the watch around it, reports the diagnostics, writes standard output for -o -.
+// `named` is the operand as the user gave it. Returns the exit status.
+int convert_one(const std::string& named, const std::string& input, const std::string& output,
+                const std::string& to, pipeline::ConvertOptions& options);
 
 }  // namespace fapc::cli
