@@ -1,5 +1,5 @@
 // `audio src="x.wav"`: a recording placed on the timeline, and, when `x.pho` lies beside it, the
-// visemes of its phonemes timed with it (docs/xmt-omega.md, "audio").
+// visemes of its phonemes timed with it (docs/xmt-omega.md, "Recordings").
 #pragma once
 
 #include <optional>
