@@ -54,7 +54,7 @@ Result<IncludedAnimation> load(const std::string& path, std::vector<std::string>
 
 // Mimic and FML inputs need their front ends; an audio element reads its WAV relative to the
 // working folder, which is not the source folder under ctest (xmto_audio_test.cpp reads it, and
-// the command goldens cover its timeline).
+// tests/command/xmto_golden_test.cpp checks its .timeline golden through fapc).
 bool needs_other_front_ends(const std::string& text) {
   return text.find(".mimic\"") != std::string::npos || text.find(".fml\"") != std::string::npos ||
          text.find("<audio ") != std::string::npos;
