@@ -38,18 +38,21 @@ std::size_t inputs_under(const fs::path& folder) {
 }
 
 // Whole copies of the examples tree (their includes and operands resolve inside each copy) while
-// they fit, then single inputs that need no other file, up to `wanted`.
+// they fit, then single inputs up to `wanted`, beside the other files of their folder (the
+// expressions and phoneme files they include).
 std::size_t make_inputs(const fs::path& examples, const fs::path& into, std::size_t wanted) {
   const std::size_t per_copy = inputs_under(examples);
   std::size_t made = 0;
   for (int copy = 0; made + per_copy <= wanted; ++copy, made += per_copy)
     fs::copy(examples, into / ("copy" + std::to_string(copy)), fs::copy_options::recursive);
   std::vector<fs::path> standalone;
-  for (const char* folder : {"fap", "fml", "mimic"})
-    for (const auto& entry : fs::directory_iterator(examples / folder))
-      if (is_input(entry.path())) standalone.push_back(entry.path());
-  std::sort(standalone.begin(), standalone.end());
   fs::create_directories(into / "rest");
+  for (const char* folder : {"fap", "fml", "mimic"})
+    for (const auto& entry : fs::directory_iterator(examples / folder)) {
+      if (is_input(entry.path())) standalone.push_back(entry.path());
+      else if (entry.is_regular_file()) fs::copy_file(entry.path(), into / "rest" / entry.path().filename());
+    }
+  std::sort(standalone.begin(), standalone.end());
   for (std::size_t k = 0; made < wanted && k < standalone.size(); ++k, ++made)
     fs::copy_file(standalone[k], into / "rest" / standalone[k].filename());
   return made;
