@@ -21,7 +21,9 @@ std::uint32_t u32_at(const std::string& b, std::size_t at) {
 }
 
 struct TempDir {
-  fs::path path = fs::temp_directory_path() / "fapc-xmto-audio-command";
+  // One folder per test: ctest runs the tests of this file at the same time.
+  fs::path path = fs::temp_directory_path() /
+                  (std::string("fapc-xmto-audio-") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
   TempDir() {
     fs::remove_all(path);
     fs::create_directories(path);
