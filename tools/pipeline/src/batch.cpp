@@ -10,7 +10,7 @@
 #include <sstream>
 #include <thread>
 
-#include "xml_text.hpp"
+#include "fapc/codec/xml_escape.hpp"
 
 namespace fapc::pipeline {
 

@@ -4,24 +4,11 @@
 #include <cstdio>
 
 #include "fapc/codec/fap_table.hpp"
+#include "fapc/codec/xml_escape.hpp"
 
 namespace fapc::face {
 
 namespace {
-
-std::string html_escape(std::string_view text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 std::string number(double v) {
   char text[32];
@@ -126,7 +113,7 @@ std::string preview_page(const FaceTrack& track, std::string_view webm, const Pr
     }
     faps += "]}";
   }
-  const std::string title = html_escape(o.title.empty() ? "fapc preview" : o.title);
+  const std::string title = xml_escape(o.title.empty() ? "fapc preview" : o.title);
   std::string page;
   page.reserve(webm.size() * 4 / 3 + faps.size() + 8192);
   page += "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + title + "</title>\n";

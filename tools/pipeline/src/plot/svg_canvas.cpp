@@ -4,8 +4,8 @@
 #include <charconv>
 #include <cmath>
 
-#include "../xml_text.hpp"
 #include "canvas.hpp"
+#include "fapc/codec/xml_escape.hpp"
 #include "figure.hpp"
 
 namespace fapc::pipeline::plot {
@@ -49,7 +49,7 @@ class SvgCanvas final : public Canvas {
     if (style.anchor == Anchor::end) out_ += " text-anchor=\"end\"";
     if (style.colour != "#000000") out_ += " fill=\"", out_ += style.colour, out_ += '"';
     if (style.vertical) out_ += " transform=\"rotate(-90 ", number(x), out_ += ' ', number(y), out_ += ")\"";
-    out_ += '>', out_ += xml_escape(std::string(text)), out_ += "</text>\n";
+    out_ += '>', out_ += xml_escape(text), out_ += "</text>\n";
   }
 
   // Two decimals at most, trailing zeros dropped: a hundredth of a pixel is below what any
