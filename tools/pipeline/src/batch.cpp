@@ -213,14 +213,14 @@ std::string junit_report(const std::vector<BatchJob>& jobs, const std::vector<Ba
   for (std::size_t i = 0; i < jobs.size() && i < outcomes.size(); ++i) {
     const BatchOutcome& o = outcomes[i];
     if (!o.ran) continue;  // stopped before it started: nothing to report
-    out += "  <testcase name=\"" + xml_escape(jobs[i].input) + "\" time=\"" + std::to_string(o.seconds) + "\"";
+    out += "  <testcase name=\"" + xml_escape(jobs[i].input, XmlPlace::attribute) + "\" time=\"" + std::to_string(o.seconds) + "\"";
     if (o.result.ok()) {
       out += "/>\n";
       continue;
     }
     const Diagnostic& error = *o.result.error;
     out += "><failure type=\"" + std::string(error_kind_name(error.kind)) + "\" message=\"" +
-           xml_escape(format_diagnostic(error)) + "\">" + xml_escape(batch_summary_line(jobs[i], o)) +
+           xml_escape(format_diagnostic(error), XmlPlace::attribute) + "\">" + xml_escape(batch_summary_line(jobs[i], o)) +
            "</failure></testcase>\n";
   }
   return out + "</testsuite>\n";
