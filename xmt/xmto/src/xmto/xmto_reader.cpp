@@ -366,12 +366,19 @@ class DocumentReader {
     result_.included.push_back(included->path);
     result_.warnings.insert(result_.warnings.end(), included->animation.warnings.begin(),
                             included->animation.warnings.end());
+    return included_leaf(node, timing, fill, budget, std::move(included->animation.timeline));
+  }
+
+  // A leaf that plays `timeline` (an included animation, a recording) from its begin, its length
+  // the timeline's; within the run budget counted in clips.
+  std::optional<ScheduleNode> included_leaf(const xmlNode* node, const SmilTiming& timing, Fill fill,
+                                            const RunBudget& budget, Timeline timeline) {
+    const double length = timeline.end();
+    const double clips_per_run = std::max<double>(1, static_cast<double>(timeline.clips.size()));
+    if (!within_budget(node, budget.inside(timing, length).repeats * clips_per_run)) return std::nullopt;
     Leaf leaf;
     leaf.fill = fill;
-    const double length = included->animation.timeline.end();
-    const double clips_per_run = std::max<double>(1, static_cast<double>(included->animation.timeline.clips.size()));
-    if (!within_budget(node, budget.inside(timing, length).repeats * clips_per_run)) return std::nullopt;
-    leaf.included = std::move(included->animation.timeline);
+    leaf.included = std::move(timeline);
     return add_leaf(node, std::move(leaf), to_schedule_timing(timing, length));
   }
 
@@ -387,13 +394,8 @@ class DocumentReader {
     }
     result_.included.push_back(recording->wav_path);
     if (recording->pho_path) result_.included.push_back(*recording->pho_path);
-    Leaf leaf;
-    leaf.fill = Fill::remove;  // a recording's mouth closes when it ends, whatever the fill
-    const double length = recording->timeline.end();
-    const double clips_per_run = std::max<double>(1, static_cast<double>(recording->timeline.clips.size()));
-    if (!within_budget(node, budget.inside(timing, length).repeats * clips_per_run)) return std::nullopt;
-    leaf.included = std::move(recording->timeline);
-    return add_leaf(node, std::move(leaf), to_schedule_timing(timing, length));
+    // A recording's mouth closes when it ends, whatever the fill.
+    return included_leaf(node, timing, Fill::remove, budget, std::move(recording->timeline));
   }
 };
 
