@@ -6,6 +6,7 @@
 #include "fapc/codec/did_you_mean.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "streamed_convert.hpp"
+#include "streamed_render.hpp"
 
 namespace fapc::pipeline {
 
@@ -96,6 +97,8 @@ ConvertResult convert(const std::string& input, const std::vector<OutputRequest>
   if ((result.error = find_writers(outputs, writers))) return result;
   // A long .fap to .fba or .fap goes through without its frames in memory.
   if (auto streamed = convert_streamed(input, outputs, writers, options)) return std::move(*streamed);
+  // So does a script's animation, rendered frame by frame.
+  if (auto streamed = convert_script_streamed(input, outputs, writers, options)) return std::move(*streamed);
   if (options.progress) options.progress("reading " + input, 0, static_cast<std::int64_t>(outputs.size()) + 1);
   // Curves only when a writer reads them (the curves JSON, the plots): half of a script's compile.
   ConvertOptions load_options = options;

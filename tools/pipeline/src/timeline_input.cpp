@@ -12,6 +12,35 @@ Result<Profile> profile_for(const ConvertOptions& options) {
   return load_profile(*options.profile);
 }
 
+namespace {
+
+Diagnostic named_after(Diagnostic error, const std::string& name) {
+  if (error.where.file.empty()) error.where.file = name;  // a whole-animation problem
+  return error;
+}
+
+}  // namespace
+
+RenderOptions render_options_for(const std::string& name, const Profile& profile, const ConvertOptions& options) {
+  RenderOptions render;
+  render.fps = options.fps;
+  render.max_frames = options.limits.max_frames;
+  render.profile = &profile;
+  render.name = std::filesystem::path(name).stem().string();
+  return render;
+}
+
+Result<FrameStream> stream_frames(const Timeline& timeline, const std::string& name, const Profile& profile,
+                                  const ConvertOptions& options) {
+  Result<FrameStream> stream = FrameStream::start(timeline, render_options_for(name, profile, options));
+  if (!stream) return named_after(stream.error(), name);
+  return stream;
+}
+
+Result<std::optional<AudioTrack>> mixed_audio(const Timeline& timeline, const ConvertOptions& options) {
+  return mix_audio(timeline.audio, static_cast<double>(options.limits.max_frames) / options.fps);
+}
+
 Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
                                     const Profile& profile, const ConvertOptions& options,
                                     Diagnostics warnings, nlohmann::ordered_json facts) {
@@ -26,20 +55,9 @@ Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
     loaded.facts = std::move(facts);
     return loaded;
   }
-  RenderOptions render;
-  render.fps = options.fps;
-  render.max_frames = options.limits.max_frames;
-  render.profile = &profile;
-  render.name = std::filesystem::path(name).stem().string();
-  Result<Rendered> rendered = render_frames(timeline, render);
-  if (!rendered) {
-    Diagnostic error = rendered.error();
-    if (error.where.file.empty()) error.where.file = name;  // a whole-animation problem
-    return error;
-  }
-  // The voice: every audio clip mixed into one track, as long as the frames may last.
-  Result<std::optional<AudioTrack>> audio =
-      mix_audio(timeline.audio, static_cast<double>(options.limits.max_frames) / options.fps);
+  Result<Rendered> rendered = render_frames(timeline, render_options_for(name, profile, options));
+  if (!rendered) return named_after(rendered.error(), name);
+  Result<std::optional<AudioTrack>> audio = mixed_audio(timeline, options);
   if (!audio) return audio.error();
   Loaded loaded;
   loaded.audio = std::move(*audio);

@@ -7,11 +7,23 @@
 #include "fapc/pipeline/loaded.hpp"
 #include "fapc/pipeline/options.hpp"
 #include "fapc/transcoder/profile.hpp"
+#include "fapc/transcoder/render.hpp"
 
 namespace fapc::pipeline {
 
 // The profile of --profile, or the default one.
 Result<Profile> profile_for(const ConvertOptions& options);
+
+// How a timeline read from `name` is rendered: --fps, --max-frames, the profile, the name.
+RenderOptions render_options_for(const std::string& name, const Profile& profile, const ConvertOptions& options);
+
+// Frames of `timeline` one at a time (streamed_render.cpp), with render_frames' checks and errors
+// as loaded_from_timeline reports them; `profile` must outlive the stream.
+Result<FrameStream> stream_frames(const Timeline& timeline, const std::string& name, const Profile& profile,
+                                  const ConvertOptions& options);
+
+// The timeline's voice mixed into one track, as long as the frames may last.
+Result<std::optional<AudioTrack>> mixed_audio(const Timeline& timeline, const ConvertOptions& options);
 
 // Frames at options.fps (clamp warnings appended to `warnings`), curves, and the timeline itself;
 // the timeline alone when options.render is false. `facts` become Loaded::facts.

@@ -35,25 +35,35 @@ std::pair<std::pair<int, int>, std::pair<int, int>> strongest_two(const std::vec
 
 class FrameRenderer {
  public:
-  FrameRenderer(const TimelineIndex& index, const RenderOptions& options)
-      : index_(index), options_(options) {}
+  FrameRenderer(const Timeline& timeline, const RenderOptions& options)
+      : index_(timeline.clips), options_(options) {}
+  FrameRenderer(const FrameRenderer&) = delete;
 
-  Rendered run(std::vector<Driver> drivers, double end) {
-    Rendered out;
-    out.frames.name = options_.name;
-    out.frames.fps = options_.fps;
-    const auto count = static_cast<std::int64_t>(std::ceil(end * options_.fps - 1e-9));
-    out.frames.frames.reserve(static_cast<std::size_t>(std::max<std::int64_t>(count, 0)));
-    for (std::int64_t k = 0; k < count; ++k) {
-      out.frames.frames.push_back(frame_at(drivers, k));
+  // What drives each FAP, per target; an error for a target the profile does not map.
+  Status resolve() {
+    const Profile& profile = options_.profile ? *options_.profile : default_profile();
+    for (const auto& [target, target_index] : index_.targets) {
+      Driver driver{&target_index, resolve_target(target, profile), -1};
+      if (driver.contributions.empty()) {
+        const Clip& first = index_.clips[target_index.clips.front()];
+        return make_error(first.source, unknown_parameter_message(target, profile));
+      }
+      if (const std::optional<WeightTarget> weight = weight_target(target)) {
+        driver.weight_slot = weight->number;
+      }
+      drivers_.push_back(std::move(driver));
     }
-    out.warnings = std::move(warnings_);
-    return out;
+    return ok_status();
   }
 
+  const RenderOptions& options() const { return options_; }
+  const Diagnostics& warnings() const { return warnings_; }
+  FapFrame frame_at(std::int64_t k) { return frame_at(drivers_, k); }
+
  private:
-  const TimelineIndex& index_;
-  const RenderOptions& options_;
+  TimelineIndex index_;
+  RenderOptions options_;
+  std::vector<Driver> drivers_;
   Diagnostics warnings_;
   std::set<std::int64_t> warned_clips_;
 
@@ -135,10 +145,22 @@ Location where_it_ends(const Timeline& timeline) {
 
 }  // namespace
 
-Result<Rendered> render_frames(const Timeline& timeline, const RenderOptions& options) {
+struct FrameStream::State {
+  State(const Timeline& timeline, const RenderOptions& options, std::int64_t frames)
+      : renderer(timeline, options), count(frames) {}
+  FrameRenderer renderer;
+  std::int64_t count;
+};
+
+FrameStream::FrameStream(std::unique_ptr<State> state) : state_(std::move(state)) {}
+FrameStream::FrameStream(FrameStream&&) noexcept = default;
+FrameStream& FrameStream::operator=(FrameStream&&) noexcept = default;
+FrameStream::~FrameStream() = default;
+
+Result<FrameStream> FrameStream::start(const Timeline& timeline, const RenderOptions& options) {
   if (options.fps <= 0) return make_error(ErrorKind::usage, Location{}, "the frame rate must be positive");
-  if (const double frames = std::ceil(timeline.end() * options.fps);
-      !(frames <= static_cast<double>(options.max_frames))) {
+  const double frames = std::ceil(timeline.end() * options.fps);
+  if (!(frames <= static_cast<double>(options.max_frames))) {
     char text[96];
     std::snprintf(text, sizeof text, "the animation lasts %g s, %.15g frames at %d fps", timeline.end(), frames,
                   options.fps);
@@ -146,21 +168,28 @@ Result<Rendered> render_frames(const Timeline& timeline, const RenderOptions& op
     limits.max_frames = options.max_frames;
     return limit_error(where_it_ends(timeline), text, Limit::frames, limits);
   }
-  const Profile& profile = options.profile ? *options.profile : default_profile();
-  const TimelineIndex index(timeline.clips);
-  std::vector<Driver> drivers;
-  for (const auto& [target, target_index] : index.targets) {
-    Driver driver{&target_index, resolve_target(target, profile), -1};
-    if (driver.contributions.empty()) {
-      const Clip& first = index.clips[target_index.clips.front()];
-      return make_error(first.source, unknown_parameter_message(target, profile));
-    }
-    if (const std::optional<WeightTarget> weight = weight_target(target)) {
-      driver.weight_slot = weight->number;
-    }
-    drivers.push_back(std::move(driver));
-  }
-  return FrameRenderer(index, options).run(std::move(drivers), timeline.end());
+  const auto count = static_cast<std::int64_t>(std::ceil(timeline.end() * options.fps - 1e-9));
+  auto state = std::make_unique<State>(timeline, options, std::max<std::int64_t>(count, 0));
+  if (auto resolved = state->renderer.resolve(); !resolved) return resolved.error();
+  return FrameStream(std::move(state));
+}
+
+std::int64_t FrameStream::count() const { return state_->count; }
+const std::string& FrameStream::name() const { return state_->renderer.options().name; }
+int FrameStream::fps() const { return state_->renderer.options().fps; }
+FapFrame FrameStream::frame(std::int64_t k) { return state_->renderer.frame_at(k); }
+const Diagnostics& FrameStream::warnings() const { return state_->renderer.warnings(); }
+
+Result<Rendered> render_frames(const Timeline& timeline, const RenderOptions& options) {
+  Result<FrameStream> stream = FrameStream::start(timeline, options);
+  if (!stream) return stream.error();
+  Rendered out;
+  out.frames.name = stream->name();
+  out.frames.fps = stream->fps();
+  out.frames.frames.reserve(static_cast<std::size_t>(stream->count()));
+  for (std::int64_t k = 0; k < stream->count(); ++k) out.frames.frames.push_back(stream->frame(k));
+  out.warnings = stream->warnings();
+  return out;
 }
 
 }  // namespace fapc

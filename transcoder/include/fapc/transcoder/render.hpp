@@ -50,6 +50,30 @@ struct Rendered {
 // than options.max_frames frames (at the timeline's end_source, or the clip that ends last).
 Result<Rendered> render_frames(const Timeline& timeline, const RenderOptions& options);
 
+// The same frames one at a time, for writers that never hold them all (an encoder that takes two
+// passes renders them twice: rendering is deterministic). start() makes every check render_frames
+// makes before its first frame; the timeline must outlive the stream.
+class FrameStream {
+ public:
+  static Result<FrameStream> start(const Timeline& timeline, const RenderOptions& options);
+  FrameStream(FrameStream&&) noexcept;
+  FrameStream& operator=(FrameStream&&) noexcept;
+  ~FrameStream();
+
+  std::int64_t count() const;  // ceil(end * fps)
+  const std::string& name() const;
+  int fps() const;
+  // Frame k (0 <= k < count()), in any order.
+  FapFrame frame(std::int64_t k);
+  // The clamp warnings met so far, once per clip, in the order the frames met them.
+  const Diagnostics& warnings() const;
+
+ private:
+  struct State;
+  explicit FrameStream(std::unique_ptr<State> state);
+  std::unique_ptr<State> state_;
+};
+
 struct CurveOptions {
   int fps = 25;
   double tolerance = 1e-6;  // relative to the target's value range

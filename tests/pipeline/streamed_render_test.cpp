@@ -1,0 +1,127 @@
+// A script going to .fba and .fap is rendered frame by frame, never held as frames
+// (docs/architecture.md, "Streaming"); the usual load and writers, a second and independent way,
+// say what it must give: the same bytes, warnings and errors, over every script of the corpus
+// (good and bad) at several frame rates, flavours and limits.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "fapc/pipeline/convert.hpp"
+#include "pipeline_test_helpers.hpp"
+#include "support/test_support.hpp"
+
+namespace fapc {
+namespace {
+
+namespace fs = std::filesystem;
+using pipeline::ConvertOptions;
+
+std::string file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The usual way: the whole load (frames and all), then each writer's bytes up to the first error.
+struct LoadedWay {
+  std::vector<std::string> bytes;
+  Diagnostics warnings;
+  std::size_t frames = 0;
+  std::optional<Diagnostic> error;
+};
+
+LoadedWay load_then_write(const std::string& input, const std::vector<pipeline::OutputRequest>& outputs,
+                          const ConvertOptions& options) {
+  LoadedWay out;
+  auto loaded = pipeline::load(input, options);
+  if (!loaded) {
+    out.error = loaded.error();
+    return out;
+  }
+  out.warnings = loaded->warnings;
+  out.frames = loaded->frames.frames.size();
+  if (options.strict && !loaded->warnings.empty()) {
+    out.error = make_error(ErrorKind::bad_input, Location{input, 0, 0, -1},
+                           std::to_string(loaded->warnings.size()) +
+                               " warning(s) treated as errors (--strict); nothing written");
+    return out;
+  }
+  for (const auto& request : outputs) {
+    auto bytes = pipeline::render_output(*loaded, request, options);
+    if (!bytes) {
+      out.error = bytes.error();
+      return out;
+    }
+    out.bytes.push_back(*bytes);
+  }
+  return out;
+}
+
+std::vector<ConvertOptions> settings() {
+  std::vector<ConvertOptions> all(6);
+  // The speech engine does not say a text twice the same way in one process (a talk's visemes
+  // differ by one unit the second time): the letter table does, and the streaming is not about it.
+  for (ConvertOptions& options : all) options.speech_engine = false;
+  all[1].fps = 10;
+  all[2].fps = 30;
+  all[2].quant = 7;
+  all[2].masks = "keep";
+  all[2].fap_flavour = FapFlavour::greta_java;
+  all[3].fps = 100;
+  all[3].fap_flavour = FapFlavour::semaine;
+  all[4].limits.max_frames = 40;  // most corpus scripts are longer
+  all[5].strict = true;
+  return all;
+}
+
+bool is_script(const fs::path& path) {
+  const std::string ext = path.extension().string();
+  return ext == ".mimic" || ext == ".mim" || ext == ".fml" || ext == ".xmt";
+}
+
+TEST(StreamedRender, GivesTheBytesWarningsAndErrorsOfLoadingAndWriting) {
+  const test::TempFolder tmp;
+  std::size_t scripts = 0, failing = 0, warned = 0;
+  for (const char* folder : {"examples", "mimic", "fml", "xmto", "mimic-bad", "fml-bad", "xmto-bad"}) {
+    for (const auto& entry : fs::recursive_directory_iterator(test::corpus_dir() + "/" + folder)) {
+      if (!entry.is_regular_file() || !is_script(entry.path())) continue;
+      ++scripts;
+      const std::string input = entry.path().string();
+      for (const ConvertOptions& options : settings()) {
+        const std::vector<pipeline::OutputRequest> outputs = {{tmp / "x.fap", ""}, {tmp / "x.fba", ""}};
+        const LoadedWay expected = load_then_write(input, outputs, options);
+        fs::remove(tmp / "x.fap");
+        fs::remove(tmp / "x.fba");
+        const pipeline::ConvertResult streamed = pipeline::convert(input, outputs, options);
+        SCOPED_TRACE(input + " at " + std::to_string(options.fps) + " fps");
+        EXPECT_TRUE(streamed.loaded.frames.frames.empty());  // streamed, not loaded
+        failing += expected.error.has_value();
+        warned += !expected.warnings.empty();
+        if (expected.error) {
+          ASSERT_FALSE(streamed.ok());
+          EXPECT_EQ(format_diagnostic(*streamed.error), format_diagnostic(*expected.error));
+          EXPECT_EQ(streamed.error->kind, expected.error->kind);
+        } else {
+          ASSERT_TRUE(streamed.ok()) << format_diagnostic(*streamed.error);
+          EXPECT_EQ(streamed.frames.count, expected.frames);
+        }
+        ASSERT_EQ(streamed.warnings.size(), expected.warnings.size());
+        for (std::size_t w = 0; w < expected.warnings.size(); ++w)
+          EXPECT_EQ(format_diagnostic(streamed.warnings[w]), format_diagnostic(expected.warnings[w]));
+        for (std::size_t i = 0; i < outputs.size(); ++i) {
+          if (i < expected.bytes.size()) EXPECT_EQ(file_bytes(outputs[i].path), expected.bytes[i]) << outputs[i].path;
+          else EXPECT_FALSE(fs::exists(outputs[i].path)) << outputs[i].path;
+        }
+      }
+    }
+  }
+  EXPECT_GT(scripts, 40u);
+  EXPECT_GT(failing, 10u);  // the bad corpus and the low limit: errors compared, not only bytes
+  EXPECT_GT(warned, 0u);
+  for (const auto& entry : fs::directory_iterator(tmp.path()))  // no temporary file left behind
+    EXPECT_FALSE(entry.path().filename().string().starts_with(".fapc-tmp-")) << entry.path();
+}
+
+}  // namespace
+}  // namespace fapc

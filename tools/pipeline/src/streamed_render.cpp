@@ -1,0 +1,234 @@
+// How a script reaches .fba and .fap outputs without its frames in memory (docs/architecture.md,
+// "Streaming"). The front end lowers the script to its timeline as usual; the frames are then
+// rendered one at a time, twice when an .fba is asked for (the encoder's first pass checks every
+// frame and plans the masks over the whole sequence, its second codes), since rendering the same
+// timeline again gives the same frames:
+//
+//   pass 1: FrameStream::frame  --frames-->  FbaEncoder::check        every warning found here
+//   pass 2: FrameStream::frame  --frames-->  FbaEncoder::add, FapTextWriter::add
+//
+// Without an .fba the first pass is the writing pass. The .fap text goes to a temporary file in
+// the output's folder, renamed over it only when everything has succeeded; a frame costs a few
+// bits of encoder output and nothing else.
+#include "streamed_render.hpp"
+
+#include <algorithm>
+
+#include "fapc/codec/fap_file.hpp"
+#include "fapc/codec/fba.hpp"
+#include "fapc/codec/file_io.hpp"
+#include "fapc/pipeline/fba_io.hpp"
+#include "timeline_input.hpp"
+
+namespace fapc::pipeline {
+
+namespace {
+
+bool is_gzip_path(const std::string& path) {
+  return path.size() >= 3 && path.compare(path.size() - 3, 3, ".gz") == 0;
+}
+
+bool can_stream(const std::string& input, const std::vector<OutputRequest>& outputs,
+                const std::vector<const OutputFormat*>& writers, const ConvertOptions& options) {
+  const InputFormat* format = reader_for(input, options);
+  if (input == "-" || !format || options.verify || options.facts || outputs.empty()) return false;
+  if (format->kind != "mimic" && format->kind != "fml" && format->kind != "xmt") return false;
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    if ((writers[i]->kind != "fba" && writers[i]->kind != "fap") || outputs[i].path == "-" ||
+        is_gzip_path(outputs[i].path))
+      return false;
+    // A rate the stream cannot code is refused by the usual way, against the input.
+    if (writers[i]->kind == "fba" && (options.fps < 1 || options.fps > kMaxFbaFrameRate)) return false;
+  }
+  return true;
+}
+
+// The .fap text, made once, to the temporary file of every .fap output.
+class FapTextOutputs {
+ public:
+  FapTextOutputs(const FrameStream& stream, const ConvertOptions& options)
+      : writer_(stream.name(), stream.fps(), static_cast<std::size_t>(stream.count()), 0,
+                std::max<std::int64_t>(stream.count() - 1, 0), write_options(options)) {}
+
+  // A temporary file for output `i`; its error, if any, is that output's.
+  void open(std::size_t i, const std::string& path) {
+    auto file = AtomicFile::create(path);
+    if (file) files_.emplace_back(i, std::move(*file));
+    else failed_.emplace_back(i, file.error());
+  }
+  bool any() const { return !files_.empty(); }
+
+  void begin() {
+    if (auto status = writer_.begin(text_); !status) error_ = status.error();
+  }
+  void add(const FapFrame& frame) {
+    if (error_) return;
+    if (auto status = writer_.add(frame, text_); !status) error_ = status.error();
+    else if (text_.size() >= (std::size_t{1} << 20)) flush();
+  }
+  void finish() {
+    if (error_) return;
+    writer_.finish(text_);
+    flush();
+  }
+
+  // The error writing output `i` (at `path`) meets, if any: the flavour's, else the file's.
+  std::optional<Diagnostic> error_of(std::size_t i, const std::string& path) const {
+    if (error_) return Diagnostic{error_->severity, Location{path, 0, 0, -1}, error_->message, {}, error_->kind};
+    for (const auto& [at, why] : failed_)
+      if (at == i) return why;
+    return std::nullopt;
+  }
+  Status commit(std::size_t i) {
+    for (auto& [at, file] : files_)
+      if (at == i) return file.commit();
+    return ok_status();  // not reached: every .fap output has a file or an error
+  }
+
+ private:
+  static FapWriteOptions write_options(const ConvertOptions& options) {
+    FapWriteOptions write;
+    write.flavour = options.fap_flavour;
+    return write;
+  }
+
+  void flush() {
+    for (auto& [i, file] : files_) {
+      const bool failed_before = std::any_of(failed_.begin(), failed_.end(), [&](const auto& f) { return f.first == i; });
+      if (auto written = file.write(text_); !written && !failed_before) failed_.emplace_back(i, written.error());
+    }
+    text_.clear();
+  }
+
+  FapTextWriter writer_;
+  std::string text_;                  // made, not yet written
+  std::optional<Diagnostic> error_;   // the writer's: the flavour cannot carry a frame or the rate
+  std::vector<std::pair<std::size_t, AtomicFile>> files_;   // by output index
+  std::vector<std::pair<std::size_t, Diagnostic>> failed_;  // outputs whose file failed
+};
+
+Diagnostic strict_error(const std::string& input, std::size_t warnings) {
+  return make_error(ErrorKind::bad_input, Location{input, 0, 0, -1},
+                    std::to_string(warnings) + " warning(s) treated as errors (--strict); nothing written");
+}
+
+}  // namespace
+
+std::optional<ConvertResult> convert_script_streamed(const std::string& input,
+                                                     const std::vector<OutputRequest>& outputs,
+                                                     const std::vector<const OutputFormat*>& writers,
+                                                     const ConvertOptions& options) {
+  if (!can_stream(input, outputs, writers, options)) return std::nullopt;
+  const auto steps = static_cast<std::int64_t>(outputs.size()) + 1;
+  if (options.progress) options.progress("reading " + input, 0, steps);
+  ConvertResult result;
+  // The front end alone: the timeline, its warnings, no frames and no curves.
+  ConvertOptions lower_only = options;
+  lower_only.render = false;
+  lower_only.curves = false;
+  Result<Loaded> lowered = load(input, lower_only);
+  if (!lowered) {
+    result.error = lowered.error();
+    return result;
+  }
+  if (!lowered->timeline) return std::nullopt;  // not reached: a script's load keeps its timeline
+  const Timeline timeline = std::move(*lowered->timeline);
+  Result<Profile> profile = profile_for(options);
+  if (!profile) {
+    result.error = profile.error();
+    return result;
+  }
+  Result<FrameStream> stream = stream_frames(timeline, input, *profile, options);
+  if (!stream) {
+    result.error = stream.error();
+    return result;
+  }
+  if (auto audio = mixed_audio(timeline, options); !audio) {
+    result.error = audio.error();
+    return result;
+  }
+
+  bool wants_fba = false;
+  for (const OutputFormat* writer : writers) wants_fba = wants_fba || writer->kind == "fba";
+  std::optional<FbaEncoder> encoder;
+  if (wants_fba) encoder.emplace(fba_encode_options(options));
+  std::optional<Diagnostic> encode_error;
+  FapTextOutputs fap(*stream, options);
+  for (std::size_t i = 0; i < outputs.size(); ++i)
+    if (writers[i]->kind == "fap") fap.open(i, outputs[i].path);
+  const bool wants_text = fap.any();
+
+  // Pass 1: every frame, to the encoder's check (or, without an .fba, to the .fap text).
+  std::bitset<kFapCount> faps;
+  if (wants_text && !wants_fba) fap.begin();
+  for (std::int64_t k = 0; k < stream->count(); ++k) {
+    const FapFrame frame = stream->frame(k);
+    faps |= frame.mask;
+    if (encoder && !encode_error)
+      if (auto status = encoder->check(frame); !status) encode_error = status.error();
+    if (wants_text && !wants_fba) fap.add(frame);
+  }
+  result.loaded.origin = input;
+  result.loaded.frames.name = stream->name();
+  result.loaded.frames.fps = stream->fps();
+  result.loaded.warnings = std::move(lowered->warnings);
+  result.loaded.warnings.insert(result.loaded.warnings.end(), stream->warnings().begin(), stream->warnings().end());
+  result.warnings = result.loaded.warnings;
+  result.frames = {static_cast<std::size_t>(stream->count()), stream->fps(), faps};
+  if (options.strict && !result.warnings.empty()) {
+    result.error = strict_error(input, result.warnings.size());
+    return result;
+  }
+
+  // Pass 2: the same frames again, coded.
+  if (encoder && !encode_error)
+    if (auto status = encoder->start(stream->fps()); !status) encode_error = status.error();
+  if (wants_fba && ((encoder && !encode_error) || wants_text)) {
+    if (wants_text) fap.begin();
+    for (std::int64_t k = 0; k < stream->count(); ++k) {
+      const FapFrame frame = stream->frame(k);
+      if (encoder && !encode_error)
+        if (auto status = encoder->add(frame); !status) encode_error = status.error();
+      if (wants_text) fap.add(frame);
+    }
+  }
+  if (wants_text) fap.finish();
+  std::optional<EncodedFba> encoded;
+  if (encoder && !encode_error) {
+    auto finished = encoder->finish();
+    if (finished) encoded = std::move(*finished);
+    else encode_error = finished.error();
+  }
+  if (encode_error) encode_error->where.file = input;  // as encode_checked names the input
+
+  // The outputs in request order, up to the first that failed (as the usual way writes them).
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const std::string& path = outputs[i].path;
+    if (options.progress) options.progress("writing " + path, static_cast<std::int64_t>(i) + 1, steps);
+    if (writers[i]->kind == "fba") {
+      if (encode_error) {
+        result.error = encode_error;
+        return result;
+      }
+      const std::string_view bytes(reinterpret_cast<const char*>(encoded->bytes.data()), encoded->bytes.size());
+      if (auto written = write_file_atomic(path, bytes); !written) {
+        result.error = written.error();
+        return result;
+      }
+    } else {
+      if (auto failed = fap.error_of(i, path)) {
+        result.error = failed;
+        return result;
+      }
+      if (auto committed = fap.commit(i); !committed) {
+        result.error = committed.error();
+        return result;
+      }
+    }
+    result.written.push_back(path);
+  }
+  if (options.progress) options.progress("done", steps, steps);
+  return result;
+}
+
+}  // namespace fapc::pipeline
