@@ -21,8 +21,10 @@
 #include <vector>
 
 #include "fapc/codec/fap_file.hpp"
+#include "fapc/codec/fba.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "fapc/pipeline/pipeline.hpp"
+#include "fapc/transcoder/render.hpp"
 
 // The script generators come from issue 19a; until they are in the tree the bench measures the
 // frame inputs and outputs only.
@@ -77,6 +79,49 @@ Measure in_child(const std::function<double(std::string&)>& work) {
   m.note = newline == std::string::npos ? "" : text.substr(newline + 1);
   m.ok = m.seconds >= 0;
   return m;
+}
+
+// The phases of one piece of work, timed in one child: each phase's seconds and the process's
+// peak resident memory when it ended (a phase's own cost is its growth over the phase before).
+struct Phase {
+  std::string name;
+  double seconds = 0;
+  double peak_mb = 0;
+};
+
+double own_peak_mb() {
+  rusage usage{};
+  ::getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+// Runs `work` in a child process; `work` appends its phases (empty: failed, with `note`).
+std::vector<Phase> phases_in_child(const std::function<void(std::vector<Phase>&, std::string&)>& work) {
+  std::vector<Phase> phases;
+  std::string note;
+  const Measure m = in_child([&](std::string& child_note) {
+    std::vector<Phase> done;
+    work(done, child_note);
+    if (done.empty()) return -1.0;
+    // The phases travel in the note: "name seconds peak" per line.
+    for (const Phase& p : done)
+      child_note += p.name + " " + std::to_string(p.seconds) + " " + std::to_string(p.peak_mb) + "\n";
+    return 0.0;
+  });
+  if (!m.ok) {
+    phases.push_back(Phase{"failed: " + (m.note.empty() ? std::string("child died") : m.note), -1, m.peak_mb});
+    return phases;
+  }
+  std::size_t at = 0;
+  for (std::size_t end; (end = m.note.find('\n', at)) != std::string::npos; at = end + 1) {
+    char name[64];
+    Phase p;
+    if (std::sscanf(m.note.substr(at, end - at).c_str(), "%63s %lf %lf", name, &p.seconds, &p.peak_mb) == 3) {
+      p.name = name;
+      phases.push_back(p);
+    }
+  }
+  return phases;
 }
 
 double since(std::chrono::steady_clock::time_point start) {
@@ -200,6 +245,33 @@ struct Bench {
     if (fitted.size() >= 2) std::printf("%-28s growth exponent %.2f\n", name.c_str(), growth(fitted));
   }
 
+  // One piece of work in phases over sizes: a line per size and phase, then each phase's exponent.
+  void phased_series(const std::string& name, const std::vector<std::int64_t>& sizes,
+                     const std::function<std::vector<Phase>(std::int64_t)>& run, const char* unit) {
+    if (!wanted(name)) return;
+    std::vector<std::pair<std::string, std::vector<std::pair<double, double>>>> fitted;  // by phase
+    for (const std::int64_t n : sizes) {
+      if (n > max_size) continue;
+      for (const Phase& p : run(n)) {
+        const std::string label = name + " " + p.name;
+        if (p.seconds < 0) {
+          std::printf("%-28s %9lld %-8s  %s\n", name.c_str(), static_cast<long long>(n), unit, p.name.c_str());
+          continue;
+        }
+        std::printf("%-28s %9lld %-8s %8.3f s %8.1f MB peak at its end\n", label.c_str(), static_cast<long long>(n),
+                    unit, p.seconds, p.peak_mb);
+        std::fflush(stdout);
+        if (n < 10'000) continue;
+        auto it = std::find_if(fitted.begin(), fitted.end(), [&](const auto& f) { return f.first == p.name; });
+        if (it == fitted.end()) it = fitted.insert(fitted.end(), {p.name, {}});
+        it->second.emplace_back(static_cast<double>(n), p.seconds);
+      }
+    }
+    for (const auto& [phase, points] : fitted)
+      if (points.size() >= 2)
+        std::printf("%-28s growth exponent %.2f\n", (name + " " + phase).c_str(), growth(points));
+  }
+
   fs::path long_fap(std::int64_t frames) {
     const fs::path path = folder / ("long-" + std::to_string(frames) + ".fap");
     if (!fs::exists(path)) in_child([&](std::string&) { return write_long_fap(path, frames), 0.0; });
@@ -253,12 +325,43 @@ struct Bench {
     for (const fapc::bench::ScriptKind kind : fapc::bench::kScriptKinds) {
       const std::string kind_name = fapc::bench::name(kind);
       const std::vector<std::int64_t> sizes{1'000, 10'000, 100'000, 1'000'000};
-      series(kind_name + " -> .fba (10 fps)", sizes, [&](std::int64_t n) {
-        const fs::path script = folder / ("script-" + std::to_string(n) + fapc::bench::extension(kind));
-        in_child([&](std::string&) {
-          std::ofstream(script, std::ios::binary) << fapc::bench::generate_script(kind, static_cast<std::size_t>(n));
-          return 0.0;
+      const auto script_of = [&](std::int64_t n) {
+        const fs::path script = folder / (kind_name + "-" + std::to_string(n) + fapc::bench::extension(kind));
+        if (!fs::exists(script))
+          in_child([&](std::string&) {
+            std::ofstream(script, std::ios::binary) << fapc::bench::generate_script(kind, static_cast<std::size_t>(n));
+            return 0.0;
+          });
+        return script;
+      };
+      // The library's stages one after the other: the front end to its timeline (parse, expand,
+      // schedule, lower), every frame rendered and held, the frames encoded.
+      phased_series(kind_name + " phase", sizes, [&](std::int64_t n) {
+        const fs::path script = script_of(n);
+        return phases_in_child([&](std::vector<Phase>& phases, std::string& note) {
+          fp::ConvertOptions options;
+          options.fps = 10;
+          options.render = false;
+          options.curves = false;
+          auto start = std::chrono::steady_clock::now();
+          auto lowered = fp::load(script.string(), options);
+          if (!lowered) return void(note = fapc::format_diagnostic(lowered.error()));
+          phases.push_back({"lower", since(start), own_peak_mb()});
+          start = std::chrono::steady_clock::now();
+          fapc::RenderOptions render;
+          render.fps = 10;
+          auto rendered = fapc::render_frames(*lowered->timeline, render);
+          if (!rendered) return phases.clear(), void(note = fapc::format_diagnostic(rendered.error()));
+          phases.push_back({"render", since(start), own_peak_mb()});
+          start = std::chrono::steady_clock::now();
+          auto encoded = fapc::encode_fba(rendered->frames, fapc::FbaEncodeOptions{});
+          if (!encoded) return phases.clear(), void(note = fapc::format_diagnostic(encoded.error()));
+          phases.push_back({"encode", since(start), own_peak_mb()});
         });
+      }, "elements");
+      // The whole compile as `fapc compile x -o x.fba` runs it (frames streamed to the encoder).
+      series(kind_name + " -> .fba (10 fps)", sizes, [&](std::int64_t n) {
+        const fs::path script = script_of(n);
         return in_child([&](std::string& note) {
           fp::ConvertOptions options;
           options.fps = 10;
