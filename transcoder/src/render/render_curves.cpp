@@ -134,7 +134,7 @@ Curves render_clip_curves(const Timeline& timeline, const CurveOptions& options)
     });
     // "jaw (table2.mimic:5)"; a second clip from the same place (a macro used twice) gets " #2".
     std::string label = clip.target + " (" +
-                        std::filesystem::path(clip.source.file).filename().string() + ":" +
+                        std::filesystem::path(clip.source.file.str()).filename().string() + ":" +
                         std::to_string(clip.source.line) + ")";
     std::string unique = label;
     for (int n = 2; out.curves.contains(unique); ++n) unique = label + " #" + std::to_string(n);

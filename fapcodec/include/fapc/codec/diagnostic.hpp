@@ -8,6 +8,8 @@
 #include <variant>
 #include <vector>
 
+#include "fapc/codec/file_name.hpp"
+
 namespace fapc {
 
 enum class Severity { warning, error };
@@ -15,7 +17,7 @@ enum class Severity { warning, error };
 // Where a diagnostic points. Text inputs use line and column (1-based); binary inputs use a byte
 // offset. A line of 0 and an offset of -1 mean "the whole file".
 struct Location {
-  std::string file;
+  FileName file;
   int line = 0;
   int column = 0;
   std::int64_t byte_offset = -1;
