@@ -99,6 +99,7 @@ class Compiler {
     schedule_options.max_runs = options_.max_runs;
     Result<Schedule> scheduled = schedule(*root, schedule_options);
     if (!scheduled) return with_source_line(scheduled.error());
+    *root = ScheduleNode{};  // the tree is scheduled: let it go before the clips are made
     MimicProgram out;
     out.timeline = lower(*scheduled);
     out.warnings = std::move(warnings_);
@@ -425,6 +426,10 @@ class Compiler {
 
   Timeline lower(const Schedule& scheduled) {
     Timeline timeline;
+    std::size_t clips = 0;  // at most one per occurrence and target: no growth by doubling
+    for (const Occurrence& o : scheduled.occurrences) clips += leaves_[o.leaf_id].targets.size();
+    timeline.clips.reserve(clips);
+    connects_.reserve(clips);
     for (const Occurrence& o : scheduled.occurrences) {
       const Leaf& leaf = leaves_[o.leaf_id];
       for (const Target& target : leaf.targets) add_clip(timeline, leaf, target, o);
