@@ -41,7 +41,16 @@ struct Leaf {
   // applied by the Algebra's amplifier), so the fade rises to the factor itself.
   bool expression = false;
   std::vector<Target> targets;
-  ActionParams params;
+  // What lowering needs of the action's parameters (all of ActionParams is 500 bytes a leaf).
+  struct Curve {
+    double in = 0, hold = 0, out = 0;  // fade
+    double value = 0;                  // fade: the value written (an expression's: unused)
+    Interpolation interpolation = Interpolation::linear;
+    // Fade with connect: empty inside when it ends at the next clip's value, else connect=x.
+    std::optional<std::optional<double>> connect;
+    Periodic::Shape wave = Periodic::Shape::sine;  // periodic
+    double min = 0, max = 0, period = 1;
+  } curve;
   const Action* action = nullptr;
   BlendMode blend = BlendMode::add;
 };
@@ -351,13 +360,31 @@ class Compiler {
       return error(action.at, "'" + action.name + "' needs a fade (in, hold, out, value), a periodic "
                               "function (min, max, freq or period) or a time-value list");
     }
-    leaf.params = std::move(params);
-    check_ranges(leaf);
+    leaf.curve = curve_of(leaf.shape, params);
+    check_ranges(leaf, params);
     leaves_.push_back(std::move(leaf));
     return ScheduleNode::leaf(leaves_.size() - 1, timing, location(action.at));
   }
 
   static double value_or_zero(const std::optional<Number>& n) { return n ? n->value : 0; }
+
+  static Leaf::Curve curve_of(Leaf::Shape shape, const ActionParams& p) {
+    Leaf::Curve curve;
+    if (shape == Leaf::Shape::fade) {
+      curve.in = value_or_zero(p.in);
+      curve.hold = value_or_zero(p.hold);
+      curve.out = value_or_zero(p.out);
+      curve.value = value_or_zero(p.value);
+      curve.interpolation = p.interpolation();
+      if (p.connect) curve.connect = p.connect->value ? std::optional<double>(p.connect->value->value) : std::nullopt;
+    } else if (shape == Leaf::Shape::periodic) {
+      curve.wave = p.function && p.function->name == "linear" ? Periodic::Shape::triangle : Periodic::Shape::sine;
+      curve.min = value_or_zero(p.min);
+      curve.max = p.max->value;
+      curve.period = p.period ? p.period->value : 1 / p.freq->value;
+    }
+    return curve;
+  }
 
   Status check_list(const Action& action) const {
     if (action.times.size() != action.values.size()) {
@@ -394,9 +421,9 @@ class Compiler {
 
   // Values beyond what the target can carry: a warning at the number (docs/mimic.md,
   // "Timing and values").
-  void check_ranges(const Leaf& leaf) {
+  void check_ranges(const Leaf& leaf, const ActionParams& params) {
     std::vector<const Number*> numbers;
-    for (const std::optional<Number>* n : {&leaf.params.value, &leaf.params.min, &leaf.params.max}) {
+    for (const std::optional<Number>* n : {&params.value, &params.min, &params.max}) {
       if (*n) numbers.push_back(&**n);
     }
 
@@ -445,24 +472,24 @@ class Compiler {
     clip.end = o.end;
     clip.blend = leaf.blend;
     clip.source = location(leaf.action->at);
-    const ActionParams& p = leaf.params;
+    const Leaf::Curve& p = leaf.curve;
     switch (leaf.shape) {
       case Leaf::Shape::fade: {
-        const double in = value_or_zero(p.in);
-        const double hold = value_or_zero(p.hold);
-        const double out = value_or_zero(p.out);
-        const double v = leaf.expression ? target.factor : p.value->value * target.factor;
-        const Interpolation f = p.interpolation();
+        const double in = p.in;
+        const double hold = p.hold;
+        const double out = p.out;
+        const double v = leaf.expression ? target.factor : p.value * target.factor;
+        const Interpolation f = p.interpolation;
         // Rise from the neutral 0 to v, hold, fall to the end value (0 until `connect` sets it).
         clip.curve.keys = {{0, 0, f}, {in, v, Interpolation::linear}, {in + hold, v, f}, {in + hold + out, 0}};
         break;
       }
       case Leaf::Shape::periodic: {
         Periodic wave;
-        wave.shape = p.function && p.function->name == "linear" ? Periodic::Shape::triangle : Periodic::Shape::sine;
-        wave.min = value_or_zero(p.min) * target.factor;
-        wave.max = p.max->value * target.factor;
-        wave.period = p.period ? p.period->value : 1 / p.freq->value;
+        wave.shape = p.wave;
+        wave.min = p.min * target.factor;
+        wave.max = p.max * target.factor;
+        wave.period = p.period;
         clip.curve.periodic = wave;
         break;
       }
@@ -481,7 +508,7 @@ class Compiler {
     if (clip.end <= clip.begin) return;  // nothing to contribute (zero length, or cut away)
     timeline.clips.push_back(std::move(clip));
     if (leaf.shape == Leaf::Shape::fade && p.connect) {
-      connects_.emplace_back(p.connect->value ? std::optional<double>(p.connect->value->value) : std::nullopt);
+      connects_.emplace_back(*p.connect);
     } else {
       connects_.emplace_back();
     }
