@@ -85,7 +85,10 @@ class Compiler {
     for (const Definition& d : program_.definitions) {
       if (!d.expression && expanded_size(d.group) > run_limit()) return too_many_actions(d.group);
     }
-    if (expanded_size(program_.main) > run_limit()) return too_many_actions(overflowing(program_.main, run_limit()));
+    const double main_size = expanded_size(program_.main);
+    if (main_size > run_limit()) return too_many_actions(overflowing(program_.main, run_limit()));
+    // At most one leaf per node of main, macros expanded: the leaves never grow by doubling.
+    leaves_.reserve(static_cast<std::size_t>(main_size));
     // Macro bodies are checked where they are written, even when no one uses them.
     for (const Definition& d : program_.definitions) {
       if (d.expression) continue;

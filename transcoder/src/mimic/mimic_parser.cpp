@@ -146,6 +146,8 @@ class Parser {
       group.children.push_back(std::move(*child));
     }
     next();
+    // The tree lives until the clips are made: no room kept for growth (a script holds millions).
+    group.children.shrink_to_fit();
     return group;
   }
 
@@ -200,6 +202,7 @@ class Parser {
       const char* wanted = list == &atomic.times ? "a time or ';' ending the times"
                                                  : "a value or ';' ending the values";
       if (auto semicolon = expect(TokenKind::semicolon, wanted); !semicolon) return semicolon.error();
+      list->shrink_to_fit();
     }
     if (auto close = expect(TokenKind::right_paren, "')' closing the time-value list"); !close) {
       return close.error();
@@ -245,6 +248,7 @@ class Parser {
       if (auto close = expect(TokenKind::greater, "',' or '>' in the parameter list"); !close) {
         return close.error();
       }
+      params.shrink_to_fit();
       return params;
     }
   }
