@@ -32,12 +32,12 @@ char* write_number(char* out, double v) {
 char* write_text(char* out, std::string_view text) { return std::copy(text.begin(), text.end(), out); }
 
 // One point, "[t, v]", with the ", " before it unless it is its list's first.
-char* write_point(char* out, bool first, std::string_view time, std::string_view value) {
+char* write_point(char* out, bool first, double t, double v) {
   if (!first) out = write_text(out, ", ");
   *out++ = '[';
-  out = write_text(out, time);
+  out = write_number(out, t);
   out = write_text(out, ", ");
-  out = write_text(out, value);
+  out = write_number(out, v);
   *out++ = ']';
   return out;
 }
@@ -74,14 +74,9 @@ std::string curves_json(const Curves& curves) {
   for (const auto& [target, points] : curves.curves) {
     out += target_opening(first_target, target);
     first_target = false;
-    char time[kNumberRoom];
-    char value[kNumberRoom];
     char point[2 * kNumberRoom + 8];
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const std::string_view t(time, write_number(time, points[i].first));
-      const std::string_view v(value, write_number(value, points[i].second));
-      out.append(point, write_point(point, i == 0, t, v));
-    }
+    for (std::size_t i = 0; i < points.size(); ++i)
+      out.append(point, write_point(point, i == 0, points[i].first, points[i].second));
     out += ']';
   }
   out += kClosing;
@@ -134,14 +129,22 @@ std::string frames_curves_json(const FapSequence& sequence) {
   }
   write_text(at, kClosing);
 
-  // Second pass: each point written where its target's stretch has reached.
+  // Second pass: each point written where its target's stretch has reached; "[t, " is the same
+  // for every point of a frame, so it is made once per frame.
+  char* const end = out.data() + out.size();
+  char head[kNumberRoom + 3];
   for (const FapFrame& frame : sequence.frames) {
-    const std::string_view t(time, write_number(time, frame_time(sequence, frame)));
+    char* head_end = head;
+    *head_end++ = '[';
+    head_end = write_number(head_end, frame_time(sequence, frame));
+    head_end = write_text(head_end, ", ");
     for (int fap = 1; fap <= kFapCount; ++fap) {
       if (!frame.has(fap)) continue;
-      const std::string_view v(value, std::to_chars(value, value + kNumberRoom, frame_value(frame, fap)).ptr);
       char*& point = cursor[static_cast<std::size_t>(fap)];
-      point = write_point(point, point == start[static_cast<std::size_t>(fap)], t, v);
+      if (point != start[static_cast<std::size_t>(fap)]) point = write_text(point, ", ");
+      point = std::copy(head, head_end, point);
+      point = std::to_chars(point, end, frame_value(frame, fap)).ptr;
+      *point++ = ']';
     }
   }
   return out;
