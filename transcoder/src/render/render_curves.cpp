@@ -182,6 +182,9 @@ Curves render_clip_curves(const Timeline& timeline, const CurveOptions& options)
   Curves out;
   out.fps = options.fps;
   out.duration = timeline.end();
+  // How many clips had each label so far: a macro used n times from one place must not look for
+  // a free " #k" from 2 up each time (n^2 / 2 lookups).
+  std::map<std::string, int> uses;
   for (const Clip& clip : timeline.clips) {
     std::vector<double> times;
     add_clip_times(clip, clip.end, times);
@@ -195,7 +198,7 @@ Curves render_clip_curves(const Timeline& timeline, const CurveOptions& options)
                         std::filesystem::path(clip.source.file).filename().string() + ":" +
                         std::to_string(clip.source.line) + ")";
     std::string unique = label;
-    for (int n = 2; out.curves.contains(unique); ++n) unique = label + " #" + std::to_string(n);
+    for (int& n = uses[label]; out.curves.contains(unique);) unique = label + " #" + std::to_string(++n + 1);
     out.curves[unique] = thin_points(std::move(points), options.tolerance);
   }
   return out;

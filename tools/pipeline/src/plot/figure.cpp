@@ -164,13 +164,14 @@ Result<Figure> build_figure(const Loaded& loaded, const std::string& input, cons
     bool all_zero = zero_throughout(series.points);
     if (clips) {
       // "jaw (table2.mimic:5) #2": the clips of this target, labelled by their line number.
+      const std::string prefix = name + " (";
       for (const auto& [key, clip_points] : clips->curves) {
-        if (!key.starts_with(name + " (")) continue;
+        if (!key.starts_with(prefix)) continue;
         const auto colon = key.rfind(':');
         const auto close = key.find(')', colon == std::string::npos ? 0 : colon);
         const std::string label =
             colon == std::string::npos || close == std::string::npos ? key : key.substr(colon + 1, close - colon - 1);
-        series.clips.emplace_back(label, clip_points);
+        series.clips.emplace_back(label, visible_points(clip_points, figure.duration));
         all_zero = all_zero && zero_throughout(clip_points);
       }
     }
