@@ -236,7 +236,7 @@ struct Bench {
       return in_child([&](std::string& note) { return verify_case(input, note); });
     });
     for (const char* ext : {".json", ".svg"})
-      series(std::string("writer ") + ext + " (frames)", {1'000, 10'000, 100'000}, [&](std::int64_t n) {
+      series(std::string("writer ") + ext + " (frames)", frames, [&](std::int64_t n) {
         const fs::path input = long_fap(n);
         return in_child([&](std::string& note) { return writer_case(input, folder / ("out" + std::string(ext)), note); });
       });
