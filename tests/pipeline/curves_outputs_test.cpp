@@ -1,8 +1,8 @@
-// The curves JSON (docs/cli.md, "Curves JSON") against a second writer here, printf's "%.10g" over
-// curves_from_frames: frames' curves, which the writer prints without ever building them, and a
-// script's curves print what that writer prints. And the thinning of plot lines to pixel columns
-// against a second thinning written here: plots thin a line as the figure is built and again as it
-// is drawn, which only works if thinning keeps what it already kept.
+// The curves JSON (docs/cli.md, its "Curves JSON" item) against a second writer here, printf's
+// "%.10g" over curves_from_frames: frames' curves, which the writer prints without ever building
+// them, and a script's curves print what that writer prints. And the thinning of plot lines to
+// pixel columns against a second thinning written here: plots thin a line as the figure is built
+// and again as it is drawn, which only works if thinning keeps what it already kept.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Private to the formats: the text of the curves JSON (docs/cli.md, "Curves JSON"), from a
+// Private to the formats: the text of the curves JSON (docs/cli.md, its "Curves JSON" item), from a
 // script's curves or straight from frames. Both write the same bytes for the same points.
 #pragma once
 
