@@ -34,19 +34,22 @@ void sort_unique(std::vector<double>& times) {
   times.erase(std::unique(times.begin(), times.end()), times.end());
 }
 
-// Samples `value(t, from_left)` at `times`: where the left limit differs from the value (a jump),
-// both are kept, the left one first, except before the very first point.
+// Adds the sample of `value(t, from_left)` at t: where the left limit differs from the value (a
+// jump), both are kept, the left one first, except before the very first point.
+template <class ValueFn>
+void add_sample(Points& points, double t, ValueFn& value) {
+  const double right = value(t, false);
+  if (!points.empty()) {
+    const double left = value(t, true);
+    if (left != right) points.emplace_back(t, left);
+  }
+  points.emplace_back(t, right);
+}
+
 template <class ValueFn>
 Points sample(const std::vector<double>& times, ValueFn value) {
   Points points;
-  for (const double t : times) {
-    const double right = value(t, false);
-    if (!points.empty()) {
-      const double left = value(t, true);
-      if (left != right) points.emplace_back(t, left);
-    }
-    points.emplace_back(t, right);
-  }
+  for (const double t : times) add_sample(points, t, value);
   return points;
 }
 
@@ -85,14 +88,7 @@ Points sample_merged(const std::vector<double>& clip_times, double from, double 
   auto k = static_cast<std::int64_t>(std::ceil(from * fps));
   std::size_t c = 0;
   const auto frame_time = [&] { return static_cast<double>(k) / fps; };
-  const auto add = [&](double t) {
-    const double right = value(t, false);
-    if (!points.empty()) {
-      const double left = value(t, true);
-      if (left != right) points.emplace_back(t, left);
-    }
-    points.emplace_back(t, right);
-  };
+  const auto add = [&](double t) { add_sample(points, t, value); };
   while (true) {
     const bool frames_left = frame_time() < to;
     if (!frames_left && c == clip_times.size()) break;
