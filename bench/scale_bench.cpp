@@ -375,12 +375,7 @@ struct Bench {
       // the timeline compiled untimed, without frames.
       for (const bool json : {false, true})
         series(kind_name + (json ? " curves -> .json" : " curves (25 fps)"), sizes, [&](std::int64_t n) {
-          const fs::path script = folder / ("script-" + std::to_string(n) + fapc::bench::extension(kind));
-          if (!fs::exists(script))
-            in_child([&](std::string&) {
-              std::ofstream(script, std::ios::binary) << fapc::bench::generate_script(kind, static_cast<std::size_t>(n));
-              return 0.0;
-            });
+          const fs::path script = script_of(n);  // named by kind: xmto and xmto-to share an extension
           return in_child([&](std::string& note) { return curves_case(script, json, note); });
         }, "elements");
     }
