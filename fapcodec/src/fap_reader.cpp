@@ -477,6 +477,12 @@ Result<FapReadResult> Reader::run() {
   for (fapfile::RawLine raw{0, {}}; lines_.next(raw);) {
     constexpr std::size_t kReportEvery = std::size_t{16} << 20;
     if (progress_ && lines_.offset() - reported_ >= kReportEvery) progress_(reported_ = lines_.offset());
+    if (bool trailing = false; expect == Expect::mask && fapfile::scan_plain_mask(raw.text, mask, trailing)) {
+      if (trailing) out_.facts.trailing_spaces = true;
+      mask_line = raw;
+      expect = Expect::values;
+      continue;
+    }
     if (expect == Expect::mask && fapfile::scan_integers(raw.text, integers) && integers.count == 68 &&
         integers.bits) {
       mask.reset();
@@ -550,8 +556,8 @@ Result<FapReadResult> Reader::run() {
 }  // namespace
 
 Result<FapReadResult> read_fap_text(std::string_view text, const std::string& file,
-                                    const FapReadOptions& options) {
-  return Reader(text, file, options).run();
+                                    const FapReadOptions& options, const std::function<void(std::size_t)>& progress) {
+  return Reader(text, file, options, {}, progress).run();
 }
 
 Result<FapScanResult> scan_fap_text(std::string_view text, const std::string& file, const FapReadOptions& options,
