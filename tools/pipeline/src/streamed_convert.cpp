@@ -337,6 +337,7 @@ std::optional<ConvertResult> convert_streamed(const std::string& input, const st
     auto finished = (*encoding)->encoder.finish();
     if (finished) (*encoding)->encoded = std::move(*finished);
     else (*encoding)->error = finished.error();
+    (*encoding)->encoder = FbaEncoder();  // its statistics of the masks go before the outputs are made
   }
   for (std::optional<Encoding>* encoding : {&fba, &mp4})
     if (*encoding && (*encoding)->error) (*encoding)->error->where.file = input;  // as encode_checked names the input

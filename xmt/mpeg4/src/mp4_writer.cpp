@@ -422,8 +422,9 @@ Status write_mp4(const FbaTrackView& fba, const AudioTrackInput* audio, const Mp
   ByteWriter mdat_header;
   mdat_header.u32(static_cast<std::uint32_t>(at - mdat_start));
   mdat_header.fourcc("mdat");
-  for (const Bytes& part : {head, write_moov(tracks, offsets, profiles), mdat_header.data()})
-    if (Status s = file.put(part); !s) return s;
+  if (Status s = file.put(head); !s) return s;
+  if (Status s = file.put(write_moov(tracks, offsets, profiles)); !s) return s;
+  if (Status s = file.put(mdat_header.data()); !s) return s;
   for (const TrackPlan& t : tracks)
     for (const Piece& s : t.samples)
       if (Status status = file.put(s); !status) return status;
