@@ -74,9 +74,10 @@ std::vector<std::string> corpus_files(const std::vector<std::string>& folders, c
   return files;
 }
 
-// Converts `input` both ways to every output (all of them, then each kind alone) under every
-// setting and compares.
-void expect_same_both_ways(const std::string& input, const test::TempFolder& tmp) {
+// Converts `input` both ways to every output (all of them, then the .mp4 alone) under every
+// setting and compares; the number of outputs written and compared.
+std::size_t expect_same_both_ways(const std::string& input, const test::TempFolder& tmp) {
+  std::size_t compared = 0;
   const std::vector<std::vector<pipeline::OutputRequest>> requests = {
       {{tmp / "x.fap", ""}, {tmp / "x.fba", ""}, {tmp / "x.mp4", ""}},
       {{tmp / "x.mp4", ""}},
@@ -89,17 +90,25 @@ void expect_same_both_ways(const std::string& input, const test::TempFolder& tmp
       SCOPED_TRACE(input + " to " + std::to_string(outputs.size()) + " output(s)");
       EXPECT_TRUE(streamed.loaded.frames.frames.empty());  // streamed, not loaded
       if (expected.error) {
-        ASSERT_FALSE(streamed.ok());
-        EXPECT_EQ(format_diagnostic(*streamed.error), format_diagnostic(*expected.error));
+        EXPECT_FALSE(streamed.ok());
+        if (streamed.error) {
+          EXPECT_EQ(format_diagnostic(*streamed.error), format_diagnostic(*expected.error));
+        }
       } else {
-        ASSERT_TRUE(streamed.ok()) << format_diagnostic(*streamed.error);
+        EXPECT_TRUE(streamed.ok()) << format_diagnostic(*streamed.error);
+        if (!streamed.ok()) continue;
       }
       for (std::size_t i = 0; i < outputs.size(); ++i) {
-        if (i < expected.bytes.size()) EXPECT_EQ(contents(outputs[i].path), expected.bytes[i]) << outputs[i].path;
-        else EXPECT_FALSE(fs::exists(outputs[i].path)) << outputs[i].path;
+        if (i < expected.bytes.size()) {
+          EXPECT_EQ(contents(outputs[i].path), expected.bytes[i]) << outputs[i].path;
+          ++compared;
+        } else {
+          EXPECT_FALSE(fs::exists(outputs[i].path)) << outputs[i].path;
+        }
       }
     }
   }
+  return compared;
 }
 
 void expect_no_temporary_file(const test::TempFolder& tmp) {
@@ -111,7 +120,9 @@ TEST(StreamedConvert, FapGivesTheBytesAndErrorsOfLoadingAndWriting) {
   const test::TempFolder tmp;
   const auto files = corpus_files({"fap", "fap-variants", "fap-bad"}, ".fap");
   EXPECT_GT(files.size(), 150u);
-  for (const std::string& input : files) expect_same_both_ways(input, tmp);
+  std::size_t compared = 0;
+  for (const std::string& input : files) compared += expect_same_both_ways(input, tmp);
+  EXPECT_GT(compared, 2000u);  // most files convert under most settings
   expect_no_temporary_file(tmp);
 }
 
@@ -126,7 +137,9 @@ TEST(StreamedConvert, FbaGivesTheBytesAndErrorsOfLoadingAndWriting) {
     files.push_back(made);
   }
   EXPECT_GT(files.size(), 20u);
-  for (const std::string& input : files) expect_same_both_ways(input, tmp);
+  std::size_t compared = 0;
+  for (const std::string& input : files) compared += expect_same_both_ways(input, tmp);
+  EXPECT_GT(compared, 200u);
   expect_no_temporary_file(tmp);
 }
 
