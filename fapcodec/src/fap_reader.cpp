@@ -542,7 +542,10 @@ Result<FapReadResult> Reader::run() {
     return error_at(mask_line, static_cast<int>(mask_line.text.size()) + 1,
                     "mask line without the value line that must follow it");
   if (auto e = place_frames_in_time()) return *e;
-  for (std::size_t k = 0; k < out_.sequence.frames.size(); ++k) out_.sequence.frames[k].number = numbers_[k];
+  // The frames carry their numbers as written; only stamps and numbering from 1 changed them (a
+  // walk over every frame, which a long file does not pay for otherwise).
+  if (facts.millisecond_stamps || facts.frames_from_one)
+    for (std::size_t k = 0; k < out_.sequence.frames.size(); ++k) out_.sequence.frames[k].number = numbers_[k];
   const auto frames = static_cast<long long>(numbers_.size());
   if (facts.has_header && facts.header_count != frames)
     warn_at({"fap.frame_count"}, header_count_at_, header_count_at_.first_column,
