@@ -74,13 +74,15 @@ std::vector<std::string> corpus_files(const std::vector<std::string>& folders, c
   return files;
 }
 
-// Converts `input` both ways to every output (all of them, then the .mp4 alone) under every
-// setting and compares; the number of outputs written and compared.
+// Converts `input` both ways to every output (all of them, then the .mp4 alone, then the .fap
+// alone: a .fba to one .fap is decoded once) under every setting and compares; the number of
+// outputs written and compared.
 std::size_t expect_same_both_ways(const std::string& input, const test::TempFolder& tmp) {
   std::size_t compared = 0;
   const std::vector<std::vector<pipeline::OutputRequest>> requests = {
       {{tmp / "x.fap", ""}, {tmp / "x.fba", ""}, {tmp / "x.mp4", ""}},
       {{tmp / "x.mp4", ""}},
+      {{tmp / "x.fap", ""}},
   };
   for (const ConvertOptions& options : settings()) {
     for (const auto& outputs : requests) {

@@ -62,6 +62,8 @@ class FrameSource {
   virtual ~FrameSource() = default;
   virtual Result<SourceFacts> first_pass(const FapFrameSink& check) = 0;
   virtual Status second_pass(const FapFrameSink& code) = 0;
+  // Whether the first pass already numbers the frames as placed in time.
+  virtual bool placed_in_first_pass() const { return false; }
 };
 
 class FapSource : public FrameSource {
@@ -136,6 +138,8 @@ class FbaSource : public FrameSource {
     frames_ = facts.frames;
     return facts;
   }
+
+  bool placed_in_first_pass() const override { return true; }
 
   Status second_pass(const FapFrameSink& code) override {
     std::size_t k = 0;
@@ -243,6 +247,83 @@ Status write_mp4_output(const EncodedFba& encoded, int fps, const std::string& p
   return file->commit();
 }
 
+// The result's facts of the first pass, as loading would give them; false (and the error set)
+// when --strict refuses the warnings.
+bool take_facts(ConvertResult& result, const SourceFacts& facts, const std::bitset<kFapCount>& faps,
+                const std::string& input, const ConvertOptions& options) {
+  result.warnings = facts.warnings;
+  result.loaded.origin = input;
+  result.loaded.frames.name = facts.name;
+  result.loaded.frames.fps = facts.fps;
+  result.loaded.warnings = facts.warnings;
+  result.frames = {facts.frames, facts.fps, faps};
+  if (options.strict && !result.warnings.empty()) {
+    result.error = make_error(ErrorKind::bad_input, Location{input, 0, 0, -1},
+                              std::to_string(result.warnings.size()) +
+                                  " warning(s) treated as errors (--strict); nothing written");
+    return false;
+  }
+  return true;
+}
+
+// A decoded .fba to one .fap in a single pass: the frames are written as they are decoded, to an
+// unnamed scratch file beside the output, and the output is the header (which needs the frame
+// count and rate, known at the end) followed by that text. The frames' text depends only on the
+// first frame's number, except in the SEMAINE flavour (times in ms need the rate): that one, and
+// a scratch file that cannot be made, take the two passes (empty result).
+std::optional<ConvertResult> convert_in_one_pass(FrameSource& source, const std::string& input,
+                                                 const std::string& path, const ConvertOptions& options) {
+  if (!source.placed_in_first_pass() || options.fap_flavour == FapFlavour::semaine) return std::nullopt;
+  auto body = ScratchFile::create(path);
+  if (!body) return std::nullopt;
+  const FapWriteOptions write_options = FapOutputs::write_options(options);
+  std::optional<FapTextWriter> writer;  // from the first frame, whose number the text needs
+  std::string text;
+  std::optional<Diagnostic> fap_error, body_error;
+  const auto flush = [&](bool always) {
+    if (!always && text.size() < (std::size_t{1} << 20)) return;
+    if (!body_error)
+      if (auto written = body->write(text); !written) body_error = written.error();
+    text.clear();
+  };
+  std::bitset<kFapCount> faps;
+  auto facts = source.first_pass([&](const FapFrame& frame) -> Status {
+    faps |= frame.mask;
+    if (fap_error) return ok_status();
+    if (!writer) writer.emplace(std::string(), 0, 0, frame.number, frame.number, write_options);
+    if (auto status = writer->add(frame, text); !status) fap_error = status.error();
+    else flush(false);
+    return ok_status();
+  });
+  ConvertResult result;
+  if (!facts) {
+    result.error = facts.error();
+    return result;
+  }
+  if (!take_facts(result, *facts, faps, input, options)) return result;
+  FapTextWriter header_writer(facts->name, facts->fps, facts->frames, facts->first_number, facts->last_number,
+                              write_options);
+  std::string header;
+  // The header's error (a rate the flavour cannot carry) comes before any frame's, as the usual writer gives them.
+  if (auto status = header_writer.begin(header); !status) fap_error = status.error();
+  if (writer && !fap_error) writer->finish(text);
+  flush(true);
+  Status written = ok_status();
+  if (fap_error) {
+    written = Diagnostic{fap_error->severity, Location{path, 0, 0, -1}, fap_error->message, {}, fap_error->kind};
+  } else if (body_error) {
+    written = *body_error;
+  } else if (auto file = AtomicFile::create(path); !file) {
+    written = file.error();
+  } else if (written = file->write(header); written) {
+    written = body->read_back([&](std::string_view piece) { return file->write(piece); });
+    if (written) written = file->commit();
+  }
+  if (!written) result.error = written.error();
+  else result.written.push_back(path);
+  return result;
+}
+
 std::unique_ptr<FrameSource> open_source(const std::string& input, const ConvertOptions& options) {
   auto mapped = MappedFile::open(input);
   // The usual way reports an unreadable file, inflates a gzip one, and reads one that says it is
@@ -260,6 +341,8 @@ std::optional<ConvertResult> convert_streamed(const std::string& input, const st
   if (!can_stream(input, outputs, writers, options)) return std::nullopt;
   std::unique_ptr<FrameSource> source = open_source(input, options);
   if (!source) return std::nullopt;
+  if (outputs.size() == 1 && writers[0]->kind == "fap")
+    if (auto done = convert_in_one_pass(*source, input, outputs[0].path, options)) return done;
   bool wants_fba = false, wants_mp4 = false;
   for (const OutputFormat* writer : writers) {
     wants_fba = wants_fba || writer->kind == "fba";
@@ -284,18 +367,7 @@ std::optional<ConvertResult> convert_streamed(const std::string& input, const st
     result.error = facts.error();
     return result;
   }
-  result.warnings = facts->warnings;
-  result.loaded.origin = input;
-  result.loaded.frames.name = facts->name;
-  result.loaded.frames.fps = facts->fps;
-  result.loaded.warnings = facts->warnings;
-  result.frames = {facts->frames, facts->fps, faps};
-  if (options.strict && !result.warnings.empty()) {
-    result.error = make_error(ErrorKind::bad_input, Location{input, 0, 0, -1},
-                              std::to_string(result.warnings.size()) +
-                                  " warning(s) treated as errors (--strict); nothing written");
-    return result;
-  }
+  if (!take_facts(result, *facts, faps, input, options)) return result;
   // As encode_checked: a rate the stream cannot code comes before any other error of encoding.
   const auto rate_error = fba_rate_error(facts->fps, facts->rate_at, facts->fps, input);
   for (std::optional<Encoding>* encoding : {&fba, &mp4}) {
