@@ -248,9 +248,14 @@ Status write_mp4_output(const EncodedFba& encoded, int fps, const std::string& p
 }
 
 // The result's facts of the first pass, as loading would give them; false (and the error set)
-// when --strict refuses the warnings.
-bool take_facts(ConvertResult& result, const SourceFacts& facts, const std::bitset<kFapCount>& faps,
+// when the pass failed or --strict refuses the warnings.
+bool take_facts(ConvertResult& result, const Result<SourceFacts>& read, const std::bitset<kFapCount>& faps,
                 const std::string& input, const ConvertOptions& options) {
+  if (!read) {
+    result.error = read.error();
+    return false;
+  }
+  const SourceFacts& facts = *read;
   result.warnings = facts.warnings;
   result.loaded.origin = input;
   result.loaded.frames.name = facts.name;
@@ -296,11 +301,7 @@ std::optional<ConvertResult> convert_in_one_pass(FrameSource& source, const std:
     return ok_status();
   });
   ConvertResult result;
-  if (!facts) {
-    result.error = facts.error();
-    return result;
-  }
-  if (!take_facts(result, *facts, faps, input, options)) return result;
+  if (!take_facts(result, facts, faps, input, options)) return result;
   FapTextWriter header_writer(facts->name, facts->fps, facts->frames, facts->first_number, facts->last_number,
                               write_options);
   std::string header;
@@ -363,11 +364,7 @@ std::optional<ConvertResult> convert_streamed(const std::string& input, const st
     return ok_status();
   });
   ConvertResult result;
-  if (!facts) {
-    result.error = facts.error();
-    return result;
-  }
-  if (!take_facts(result, *facts, faps, input, options)) return result;
+  if (!take_facts(result, facts, faps, input, options)) return result;
   // As encode_checked: a rate the stream cannot code comes before any other error of encoding.
   const auto rate_error = fba_rate_error(facts->fps, facts->rate_at, facts->fps, input);
   for (std::optional<Encoding>* encoding : {&fba, &mp4}) {
