@@ -145,5 +145,27 @@ TEST(StreamedConvert, FbaGivesTheBytesAndErrorsOfLoadingAndWriting) {
   expect_no_temporary_file(tmp);
 }
 
+TEST(StreamedConvert, AnEncoderErrorAboutOneFramePointsAtTheFramesLine) {
+  // A value the bitstream cannot carry is found by the encoder, which sees frames, not lines: it
+  // used to be reported against the file as a whole. Streamed (.fba, .mp4) and loaded alike.
+  const test::TempFolder tmp;
+  const std::string input = tmp / "far.fap";
+  std::string mask = "0 0 1";  // FAP 3, open_jaw
+  for (int fap = 4; fap <= 68; ++fap) mask += " 0";
+  mask += "\n";
+  std::ofstream(input) << "2.1 far 25 3\n" << mask << "0 10\n" << mask << "1 20\n" << mask << "2 2000000000\n";
+  ConvertOptions loaded;
+  loaded.verify = true;  // takes the usual way
+  for (const ConvertOptions& options : {ConvertOptions{}, loaded}) {
+    for (const char* output : {"x.fba", "x.mp4"}) {
+      const pipeline::ConvertResult r = pipeline::convert(input, {{tmp / output, ""}}, options);
+      ASSERT_FALSE(r.ok()) << output;
+      EXPECT_EQ(r.error->where.file, input) << output;
+      EXPECT_EQ(r.error->where.line, 7) << output;  // the third frame's value line
+      EXPECT_FALSE(fs::exists(tmp / output));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace fapc

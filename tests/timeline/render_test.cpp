@@ -50,6 +50,19 @@ TEST(Curve, PeriodicShapes) {
   EXPECT_DOUBLE_EQ(triangle.value_at(4), 0);
 }
 
+TEST(Curve, APeriodTooShortToDivideByStillGivesAValueInRange) {
+  // period=51e-320 in a Mimic script (a fuzzing campaign's input): t / period overflowed, cos(inf)
+  // was NaN, and the renderer's conversion of NaN to int was undefined behaviour.
+  for (const auto shape : {Periodic::Shape::sine, Periodic::Shape::triangle}) {
+    Curve c;
+    c.periodic = Periodic{shape, 1, 3, 51e-320};
+    for (const double t : {0.0, 0.04, 5.0, 1e6}) {
+      const double v = c.value_at(t);
+      EXPECT_TRUE(v >= 1 && v <= 3) << t << " -> " << v;
+    }
+  }
+}
+
 TEST(Blend, AddIsTheDefaultAndNeutralIsZero) {
   Timeline t{{clip("jaw", 0, 4, Curve::constant(1)), clip("jaw", 2, 6, Curve::constant(2))}, {}};
   const TimelineEvaluator e(t);
@@ -192,6 +205,23 @@ TEST(Curves, PerClipCurvesAreLabelledByTheirSource) {
   using P = std::vector<std::pair<double, double>>;
   EXPECT_EQ(c.curves.at("jaw (t.mimic:5)"), (P{{0, 0}, {2, 1}}));
   EXPECT_EQ(c.curves.at("jaw (t.mimic:5) #2"), (P{{0, 1}, {2, 1}}));
+}
+
+TEST(Curves, EveryUseOfOnePlaceHasANumberOfItsOwn) {
+  // A macro used four times from line 5, and once from line 6 between its uses.
+  Timeline t{{clip("jaw", 0, 1, Curve::constant(1), BlendMode::add, Fill::remove, 5),
+              clip("jaw", 1, 2, Curve::constant(2), BlendMode::add, Fill::remove, 5),
+              clip("jaw", 2, 3, Curve::constant(3), BlendMode::add, Fill::remove, 6),
+              clip("jaw", 3, 4, Curve::constant(4), BlendMode::add, Fill::remove, 5),
+              clip("jaw", 4, 5, Curve::constant(5), BlendMode::add, Fill::remove, 5)},
+             {}};
+  const Curves c = render_clip_curves(t, CurveOptions{});
+  ASSERT_EQ(c.curves.size(), 5u);
+  EXPECT_EQ(c.curves.at("jaw (t.mimic:5)").front().second, 1);
+  EXPECT_EQ(c.curves.at("jaw (t.mimic:5) #2").front().second, 2);
+  EXPECT_EQ(c.curves.at("jaw (t.mimic:6)").front().second, 3);
+  EXPECT_EQ(c.curves.at("jaw (t.mimic:5) #3").front().second, 4);
+  EXPECT_EQ(c.curves.at("jaw (t.mimic:5) #4").front().second, 5);
 }
 
 }  // namespace

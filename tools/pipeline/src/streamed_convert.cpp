@@ -64,6 +64,12 @@ class FrameSource {
   virtual Status second_pass(const FapFrameSink& code) = 0;
   // Whether the first pass already numbers the frames as placed in time.
   virtual bool placed_in_first_pass() const { return false; }
+  // Where frame `number` (as placed) was read, for the encoder's errors about one frame
+  // (FbaEncodeOptions::locate); nothing known before the first pass is done, or for a stream.
+  virtual Location locate(std::int64_t number, int fap) const {
+    (void)number, (void)fap;
+    return Location{};
+  }
 };
 
 class FapSource : public FrameSource {
@@ -82,6 +88,8 @@ class FapSource : public FrameSource {
     }, let_go());
     if (!scan) return scan.error();
     numbers_ = std::move(scan->numbers);
+    value_lines_ = std::move(scan->read.value_lines);
+    locator_ = frame_locator(numbers_, value_lines_, path_);
     const FapReadResult& read = scan->read;
     SourceFacts facts{read.sequence.name, read.sequence.fps, {}, read.warnings, numbers_.size(), 0, 0};
     if (read.facts.has_header) facts.rate_at = read.facts.header_fps_at;
@@ -101,6 +109,10 @@ class FapSource : public FrameSource {
     return ok_status();
   }
 
+  Location locate(std::int64_t number, int fap) const override {
+    return locator_ ? locator_(number, fap) : Location{};
+  }
+
  private:
   std::string_view text() const { return file_.bytes(); }
   std::function<void(std::size_t)> let_go() const {
@@ -113,6 +125,8 @@ class FapSource : public FrameSource {
   std::string path_;
   FapReadOptions read_options_;
   std::vector<std::int64_t> numbers_;  // frame k's number as placed in time
+  std::vector<int> value_lines_;       // and its value line
+  std::function<Location(std::int64_t, int)> locator_;  // over the two, once read
 };
 
 // A .fba decoded twice: its frames have their numbers as soon as they are decoded.
@@ -164,10 +178,13 @@ class FbaSource : public FrameSource {
 
 // One FBA encoding (the .fba's, or the .mp4's with planes aligned to bytes) over both passes.
 struct Encoding {
-  Encoding(const ConvertOptions& options, bool align_planes) : encoder(options_with(options, align_planes)) {}
-  static FbaEncodeOptions options_with(const ConvertOptions& options, bool align_planes) {
+  Encoding(const ConvertOptions& options, bool align_planes, const FrameSource& source)
+      : encoder(options_with(options, align_planes, source)) {}
+  static FbaEncodeOptions options_with(const ConvertOptions& options, bool align_planes, const FrameSource& source) {
     FbaEncodeOptions fba = fba_encode_options(options);
     fba.align_planes = align_planes;
+    // The encoder's errors about one frame point at its line (as encode_checked's do).
+    fba.locate = [&source](std::int64_t number, int fap) { return source.locate(number, fap); };
     return fba;
   }
   bool going() const { return !error; }
@@ -354,8 +371,8 @@ std::optional<ConvertResult> convert_streamed(const std::string& input, const st
   // its output would give, so it waits until the reading has succeeded (reading errors come
   // first).
   std::optional<Encoding> fba, mp4;
-  if (wants_fba) fba.emplace(options, false);
-  if (wants_mp4) mp4.emplace(options, true);
+  if (wants_fba) fba.emplace(options, false, *source);
+  if (wants_mp4) mp4.emplace(options, true, *source);
   std::bitset<kFapCount> faps;
   auto facts = source->first_pass([&](const FapFrame& frame) -> Status {
     faps |= frame.mask;
@@ -409,7 +426,8 @@ std::optional<ConvertResult> convert_streamed(const std::string& input, const st
     (*encoding)->encoder = FbaEncoder();  // its statistics of the masks go before the outputs are made
   }
   for (std::optional<Encoding>* encoding : {&fba, &mp4})
-    if (*encoding && (*encoding)->error) (*encoding)->error->where.file = input;  // as encode_checked names the input
+    if (*encoding && (*encoding)->error && (*encoding)->error->where.file.empty())
+      (*encoding)->error->where.file = input;  // as encode_checked names the input
 
   // The outputs in request order, up to the first that failed (as the usual way writes them).
   for (std::size_t i = 0; i < outputs.size(); ++i) {
