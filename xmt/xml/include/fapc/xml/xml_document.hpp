@@ -7,11 +7,11 @@
 
 #include <libxml/tree.h>
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 #include <vector>
 
 #include "fapc/codec/diagnostic.hpp"
@@ -21,7 +21,8 @@ namespace fapc::xml {
 class XmlDocument {
  public:
   // Errors: not well-formed (libxml2's message at its line:col), namespace errors, a text larger
-  // than libxml2 takes. Warnings of the parser are kept in warnings().
+  // than libxml2 takes. Warnings of the parser are kept in warnings(). The document refers to
+  // `text` (for positions and source lines) without copying it: the text must outlive it.
   static Result<XmlDocument> parse(std::string_view text, const std::string& file_name);
 
   const xmlNode* root() const { return xmlDocGetRootElement(doc_.get()); }
@@ -41,19 +42,22 @@ class XmlDocument {
   Diagnostic warning(const xmlNode* element, std::string_view attribute, std::string message) const;
 
  private:
-  struct TagPositions {
-    Location tag;
-    std::vector<std::pair<std::string, Location>> attributes;
-  };
-
   std::shared_ptr<xmlDoc> doc_;
   std::string file_;
-  std::string text_;
-  std::vector<std::size_t> line_starts_;
-  std::unordered_map<const xmlNode*, TagPositions> positions_;
+  std::string_view text_;
+  std::vector<std::uint32_t> line_starts_;
+  // Positions, by element number: element k (in document order, kept in its node's _private as
+  // k + 1) starts at tag_offsets_[k]; its attributes, as written, start at the offsets
+  // attribute_offsets_[first_attribute_[k] .. first_attribute_[k + 1]). A few bytes per element
+  // and attribute, where a map from nodes to Locations cost hundreds.
+  std::vector<std::uint32_t> tag_offsets_;
+  std::vector<std::uint32_t> first_attribute_;
+  std::vector<std::uint32_t> attribute_offsets_;
   Diagnostics warnings_;
 
   Location at_offset(std::size_t offset) const;
+  // The element's number + 1, 0 when positions are unknown (libxml2's line numbers then).
+  std::size_t number_of(const xmlNode* element) const;
   void index_positions();
   Diagnostic with_line(Diagnostic d) const;
 };
