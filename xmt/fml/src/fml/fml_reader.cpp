@@ -116,7 +116,8 @@ class FmlReader {
     return embedded;
   }
 
-  Result<FmlDocument> run() {
+  // `owner`: the document itself, when the reader may free its tree once walked.
+  Result<FmlDocument> run(xml::XmlDocument* owner) {
     result_.warnings = doc_.warnings();
     const xmlNode* root = doc_.root();
     if (const std::string other = other_format_name(root); !other.empty()) {
@@ -145,8 +146,12 @@ class FmlReader {
     if (!story) return doc_.error(root, "fml has no story: nothing to animate");
     check_given_events();
     check_attributes(story, {});
+    tree_.leaves.reserve(doc_.element_count());
     tree_.root = container(story, Kind::sequence, Timing{});
     if (error_) return *error_;
+    // What follows needs no node: the tree's memory goes before the clips are made.
+    templates_.clear();
+    if (owner) owner->release_tree();
     if (Status s = check_runs(); !s) return s.error();
     ScheduleOptions schedule_options;
     schedule_options.root_end = options_.duration;
@@ -848,7 +853,7 @@ class FmlReader {
 Result<FmlDocument> read_fml(std::string_view text, const std::string& file_name, const FmlOptions& options) {
   Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name);
   if (!doc) return doc.error();
-  return FmlReader(*doc, options).run();
+  return FmlReader(*doc, options).run(&*doc);
 }
 
 Result<EmbeddedFmlMove> read_embedded_fml_move(const xml::XmlDocument& doc, const xmlNode* move,

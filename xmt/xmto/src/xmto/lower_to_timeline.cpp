@@ -95,6 +95,7 @@ void place_to_animations(const XmtoTree& tree, const std::map<std::size_t, std::
 
 Timeline lower_to_timeline(const XmtoTree& tree, const Schedule& schedule) {
   std::vector<TaggedClip> clips;
+  clips.reserve(schedule.occurrences.size());
   std::vector<AudioClip> audio;
   std::map<std::size_t, std::vector<Occurrence>> to_runs;
   for (const Occurrence& run : schedule.occurrences) {
@@ -115,7 +116,9 @@ Timeline lower_to_timeline(const XmtoTree& tree, const Schedule& schedule) {
     return a.leaf != b.leaf ? a.leaf < b.leaf : a.clip.begin < b.clip.begin;
   });
   Timeline timeline;
+  timeline.clips.reserve(clips.size());
   for (TaggedClip& tagged : clips) timeline.clips.push_back(std::move(tagged.clip));
+  clips = {};
   timeline.audio = std::move(audio);
   timeline.explicit_end = schedule.end;
   timeline.end_source =

@@ -31,7 +31,7 @@ constexpr std::string_view kSchemaInstanceNamespace = "http://www.w3.org/2001/XM
 
 class DocumentReader {
  public:
-  DocumentReader(const xml::XmlDocument& doc, const XmtoOptions& options)
+  DocumentReader(xml::XmlDocument& doc, const XmtoOptions& options)
       : doc_(doc), options_(options), once_(result_.warnings) {
     result_.warnings = doc_.warnings();
   }
@@ -66,10 +66,14 @@ class DocumentReader {
     if (!body) return doc_.error(root, "XMT-O has no body");
     RunBudget budget;
     if (options_.duration) budget.available = *options_.duration;
+    // Every element is at most one leaf (FML normal moves aside): no regrowth copies.
+    tree_.leaves.reserve(doc_.element_count());
     std::optional<ScheduleNode> tree = element(body, Fill::remove, false, budget);
     if (error_) return *error_;
     // The body is a sequence (SMIL); a body that never plays leaves an empty timeline.
     tree_.root = tree ? std::move(*tree) : ScheduleNode::group(Kind::sequence, {}, doc_.where(body));
+    // What follows needs no node: the tree's memory goes before the clips are made.
+    doc_.release_tree();
     ScheduleOptions schedule_options;
     schedule_options.root_end = options_.duration;
     schedule_options.max_runs = options_.max_runs;
@@ -81,7 +85,7 @@ class DocumentReader {
   }
 
  private:
-  const xml::XmlDocument& doc_;
+  xml::XmlDocument& doc_;
   const XmtoOptions& options_;
   std::string root_namespace_;
   std::optional<Diagnostic> error_;
@@ -343,10 +347,10 @@ class DocumentReader {
         return scheduled_node(std::move(group), node);
       }
       case FmlLeaf::Kind::talk:
-        leaf.included = talk_timeline(fml, length, options_.fml.coarticulation);
+        leaf.included = std::make_unique<Timeline>(talk_timeline(fml, length, options_.fml.coarticulation));
         break;
       case FmlLeaf::Kind::wait:
-        leaf.included = Timeline{{}, length, doc_.where(node)};
+        leaf.included = std::make_unique<Timeline>(Timeline{{}, length, doc_.where(node)});
         break;
     }
     const double clips = std::max<double>(1, static_cast<double>(leaf.included->clips.size()));
@@ -378,7 +382,7 @@ class DocumentReader {
     if (!within_budget(node, budget.inside(timing, length).repeats * clips_per_run)) return std::nullopt;
     Leaf leaf;
     leaf.fill = fill;
-    leaf.included = std::move(timeline);
+    leaf.included = std::make_unique<Timeline>(std::move(timeline));
     return add_leaf(node, std::move(leaf), to_schedule_timing(timing, length));
   }
 
@@ -404,6 +408,7 @@ class DocumentReader {
 Result<XmtoDocument> read_xmto(std::string_view text, const std::string& file_name,
                                const XmtoOptions& options) {
   Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name);
+  // The reader frees the document's tree once it has walked it.
   if (!doc) return doc.error();
   return DocumentReader(*doc, options).run();
 }

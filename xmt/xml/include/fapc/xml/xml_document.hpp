@@ -26,6 +26,11 @@ class XmlDocument {
   static Result<XmlDocument> parse(std::string_view text, const std::string& file_name);
 
   const xmlNode* root() const { return xmlDocGetRootElement(doc_.get()); }
+  // Frees libxml2's tree (the bulk of the memory) once a reader has taken what it needs from the
+  // nodes; line_text() and the positions of number_of() stay. No node may be used after it.
+  void release_tree() { doc_.reset(); }
+  // How many elements the document has (0 when positions are unknown): a bound for reserving.
+  std::size_t element_count() const { return tag_offsets_.size(); }
   const std::string& file() const { return file_; }
   const Diagnostics& warnings() const { return warnings_; }
 
