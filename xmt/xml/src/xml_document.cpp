@@ -1,5 +1,6 @@
 #include "fapc/xml/xml_document.hpp"
 
+#include <libxml/SAX2.h>
 #include <libxml/parser.h>
 
 #include <algorithm>
@@ -16,7 +17,27 @@ struct ParseReport {
   std::string file;
   std::optional<Diagnostic> first_error;
   Diagnostics warnings;
+  const BlankText* blank_text = nullptr;
 };
+
+bool is_blank(const xmlChar* text, int length) {
+  for (int i = 0; i < length; ++i)
+    if (text[i] != ' ' && text[i] != '\t' && text[i] != '\n' && text[i] != '\r') return false;
+  return true;
+}
+
+// libxml2's tree builder for text, except white space outside the elements whose text is read
+// (BlankText). Also the handler for "ignorable" white space, so that libxml2 never guesses.
+void characters(void* user_data, const xmlChar* text, int length) {
+  auto* context = static_cast<xmlParserCtxtPtr>(user_data);
+  const auto* report = static_cast<const ParseReport*>(context->_private);
+  if (report && !report->blank_text->keep_everywhere && context->node && is_blank(text, length)) {
+    const std::string_view name = reinterpret_cast<const char*>(context->node->name);
+    const auto& kept = report->blank_text->kept_in;
+    if (std::find(kept.begin(), kept.end(), name) == kept.end()) return;
+  }
+  xmlSAX2Characters(user_data, text, length);
+}
 
 std::string trimmed_message(const char* message) {
   std::string text = message ? message : "unknown XML error";
@@ -79,7 +100,8 @@ Status check_element_depth(std::string_view text, const std::string& file_name) 
                           std::string(text.substr(line_start, std::min<std::size_t>(line_end - line_start, 200))));
 }
 
-Result<XmlDocument> XmlDocument::parse(std::string_view text, const std::string& file_name) {
+Result<XmlDocument> XmlDocument::parse(std::string_view text, const std::string& file_name,
+                                       const BlankText& blank_text) {
   if (text.size() > static_cast<std::size_t>(INT_MAX)) {
     return make_error(ErrorKind::limit_exceeded, Location{file_name, 0, 0, -1}, "file too large for the XML parser");
   }
@@ -90,14 +112,16 @@ Result<XmlDocument> XmlDocument::parse(std::string_view text, const std::string&
   std::unique_ptr<xmlParserCtxt, void (*)(xmlParserCtxtPtr)> context(xmlNewParserCtxt(),
                                                                       xmlFreeParserCtxt);
   if (!context) return make_error(Location{file_name, 0, 0, -1}, "out of memory starting the XML parser");
-  ParseReport report{file_name, std::nullopt, {}};
+  ParseReport report{file_name, std::nullopt, {}, &blank_text};
   context->_private = &report;
   context->sax->serror = collect_error;
+  context->sax->characters = characters;
+  context->sax->ignorableWhitespace = characters;
   xmlSetGenericErrorFunc(nullptr, ignore_generic_error);
   // No network, no DTD loading or defaulted attributes, no entity substitution: an external
   // entity is never fetched and a document reads the same wherever it is.
   xmlDocPtr parsed = xmlCtxtReadMemory(context.get(), text.data(), static_cast<int>(text.size()),
-                                       file_name.c_str(), nullptr, XML_PARSE_NONET);
+                                       file_name.c_str(), nullptr, XML_PARSE_NONET | XML_PARSE_COMPACT);
   xmlSetGenericErrorFunc(nullptr, nullptr);
   XmlDocument document;
   document.doc_ = std::shared_ptr<xmlDoc>(parsed, [](xmlDocPtr d) { if (d) xmlFreeDoc(d); });

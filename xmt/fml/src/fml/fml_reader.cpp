@@ -851,7 +851,8 @@ class FmlReader {
 }  // namespace
 
 Result<FmlDocument> read_fml(std::string_view text, const std::string& file_name, const FmlOptions& options) {
-  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name);
+  // Only talk text is read (an FML move's, embedded or not); elsewhere white space is dropped.
+  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name, xml::BlankText{false, {"talk"}});
   if (!doc) return doc.error();
   return FmlReader(*doc, options).run(&*doc);
 }

@@ -407,7 +407,8 @@ class DocumentReader {
 
 Result<XmtoDocument> read_xmto(std::string_view text, const std::string& file_name,
                                const XmtoOptions& options) {
-  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name);
+  // Only talk text is read (an FML move's, embedded or not); elsewhere white space is dropped.
+  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name, xml::BlankText{false, {"talk"}});
   // The reader frees the document's tree once it has walked it.
   if (!doc) return doc.error();
   return DocumentReader(*doc, options).run();

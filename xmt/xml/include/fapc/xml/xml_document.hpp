@@ -18,12 +18,21 @@
 
 namespace fapc::xml {
 
+// Text that consists of white space only (the indentation between elements) is most of a large
+// document's nodes; a reader that only asks whether an element holds text other than white space
+// lets the parser drop it everywhere except in the elements whose text it reads.
+struct BlankText {
+  bool keep_everywhere = true;
+  std::vector<std::string_view> kept_in;  // local names of the elements whose text is read
+};
+
 class XmlDocument {
  public:
   // Errors: not well-formed (libxml2's message at its line:col), namespace errors, a text larger
   // than libxml2 takes. Warnings of the parser are kept in warnings(). The document refers to
   // `text` (for positions and source lines) without copying it: the text must outlive it.
-  static Result<XmlDocument> parse(std::string_view text, const std::string& file_name);
+  static Result<XmlDocument> parse(std::string_view text, const std::string& file_name,
+                                   const BlankText& blank_text = {});
 
   const xmlNode* root() const { return xmlDocGetRootElement(doc_.get()); }
   // Frees libxml2's tree (the bulk of the memory) once a reader has taken what it needs from the
