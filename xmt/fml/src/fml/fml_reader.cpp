@@ -21,6 +21,7 @@
 #include "fml/other_formats.hpp"
 #include "fapc/xml/text.hpp"
 #include "fapc/xml/once_per_name.hpp"
+#include "fapc/xml/name_table.hpp"
 #include "fapc/xml/xml_document.hpp"
 
 namespace fapc::xmt {
@@ -181,7 +182,8 @@ class FmlReader {
   std::string model_voice_;
   double nodes_ = 0;
   // Per node of the tree, by its ScheduleNode::tag - 1: its element name, for scheduler errors.
-  std::vector<std::string> element_names_;
+  std::vector<std::uint32_t> element_names_;  // in names_
+  xml::NameTable names_;
 
   void fail(Diagnostic d) {
     if (!error_) error_ = std::move(d);
@@ -351,7 +353,7 @@ class FmlReader {
   }
 
   ScheduleNode remember(ScheduleNode node, const xmlNode* element) {
-    element_names_.emplace_back(xml::local_name(element));
+    element_names_.push_back(names_.number(xml::local_name(element)));
     node.tag = element_names_.size();
     return node;
   }
@@ -838,7 +840,7 @@ class FmlReader {
   // The scheduler's problem, its subject the element it is about.
   Diagnostic scheduler_error(const ScheduleError& problem) const {
     const bool named = problem.node_tag > 0 && problem.node_tag <= element_names_.size();
-    Diagnostic d = problem.diagnostic(named ? element_names_[problem.node_tag - 1] : std::string("the element"));
+    Diagnostic d = problem.diagnostic(named ? names_.name(element_names_[problem.node_tag - 1]) : std::string("the element"));
     if (named && problem.needs_an_end()) {
       d.message += " (repeat=\"indefinite\" and unset loop events need an end: a container's duration or end, "
                    "or --duration)";

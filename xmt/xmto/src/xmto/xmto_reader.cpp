@@ -9,6 +9,7 @@
 #include "fapc/codec/file_io.hpp"
 #include "fapc/xmto/xmto.hpp"
 #include "fml/embedded_fml.hpp"
+#include "fapc/xml/name_table.hpp"
 #include "fapc/xml/xml_document.hpp"
 #include "xmto/animation_function.hpp"
 #include "xmto/animation_include.hpp"
@@ -93,15 +94,16 @@ class DocumentReader {
   OncePerName once_;
   XmtoTree tree_;
   struct ElementFacts {
-    std::string name;
+    std::uint32_t name = 0;  // in names_
     bool repeats_indefinitely = false;
   };
+  xml::NameTable names_;
   std::vector<ElementFacts> element_facts_;  // by ScheduleNode::tag - 1: for schedule errors
   double planned_clips_ = 0;  // upper bound, see run_budget.hpp
   std::set<std::string> fml_expressions_;  // FAP 2 targets of the FML moves read so far
 
   ScheduleNode scheduled_node(ScheduleNode node, const xmlNode* element) {
-    element_facts_.push_back(ElementFacts{std::string(xml::local_name(element)),
+    element_facts_.push_back(ElementFacts{names_.number(xml::local_name(element)),
                                           node.timing.repeat_indefinite && !node.timing.repeat_duration});
     node.tag = element_facts_.size();
     return node;
@@ -114,7 +116,8 @@ class DocumentReader {
   // The scheduler's problem, its subject the element it is about.
   Diagnostic scheduler_error(const ScheduleError& problem) const {
     const bool named = problem.node_tag > 0 && problem.node_tag <= element_facts_.size();
-    Diagnostic d = problem.diagnostic(named ? element_facts_[problem.node_tag - 1].name : std::string("the element"));
+    Diagnostic d = problem.diagnostic(named ? names_.name(element_facts_[problem.node_tag - 1].name)
+                                        : std::string("the element"));
     if (named && element_facts_[problem.node_tag - 1].repeats_indefinitely)
       d.message += " (repeatCount=\"indefinite\" needs an end: from a par with dur, end, repeatDur or --duration)";
     return with_source_line(std::move(d));
@@ -131,12 +134,18 @@ class DocumentReader {
   }
 
   // FML moves embedded in an XMT-O document ("FML documents can work as XMT-Omega code"): any
-  // element whose namespace URI mentions fml.
-  static bool is_fml(const xmlNode* node) {
+  // element whose namespace URI mentions fml. Elements share their namespace declaration, so the
+  // answer for the last one seen is kept.
+  bool is_fml(const xmlNode* node) {
+    if (node->ns == last_ns_ && node->ns) return last_ns_is_fml_;
     std::string ns(xml::namespace_uri(node));
     std::transform(ns.begin(), ns.end(), ns.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ns.find("fml") != std::string::npos;
+    last_ns_ = node->ns;
+    last_ns_is_fml_ = ns.find("fml") != std::string::npos;
+    return last_ns_is_fml_;
   }
+  const xmlNs* last_ns_ = nullptr;
+  bool last_ns_is_fml_ = false;
 
   void unsupported(const xmlNode* node, const std::string& why = "is not supported and was skipped") {
     std::string name(xml::local_name(node));
