@@ -544,6 +544,7 @@ Result<FapReadResult> Reader::run() {
                 std::to_string(frames));
   if (frames == 0) warn_file({"fap.no_frames"}, "file has no frames");
   if (out_.sequence.name.empty()) out_.sequence.name = file_;
+  out_.value_lines = std::move(value_lines_);
   return std::move(out_);
 }
 

@@ -93,5 +93,23 @@ TEST(StreamedConvert, GivesTheBytesAndErrorsOfLoadingAndWriting) {
     EXPECT_FALSE(entry.path().filename().string().starts_with(".fapc-tmp-")) << entry.path();
 }
 
+TEST(StreamedConvert, AnEncoderErrorAboutOneFramePointsAtTheFramesLine) {
+  // A value the bitstream cannot carry is found by the encoder, which sees frames, not lines: it
+  // used to be reported against the file as a whole. Streamed (.fba) and loaded (.mp4) alike.
+  const test::TempFolder tmp;
+  const std::string input = tmp / "far.fap";
+  std::string mask = "0 0 1";  // FAP 3, open_jaw
+  for (int fap = 4; fap <= 68; ++fap) mask += " 0";
+  mask += "\n";
+  std::ofstream(input) << "2.1 far 25 3\n" << mask << "0 10\n" << mask << "1 20\n" << mask << "2 2000000000\n";
+  for (const char* output : {"x.fba", "x.mp4"}) {
+    const pipeline::ConvertResult r = pipeline::convert(input, {{tmp / output, ""}}, ConvertOptions{});
+    ASSERT_FALSE(r.ok()) << output;
+    EXPECT_EQ(r.error->where.file, input) << output;
+    EXPECT_EQ(r.error->where.line, 7) << output;  // the third frame's value line
+    EXPECT_FALSE(fs::exists(tmp / output));
+  }
+}
+
 }  // namespace
 }  // namespace fapc

@@ -50,6 +50,19 @@ TEST(Curve, PeriodicShapes) {
   EXPECT_DOUBLE_EQ(triangle.value_at(4), 0);
 }
 
+TEST(Curve, APeriodTooShortToDivideByStillGivesAValueInRange) {
+  // period=51e-320 in a Mimic script (a fuzzing campaign's input): t / period overflowed, cos(inf)
+  // was NaN, and the renderer's conversion of NaN to int was undefined behaviour.
+  for (const auto shape : {Periodic::Shape::sine, Periodic::Shape::triangle}) {
+    Curve c;
+    c.periodic = Periodic{shape, 1, 3, 51e-320};
+    for (const double t : {0.0, 0.04, 5.0, 1e6}) {
+      const double v = c.value_at(t);
+      EXPECT_TRUE(v >= 1 && v <= 3) << t << " -> " << v;
+    }
+  }
+}
+
 TEST(Blend, AddIsTheDefaultAndNeutralIsZero) {
   Timeline t{{clip("jaw", 0, 4, Curve::constant(1)), clip("jaw", 2, 6, Curve::constant(2))}, {}};
   const TimelineEvaluator e(t);

@@ -14,35 +14,38 @@ namespace {
 
 // Longer gaps would cost 4 bits per 15 frames for nothing; a gap this long is a broken input.
 
-Diagnostic input_error(const FapFrame& frame, const std::string& message) {
-  return make_error(Location{}, "frame " + std::to_string(frame.number) + ": " + message);
+// An error about FAP `fap` of `frame`, placed where the caller says the frame came from.
+Diagnostic input_error(const FbaEncodeOptions& options, const FapFrame& frame, int fap, const std::string& message) {
+  return make_error(options.locate ? options.locate(frame.number, fap) : Location{},
+                    "frame " + std::to_string(frame.number) + ": " + message);
 }
 
 std::string outside(const char* field, int value, int high) {
   return std::string(field) + " is " + std::to_string(value) + ", outside 0.." + std::to_string(high);
 }
 
-Status check_fields(const FapFrame& f) {
+Status check_fields(const FbaEncodeOptions& options, const FapFrame& f) {
   struct Field {
+    int fap;
     bool present;
     const char* name;
     int value, high;
   };
   const Field fields[] = {
-      {f.has(1), "viseme_select1", f.viseme.select1, 14},
-      {f.has(1), "viseme_select2", f.viseme.select2, 14},
-      {f.has(1), "viseme_blend", f.viseme.blend, 63},
-      {f.has(1), "viseme_def", f.viseme.def, 1},
-      {f.has(2), "expression_select1", f.expression.select1, 6},
-      {f.has(2), "expression_intensity1", f.expression.intensity1, 63},
-      {f.has(2), "expression_select2", f.expression.select2, 6},
-      {f.has(2), "expression_intensity2", f.expression.intensity2, 63},
-      {f.has(2), "init_face", f.expression.init_face, 1},
-      {f.has(2), "expression_def", f.expression.def, 1},
+      {1, f.has(1), "viseme_select1", f.viseme.select1, 14},
+      {1, f.has(1), "viseme_select2", f.viseme.select2, 14},
+      {1, f.has(1), "viseme_blend", f.viseme.blend, 63},
+      {1, f.has(1), "viseme_def", f.viseme.def, 1},
+      {2, f.has(2), "expression_select1", f.expression.select1, 6},
+      {2, f.has(2), "expression_intensity1", f.expression.intensity1, 63},
+      {2, f.has(2), "expression_select2", f.expression.select2, 6},
+      {2, f.has(2), "expression_intensity2", f.expression.intensity2, 63},
+      {2, f.has(2), "init_face", f.expression.init_face, 1},
+      {2, f.has(2), "expression_def", f.expression.def, 1},
   };
   for (const Field& field : fields)
     if (field.present && (field.value < 0 || field.value > field.high))
-      return input_error(f, outside(field.name, field.value, field.high));
+      return input_error(options, f, field.fap, outside(field.name, field.value, field.high));
   return ok_status();
 }
 
@@ -111,7 +114,7 @@ Status FbaEncoder::check(const FapFrame& frame) {
   if (!s.setup) return s.setup;
   if (s.checked == 0) s.first_number = frame.number;
   if (s.checked > 0) {
-    if (frame.number - s.previous_number - 1 < 0) return input_error(frame, "frame numbers must ascend");
+    if (frame.number - s.previous_number - 1 < 0) return input_error(s.options, frame, 0, "frame numbers must ascend");
     // Gaps cost 4 bits per 15 skipped frames; the span bounds them all.
     if (frame.number - s.first_number >= s.options.max_frames) {
       Limits limits;
@@ -122,7 +125,7 @@ Status FbaEncoder::check(const FapFrame& frame) {
                          Limit::frames, limits);
     }
   }
-  if (auto status = check_fields(frame); !status) return status;
+  if (auto status = check_fields(s.options, frame); !status) return status;
   s.previous_number = frame.number;
   ++s.checked;
   if (s.masks) s.masks->add(frame);

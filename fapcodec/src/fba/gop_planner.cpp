@@ -62,11 +62,12 @@ Status GopPlanner::check_intra(const Gop& gop) const {
     if (within(nearest_[j])) continue;
     const int fap = gop.faps[j];
     const FapInfo& info = fap_table()[FaceState::index(fap)];
-    return make_error(Location{}, "frame " + std::to_string(frame.number) + ": FAP " + std::to_string(fap) + " (" +
-                                      std::string(info.name) + ") value " + std::to_string(frame.value(fap)) +
-                                      " is beyond the largest range the bitstream carries (+-" +
-                                      std::to_string(limit_ * std::max<std::int64_t>(steps_[j], 1)) +
-                                      " at fap_quant " + std::to_string(options_.quant) + ")");
+    return make_error(options_.locate ? options_.locate(frame.number, fap) : Location{},
+                      "frame " + std::to_string(frame.number) + ": FAP " + std::to_string(fap) + " (" +
+                          std::string(info.name) + ") value " + std::to_string(frame.value(fap)) +
+                          " is beyond the largest range the bitstream carries (+-" +
+                          std::to_string(limit_ * std::max<std::int64_t>(steps_[j], 1)) + " at fap_quant " +
+                          std::to_string(options_.quant) + ")");
   }
   return ok_status();
 }

@@ -1,5 +1,7 @@
 #include "fapc/pipeline/fba_io.hpp"
 
+#include <algorithm>
+
 #include "fapc/codec/file_io.hpp"
 #include "fapc/mpeg4/mp4_reader.hpp"
 
@@ -55,6 +57,16 @@ Result<DecodedFba> read_fba_file(const std::string& path, const Limits& limits) 
   return decode_fba(std::span<const std::uint8_t>(data, bytes->size()), options);
 }
 
+std::function<Location(std::int64_t, int)> frame_locator(const std::vector<std::int64_t>& numbers,
+                                                         const std::vector<int>& lines, const std::string& input) {
+  if (lines.size() != numbers.size()) return {};
+  return [&numbers, &lines, &input](std::int64_t number, int) {
+    const auto at = std::lower_bound(numbers.begin(), numbers.end(), number);
+    if (at == numbers.end() || *at != number) return Location{input, 0, 0, -1};
+    return Location::text(input, lines[static_cast<std::size_t>(at - numbers.begin())], 1);
+  };
+}
+
 Result<EncodedFba> encode_checked(const Loaded& loaded, const ConvertOptions& options,
                                   const std::string& input, bool align_planes) {
   const FapSequence& sequence = loaded.frames;
@@ -69,10 +81,16 @@ Result<EncodedFba> encode_checked(const Loaded& loaded, const ConvertOptions& op
   }
   FbaEncodeOptions fba = fba_encode_options(options);
   fba.align_planes = align_planes;
+  std::vector<std::int64_t> numbers;
+  if (loaded.frame_lines.size() == sequence.frames.size()) {
+    numbers.reserve(sequence.frames.size());
+    for (const FapFrame& frame : sequence.frames) numbers.push_back(frame.number);
+  }
+  fba.locate = frame_locator(numbers, loaded.frame_lines, input);
   auto encoded = encode_fba(sequence, fba);
   if (!encoded) {
     Diagnostic error = encoded.error();
-    error.where.file = input;
+    if (error.where.file.empty()) error.where.file = input;
     return error;
   }
   if (options.verify)

@@ -103,8 +103,15 @@ std::optional<ConvertResult> convert_streamed(const std::string& input, const st
   // .fba would give, so it waits until the reading has succeeded (reading errors come first). It
   // sees the frames numbered in order: the reader itself checks what the numbers mean (ascending,
   // within the frame limit: the encoder's checks of numbers) once it has them all.
+  // The encoder's errors about one frame point at its line, known once the first pass is done.
+  const FapScanResult* scanned = nullptr;
+  FbaEncodeOptions encode_options = fba_encode_options(options);
+  encode_options.locate = [&](std::int64_t number, int fap) {
+    const auto locate = scanned ? frame_locator(scanned->numbers, scanned->read.value_lines, input) : nullptr;
+    return locate ? locate(number, fap) : Location{};
+  };
   std::optional<FbaEncoder> encoder;
-  if (wants_fba) encoder.emplace(fba_encode_options(options));
+  if (wants_fba) encoder.emplace(encode_options);
   std::optional<Diagnostic> encode_error;
   std::int64_t ordinal = 0;
   std::bitset<kFapCount> faps;
@@ -122,6 +129,7 @@ std::optional<ConvertResult> convert_streamed(const std::string& input, const st
     result.error = scan.error();
     return result;
   }
+  scanned = &*scan;
   result.warnings = scan->read.warnings;
   result.loaded.origin = input;
   result.loaded.frames.name = scan->read.sequence.name;
@@ -173,7 +181,7 @@ std::optional<ConvertResult> convert_streamed(const std::string& input, const st
     if (finished) encoded = std::move(*finished);
     else encode_error = finished.error();
   }
-  if (encode_error) encode_error->where.file = input;  // as encode_checked names the input
+  if (encode_error && encode_error->where.file.empty()) encode_error->where.file = input;  // as encode_checked
 
   // The outputs in request order, up to the first that failed (as the usual way writes them).
   for (std::size_t i = 0; i < outputs.size(); ++i) {

@@ -16,6 +16,10 @@
 namespace fapc::algebra {
 namespace {
 
+// The frames one expression may make in all, as a multiple of the frame limit: a long chain of
+// operators, each within the limit, is refused before it takes minutes (docs/security.md).
+constexpr int kWorkFactor = 8;
+
 // An operand with what only an overlap uses.
 struct Term {
   Value value;
@@ -59,6 +63,9 @@ class Evaluator {
   std::string_view text_;
   const OperandLoader& load_;
   std::int64_t max_frames_;
+  // Frames made in all (operands loaded, delayed, brought to one grid by an operator): each
+  // operator may stay under max_frames while thousands of them together would take minutes.
+  double made_ = 0;
   std::size_t at_ = 0;
   // Parentheses and amplifiers ("2 * 2 * x") recurse; deeper than kMaxNestingDepth is refused
   // before the stack can run out.
@@ -71,7 +78,7 @@ class Evaluator {
 
   // Before an operator brings `operands` to one frame grid: the slots that grid will have (the
   // highest frame rate, the longest animation), against max_frames.
-  std::optional<Diagnostic> too_many_frames(std::size_t offset, const std::vector<const Value*>& operands) const {
+  std::optional<Diagnostic> too_many_frames(std::size_t offset, const std::vector<const Value*>& operands) {
     int fps = 0;
     for (const Value* v : operands)
       if (!v->state) fps = std::max(fps, v->animation.fps);
@@ -79,10 +86,26 @@ class Evaluator {
     for (const Value* v : operands)
       if (!v->state && v->animation.fps > 0)
         slots = std::max(slots, std::ceil(static_cast<double>(v->animation.size()) * fps / v->animation.fps));
-    if (slots <= static_cast<double>(max_frames_)) return std::nullopt;
-    char what[96];
-    std::snprintf(what, sizeof what, "this operator makes %.15g frames at %d fps", slots, fps);
-    return frames_limit(offset, what);
+    if (slots > static_cast<double>(max_frames_)) {
+      char what[96];
+      std::snprintf(what, sizeof what, "this operator makes %.15g frames at %d fps", slots, fps);
+      return frames_limit(offset, what);
+    }
+    return too_much_work(offset, slots * static_cast<double>(operands.size() + 1));
+  }
+  // Counts `frames` more made, against kWorkFactor times max_frames for the whole expression.
+  std::optional<Diagnostic> too_much_work(std::size_t offset, double frames) {
+    made_ += frames;
+    const double budget = kWorkFactor * static_cast<double>(max_frames_);
+    if (made_ <= budget) return std::nullopt;
+    char what[160];
+    std::snprintf(what, sizeof what,
+                  "the operators up to here make %.15g frames in all, more than %d times the frame limit of %lld "
+                  "(--max-frames N raises it)",
+                  made_, kWorkFactor, static_cast<long long>(max_frames_));
+    Diagnostic d = make_error(ErrorKind::limit_exceeded, Location::text("<expression>", 1, static_cast<int>(offset) + 1), what);
+    d.source_line = std::string(text_);
+    return d;
   }
   Diagnostic frames_limit(std::size_t offset, const std::string& what) const {
     Limits limits;
@@ -258,7 +281,11 @@ class Evaluator {
         }
         delay_frames += frames;
       } else {
-        if (delay_frames > 0) delay_in_place(term->value.animation, delay_frames);
+        if (delay_frames > 0) {
+          const double delayed = static_cast<double>(term->value.animation.size() + static_cast<std::size_t>(delay_frames));
+          if (auto bad = too_much_work(at_, delayed)) return *bad;
+          delay_in_place(term->value.animation, delay_frames);
+        }
         return term;
       }
     }
@@ -297,6 +324,8 @@ class Evaluator {
                                               : "expected a file, a number or '(' at the end");
     }
     Result<Value> value = load_(name, static_cast<int>(start) + 1);
+    if (value && !value->state)
+      if (auto bad = too_much_work(start, static_cast<double>(value->animation.size()))) return *bad;
     if (!value) {
       // A problem with the operand as a whole (it cannot be opened, it is too long) is reported
       // where the expression names it; a problem inside it, at its own place.

@@ -28,6 +28,9 @@ double shape(Interpolation how, double u) {
 double periodic_value(const Periodic& p, double t) {
   const double span = p.max - p.min;
   if (p.period <= 0) return p.min;
+  // A period so short that t / period (times 2 pi) overflows, 1e-320 say: the same phase from
+  // what is left of t after whole periods (cos(inf) would be NaN).
+  if (!(std::abs(t / p.period) < 1e300)) t = std::fmod(t, p.period);
   if (p.shape == Periodic::Shape::sine) {
     return p.min + span * (1 - std::cos(2 * std::numbers::pi * t / p.period)) / 2;
   }

@@ -58,6 +58,8 @@ struct FapReadResult {
   FapSequence sequence;
   FapFileFacts facts;
   Diagnostics warnings;
+  // Frame k's value line (1-based): where a later stage places what it finds wrong with a frame.
+  std::vector<int> value_lines;
 };
 
 // `file` names the input in diagnostics. Bytes are taken as Latin-1.

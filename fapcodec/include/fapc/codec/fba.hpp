@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -45,6 +46,10 @@ struct FbaEncodeOptions {
   // The most frames the sequence may span (gaps included): the decoder's limit, so that fapc
   // never writes a stream it refuses to read back (Limits::max_frames).
   std::int64_t max_frames = Limits{}.max_frames;
+  // Where frame `number`'s FAP `fap` came from, for the errors about one value of one frame (a
+  // value the stream cannot carry, a FAP 1/2 field out of range): the encoder sees frames, the
+  // caller knows the lines they were read from. Unset, such errors carry no location.
+  std::function<Location(std::int64_t number, int fap)> locate = {};
 };
 
 // Where one plane (one frame, plus the frames it skips) sits in the output.

@@ -32,6 +32,7 @@ Result<Loaded> load_fap(const std::string& path, const ConvertOptions& options) 
     loaded.rate_at = read->facts.header_fps_at;
     loaded.rate_written = loaded.frames.fps;
   }
+  loaded.frame_lines = std::move(read->value_lines);
   loaded.warnings = std::move(read->warnings);
   if (options.facts) loaded.facts = facts_of(read->facts);
   return loaded;

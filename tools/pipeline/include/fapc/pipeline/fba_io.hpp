@@ -18,6 +18,12 @@ FbaEncodeOptions fba_encode_options(const ConvertOptions& options);
 // Reads and decodes a .fba file (gzip inflated transparently).
 Result<DecodedFba> read_fba_file(const std::string& path, const Limits& limits = {});
 
+// FbaEncodeOptions::locate for frames read from lines: frame `numbers[k]` (ascending) was read at
+// line `lines[k]` of `input`. Empty when the two do not match (frames not read from lines). The
+// three are referred to, not copied: they must outlive the encoder.
+std::function<Location(std::int64_t, int)> frame_locator(const std::vector<std::int64_t>& numbers,
+                                                         const std::vector<int>& lines, const std::string& input);
+
 // Encodes the frames of `loaded`, which came from `input`: errors name the input (a frame rate
 // the stream cannot code, the place the input wrote it). With options.verify, the stream is
 // decoded and checked too (ErrorKind::verification_failed when it does not match).

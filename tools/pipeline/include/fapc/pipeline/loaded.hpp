@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -27,6 +28,9 @@ struct Loaded {
   // when it came from an option or a default. `rate_written` is the rate written there.
   Location rate_at;
   int rate_written = 0;
+  // Frame k's line in the input text (a .fap's value line), for placing an encoder's error about
+  // one frame; empty when the frames were not read from lines.
+  std::vector<int> frame_lines;
   std::optional<Curves> curves;
   std::optional<Timeline> timeline;
   // The sound that goes with the frames (the timeline's audio mixed, or a container's audio
