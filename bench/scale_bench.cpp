@@ -23,6 +23,7 @@
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "fapc/pipeline/pipeline.hpp"
+#include "fapc/transcoder/render.hpp"
 
 // The script generators come from issue 19a; until they are in the tree the bench measures the
 // frame inputs and outputs only.
@@ -235,7 +236,7 @@ struct Bench {
       return in_child([&](std::string& note) { return verify_case(input, note); });
     });
     for (const char* ext : {".json", ".svg"})
-      series(std::string("writer ") + ext + " (frames)", {1'000, 10'000, 100'000}, [&](std::int64_t n) {
+      series(std::string("writer ") + ext + " (frames)", frames, [&](std::int64_t n) {
         const fs::path input = long_fap(n);
         return in_child([&](std::string& note) { return writer_case(input, folder / ("out" + std::string(ext)), note); });
       });
@@ -268,7 +269,35 @@ struct Bench {
           return since(start);
         });
       }, "elements");
+      // The curves step of a script's compile (25 fps), and the curves JSON written from them:
+      // the timeline compiled untimed, without frames.
+      for (const bool json : {false, true})
+        series(kind_name + (json ? " curves -> .json" : " curves (25 fps)"), sizes, [&](std::int64_t n) {
+          const fs::path script = folder / ("script-" + std::to_string(n) + fapc::bench::extension(kind));
+          if (!fs::exists(script))
+            in_child([&](std::string&) {
+              std::ofstream(script, std::ios::binary) << fapc::bench::generate_script(kind, static_cast<std::size_t>(n));
+              return 0.0;
+            });
+          return in_child([&](std::string& note) { return curves_case(script, json, note); });
+        }, "elements");
     }
+  }
+
+  // Times render_curves (or, with `json`, the curves JSON writer given the curves) on `script`.
+  static double curves_case(const fs::path& script, bool json, std::string& note) {
+    fp::ConvertOptions options;
+    options.render = false;
+    auto loaded = fp::load(script.string(), options);
+    if (!loaded) return note = fapc::format_diagnostic(loaded.error()), -1.0;
+    if (!loaded->timeline) return note = "no timeline", -1.0;
+    auto start = std::chrono::steady_clock::now();
+    loaded->curves = fapc::render_curves(*loaded->timeline, fapc::CurveOptions{25, 1e-6});
+    if (!json) return since(start);
+    start = std::chrono::steady_clock::now();
+    auto bytes = fp::render_output(*loaded, {(script.string() + ".json"), ""}, fp::ConvertOptions{});
+    if (!bytes) return note = fapc::format_diagnostic(bytes.error()), -1.0;
+    return since(start);
   }
 #endif
 };

@@ -207,5 +207,22 @@ TEST(Curves, PerClipCurvesAreLabelledByTheirSource) {
   EXPECT_EQ(c.curves.at("jaw (t.mimic:5) #2"), (P{{0, 1}, {2, 1}}));
 }
 
+TEST(Curves, EveryUseOfOnePlaceHasANumberOfItsOwn) {
+  // A macro used four times from line 5, and once from line 6 between its uses.
+  Timeline t{{clip("jaw", 0, 1, Curve::constant(1), BlendMode::add, Fill::remove, 5),
+              clip("jaw", 1, 2, Curve::constant(2), BlendMode::add, Fill::remove, 5),
+              clip("jaw", 2, 3, Curve::constant(3), BlendMode::add, Fill::remove, 6),
+              clip("jaw", 3, 4, Curve::constant(4), BlendMode::add, Fill::remove, 5),
+              clip("jaw", 4, 5, Curve::constant(5), BlendMode::add, Fill::remove, 5)},
+             {}};
+  const Curves c = render_clip_curves(t, CurveOptions{});
+  ASSERT_EQ(c.curves.size(), 5u);
+  EXPECT_EQ(c.curves.at("jaw (t.mimic:5)").front().second, 1);
+  EXPECT_EQ(c.curves.at("jaw (t.mimic:5) #2").front().second, 2);
+  EXPECT_EQ(c.curves.at("jaw (t.mimic:6)").front().second, 3);
+  EXPECT_EQ(c.curves.at("jaw (t.mimic:5) #3").front().second, 4);
+  EXPECT_EQ(c.curves.at("jaw (t.mimic:5) #4").front().second, 5);
+}
+
 }  // namespace
 }  // namespace fapc

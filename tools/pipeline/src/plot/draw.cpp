@@ -5,16 +5,14 @@
 #include <cmath>
 
 #include "canvas.hpp"
+#include "column_picks.hpp"
 #include "figure.hpp"
+#include "plot_geometry.hpp"
 
 namespace fapc::pipeline::plot {
 
 namespace {
 
-constexpr double kWidth = 960;
-constexpr double kLeft = 90;    // room for the y tick labels and the y-axis title
-constexpr double kRight = 20;
-constexpr double kInset = 6;    // points at the ends of the time axis stay clear of the frame
 constexpr double kPanel = 150;  // height of a panel; an overlay panel is twice that
 constexpr double kGap = 48;     // tick labels below a panel and the title of the next
 constexpr double kLegendEntry = 220;
@@ -118,7 +116,7 @@ struct Panel {
   double high = 1;
   double step = 1;  // between value ticks
 
-  double x(double t) const { return kLeft + kInset + (kWidth - kLeft - kRight - 2 * kInset) * t / duration; }
+  double x(double t) const { return time_to_x(t, duration); }
   double y(double v) const { return top + height - height * (v - low) / (high - low); }
 };
 
@@ -136,33 +134,13 @@ Panel panel_for(double top, double height, double duration, const std::vector<co
   return panel;
 }
 
-// Per pixel column only what a reader can see there: the first, lowest, highest and last point,
-// in time order, so that a line of 10^6 points in an 860-pixel panel costs a few thousand.
+// Per pixel column only what a reader can see there (column_picks.hpp), so that a line of 10^6
+// points in an 860-pixel panel costs a few thousand.
 Pixels thinned(const Points& points, const Panel& panel) {
+  ColumnPicks picks(panel.duration);
+  for (const auto& [t, v] : points) picks.add(t, v);
   Pixels out;
-  std::size_t first = 0;
-  std::size_t low = 0;
-  std::size_t high = 0;
-  double column = 0;
-  const auto flush = [&](std::size_t last) {
-    std::size_t picks[] = {first, low, high, last};
-    std::sort(std::begin(picks), std::end(picks));
-    for (std::size_t k = 0; k < 4; ++k)
-      if (k == 0 || picks[k] != picks[k - 1])
-        out.emplace_back(panel.x(points[picks[k]].first), panel.y(points[picks[k]].second));
-  };
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const double c = std::floor(panel.x(points[i].first));
-    if (i > 0 && c == column) {
-      if (points[i].second < points[low].second) low = i;
-      if (points[i].second > points[high].second) high = i;
-      continue;
-    }
-    if (i > 0) flush(i - 1);
-    first = low = high = i;
-    column = c;
-  }
-  if (!points.empty()) flush(points.size() - 1);
+  for (const auto& [t, v] : picks.take()) out.emplace_back(panel.x(t), panel.y(v));
   return out;
 }
 

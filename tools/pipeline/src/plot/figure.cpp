@@ -14,23 +14,33 @@ namespace fapc::pipeline::plot {
 
 namespace {
 
-// The frames' values as series, one per FAP the frames carry. Written out here rather than
-// through curves_from_frames so that a long input costs one pass over flat arrays (docs/cli.md:
-// a plot of 10^5 frames in well under a second).
-std::vector<std::pair<std::string, Points>> series_from_frames(const FapSequence& sequence) {
-  std::array<Points, kFapCount + 1> by_fap;
+// The frames' values as series, one per FAP the frames carry, in one pass over the frames and
+// each line thinned as it is read (column_picks.hpp): a long input never has its points held
+// (docs/cli.md: a plot of 10^5 frames in well under a second, and in memory the plot's size).
+std::vector<std::pair<std::string, Points>> series_from_frames(const FapSequence& sequence, double duration) {
+  std::vector<ColumnPicks> by_fap(kFapCount + 1, ColumnPicks(duration));
+  std::vector<bool> present(kFapCount + 1, false);
   for (const FapFrame& frame : sequence.frames) {
     const double t = static_cast<double>(frame.number) / sequence.fps;
-    if (frame.has(1)) by_fap[1].emplace_back(t, frame.viseme.select1);
-    if (frame.has(2)) by_fap[2].emplace_back(t, frame.expression.select1);
-    for (int fap = 3; fap <= kFapCount; ++fap)
-      if (frame.has(fap)) by_fap[static_cast<std::size_t>(fap)].emplace_back(t, frame.value(fap));
+    for (int fap = 1; fap <= kFapCount; ++fap) {
+      if (!frame.has(fap)) continue;
+      const double value = fap == 1 ? frame.viseme.select1 : fap == 2 ? frame.expression.select1 : frame.value(fap);
+      by_fap[static_cast<std::size_t>(fap)].add(t, value);
+      present[static_cast<std::size_t>(fap)] = true;
+    }
   }
   std::vector<std::pair<std::string, Points>> out;
   for (int fap = 1; fap <= kFapCount; ++fap)
-    if (!by_fap[static_cast<std::size_t>(fap)].empty())
-      out.emplace_back(std::string(find_fap(fap)->name), std::move(by_fap[static_cast<std::size_t>(fap)]));
+    if (present[static_cast<std::size_t>(fap)])
+      out.emplace_back(std::string(find_fap(fap)->name), by_fap[static_cast<std::size_t>(fap)].take());
   return out;
+}
+
+// A script's curve as the panels show it.
+Points visible_points(const Points& points, double duration) {
+  ColumnPicks picks(duration);
+  for (const auto& [t, v] : points) picks.add(t, v);
+  return picks.take();
 }
 
 bool zero_throughout(const Points& points) {
@@ -126,10 +136,10 @@ Result<Figure> build_figure(const Loaded& loaded, const std::string& input, cons
   std::vector<std::pair<std::string, Points>> blended;
   if (loaded.curves) {
     figure.duration = loaded.curves->duration;
-    for (const auto& [name, points] : loaded.curves->curves) blended.emplace_back(name, points);
+    for (const auto& [name, points] : loaded.curves->curves) blended.emplace_back(name, visible_points(points, figure.duration));
   } else {
     figure.duration = loaded.frames.duration_seconds();
-    blended = series_from_frames(loaded.frames);
+    blended = series_from_frames(loaded.frames, figure.duration);
   }
   std::stable_sort(blended.begin(), blended.end(), [](const auto& a, const auto& b) {
     return target_order(a.first) < target_order(b.first);
@@ -154,13 +164,14 @@ Result<Figure> build_figure(const Loaded& loaded, const std::string& input, cons
     bool all_zero = zero_throughout(series.points);
     if (clips) {
       // "jaw (table2.mimic:5) #2": the clips of this target, labelled by their line number.
+      const std::string prefix = name + " (";
       for (const auto& [key, clip_points] : clips->curves) {
-        if (!key.starts_with(name + " (")) continue;
+        if (!key.starts_with(prefix)) continue;
         const auto colon = key.rfind(':');
         const auto close = key.find(')', colon == std::string::npos ? 0 : colon);
         const std::string label =
             colon == std::string::npos || close == std::string::npos ? key : key.substr(colon + 1, close - colon - 1);
-        series.clips.emplace_back(label, clip_points);
+        series.clips.emplace_back(label, visible_points(clip_points, figure.duration));
         all_zero = all_zero && zero_throughout(clip_points);
       }
     }

@@ -6,17 +6,16 @@
 #include <utility>
 #include <vector>
 
+#include "column_picks.hpp"
 #include "fapc/pipeline/plot.hpp"
 
 namespace fapc::pipeline::plot {
-
-using Points = std::vector<std::pair<double, double>>;  // (seconds, value), times ascending
 
 struct Series {
   std::string name;   // target name: "open_jaw", "viseme", a free parameter
   std::string unit;   // "MNS", "AU"... (docs/fap-table.md), "number" for viseme/expression, "" otherwise
   int order = 0;      // FAP number; targets that are not FAPs come after, by name
-  Points points;
+  Points points;  // only what the panels can show of it (column_picks.hpp), when the figure has a duration
   // Each clip's own curve for this target (--per-clip), labelled by its source line.
   std::vector<std::pair<std::string, Points>> clips;
 };
