@@ -3,7 +3,8 @@
 // its peak memory (ru_maxrss) is its own; inputs are generated at run time, deterministically,
 // into a temporary folder (no stored files), also each in a child. Prints one line per case and
 // size, then the growth exponent fitted between the sizes (time ~ size^k; k near 1 is linear).
-// Not a test: it prints figures. Usage: scale_bench [--max N] [--only SUBSTRING]
+// Not a test: it prints figures. Usage: scale_bench [--max N] [--only SUBSTRING] [--folder DIR]
+// (--folder keeps the generated inputs there, and uses those already there, between runs).
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -42,6 +43,7 @@ struct Measure {
   bool ok = false;
   double seconds = 0;    // of the timed part, measured in the child
   double peak_mb = 0;    // the child's peak resident memory
+  double cpu_seconds = 0;  // the child's CPU time, user and system, untimed parts included
   std::string note;      // the child's error, if any
 };
 
@@ -70,6 +72,8 @@ Measure in_child(const std::function<double(std::string&)>& work) {
   ::wait4(child, &status, 0, &usage);
   Measure m;
   m.peak_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;
+  const auto seconds_of = [](const timeval& t) { return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) / 1e6; };
+  m.cpu_seconds = seconds_of(usage.ru_utime) + seconds_of(usage.ru_stime);
   if (!WIFEXITED(status) || text.empty()) {
     m.note = "child died";
     return m;
@@ -237,8 +241,8 @@ struct Bench {
         std::printf("%-28s %9lld %-8s  failed: %s\n", name.c_str(), static_cast<long long>(n), unit, m.note.c_str());
         continue;
       }
-      std::printf("%-28s %9lld %-8s %8.3f s %8.1f MB peak\n", name.c_str(), static_cast<long long>(n), unit, m.seconds,
-                  m.peak_mb);
+      std::printf("%-28s %9lld %-8s %8.3f s %8.1f MB peak %8.3f s cpu\n", name.c_str(), static_cast<long long>(n), unit,
+                  m.seconds, m.peak_mb, m.cpu_seconds);
       std::fflush(stdout);
       if (n >= 10'000) fitted.emplace_back(static_cast<double>(n), m.seconds);
     }
@@ -289,8 +293,10 @@ struct Bench {
     series("fap read (MB/s below)", frames, [&](std::int64_t n) {
       const fs::path input = long_fap(n);
       Measure m = in_child([&](std::string& note) { return load_case(input, note); });
-      if (m.ok) std::printf("  .fap of %.1f MB read at %.0f MB/s\n", static_cast<double>(fs::file_size(input)) / 1e6,
-                            static_cast<double>(fs::file_size(input)) / 1e6 / m.seconds);
+      if (m.ok)
+        std::printf("  .fap of %.1f MB read at %.0f MB/s (%.0f MB/s of CPU)\n", static_cast<double>(fs::file_size(input)) / 1e6,
+                    static_cast<double>(fs::file_size(input)) / 1e6 / m.seconds,
+                    static_cast<double>(fs::file_size(input)) / 1e6 / m.cpu_seconds);
       return m;
     });
     for (const char* ext : {".fba", ".mp4", ".fap"})
@@ -298,7 +304,13 @@ struct Bench {
         const fs::path input = long_fap(n);
         return in_child([&](std::string& note) { return convert_case(input, folder / ("out" + std::string(ext)), note); });
       });
-    series(".fba decode", frames, [&](std::int64_t n) {
+    // Decoding as a user does it, to a file: streamed, the frames never all in memory.
+    series(".fba decode (-> .fap)", frames, [&](std::int64_t n) {
+      const fs::path input = long_fba(n);
+      return in_child([&](std::string& note) { return convert_case(input, folder / "decoded.fap", note); });
+    });
+    // Loading every decoded frame (what `combine`, `plot` and the curves need).
+    series(".fba load (all frames)", frames, [&](std::int64_t n) {
       const fs::path input = long_fba(n);
       return in_child([&](std::string& note) { return load_case(input, note); });
     });
@@ -406,16 +418,19 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--max") && i + 1 < argc) bench.max_size = std::atoll(argv[++i]);
     else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) bench.only = argv[++i];
+    else if (!std::strcmp(argv[i], "--folder") && i + 1 < argc) bench.folder = argv[++i];
     else {
-      std::fprintf(stderr, "usage: scale_bench [--max N] [--only SUBSTRING]\n");
+      std::fprintf(stderr, "usage: scale_bench [--max N] [--only SUBSTRING] [--folder DIR]\n");
       return 2;
     }
   }
+  const bool kept = !bench.folder.empty();
   char folder[] = "/tmp/fapc-scale-XXXXXX";
-  if (!::mkdtemp(folder)) return 1;
-  bench.folder = folder;
+  if (kept) fs::create_directories(bench.folder);
+  else if (::mkdtemp(folder)) bench.folder = folder;
+  else return 1;
   std::printf("scale bench: one core, each case in its own process; times of the case's work, peak RSS of its process\n");
   bench.run();
-  fs::remove_all(folder);
+  if (!kept) fs::remove_all(bench.folder);
   return 0;
 }

@@ -477,6 +477,12 @@ Result<FapReadResult> Reader::run() {
   for (fapfile::RawLine raw{0, {}}; lines_.next(raw);) {
     constexpr std::size_t kReportEvery = std::size_t{16} << 20;
     if (progress_ && lines_.offset() - reported_ >= kReportEvery) progress_(reported_ = lines_.offset());
+    if (bool trailing = false; expect == Expect::mask && fapfile::scan_plain_mask(raw.text, mask, trailing)) {
+      if (trailing) out_.facts.trailing_spaces = true;
+      mask_line = raw;
+      expect = Expect::values;
+      continue;
+    }
     if (expect == Expect::mask && fapfile::scan_integers(raw.text, integers) && integers.count == 68 &&
         integers.bits) {
       mask.reset();
@@ -536,7 +542,10 @@ Result<FapReadResult> Reader::run() {
     return error_at(mask_line, static_cast<int>(mask_line.text.size()) + 1,
                     "mask line without the value line that must follow it");
   if (auto e = place_frames_in_time()) return *e;
-  for (std::size_t k = 0; k < out_.sequence.frames.size(); ++k) out_.sequence.frames[k].number = numbers_[k];
+  // The frames carry their numbers as written; only stamps and numbering from 1 changed them (a
+  // walk over every frame, which a long file does not pay for otherwise).
+  if (facts.millisecond_stamps || facts.frames_from_one)
+    for (std::size_t k = 0; k < out_.sequence.frames.size(); ++k) out_.sequence.frames[k].number = numbers_[k];
   const auto frames = static_cast<long long>(numbers_.size());
   if (facts.has_header && facts.header_count != frames)
     warn_at({"fap.frame_count"}, header_count_at_, header_count_at_.first_column,
@@ -551,8 +560,8 @@ Result<FapReadResult> Reader::run() {
 }  // namespace
 
 Result<FapReadResult> read_fap_text(std::string_view text, const std::string& file,
-                                    const FapReadOptions& options) {
-  return Reader(text, file, options).run();
+                                    const FapReadOptions& options, const std::function<void(std::size_t)>& progress) {
+  return Reader(text, file, options, {}, progress).run();
 }
 
 Result<FapScanResult> scan_fap_text(std::string_view text, const std::string& file, const FapReadOptions& options,

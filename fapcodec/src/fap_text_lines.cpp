@@ -1,6 +1,8 @@
 #include "fap_text_lines.hpp"
 
 #include <array>
+#include <bit>
+#include <cstdint>
 #include <cstring>
 
 namespace fapc::fapfile {
@@ -69,6 +71,39 @@ bool scan_integers(std::string_view text, IntegerLine& line) {
   }
   line.trailing_blank = !text.empty() && is_blank(text.back());
   return line.count > 0;
+}
+
+bool scan_plain_mask(std::string_view text, std::bitset<68>& mask, bool& trailing_blank) {
+  constexpr std::size_t kDigits = 68, kLength = 2 * kDigits - 1;  // "d d ... d"
+  if constexpr (std::endian::native != std::endian::little) return false;  // the words below are read little-endian
+  if (text.size() < kLength) return false;
+  for (std::size_t i = kLength; i < text.size(); ++i)
+    if (text[i] != ' ') return false;
+  // Each 8-byte word holds digits at its even bytes and spaces at its odd ones; a digit byte xor
+  // '0' is 0 or 1, which is the FAP's bit.
+  constexpr std::uint64_t kSpaces = 0x2000200020002000, kSpaceLanes = 0xFF00FF00FF00FF00;
+  constexpr std::uint64_t kZeros = 0x0030003000300030, kBitLanes = 0x0001000100010001;
+  const auto four_bits = [](std::uint64_t word, bool& ok) {
+    const std::uint64_t digits = (word & ~kSpaceLanes) ^ kZeros;
+    ok = ok && (word & kSpaceLanes) == kSpaces && (digits & ~kBitLanes) == 0;
+    return (digits | digits >> 15 | digits >> 30 | digits >> 45) & 0xF;
+  };
+  bool ok = true;
+  std::uint64_t low = 0;  // FAPs 1..64
+  for (std::size_t w = 0; w < 16; ++w) {
+    std::uint64_t word;
+    std::memcpy(&word, text.data() + 8 * w, 8);
+    low |= four_bits(word, ok) << (4 * w);
+  }
+  // FAPs 65..68: the last 7 bytes, "d d d d", as a word whose last byte reads as a space.
+  std::uint64_t last = 0x2000000000000000;
+  std::memcpy(&last, text.data() + 128, 7);
+  const std::uint64_t high = four_bits(last, ok);
+  if (!ok) return false;
+  mask = std::bitset<68>(low);
+  for (std::size_t i = 0; i < 4; ++i) mask[64 + i] = (high >> i) & 1;
+  trailing_blank = text.size() > kLength;
+  return true;
 }
 
 LineCursor::LineCursor(std::string_view text) : text_(text) {

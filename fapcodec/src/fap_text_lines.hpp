@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <bitset>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -72,5 +73,11 @@ struct IntegerLine {
 // digits, more than kMaxTokens tokens): the reader then tokenizes it and reads it the general way,
 // which gives every diagnostic.
 bool scan_integers(std::string_view text, IntegerLine& line);
+
+// The mask line nearly every writer makes: 68 digits 0 or 1 separated by single spaces, perhaps
+// followed by spaces (no tab). Sets `mask` (bit i from the i-th digit) and `trailing_blank`;
+// false, with nothing changed, for any other line (scan_integers or the general reading takes it).
+// Eight bytes at a time: this is half of every .fap file's text.
+bool scan_plain_mask(std::string_view text, std::bitset<68>& mask, bool& trailing_blank);
 
 }  // namespace fapc::fapfile

@@ -277,4 +277,52 @@ Status write_file_atomic(const std::string& path, std::string_view bytes) {
   return file->commit();
 }
 
+Result<ScratchFile> ScratchFile::create(const std::string& output) {
+  const auto slash = output.find_last_of('/');
+  const std::string folder = slash == std::string::npos ? "." : output.substr(0, slash);
+  int fd = -1;
+#ifdef O_TMPFILE
+  fd = ::open(folder.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
+#endif
+  if (fd < 0) {  // no unnamed files here: a named one, unlinked at once
+    const std::string temp = temporary_path(output);
+    fd = ::open(temp.c_str(), O_CREAT | O_EXCL | O_RDWR | O_CLOEXEC, 0600);
+    if (fd >= 0) ::unlink(temp.c_str());
+  }
+  if (fd < 0) return io_error(output, "cannot create output");
+  std::FILE* file = ::fdopen(fd, "w+");
+  if (!file) {
+    ::close(fd);
+    return io_error(output, "cannot create output");
+  }
+  return ScratchFile(output, file);
+}
+
+ScratchFile::ScratchFile(ScratchFile&& other) noexcept : output_(std::move(other.output_)), file_(other.file_) {
+  other.file_ = nullptr;
+}
+
+ScratchFile::~ScratchFile() {
+  if (file_) std::fclose(file_);
+}
+
+Status ScratchFile::write(std::string_view bytes) {
+  if (!file_ || std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size())
+    return io_error(output_, "cannot write output");
+  return ok_status();
+}
+
+Status ScratchFile::read_back(const std::function<Status(std::string_view)>& sink) {
+  if (!file_ || std::fflush(file_) != 0 || std::fseek(file_, 0, SEEK_SET) != 0) return io_error(output_, "cannot write output");
+  std::string buffer(std::size_t{1} << 20, '\0');
+  for (;;) {
+    const std::size_t got = std::fread(buffer.data(), 1, buffer.size(), file_);
+    if (got > 0)
+      if (auto status = sink({buffer.data(), got}); !status) return status;
+    if (got < buffer.size()) break;
+  }
+  if (std::ferror(file_)) return io_error(output_, "cannot write output");
+  return ok_status();
+}
+
 }  // namespace fapc

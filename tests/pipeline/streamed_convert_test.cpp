@@ -1,9 +1,11 @@
-// A .fap going to .fba and .fap is streamed (never held as frames, docs/architecture.md,
-// "Streaming long frame files"); a second, independent way gives what it must give: the usual
-// load and writers, byte for byte, error for error, over every .fap of the corpus and several
+// A .fap or .fba going to .fba, .mp4 and .fap is streamed (never held as frames,
+// docs/architecture.md, "Streaming"); a second, independent way gives what it must give: the
+// usual load and writers, byte for byte, error for error, over every .fap of the corpus (good,
+// variant and bad), every .fba (good and bad) and .fba streams made from corpus files, with several
 // encoder and flavour settings.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -62,52 +64,106 @@ std::vector<ConvertOptions> settings() {
   return all;
 }
 
-TEST(StreamedConvert, GivesTheBytesAndErrorsOfLoadingAndWriting) {
-  const test::TempFolder tmp;
-  std::size_t files = 0;
-  for (const auto& entry : fs::recursive_directory_iterator(test::corpus_dir() + "/fap")) {
-    if (!entry.is_regular_file() || entry.path().extension() != ".fap") continue;
-    ++files;
-    for (const ConvertOptions& options : settings()) {
-      const std::vector<pipeline::OutputRequest> outputs = {{tmp / "x.fap", ""}, {tmp / "x.fba", ""}};
-      const Usual expected = usual_way(entry.path().string(), outputs, options);
-      fs::remove(tmp / "x.fap");
-      fs::remove(tmp / "x.fba");
-      const pipeline::ConvertResult streamed = pipeline::convert(entry.path().string(), outputs, options);
-      SCOPED_TRACE(entry.path().string());
+// Every file of these corpus folders with this extension.
+std::vector<std::string> corpus_files(const std::vector<std::string>& folders, const std::string& extension) {
+  std::vector<std::string> files;
+  for (const std::string& folder : folders)
+    for (const auto& entry : fs::recursive_directory_iterator(test::corpus_dir() + "/" + folder))
+      if (entry.is_regular_file() && entry.path().extension() == extension) files.push_back(entry.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// Converts `input` both ways to every output (all of them, then the .mp4 alone, then the .fap
+// alone: a .fba to one .fap is decoded once) under every setting and compares; the number of
+// outputs written and compared.
+std::size_t expect_same_both_ways(const std::string& input, const test::TempFolder& tmp) {
+  std::size_t compared = 0;
+  const std::vector<std::vector<pipeline::OutputRequest>> requests = {
+      {{tmp / "x.fap", ""}, {tmp / "x.fba", ""}, {tmp / "x.mp4", ""}},
+      {{tmp / "x.mp4", ""}},
+      {{tmp / "x.fap", ""}},
+  };
+  for (const ConvertOptions& options : settings()) {
+    for (const auto& outputs : requests) {
+      const Usual expected = usual_way(input, outputs, options);
+      for (const auto& output : outputs) fs::remove(output.path);
+      const pipeline::ConvertResult streamed = pipeline::convert(input, outputs, options);
+      SCOPED_TRACE(input + " to " + std::to_string(outputs.size()) + " output(s)");
       EXPECT_TRUE(streamed.loaded.frames.frames.empty());  // streamed, not loaded
       if (expected.error) {
-        ASSERT_FALSE(streamed.ok());
-        EXPECT_EQ(format_diagnostic(*streamed.error), format_diagnostic(*expected.error));
+        EXPECT_FALSE(streamed.ok());
+        if (streamed.error) {
+          EXPECT_EQ(format_diagnostic(*streamed.error), format_diagnostic(*expected.error));
+        }
       } else {
-        ASSERT_TRUE(streamed.ok()) << format_diagnostic(*streamed.error);
+        EXPECT_TRUE(streamed.ok()) << format_diagnostic(*streamed.error);
+        if (!streamed.ok()) continue;
       }
       for (std::size_t i = 0; i < outputs.size(); ++i) {
-        if (i < expected.bytes.size()) EXPECT_EQ(contents(outputs[i].path), expected.bytes[i]) << outputs[i].path;
-        else EXPECT_FALSE(fs::exists(outputs[i].path)) << outputs[i].path;
+        if (i < expected.bytes.size()) {
+          EXPECT_EQ(contents(outputs[i].path), expected.bytes[i]) << outputs[i].path;
+          ++compared;
+        } else {
+          EXPECT_FALSE(fs::exists(outputs[i].path)) << outputs[i].path;
+        }
       }
     }
   }
-  EXPECT_GT(files, 100u);
-  for (const auto& entry : fs::directory_iterator(tmp.path()))  // no temporary file left behind
+  return compared;
+}
+
+void expect_no_temporary_file(const test::TempFolder& tmp) {
+  for (const auto& entry : fs::directory_iterator(tmp.path()))
     EXPECT_FALSE(entry.path().filename().string().starts_with(".fapc-tmp-")) << entry.path();
+}
+
+TEST(StreamedConvert, FapGivesTheBytesAndErrorsOfLoadingAndWriting) {
+  const test::TempFolder tmp;
+  const auto files = corpus_files({"fap", "fap-variants", "fap-bad"}, ".fap");
+  EXPECT_GT(files.size(), 150u);
+  std::size_t compared = 0;
+  for (const std::string& input : files) compared += expect_same_both_ways(input, tmp);
+  EXPECT_GT(compared, 2000u);  // most files convert under most settings
+  expect_no_temporary_file(tmp);
+}
+
+TEST(StreamedConvert, FbaGivesTheBytesAndErrorsOfLoadingAndWriting) {
+  const test::TempFolder tmp;
+  std::vector<std::string> files = corpus_files({"fba", "fba-bad"}, ".fba");
+  // Streams of other shapes: every tenth .fap of the corpus encoded, as the encoder makes them.
+  const auto faps = corpus_files({"fap"}, ".fap");
+  for (std::size_t k = 0; k < faps.size(); k += 10) {
+    const std::string made = tmp / ("made-" + std::to_string(k) + ".fba");
+    ASSERT_TRUE(pipeline::convert(faps[k], {{made, ""}}, ConvertOptions{}).ok()) << faps[k];
+    files.push_back(made);
+  }
+  EXPECT_GT(files.size(), 20u);
+  std::size_t compared = 0;
+  for (const std::string& input : files) compared += expect_same_both_ways(input, tmp);
+  EXPECT_GT(compared, 200u);
+  expect_no_temporary_file(tmp);
 }
 
 TEST(StreamedConvert, AnEncoderErrorAboutOneFramePointsAtTheFramesLine) {
   // A value the bitstream cannot carry is found by the encoder, which sees frames, not lines: it
-  // used to be reported against the file as a whole. Streamed (.fba) and loaded (.mp4) alike.
+  // used to be reported against the file as a whole. Streamed (.fba, .mp4) and loaded alike.
   const test::TempFolder tmp;
   const std::string input = tmp / "far.fap";
   std::string mask = "0 0 1";  // FAP 3, open_jaw
   for (int fap = 4; fap <= 68; ++fap) mask += " 0";
   mask += "\n";
   std::ofstream(input) << "2.1 far 25 3\n" << mask << "0 10\n" << mask << "1 20\n" << mask << "2 2000000000\n";
-  for (const char* output : {"x.fba", "x.mp4"}) {
-    const pipeline::ConvertResult r = pipeline::convert(input, {{tmp / output, ""}}, ConvertOptions{});
-    ASSERT_FALSE(r.ok()) << output;
-    EXPECT_EQ(r.error->where.file, input) << output;
-    EXPECT_EQ(r.error->where.line, 7) << output;  // the third frame's value line
-    EXPECT_FALSE(fs::exists(tmp / output));
+  ConvertOptions loaded;
+  loaded.verify = true;  // takes the usual way
+  for (const ConvertOptions& options : {ConvertOptions{}, loaded}) {
+    for (const char* output : {"x.fba", "x.mp4"}) {
+      const pipeline::ConvertResult r = pipeline::convert(input, {{tmp / output, ""}}, options);
+      ASSERT_FALSE(r.ok()) << output;
+      EXPECT_EQ(r.error->where.file, input) << output;
+      EXPECT_EQ(r.error->where.line, 7) << output;  // the third frame's value line
+      EXPECT_FALSE(fs::exists(tmp / output));
+    }
   }
 }
 

@@ -8,4 +8,10 @@ Result<DecodedFba> decode_fba(std::span<const std::uint8_t> bytes, const FbaDeco
   return reader.run();
 }
 
+Result<DecodedFba> decode_fba(std::span<const std::uint8_t> bytes, const FbaDecodeOptions& options,
+                              const FbaFrameSink& sink) {
+  fba::StreamReader reader(bytes, options, sink);
+  return reader.run();
+}
+
 }  // namespace fapc

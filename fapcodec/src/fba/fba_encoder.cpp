@@ -139,6 +139,7 @@ Status FbaEncoder::add(const FapFrame& frame) {
   if (s.added >= s.checked)
     return make_error(ErrorKind::usage, Location{}, "FbaEncoder: a frame added that the first pass did not check");
   if (s.masks && !s.fitter) s.fitter.emplace(std::move(*s.masks).finish());
+  if (s.added == 0) s.writer->reserve(s.checked);  // a plane a frame
   ++s.added;
   s.window.push_back(s.fitter ? s.fitter->fit(frame) : frame);
   return s.write_groups(false);

@@ -21,6 +21,9 @@ class PlaneWriter {
   // Every plane of the group, in order. The window holds the frame after the group unless the
   // group ends the sequence (a plane's skip count is the gap to the next frame).
   void write(const Gop& gop);
+  // Room for this many planes' places, when the caller knows how many there will be (a long
+  // stream's list of planes would otherwise be copied as it grows, twice its size at the peak).
+  void reserve(std::size_t planes) { result_.planes.reserve(planes); }
   // Stuffing and the end code; the stream and where each plane went.
   EncodedFba finish();
 

@@ -18,8 +18,8 @@ std::string hex_code(std::uint32_t code) {
 
 }  // namespace
 
-StreamReader::StreamReader(std::span<const std::uint8_t> bytes, const FbaDecodeOptions& options)
-    : options_(options), c_(bytes, options.file) {
+StreamReader::StreamReader(std::span<const std::uint8_t> bytes, const FbaDecodeOptions& options, FbaFrameSink sink)
+    : options_(options), c_(bytes, options.file), sink_(std::move(sink)) {
   out_.info.bytes = bytes.size();
 }
 
@@ -189,12 +189,12 @@ Status StreamReader::read_plane() {
   FbaStreamInfo& info = out_.info;
   const auto rate = info.frame_rate;
   frame.number = header.time_code ? std::llround(static_cast<double>(header.time_code_seconds) * rate) : next_number_;
-  if (!out_.sequence.frames.empty() && frame.number <= out_.sequence.frames.back().number)
+  if (any_frame_ && frame.number <= last_number_)
     return c_.error_at(start_byte, "the time code goes back to frame " + std::to_string(frame.number));
   // The frames the planes span so far, this one's skips included: a decoded sequence is written
   // gap-filled (.fap) and re-encoded, so skips count like frames (Limits::max_frames). Skips grow
   // by at most 255 per byte and time codes stay below 2^27 frames: no overflow here.
-  const std::int64_t first = out_.sequence.frames.empty() ? frame.number : out_.sequence.frames.front().number;
+  const std::int64_t first = any_frame_ ? first_number_ : frame.number;
   if (const std::int64_t span = frame.number + header.skip + 1 - first; span > options_.max_frames) {
     Limits limits;
     limits.max_frames = options_.max_frames;
@@ -206,7 +206,11 @@ Status StreamReader::read_plane() {
   next_number_ = frame.number + header.skip + 1;
   ++info.face_planes;
   info.skipped_frames += header.skip;
-  info.frames = next_number_ - (out_.sequence.frames.empty() ? frame : out_.sequence.frames.front()).number;
+  info.frames = next_number_ - first;
+  if (!any_frame_) first_number_ = frame.number;
+  any_frame_ = true;
+  last_number_ = frame.number;
+  if (sink_) return sink_(frame);
   out_.sequence.frames.push_back(frame);
   return ok_status();
 }
@@ -234,7 +238,7 @@ Result<DecodedFba> StreamReader::run() {
                                          std::to_string(c_.in.size_bits() / 8 - static_cast<std::size_t>(c_.in.byte_offset())) +
                                              " bytes after the end code are ignored"));
   FbaStreamInfo& info = out_.info;
-  if (!info.frame_rate_sent && !out_.sequence.frames.empty())
+  if (!info.frame_rate_sent && any_frame_)
     out_.warnings.push_back(make_warning({"fba.no_frame_rate"}, Location::binary(c_.file, 0), "the stream never gives its frame rate; assuming 30 frames per second"));
   out_.sequence.fps = static_cast<int>(std::lround(info.frame_rate));
   if (std::abs(info.frame_rate - out_.sequence.fps) > 1e-9)

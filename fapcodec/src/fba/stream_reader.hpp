@@ -15,7 +15,8 @@ namespace fapc::fba {
 
 class StreamReader {
  public:
-  StreamReader(std::span<const std::uint8_t> bytes, const FbaDecodeOptions& options);
+  // Without a sink the frames are kept in the result; with one, each goes to it.
+  StreamReader(std::span<const std::uint8_t> bytes, const FbaDecodeOptions& options, FbaFrameSink sink = {});
   Result<DecodedFba> run();
 
  private:
@@ -42,7 +43,11 @@ class StreamReader {
   FaceState face_;
   BodyState body_;
   DecodedFba out_;
+  FbaFrameSink sink_;
   std::int64_t next_number_ = 0;  // frame number of the next face plane without a time code
+  // The first and last face planes' frame numbers, once there is one (the frames may not be kept).
+  bool any_frame_ = false;
+  std::int64_t first_number_ = 0, last_number_ = 0;
   bool body_warned_ = false;
   bool rate_change_warned_ = false;
 };

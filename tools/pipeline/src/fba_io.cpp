@@ -57,6 +57,17 @@ Result<DecodedFba> read_fba_file(const std::string& path, const Limits& limits) 
   return decode_fba(std::span<const std::uint8_t>(data, bytes->size()), options);
 }
 
+std::optional<Diagnostic> fba_rate_error(int fps, const Location& rate_at, int rate_written, const std::string& input) {
+  // The stream codes the rate in 8 bits (docs/fba-bitstream.md): a rate outside them is the
+  // input's, refused where the input wrote it (or, set by --fps, against the input as a whole).
+  if (fps >= 1 && fps <= kMaxFbaFrameRate) return std::nullopt;
+  const bool written = !rate_at.file.empty() && rate_written == fps;
+  return make_error(written ? rate_at : Location{input, 0, 0, -1},
+                    "frame rate " + std::to_string(fps) + " cannot be coded in an FBA stream (1 to " +
+                        std::to_string(kMaxFbaFrameRate) + " frames per second)" +
+                        (written ? "" : "; --fps sets another"));
+}
+
 std::function<Location(std::int64_t, int)> frame_locator(const std::vector<std::int64_t>& numbers,
                                                          const std::vector<int>& lines, const std::string& input) {
   if (lines.size() != numbers.size()) return {};
@@ -70,15 +81,7 @@ std::function<Location(std::int64_t, int)> frame_locator(const std::vector<std::
 Result<EncodedFba> encode_checked(const Loaded& loaded, const ConvertOptions& options,
                                   const std::string& input, bool align_planes) {
   const FapSequence& sequence = loaded.frames;
-  // The stream codes the rate in 8 bits (docs/fba-bitstream.md): a rate outside them is the
-  // input's, refused where the input wrote it (or, set by --fps, against the input as a whole).
-  if (sequence.fps < 1 || sequence.fps > kMaxFbaFrameRate) {
-    const bool written = !loaded.rate_at.file.empty() && loaded.rate_written == sequence.fps;
-    return make_error(written ? loaded.rate_at : Location{input, 0, 0, -1},
-                      "frame rate " + std::to_string(sequence.fps) +
-                          " cannot be coded in an FBA stream (1 to " + std::to_string(kMaxFbaFrameRate) +
-                          " frames per second)" + (written ? "" : "; --fps sets another"));
-  }
+  if (auto error = fba_rate_error(sequence.fps, loaded.rate_at, loaded.rate_written, input)) return *error;
   FbaEncodeOptions fba = fba_encode_options(options);
   fba.align_planes = align_planes;
   std::vector<std::int64_t> numbers;
@@ -96,6 +99,16 @@ Result<EncodedFba> encode_checked(const Loaded& loaded, const ConvertOptions& op
   if (options.verify)
     if (auto verified = verify_fba(sequence, *encoded, fba, input); !verified) return verified.error();
   return encoded;
+}
+
+xmt::FbaTrackView fba_track_view(const EncodedFba& encoded, int fps) {
+  const auto dsi = fba_decoder_specific_info();
+  xmt::FbaTrackView track{xmt::Bytes(dsi.begin(), dsi.end()), static_cast<std::uint32_t>(fps), {}};
+  track.samples.reserve(encoded.planes.size());
+  for (const CodedPlane& plane : encoded.planes)
+    track.samples.push_back({std::span<const std::uint8_t>(encoded.bytes).subspan(plane.offset, plane.size),
+                             static_cast<std::uint32_t>(plane.frames), plane.intra});
+  return track;
 }
 
 xmt::FbaTrackInput pack_fba_track(const EncodedFba& encoded, int fps) {

@@ -18,7 +18,7 @@ namespace {
 
 // The frames one expression may make in all, as a multiple of the frame limit: a long chain of
 // operators, each within the limit, is refused before it takes minutes (docs/security.md).
-constexpr int kWorkFactor = 8;
+constexpr int kWorkFactor = 4;
 
 // An operand with what only an overlap uses.
 struct Term {
@@ -91,7 +91,7 @@ class Evaluator {
       std::snprintf(what, sizeof what, "this operator makes %.15g frames at %d fps", slots, fps);
       return frames_limit(offset, what);
     }
-    return too_much_work(offset, slots * static_cast<double>(operands.size() + 1));
+    return too_much_work(offset, slots);
   }
   // Counts `frames` more made, against kWorkFactor times max_frames for the whole expression.
   std::optional<Diagnostic> too_much_work(std::size_t offset, double frames) {

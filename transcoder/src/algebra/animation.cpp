@@ -9,26 +9,29 @@
 namespace fapc::algebra {
 namespace {
 
-// Both operands on the higher frame rate and the same number of slots.
-std::pair<Animation, Animation> common(const Animation& a, const Animation& b) {
-  const int fps = std::max(a.fps, b.fps);
-  std::pair<Animation, Animation> out{resample(a, fps), resample(b, fps)};
-  const std::size_t size = std::max(out.first.size(), out.second.size());
-  out.first.frames.resize(size);
-  out.second.frames.resize(size);
-  return out;
+// `a` on the grid of `fps`: itself when it is there already (no copy: a chain of operators would
+// otherwise copy every operand once more), else resampled into `store`.
+const Animation& on_grid(const Animation& a, int fps, Animation& store) {
+  if (a.fps == fps) return a;
+  store = resample(a, fps);
+  return store;
 }
 
+// Both operands on the higher frame rate; past the end of the shorter one, only the longer.
 template <class BothFn>
 Animation frame_by_frame(const Animation& a, const Animation& b, BothFn both) {
-  auto [x, y] = common(a, b);
+  const int fps = std::max(a.fps, b.fps);
+  Animation a_store, b_store;
+  const Animation& x = on_grid(a, fps, a_store);
+  const Animation& y = on_grid(b, fps, b_store);
   Animation out;
-  out.fps = x.fps;
+  out.fps = fps;
   out.carried = a.carried | b.carried;
-  out.frames.resize(x.size());
-  for (std::size_t k = 0; k < x.size(); ++k) {
-    const auto& s = x.frames[k];
-    const auto& t = y.frames[k];
+  out.frames.resize(std::max(x.size(), y.size()));
+  static const std::optional<FacialState> none;
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const auto& s = k < x.size() ? x.frames[k] : none;
+    const auto& t = k < y.size() ? y.frames[k] : none;
     out.frames[k] = s && t ? both(*s, *t) : s ? *s : t ? *t : FacialState{};
   }
   return out;

@@ -1,13 +1,13 @@
-// The scheduler (docs/timeline.md). Two passes: measure() finds each node's active duration where
-// it is known without the parent (memoised, so the whole run is linear in the tree size), then
-// place() walks the tree once, top-down, with absolute times.
+// The scheduler (docs/timeline.md). Two passes: measure_all() finds each node's active duration
+// where it is known without the parent, bottom-up, into a table by the node's number in depth-first
+// order (so the whole run is linear in the tree size, with no map from nodes), then place() walks
+// the tree once, top-down, with absolute times, numbering the nodes the same way.
 #include "fapc/transcoder/schedule.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
-#include <unordered_map>
 
 namespace fapc {
 namespace {
@@ -28,20 +28,21 @@ class Scheduler {
   std::optional<ScheduleError> error;
   std::int64_t max_runs = 0;
 
-  // The active duration of `node` when it is known without a parent end.
-  std::optional<double> measure(const ScheduleNode& node) {
-    if (const auto found = measured_.find(&node); found != measured_.end()) return found->second;
-    const std::optional<double> result = active_duration(node, simple_duration(node));
-    measured_.emplace(&node, result);
-    return result;
+  // Numbers the nodes (depth first, the root 0) and measures each: before place().
+  void measure_tree(const ScheduleNode& root) {
+    const std::size_t nodes = count(root);
+    measured_.assign(nodes, std::nullopt);
+    size_.assign(nodes, 0);
+    measure_all(root, 0);
   }
 
-  // Places `node` with its active span starting at `start`. `limit` is the reference end that
-  // open-ended nodes stretch to; `cut` is where the ancestors end. Returns the node's active end.
-  double place(const ScheduleNode& node, double start, std::optional<double> limit, double cut,
+  // Places `node` (number `index`) with its active span starting at `start`. `limit` is the
+  // reference end that open-ended nodes stretch to; `cut` is where the ancestors end. Returns the
+  // node's active end.
+  double place(const ScheduleNode& node, std::size_t index, double start, std::optional<double> limit, double cut,
                std::vector<Occurrence>& out) {
     if (error) return start;
-    std::optional<double> active = measure(node);
+    std::optional<double> active = measured_[index];
     if (!active && limit) active = std::max(0.0, *limit - start);
     if (node.kind == Kind::leaf) {
       if (!active) {
@@ -82,7 +83,7 @@ class Scheduler {
     // With an explicit duration, children beyond it are cut at the end of each iteration.
     const double iteration_cut =
         node.timing.duration ? std::min(inner_cut, start + *node.timing.duration) : inner_cut;
-    const double children_end = place_children(node, start, own_limit, iteration_cut, out);
+    const double children_end = place_children(node, index, start, own_limit, iteration_cut, out);
     if (error) return start;
     const double simple = node.timing.duration.value_or(children_end - start);
     // Iterations stop at the repeat count (and repeatDur) even when the group's length was only
@@ -95,7 +96,34 @@ class Scheduler {
   }
 
  private:
-  std::unordered_map<const ScheduleNode*, std::optional<double>> measured_;
+  // By node number: the active duration when known without a parent end; the subtree's size.
+  std::vector<std::optional<double>> measured_;
+  std::vector<std::size_t> size_;
+
+  static std::size_t count(const ScheduleNode& node) {
+    std::size_t n = 1;
+    for (const ScheduleNode& child : node.children) n += count(child);
+    return n;
+  }
+
+  // Measures the subtree of `node` (number `index`), children first; returns its size.
+  std::size_t measure_all(const ScheduleNode& node, std::size_t index) {
+    std::size_t next = index + 1;
+    for (const ScheduleNode& child : node.children) next += measure_all(child, next);
+    size_[index] = next - index;
+    measured_[index] = active_duration(node, simple_duration(node, index));
+    return size_[index];
+  }
+
+  // Calls `visit(child, its number)` for each child of node `index`, in order.
+  template <class Visit>
+  void for_each_child(const ScheduleNode& node, std::size_t index, Visit visit) const {
+    std::size_t child_index = index + 1;
+    for (const ScheduleNode& child : node.children) {
+      visit(child, child_index);
+      child_index += size_[child_index];
+    }
+  }
 
   // Repeats of repeats can ask for more runs than memory holds (an indefinite repeat of a tiny
   // group beside a very long sibling): past max_runs the schedule is an error at the node.
@@ -113,16 +141,16 @@ class Scheduler {
     if (!error) error = ScheduleError{problem, node.tag, node.source, std::move(predicate)};
   }
 
-  std::optional<double> simple_duration(const ScheduleNode& node) {
+  std::optional<double> simple_duration(const ScheduleNode& node, std::size_t index) {
     if (node.timing.duration) return node.timing.duration;
     switch (node.kind) {
       case Kind::leaf:
         return std::nullopt;
       case Kind::sequence:
-        return measure_sequence(node);
+        return measure_sequence(node, index);
       case Kind::parallel:
       case Kind::exclusive:
-        return measure_parallel(node);
+        return measure_parallel(node, index);
     }
     return std::nullopt;
   }
@@ -137,35 +165,40 @@ class Scheduler {
     return active;
   }
 
-  std::optional<double> measure_sequence(const ScheduleNode& node) {
+  std::optional<double> measure_sequence(const ScheduleNode& node, std::size_t index) {
     double cursor = 0;
     double latest = 0;
-    for (const ScheduleNode& child : node.children) {
-      const std::optional<double> active = measure(child);
-      if (!active) return std::nullopt;
+    bool known = true;
+    for_each_child(node, index, [&](const ScheduleNode& child, std::size_t child_index) {
+      const std::optional<double> active = measured_[child_index];
+      if (!known || !active) {
+        known = false;
+        return;
+      }
       cursor = cursor + child.timing.offset + *active;
       latest = std::max(latest, cursor);
-    }
+    });
+    if (!known) return std::nullopt;
     return latest;
   }
 
   // A parallel's reference end is the latest end among the children whose duration is known
   // without it (right-aligned children excluded: their place depends on it).
-  std::optional<double> reference_end(const ScheduleNode& node) {
+  std::optional<double> reference_end(const ScheduleNode& node, std::size_t index) {
     std::optional<double> reference;
-    for (const ScheduleNode& child : node.children) {
-      if (child.timing.align_right) continue;
-      if (const std::optional<double> active = measure(child)) {
+    for_each_child(node, index, [&](const ScheduleNode& child, std::size_t child_index) {
+      if (child.timing.align_right) return;
+      if (const std::optional<double> active = measured_[child_index]) {
         reference = std::max(reference.value_or(-kForever), child.timing.offset + *active);
       }
-    }
+    });
     return reference;
   }
 
-  std::optional<double> measure_parallel(const ScheduleNode& node) {
+  std::optional<double> measure_parallel(const ScheduleNode& node, std::size_t index) {
     // An empty par or excl (or an excl whose event picked no branch) lasts 0 s (SMIL).
     if (node.children.empty()) return 0.0;
-    const std::optional<double> reference = reference_end(node);
+    const std::optional<double> reference = reference_end(node, index);
     if (!reference) return std::nullopt;
     double latest = std::max(0.0, *reference);
     for (const ScheduleNode& child : node.children) {
@@ -192,20 +225,23 @@ class Scheduler {
   }
 
   // Places the children of a group starting at `start`; returns the latest child end.
-  double place_children(const ScheduleNode& node, double start, std::optional<double> limit,
+  double place_children(const ScheduleNode& node, std::size_t index, double start, std::optional<double> limit,
                         double cut, std::vector<Occurrence>& out) {
-    if (node.kind == Kind::sequence) return place_sequence(node, start, limit, cut, out);
+    if (node.kind == Kind::sequence) return place_sequence(node, index, start, limit, cut, out);
     std::optional<double> reference;
     if (node.timing.duration) {
       reference = start + *node.timing.duration;
-    } else if (const std::optional<double> relative = reference_end(node)) {
+    } else if (const std::optional<double> relative = reference_end(node, index)) {
       reference = start + *relative;
     } else {
       reference = limit;
     }
     double latest = start;
     std::vector<ChildRun> runs;  // exclusive groups: who cuts whom
+    std::size_t child_index = index + 1;
     for (const ScheduleNode& child : node.children) {
+      const std::size_t this_index = child_index;
+      child_index += size_[this_index];
       double child_start = start + child.timing.offset;
       std::optional<double> child_limit = reference;
       if (child.timing.align_right) {
@@ -215,11 +251,11 @@ class Scheduler {
         }
         const double child_end = *reference + *child.timing.align_right;
         // A child of known length moves so that it ends there; an open-ended one stretches to it.
-        if (const std::optional<double> active = measure(child)) child_start = child_end - *active;
+        if (const std::optional<double> active = measured_[this_index]) child_start = child_end - *active;
         child_limit = child_end;
       }
       const std::size_t from = out.size();
-      latest = std::max(latest, place(child, child_start, child_limit, cut, out));
+      latest = std::max(latest, place(child, this_index, child_start, child_limit, cut, out));
       if (error) return latest;
       runs.push_back(ChildRun{child_start, from, out.size()});
     }
@@ -227,17 +263,20 @@ class Scheduler {
     return latest;
   }
 
-  double place_sequence(const ScheduleNode& node, double start, std::optional<double> limit,
+  double place_sequence(const ScheduleNode& node, std::size_t index, double start, std::optional<double> limit,
                         double cut, std::vector<Occurrence>& out) {
     double cursor = start;
     double latest = start;
+    std::size_t child_index = index + 1;
     for (const ScheduleNode& child : node.children) {
+      const std::size_t this_index = child_index;
+      child_index += size_[this_index];
       if (child.timing.align_right) {
         fail(child, ScheduleProblem::right_in_sequence,
              "right alignment is only allowed in a parallel, not in a sequence");
         return latest;
       }
-      cursor = place(child, cursor + child.timing.offset, limit, cut, out);
+      cursor = place(child, this_index, cursor + child.timing.offset, limit, cut, out);
       if (error) return latest;
       latest = std::max(latest, cursor);
     }
@@ -319,7 +358,8 @@ std::variant<Schedule, ScheduleError> schedule_tree(const ScheduleNode& root, co
   scheduler.max_runs = options.max_runs;
   Schedule result;
   const double cut = options.root_end.value_or(kForever);
-  result.end = scheduler.place(root, root.timing.offset, options.root_end, cut, result.occurrences);
+  scheduler.measure_tree(root);
+  result.end = scheduler.place(root, 0, root.timing.offset, options.root_end, cut, result.occurrences);
   if (scheduler.error) return *scheduler.error;
   if (options.root_end) result.end = *options.root_end;
   return result;

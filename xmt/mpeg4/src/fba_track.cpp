@@ -13,7 +13,7 @@ void put_start_code(Bytes& out, std::uint8_t code) {
   out.insert(out.end(), {0x00, 0x00, 0x01, code});
 }
 
-bool starts_with_start_code(const Bytes& bytes, std::uint8_t code) {
+bool starts_with_start_code(std::span<const std::uint8_t> bytes, std::uint8_t code) {
   return bytes.size() >= 4 && bytes[0] == 0 && bytes[1] == 0 && bytes[2] == 1 && bytes[3] == code;
 }
 
@@ -59,12 +59,21 @@ bool declares_fba_object(const Bytes& dsi) {
   return false;
 }
 
-Status check_fba_track(const FbaTrackInput& track) {
+FbaTrackView view_of(const FbaTrackInput& track) {
+  FbaTrackView view{track.decoder_specific_info, track.timescale, {}};
+  view.samples.reserve(track.samples.size());
+  for (const FbaSample& s : track.samples) view.samples.push_back({s.bytes, s.duration, s.sync});
+  return view;
+}
+
+Status check_fba_track(const FbaTrackInput& track) { return check_fba_track(view_of(track)); }
+
+Status check_fba_track(const FbaTrackView& track) {
   if (auto pl = fba_profile_level(track.decoder_specific_info); !pl) return pl.error();
   if (track.timescale == 0) return make_error(Location{}, "FBA track timescale is 0");
   if (track.samples.empty()) return make_error(Location{}, "FBA track has no samples");
   for (std::size_t i = 0; i < track.samples.size(); ++i) {
-    const FbaSample& s = track.samples[i];
+    const FbaSampleView& s = track.samples[i];
     if (!starts_with_start_code(s.bytes, kFbaObjectPlaneStartCode))
       return make_error(Location{}, "FBA sample " + std::to_string(i + 1) +
                                         " does not start with the plane start code 00 00 01 BB");

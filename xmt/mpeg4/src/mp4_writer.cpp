@@ -1,9 +1,11 @@
 // The MP4 writer: plans three tracks (scene, object descriptors, FBA), lays out moov before mdat
 // with one chunk per track, and writes the boxes. Times and creation dates are fixed (0) so the
-// same input always gives the same bytes.
+// same input always gives the same bytes. The plans hold views of the samples, not copies, and
+// the file goes out in pieces: moov is some 12 bytes a sample, mdat is the samples themselves.
 #include "fapc/mpeg4/mp4_writer.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
@@ -15,6 +17,8 @@
 namespace fapc::xmt {
 
 namespace {
+
+using Piece = std::span<const std::uint8_t>;
 
 std::uint64_t to_movie_time(std::uint64_t ticks, std::uint32_t timescale) {
   return (ticks * kSystemsTimescale + timescale / 2) / timescale;
@@ -32,7 +36,7 @@ struct TrackPlan {
   std::string_view handler_name;  // shown by tools
   std::uint32_t timescale = kSystemsTimescale;
   EsDescriptor es;
-  std::vector<Bytes> samples;
+  std::vector<Piece> samples;  // views: the bytes belong to the caller or to write_mp4
   std::vector<std::uint32_t> durations;
   std::vector<std::uint32_t> sync;  // 1-based numbers of sync samples
   bool all_sync = true;             // then no stss box: every sample is a sync sample
@@ -152,7 +156,7 @@ void write_sample_table(BoxWriter& box, const TrackPlan& t, std::uint64_t chunk_
   box.open_full("stsz", 0, 0);
   out.u32(0);
   out.u32(count);
-  for (const Bytes& s : t.samples) out.u32(static_cast<std::uint32_t>(s.size()));
+  for (const Piece& s : t.samples) out.u32(static_cast<std::uint32_t>(s.size()));
   box.close();
   box.open_full("stco", 0, 0);
   out.u32(1);
@@ -278,14 +282,14 @@ Bytes ftyp() {
 }
 
 TrackPlan system_track(std::uint32_t id, std::string_view handler, std::string_view name,
-                       std::uint8_t stream_type, Bytes sample, std::uint32_t duration) {
+                       std::uint8_t stream_type, Piece sample, std::uint32_t duration) {
   TrackPlan t;
   t.id = id;
   t.handler = handler;
   t.handler_name = name;
   t.es.config.object_type = kSystemsV1Object;
   t.es.config.stream_type = stream_type;
-  t.samples.push_back(std::move(sample));
+  t.samples.push_back(sample);
   t.durations.push_back(duration);
   return t;
 }
@@ -302,7 +306,7 @@ TrackPlan audio_track_plan(const AudioTrackInput& audio) {
   t.es.config.object_type = kAudio14496_3Object;
   t.es.config.stream_type = kAudioStream;
   t.es.config.specific_info = audio.decoder_specific_info;
-  t.samples = audio.samples;
+  t.samples.assign(audio.samples.begin(), audio.samples.end());
   t.durations.assign(audio.samples.size(), audio.samples_per_unit);
   if (audio.delay_ms > 0) t.edits.push_back({audio.delay_ms, -1});
   t.edits.push_back({static_cast<std::uint32_t>(to_movie_time(audio.length, audio.sample_rate)),
@@ -311,9 +315,39 @@ TrackPlan audio_track_plan(const AudioTrackInput& audio) {
   return t;
 }
 
+// Gathers small writes into pieces of about 1 MB for the sink.
+class PieceOut {
+ public:
+  explicit PieceOut(const Mp4Sink& sink) : sink_(sink) {}
+  Status put(Piece bytes) {
+    buffer_.insert(buffer_.end(), bytes.begin(), bytes.end());
+    return buffer_.size() >= (std::size_t{1} << 20) ? flush() : ok_status();
+  }
+  Status flush() {
+    if (buffer_.empty()) return ok_status();
+    Status status = sink_(buffer_);
+    buffer_.clear();
+    return status;
+  }
+
+ private:
+  const Mp4Sink& sink_;
+  Bytes buffer_;
+};
+
 }  // namespace
 
 Result<Bytes> write_mp4(const FbaTrackInput& fba, const AudioTrackInput* audio) {
+  Bytes file;
+  const Status written = write_mp4(view_of(fba), audio, [&](Piece bytes) {
+    file.insert(file.end(), bytes.begin(), bytes.end());
+    return ok_status();
+  });
+  if (!written) return written.error();
+  return file;
+}
+
+Status write_mp4(const FbaTrackView& fba, const AudioTrackInput* audio, const Mp4Sink& sink) {
   if (Status s = check_fba_track(fba); !s) return s.error();
   if (audio)
     if (Status s = check_audio_track(*audio); !s) return s.error();
@@ -328,7 +362,9 @@ Result<Bytes> write_mp4(const FbaTrackInput& fba, const AudioTrackInput* audio) 
   fba_track.es.config.stream_type = kVisualStream;
   fba_track.es.config.specific_info = fba.decoder_specific_info;
   fba_track.all_sync = false;  // stss is always written: planes are intra or predicted
-  for (const FbaSample& s : fba.samples) {
+  fba_track.samples.reserve(fba.samples.size());
+  fba_track.durations.reserve(fba.samples.size());
+  for (const FbaSampleView& s : fba.samples) {
     fba_track.samples.push_back(s.bytes);
     fba_track.durations.push_back(s.duration);
     if (s.sync) fba_track.sync.push_back(static_cast<std::uint32_t>(fba_track.samples.size()));
@@ -348,13 +384,12 @@ Result<Bytes> write_mp4(const FbaTrackInput& fba, const AudioTrackInput* audio) 
   // whole bytes left), and then fails on this scene; with the padding it decodes it. A decoder
   // that follows the syntax stops at the last command's continue flag and never reads the byte.
   scene_au->push_back(0);
-  TrackPlan scene = system_track(kSceneTrackId, "sdsm", "fapc scene", kSceneDescriptionStream,
-                                 std::move(*scene_au), span);
+  TrackPlan scene = system_track(kSceneTrackId, "sdsm", "fapc scene", kSceneDescriptionStream, *scene_au, span);
   scene.es.config.specific_info = encode_bifs_config(config);
   std::vector<ObjectDescriptor> ods = {{kFbaObjectDescriptorId, {1}}};
   if (audio) ods.push_back({kAudioObjectDescriptorId, {2}});
-  TrackPlan od = system_track(kOdTrackId, "odsm", "fapc object descriptors", kObjectDescriptorStream,
-                              encode_object_descriptor_update(ods), span);
+  const Bytes od_au = encode_object_descriptor_update(ods);
+  TrackPlan od = system_track(kOdTrackId, "odsm", "fapc object descriptors", kObjectDescriptorStream, od_au, span);
   od.mpod = {kFbaTrackId};  // ES_ID_Ref 1 is this first entry
   if (audio) od.mpod.push_back(kAudioTrackId);  // and 2 the second
   set_bitrates(scene);
@@ -378,19 +413,22 @@ Result<Bytes> write_mp4(const FbaTrackInput& fba, const AudioTrackInput* audio) 
   std::uint64_t at = mdat_start + 8;  // after the mdat header
   for (std::size_t i = 0; i < tracks.size(); ++i) {
     offsets[i] = at;
-    for (const Bytes& s : tracks[i].samples) at += s.size();
+    for (const Piece& s : tracks[i].samples) at += s.size();
   }
   if (at > std::numeric_limits<std::uint32_t>::max())
     return make_error(Location{}, "MP4 output would exceed 4 GiB; fapc writes 32-bit offsets only");
 
-  ByteWriter file;
-  file.bytes(head);
-  file.bytes(write_moov(tracks, offsets, profiles));
-  file.u32(static_cast<std::uint32_t>(at - mdat_start));
-  file.fourcc("mdat");
+  PieceOut file(sink);
+  ByteWriter mdat_header;
+  mdat_header.u32(static_cast<std::uint32_t>(at - mdat_start));
+  mdat_header.fourcc("mdat");
+  if (Status s = file.put(head); !s) return s;
+  if (Status s = file.put(write_moov(tracks, offsets, profiles)); !s) return s;
+  if (Status s = file.put(mdat_header.data()); !s) return s;
   for (const TrackPlan& t : tracks)
-    for (const Bytes& s : t.samples) file.bytes(s);
-  return file.take();
+    for (const Piece& s : t.samples)
+      if (Status status = file.put(s); !status) return status;
+  return file.flush();
 }
 
 }  // namespace fapc::xmt

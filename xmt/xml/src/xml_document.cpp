@@ -1,5 +1,6 @@
 #include "fapc/xml/xml_document.hpp"
 
+#include <libxml/SAX2.h>
 #include <libxml/parser.h>
 
 #include <algorithm>
@@ -16,7 +17,27 @@ struct ParseReport {
   std::string file;
   std::optional<Diagnostic> first_error;
   Diagnostics warnings;
+  const BlankText* blank_text = nullptr;
 };
+
+bool is_blank(const xmlChar* text, int length) {
+  for (int i = 0; i < length; ++i)
+    if (text[i] != ' ' && text[i] != '\t' && text[i] != '\n' && text[i] != '\r') return false;
+  return true;
+}
+
+// libxml2's tree builder for text, except white space outside the elements whose text is read
+// (BlankText). Also the handler for "ignorable" white space, so that libxml2 never guesses.
+void characters(void* user_data, const xmlChar* text, int length) {
+  auto* context = static_cast<xmlParserCtxtPtr>(user_data);
+  const auto* report = static_cast<const ParseReport*>(context->_private);
+  if (report && !report->blank_text->keep_everywhere && context->node && is_blank(text, length)) {
+    const std::string_view name = reinterpret_cast<const char*>(context->node->name);
+    const auto& kept = report->blank_text->kept_in;
+    if (std::find(kept.begin(), kept.end(), name) == kept.end()) return;
+  }
+  xmlSAX2Characters(user_data, text, length);
+}
 
 std::string trimmed_message(const char* message) {
   std::string text = message ? message : "unknown XML error";
@@ -41,18 +62,27 @@ void collect_error(void* user_data, xmlErrorPtr error) {
 // Errors raised outside a parser context would go to libxml2's generic handler, which prints.
 void ignore_generic_error(void*, const char*, ...) {}
 
-std::string qualified_element_name(const xmlNode* node) {
-  std::string name;
-  if (node->ns && node->ns->prefix) name = std::string(reinterpret_cast<const char*>(node->ns->prefix)) + ':';
-  return name + reinterpret_cast<const char*>(node->name);
+// Whether `written` (a name as the scan found it) is the element's qualified name.
+bool is_qualified_name_of(std::string_view written, const xmlNode* node) {
+  if (node->ns && node->ns->prefix) {
+    const std::string_view prefix = reinterpret_cast<const char*>(node->ns->prefix);
+    if (written.size() <= prefix.size() || written.substr(0, prefix.size()) != prefix || written[prefix.size()] != ':')
+      return false;
+    written.remove_prefix(prefix.size() + 1);
+  }
+  return written == reinterpret_cast<const char*>(node->name);
 }
 
-void collect_elements(const xmlNode* node, std::vector<const xmlNode*>& out) {
-  for (; node; node = node->next) {
-    if (node->type != XML_ELEMENT_NODE) continue;
-    out.push_back(node);
-    collect_elements(node->children, out);
+// The element after `node` in document order (depth first), or null; no recursion, no list.
+xmlNode* next_element(xmlNode* node) {
+  for (xmlNode* child = node->children; child; child = child->next)
+    if (child->type == XML_ELEMENT_NODE) return child;
+  for (; node; node = node->parent) {
+    for (xmlNode* sibling = node->next; sibling; sibling = sibling->next)
+      if (sibling->type == XML_ELEMENT_NODE) return sibling;
+    if (!node->parent || node->parent->type != XML_ELEMENT_NODE) return nullptr;
   }
+  return nullptr;
 }
 
 const char* text_of(const xmlChar* s) { return reinterpret_cast<const char*>(s); }
@@ -70,7 +100,8 @@ Status check_element_depth(std::string_view text, const std::string& file_name) 
                           std::string(text.substr(line_start, std::min<std::size_t>(line_end - line_start, 200))));
 }
 
-Result<XmlDocument> XmlDocument::parse(std::string_view text, const std::string& file_name) {
+Result<XmlDocument> XmlDocument::parse(std::string_view text, const std::string& file_name,
+                                       const BlankText& blank_text) {
   if (text.size() > static_cast<std::size_t>(INT_MAX)) {
     return make_error(ErrorKind::limit_exceeded, Location{file_name, 0, 0, -1}, "file too large for the XML parser");
   }
@@ -81,23 +112,24 @@ Result<XmlDocument> XmlDocument::parse(std::string_view text, const std::string&
   std::unique_ptr<xmlParserCtxt, void (*)(xmlParserCtxtPtr)> context(xmlNewParserCtxt(),
                                                                       xmlFreeParserCtxt);
   if (!context) return make_error(Location{file_name, 0, 0, -1}, "out of memory starting the XML parser");
-  ParseReport report{file_name, std::nullopt, {}};
+  ParseReport report{file_name, std::nullopt, {}, &blank_text};
   context->_private = &report;
   context->sax->serror = collect_error;
+  context->sax->characters = characters;
+  context->sax->ignorableWhitespace = characters;
   xmlSetGenericErrorFunc(nullptr, ignore_generic_error);
   // No network, no DTD loading or defaulted attributes, no entity substitution: an external
   // entity is never fetched and a document reads the same wherever it is.
   xmlDocPtr parsed = xmlCtxtReadMemory(context.get(), text.data(), static_cast<int>(text.size()),
-                                       file_name.c_str(), nullptr, XML_PARSE_NONET);
+                                       file_name.c_str(), nullptr, XML_PARSE_NONET | XML_PARSE_COMPACT);
   xmlSetGenericErrorFunc(nullptr, nullptr);
   XmlDocument document;
   document.doc_ = std::shared_ptr<xmlDoc>(parsed, [](xmlDocPtr d) { if (d) xmlFreeDoc(d); });
   document.file_ = file_name;
-  document.text_ = std::string(text);
+  document.text_ = text;
   document.line_starts_.push_back(0);
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] == '\n') document.line_starts_.push_back(i + 1);
-  }
+  for (std::size_t i = text.find('\n'); i != std::string_view::npos; i = text.find('\n', i + 1))
+    document.line_starts_.push_back(static_cast<std::uint32_t>(i + 1));
   if (report.first_error) return document.with_line(std::move(*report.first_error));
   if (!parsed || !document.root()) {
     return make_error(Location::text(file_name, 1, 1), "not well-formed XML: no root element");
@@ -108,21 +140,40 @@ Result<XmlDocument> XmlDocument::parse(std::string_view text, const std::string&
 }
 
 void XmlDocument::index_positions() {
-  std::vector<const xmlNode*> elements;
-  collect_elements(root(), elements);
-  const std::vector<ScannedTag> tags = scan_start_tags(text_);
   // The scan and the tree disagree only for documents whose elements come from entities or whose
   // encoding is not ASCII-compatible; positions then fall back to libxml2's line numbers.
-  if (tags.size() != elements.size()) return;
-  for (std::size_t i = 0; i < tags.size(); ++i) {
-    if (tags[i].name != qualified_element_name(elements[i])) {
-      positions_.clear();
+  bool agree = true;
+  xmlNode* element = xmlDocGetRootElement(doc_.get());
+  first_attribute_.push_back(0);
+  scan_start_tags(text_, [&](const ScannedTagView& tag) {
+    if (!agree) return;
+    if (!element || !is_qualified_name_of(tag.name, element)) {
+      agree = false;
       return;
     }
-    TagPositions& p = positions_[elements[i]];
-    p.tag = at_offset(tags[i].offset);
-    for (const auto& [name, offset] : tags[i].attributes) p.attributes.emplace_back(name, at_offset(offset));
+    tag_offsets_.push_back(static_cast<std::uint32_t>(tag.offset));
+    for (const auto& [name, offset] : *tag.attributes) attribute_offsets_.push_back(static_cast<std::uint32_t>(offset));
+    first_attribute_.push_back(static_cast<std::uint32_t>(attribute_offsets_.size()));
+    // The element's number, for where(): libxml2 leaves _private to the application.
+    element->_private = reinterpret_cast<void*>(static_cast<std::uintptr_t>(tag_offsets_.size()));
+    element = next_element(element);
+  });
+  if (agree && !element) {
+    tag_offsets_.shrink_to_fit();
+    attribute_offsets_.shrink_to_fit();
+    first_attribute_.shrink_to_fit();
+    return;
   }
+  // Disagreement: no element has a position.
+  for (xmlNode* e = xmlDocGetRootElement(doc_.get()); e; e = next_element(e)) e->_private = nullptr;
+  tag_offsets_ = {};
+  first_attribute_ = {};
+  attribute_offsets_ = {};
+}
+
+std::size_t XmlDocument::number_of(const xmlNode* element) const {
+  const auto number = reinterpret_cast<std::uintptr_t>(element->_private);
+  return number <= tag_offsets_.size() ? number : 0;
 }
 
 Location XmlDocument::at_offset(std::size_t offset) const {
@@ -133,14 +184,20 @@ Location XmlDocument::at_offset(std::size_t offset) const {
 }
 
 Location XmlDocument::where(const xmlNode* element) const {
-  if (const auto found = positions_.find(element); found != positions_.end()) return found->second.tag;
+  if (const std::size_t number = number_of(element)) return at_offset(tag_offsets_[number - 1]);
   return Location::text(file_, static_cast<int>(xmlGetLineNo(element)), 0);
 }
 
 Location XmlDocument::where(const xmlNode* element, std::string_view attribute) const {
-  if (const auto found = positions_.find(element); found != positions_.end()) {
-    for (const auto& [name, location] : found->second.attributes) {
-      if (name == attribute) return location;
+  if (const std::size_t number = number_of(element)) {
+    for (std::uint32_t i = first_attribute_[number - 1]; i < first_attribute_[number]; ++i) {
+      // The name as written ends where the scan's name ends: at a space, '=', '/' or '>'.
+      const std::size_t at = attribute_offsets_[i];
+      if (text_.substr(at, attribute.size()) != attribute) continue;
+      const std::size_t end = at + attribute.size();
+      const char next = end < text_.size() ? text_[end] : ' ';
+      if (next == ' ' || next == '\t' || next == '\r' || next == '\n' || next == '=' || next == '/' || next == '>')
+        return at_offset(at);
     }
   }
   return where(element);
@@ -150,9 +207,9 @@ std::string XmlDocument::line_text(int line) const {
   if (line < 1 || static_cast<std::size_t>(line) > line_starts_.size()) return {};
   const std::size_t from = line_starts_[static_cast<std::size_t>(line - 1)];
   std::size_t to = text_.find('\n', from);
-  if (to == std::string::npos) to = text_.size();
+  if (to == std::string_view::npos) to = text_.size();
   if (to > from && text_[to - 1] == '\r') --to;
-  return text_.substr(from, to - from);
+  return std::string(text_.substr(from, to - from));
 }
 
 Diagnostic XmlDocument::with_line(Diagnostic d) const {

@@ -11,15 +11,23 @@ class Scanner {
 
   std::vector<ScannedTag> run() {
     std::vector<ScannedTag> tags;
-    scan([&tags](ScannedTag tag) { tags.push_back(std::move(tag)); }, [] {});
+    scan(
+        [&tags](const ScannedTagView& tag) {
+          ScannedTag copy{tag.offset, std::string(tag.name), {}, tag.empty};
+          for (const auto& [name, at] : *tag.attributes) copy.attributes.emplace_back(std::string(name), at);
+          tags.push_back(std::move(copy));
+        },
+        [] {});
     return tags;
   }
+
+  void each(const std::function<void(const ScannedTagView&)>& on_tag) { scan(on_tag, [] {}); }
 
   std::optional<std::size_t> first_deeper_than(int limit) {
     int depth = 0;
     std::optional<std::size_t> found;
     scan(
-        [&](const ScannedTag& tag) {
+        [&](const ScannedTagView& tag) {
           if (tag.empty) return;
           if (++depth > limit && !found) found = tag.offset;
         },
@@ -30,6 +38,7 @@ class Scanner {
  private:
   std::string_view text_;
   std::size_t pos_ = 0;
+  std::vector<std::pair<std::string_view, std::size_t>> attributes_;  // of the tag being read
 
   template <class OnStart, class OnEnd>
   void scan(OnStart on_start, OnEnd on_end) {
@@ -91,21 +100,23 @@ class Scanner {
     }
   }
 
-  std::string name() {
+  std::string_view name() {
     const std::size_t from = pos_;
     while (pos_ < text_.size() && !is_space(text_[pos_]) && text_[pos_] != '/' &&
            text_[pos_] != '>' && text_[pos_] != '=') {
       ++pos_;
     }
-    return std::string(text_.substr(from, pos_ - from));
+    return text_.substr(from, pos_ - from);
   }
 
   void skip_spaces() {
     while (pos_ < text_.size() && is_space(text_[pos_])) ++pos_;
   }
 
-  ScannedTag start_tag() {
-    ScannedTag tag;
+  ScannedTagView start_tag() {
+    ScannedTagView tag;
+    attributes_.clear();
+    tag.attributes = &attributes_;
     tag.offset = pos_++;
     tag.name = name();
     while (true) {
@@ -121,7 +132,7 @@ class Scanner {
         continue;
       }
       const std::size_t at = pos_;
-      std::string attribute = name();
+      const std::string_view attribute = name();
       if (attribute.empty()) {  // not well-formed after all; do not loop forever
         ++pos_;
         continue;
@@ -130,7 +141,7 @@ class Scanner {
       if (pos_ < text_.size() && text_[pos_] == '=') ++pos_;
       skip_spaces();
       if (pos_ < text_.size() && (text_[pos_] == '"' || text_[pos_] == '\'')) skip_quoted();
-      tag.attributes.emplace_back(std::move(attribute), at);
+      attributes_.emplace_back(attribute, at);
     }
     return tag;
   }
@@ -139,6 +150,10 @@ class Scanner {
 }  // namespace
 
 std::vector<ScannedTag> scan_start_tags(std::string_view text) { return Scanner(text).run(); }
+
+void scan_start_tags(std::string_view text, const std::function<void(const ScannedTagView&)>& on_tag) {
+  Scanner(text).each(on_tag);
+}
 
 std::optional<std::size_t> first_tag_deeper_than(std::string_view text, int limit) {
   return Scanner(text).first_deeper_than(limit);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -21,6 +22,17 @@ struct ScannedTag {
 
 // Start tags (and empty-element tags) in document order.
 std::vector<ScannedTag> scan_start_tags(std::string_view text);
+
+// One start tag as the scan meets it: views into the text, valid during the call only.
+struct ScannedTagView {
+  std::size_t offset = 0;
+  std::string_view name;
+  const std::vector<std::pair<std::string_view, std::size_t>>* attributes = nullptr;
+  bool empty = false;
+};
+
+// The same scan without a copy per tag: `on_tag` sees each start tag in document order.
+void scan_start_tags(std::string_view text, const std::function<void(const ScannedTagView&)>& on_tag);
 
 // The '<' of the first start tag nested more than `limit` elements deep, if there is one. Used
 // before any parser sees the text (the scan does not recurse), so it works on any text.

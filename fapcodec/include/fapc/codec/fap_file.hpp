@@ -62,9 +62,11 @@ struct FapReadResult {
   std::vector<int> value_lines;
 };
 
-// `file` names the input in diagnostics. Bytes are taken as Latin-1.
+// `file` names the input in diagnostics. Bytes are taken as Latin-1. `progress`: as for
+// scan_fap_text below.
 Result<FapReadResult> read_fap_text(std::string_view text, const std::string& file,
-                                    const FapReadOptions& options = {});
+                                    const FapReadOptions& options = {},
+                                    const std::function<void(std::size_t)>& progress = {});
 
 // Frames one at a time, for inputs too long to hold as frames (an error stops the reading).
 using FapFrameSink = std::function<Status(const FapFrame&)>;

@@ -167,6 +167,13 @@ struct DecodedFba {
 
 Result<DecodedFba> decode_fba(std::span<const std::uint8_t> bytes, const FbaDecodeOptions& options = {});
 
+// The same decoding, each frame handed to `sink` as it is decoded instead of kept (the result's
+// sequence has no frames), for streams too long to hold as frames. The checks, warnings, errors
+// and statistics are decode_fba's; an error the sink returns stops the decoding.
+using FbaFrameSink = std::function<Status(const FapFrame&)>;
+Result<DecodedFba> decode_fba(std::span<const std::uint8_t> bytes, const FbaDecodeOptions& options,
+                              const FbaFrameSink& sink);
+
 // ---- verification ------------------------------------------------------------------------------
 
 // Decodes `encoded` and checks it against `input`: the same frames and numbers (relative to the

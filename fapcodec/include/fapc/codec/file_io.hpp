@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -71,6 +72,29 @@ class AtomicFile {
   AtomicFile(std::string path, std::string temp, std::FILE* file) : path_(std::move(path)), temp_(std::move(temp)), file_(file) {}
   std::string path_, temp_;
   std::FILE* file_ = nullptr;  // null once committed or moved from
+};
+
+// An unnamed file beside an output, to write and read back: the body of an output whose
+// beginning is known only at the end (a .fap header gives the frame count). It never has a name
+// (O_TMPFILE; a named file removed at once where the file system has no unnamed ones), so nothing
+// is left behind whatever happens. Errors name the output.
+class ScratchFile {
+ public:
+  static Result<ScratchFile> create(const std::string& output);
+  ScratchFile(ScratchFile&& other) noexcept;
+  ScratchFile& operator=(ScratchFile&&) = delete;
+  ScratchFile(const ScratchFile&) = delete;
+  ScratchFile& operator=(const ScratchFile&) = delete;
+  ~ScratchFile();
+
+  Status write(std::string_view bytes);
+  // Everything written, from the start, in pieces of 1 MB.
+  Status read_back(const std::function<Status(std::string_view)>& sink);
+
+ private:
+  ScratchFile(std::string output, std::FILE* file) : output_(std::move(output)), file_(file) {}
+  std::string output_;
+  std::FILE* file_ = nullptr;
 };
 
 }  // namespace fapc

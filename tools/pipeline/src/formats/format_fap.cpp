@@ -1,4 +1,6 @@
 // .fap and .fap.gz, in and out.
+#include <optional>
+
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "formats.hpp"
@@ -20,11 +22,24 @@ nlohmann::ordered_json facts_of(const FapFileFacts& facts) {
 }
 
 Result<Loaded> load_fap(const std::string& path, const ConvertOptions& options) {
-  auto bytes = read_file_bytes(path, options.limits);
-  if (!bytes) return bytes.error();
+  // Mapped, not copied: the text is read once, and its pages are let go behind the reader (the
+  // frames are what is kept). A gzip file is inflated whole; an empty one (or one of /proc, which
+  // says it is empty) is read the usual way.
+  auto mapped = MappedFile::open(path);
+  if (!mapped) return mapped.error();
+  std::optional<std::string> bytes;
+  if (mapped->bytes().empty() || is_gzip(mapped->bytes())) {
+    auto read = read_file_bytes(path, options.limits);
+    if (!read) return read.error();
+    bytes = std::move(*read);
+  }
+  const std::string_view text = bytes ? std::string_view(*bytes) : mapped->bytes();
   FapReadOptions read_options;
   read_options.max_frames = options.limits.max_frames;
-  auto read = read_fap_text(*bytes, path, read_options);
+  const auto let_go = [&](std::size_t offset) {
+    if (!bytes) mapped->release(offset);
+  };
+  auto read = read_fap_text(text, path, read_options, let_go);
   if (!read) return read.error();
   Loaded loaded;
   loaded.frames = std::move(read->sequence);

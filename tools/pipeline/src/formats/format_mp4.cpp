@@ -139,13 +139,19 @@ Result<std::string> write_mp4_file(const Loaded& loaded, const std::string& path
     if (!packed) return packed.error();
     voice = std::move(*packed);
   }
-  auto bytes = xmt::write_mp4(pack_fba_track(*encoded, loaded.frames.fps), voice ? &*voice : nullptr);
-  if (!bytes) {
-    Diagnostic error = bytes.error();
+  // The samples are views into the coded stream, the file made once: no copy of each plane.
+  std::string bytes;
+  const Status written = xmt::write_mp4(fba_track_view(*encoded, loaded.frames.fps), voice ? &*voice : nullptr,
+                                        [&](std::span<const std::uint8_t> piece) {
+                                          bytes.append(reinterpret_cast<const char*>(piece.data()), piece.size());
+                                          return ok_status();
+                                        });
+  if (!written) {
+    Diagnostic error = written.error();
     if (error.where.file.empty()) error.where.file = loaded.named(path);
     return error;
   }
-  return std::string(bytes->begin(), bytes->end());
+  return bytes;
 }
 
 }  // namespace

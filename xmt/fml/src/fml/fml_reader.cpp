@@ -21,6 +21,7 @@
 #include "fml/other_formats.hpp"
 #include "fapc/xml/text.hpp"
 #include "fapc/xml/once_per_name.hpp"
+#include "fapc/xml/name_table.hpp"
 #include "fapc/xml/xml_document.hpp"
 
 namespace fapc::xmt {
@@ -116,7 +117,8 @@ class FmlReader {
     return embedded;
   }
 
-  Result<FmlDocument> run() {
+  // `owner`: the document itself, when the reader may free its tree once walked.
+  Result<FmlDocument> run(xml::XmlDocument* owner) {
     result_.warnings = doc_.warnings();
     const xmlNode* root = doc_.root();
     if (const std::string other = other_format_name(root); !other.empty()) {
@@ -145,8 +147,12 @@ class FmlReader {
     if (!story) return doc_.error(root, "fml has no story: nothing to animate");
     check_given_events();
     check_attributes(story, {});
+    tree_.leaves.reserve(doc_.element_count());
     tree_.root = container(story, Kind::sequence, Timing{});
     if (error_) return *error_;
+    // What follows needs no node: the tree's memory goes before the clips are made.
+    templates_.clear();
+    if (owner) owner->release_tree();
     if (Status s = check_runs(); !s) return s.error();
     ScheduleOptions schedule_options;
     schedule_options.root_end = options_.duration;
@@ -176,7 +182,8 @@ class FmlReader {
   std::string model_voice_;
   double nodes_ = 0;
   // Per node of the tree, by its ScheduleNode::tag - 1: its element name, for scheduler errors.
-  std::vector<std::string> element_names_;
+  std::vector<std::uint32_t> element_names_;  // in names_
+  xml::NameTable names_;
 
   void fail(Diagnostic d) {
     if (!error_) error_ = std::move(d);
@@ -346,7 +353,7 @@ class FmlReader {
   }
 
   ScheduleNode remember(ScheduleNode node, const xmlNode* element) {
-    element_names_.emplace_back(xml::local_name(element));
+    element_names_.push_back(names_.number(xml::local_name(element)));
     node.tag = element_names_.size();
     return node;
   }
@@ -833,7 +840,7 @@ class FmlReader {
   // The scheduler's problem, its subject the element it is about.
   Diagnostic scheduler_error(const ScheduleError& problem) const {
     const bool named = problem.node_tag > 0 && problem.node_tag <= element_names_.size();
-    Diagnostic d = problem.diagnostic(named ? element_names_[problem.node_tag - 1] : std::string("the element"));
+    Diagnostic d = problem.diagnostic(named ? names_.name(element_names_[problem.node_tag - 1]) : std::string("the element"));
     if (named && problem.needs_an_end()) {
       d.message += " (repeat=\"indefinite\" and unset loop events need an end: a container's duration or end, "
                    "or --duration)";
@@ -846,9 +853,10 @@ class FmlReader {
 }  // namespace
 
 Result<FmlDocument> read_fml(std::string_view text, const std::string& file_name, const FmlOptions& options) {
-  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name);
+  // Only talk text is read (an FML move's, embedded or not); elsewhere white space is dropped.
+  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name, xml::BlankText{false, {"talk"}});
   if (!doc) return doc.error();
-  return FmlReader(*doc, options).run();
+  return FmlReader(*doc, options).run(&*doc);
 }
 
 Result<EmbeddedFmlMove> read_embedded_fml_move(const xml::XmlDocument& doc, const xmlNode* move,

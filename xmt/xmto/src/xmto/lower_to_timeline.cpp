@@ -95,6 +95,7 @@ void place_to_animations(const XmtoTree& tree, const std::map<std::size_t, std::
 
 Timeline lower_to_timeline(const XmtoTree& tree, const Schedule& schedule) {
   std::vector<TaggedClip> clips;
+  clips.reserve(schedule.occurrences.size());
   std::vector<AudioClip> audio;
   std::map<std::size_t, std::vector<Occurrence>> to_runs;
   for (const Occurrence& run : schedule.occurrences) {
@@ -110,12 +111,16 @@ Timeline lower_to_timeline(const XmtoTree& tree, const Schedule& schedule) {
     }
   }
   place_to_animations(tree, to_runs, clips);
-  // Document order of the elements, then time: the order overwrite ties are decided by.
-  std::stable_sort(clips.begin(), clips.end(), [](const TaggedClip& a, const TaggedClip& b) {
+  // Document order of the elements, then time: the order overwrite ties are decided by. Runs come
+  // in that order unless groups repeat or to-animations were placed: check before moving clips.
+  const auto before = [](const TaggedClip& a, const TaggedClip& b) {
     return a.leaf != b.leaf ? a.leaf < b.leaf : a.clip.begin < b.clip.begin;
-  });
+  };
+  if (!std::is_sorted(clips.begin(), clips.end(), before)) std::stable_sort(clips.begin(), clips.end(), before);
   Timeline timeline;
+  timeline.clips.reserve(clips.size());
   for (TaggedClip& tagged : clips) timeline.clips.push_back(std::move(tagged.clip));
+  clips = {};
   timeline.audio = std::move(audio);
   timeline.explicit_end = schedule.end;
   timeline.end_source =

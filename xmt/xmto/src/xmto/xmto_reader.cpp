@@ -9,6 +9,7 @@
 #include "fapc/codec/file_io.hpp"
 #include "fapc/xmto/xmto.hpp"
 #include "fml/embedded_fml.hpp"
+#include "fapc/xml/name_table.hpp"
 #include "fapc/xml/xml_document.hpp"
 #include "xmto/animation_function.hpp"
 #include "xmto/animation_include.hpp"
@@ -31,7 +32,7 @@ constexpr std::string_view kSchemaInstanceNamespace = "http://www.w3.org/2001/XM
 
 class DocumentReader {
  public:
-  DocumentReader(const xml::XmlDocument& doc, const XmtoOptions& options)
+  DocumentReader(xml::XmlDocument& doc, const XmtoOptions& options)
       : doc_(doc), options_(options), once_(result_.warnings) {
     result_.warnings = doc_.warnings();
   }
@@ -66,10 +67,14 @@ class DocumentReader {
     if (!body) return doc_.error(root, "XMT-O has no body");
     RunBudget budget;
     if (options_.duration) budget.available = *options_.duration;
+    // Every element is at most one leaf (FML normal moves aside): no regrowth copies.
+    tree_.leaves.reserve(doc_.element_count());
     std::optional<ScheduleNode> tree = element(body, Fill::remove, false, budget);
     if (error_) return *error_;
     // The body is a sequence (SMIL); a body that never plays leaves an empty timeline.
     tree_.root = tree ? std::move(*tree) : ScheduleNode::group(Kind::sequence, {}, doc_.where(body));
+    // What follows needs no node: the tree's memory goes before the clips are made.
+    doc_.release_tree();
     ScheduleOptions schedule_options;
     schedule_options.root_end = options_.duration;
     schedule_options.max_runs = options_.max_runs;
@@ -81,7 +86,7 @@ class DocumentReader {
   }
 
  private:
-  const xml::XmlDocument& doc_;
+  xml::XmlDocument& doc_;
   const XmtoOptions& options_;
   std::string root_namespace_;
   std::optional<Diagnostic> error_;
@@ -89,15 +94,16 @@ class DocumentReader {
   OncePerName once_;
   XmtoTree tree_;
   struct ElementFacts {
-    std::string name;
+    std::uint32_t name = 0;  // in names_
     bool repeats_indefinitely = false;
   };
+  xml::NameTable names_;
   std::vector<ElementFacts> element_facts_;  // by ScheduleNode::tag - 1: for schedule errors
   double planned_clips_ = 0;  // upper bound, see run_budget.hpp
   std::set<std::string> fml_expressions_;  // FAP 2 targets of the FML moves read so far
 
   ScheduleNode scheduled_node(ScheduleNode node, const xmlNode* element) {
-    element_facts_.push_back(ElementFacts{std::string(xml::local_name(element)),
+    element_facts_.push_back(ElementFacts{names_.number(xml::local_name(element)),
                                           node.timing.repeat_indefinite && !node.timing.repeat_duration});
     node.tag = element_facts_.size();
     return node;
@@ -110,7 +116,8 @@ class DocumentReader {
   // The scheduler's problem, its subject the element it is about.
   Diagnostic scheduler_error(const ScheduleError& problem) const {
     const bool named = problem.node_tag > 0 && problem.node_tag <= element_facts_.size();
-    Diagnostic d = problem.diagnostic(named ? element_facts_[problem.node_tag - 1].name : std::string("the element"));
+    Diagnostic d = problem.diagnostic(named ? names_.name(element_facts_[problem.node_tag - 1].name)
+                                        : std::string("the element"));
     if (named && element_facts_[problem.node_tag - 1].repeats_indefinitely)
       d.message += " (repeatCount=\"indefinite\" needs an end: from a par with dur, end, repeatDur or --duration)";
     return with_source_line(std::move(d));
@@ -127,12 +134,18 @@ class DocumentReader {
   }
 
   // FML moves embedded in an XMT-O document ("FML documents can work as XMT-Omega code"): any
-  // element whose namespace URI mentions fml.
-  static bool is_fml(const xmlNode* node) {
+  // element whose namespace URI mentions fml. Elements share their namespace declaration, so the
+  // answer for the last one seen is kept.
+  bool is_fml(const xmlNode* node) {
+    if (node->ns == last_ns_ && node->ns) return last_ns_is_fml_;
     std::string ns(xml::namespace_uri(node));
     std::transform(ns.begin(), ns.end(), ns.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ns.find("fml") != std::string::npos;
+    last_ns_ = node->ns;
+    last_ns_is_fml_ = ns.find("fml") != std::string::npos;
+    return last_ns_is_fml_;
   }
+  const xmlNs* last_ns_ = nullptr;
+  bool last_ns_is_fml_ = false;
 
   void unsupported(const xmlNode* node, const std::string& why = "is not supported and was skipped") {
     std::string name(xml::local_name(node));
@@ -343,10 +356,10 @@ class DocumentReader {
         return scheduled_node(std::move(group), node);
       }
       case FmlLeaf::Kind::talk:
-        leaf.included = talk_timeline(fml, length, options_.fml.coarticulation);
+        leaf.included = std::make_unique<Timeline>(talk_timeline(fml, length, options_.fml.coarticulation));
         break;
       case FmlLeaf::Kind::wait:
-        leaf.included = Timeline{{}, length, doc_.where(node)};
+        leaf.included = std::make_unique<Timeline>(Timeline{{}, length, doc_.where(node)});
         break;
     }
     const double clips = std::max<double>(1, static_cast<double>(leaf.included->clips.size()));
@@ -378,7 +391,7 @@ class DocumentReader {
     if (!within_budget(node, budget.inside(timing, length).repeats * clips_per_run)) return std::nullopt;
     Leaf leaf;
     leaf.fill = fill;
-    leaf.included = std::move(timeline);
+    leaf.included = std::make_unique<Timeline>(std::move(timeline));
     return add_leaf(node, std::move(leaf), to_schedule_timing(timing, length));
   }
 
@@ -403,7 +416,9 @@ class DocumentReader {
 
 Result<XmtoDocument> read_xmto(std::string_view text, const std::string& file_name,
                                const XmtoOptions& options) {
-  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name);
+  // Only talk text is read (an FML move's, embedded or not); elsewhere white space is dropped.
+  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name, xml::BlankText{false, {"talk"}});
+  // The reader frees the document's tree once it has walked it.
   if (!doc) return doc.error();
   return DocumentReader(*doc, options).run();
 }

@@ -3,6 +3,7 @@
 // clips (docs/xmt-omega.md).
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,8 +22,8 @@ struct Leaf {
   // animate and set:
   std::string target;
   AnimationFunction function;
-  // animation src: the included input's timeline, starting at 0.
-  std::optional<Timeline> included;
+  // animation src: the included input's timeline, starting at 0 (a pointer: most leaves have none).
+  std::unique_ptr<Timeline> included;
 };
 
 struct XmtoTree {

@@ -2,6 +2,7 @@
 // asked), packing coded planes into MP4 samples, and an .mp4's FBA track decoded.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "fapc/codec/fba.hpp"
@@ -18,6 +19,10 @@ FbaEncodeOptions fba_encode_options(const ConvertOptions& options);
 // Reads and decodes a .fba file (gzip inflated transparently).
 Result<DecodedFba> read_fba_file(const std::string& path, const Limits& limits = {});
 
+// Why frames at `fps` cannot be coded (the rate takes 8 bits), placed where the input wrote the
+// rate (`rate_at`, when it wrote `rate_written` there) or else on `input`; nothing when they can.
+std::optional<Diagnostic> fba_rate_error(int fps, const Location& rate_at, int rate_written, const std::string& input);
+
 // FbaEncodeOptions::locate for frames read from lines: frame `numbers[k]` (ascending) was read at
 // line `lines[k]` of `input`. Empty when the two do not match (frames not read from lines). The
 // three are referred to, not copied: they must outlive the encoder.
@@ -33,6 +38,8 @@ Result<EncodedFba> encode_checked(const Loaded& loaded, const ConvertOptions& op
 // The MP4 FBA track of an encoding made with align_planes: each plane, started by its start
 // code and byte-aligned, becomes one sample lasting the frames it covers (timescale = fps).
 xmt::FbaTrackInput pack_fba_track(const EncodedFba& encoded, int fps);
+// The same track as views into `encoded`, which must outlive it (no copy of each plane).
+xmt::FbaTrackView fba_track_view(const EncodedFba& encoded, int fps);
 
 // An .mp4's FBA track and what it decodes to. Errors inside the track point at the byte in the
 // .mp4 ("FBA track sample N"); decoded.warnings holds the container's warnings, then the

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -41,6 +42,20 @@ struct FbaTrackInput {
   friend bool operator==(const FbaTrackInput&, const FbaTrackInput&) = default;
 };
 
+// The same track as views into bytes the caller holds: how a long stream reaches the writer
+// without a copy of each sample (the caller keeps the bytes until the writing is done).
+struct FbaSampleView {
+  std::span<const std::uint8_t> bytes;
+  std::uint32_t duration = 1;
+  bool sync = false;
+};
+struct FbaTrackView {
+  Bytes decoder_specific_info;
+  std::uint32_t timescale = 25;
+  std::vector<FbaSampleView> samples;
+};
+FbaTrackView view_of(const FbaTrackInput& track);
+
 // The 14 bytes of docs/mp4-and-xmta.md section 6.2: visual object sequence header with the
 // profile-level, visual object header of type FBA, FBA object start code.
 Bytes fba_decoder_specific_info(std::uint8_t profile_level = kSimpleFbaL1);
@@ -61,6 +76,7 @@ bool declares_fba_object(const Bytes& decoder_specific_info);
 // every sample starting with the plane start code and lasting at least one tick, a positive
 // timescale. The error names the sample.
 Status check_fba_track(const FbaTrackInput& track);
+Status check_fba_track(const FbaTrackView& track);
 
 // The raw elementary stream (.fba) the track stands for: configuration, one 0x7F stuffing byte,
 // the samples in order, the visual object sequence end code (docs/mp4-and-xmta.md section 6.3).

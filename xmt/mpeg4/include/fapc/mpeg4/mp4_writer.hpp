@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <span>
 
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/mpeg4/audio_track.hpp"
@@ -29,5 +31,11 @@ inline constexpr std::uint16_t kAudioObjectDescriptorId = 11;
 // declares it and the scene plays it (Sound2D/AudioSource); without, the bytes are those of the
 // three-track file.
 Result<Bytes> write_mp4(const FbaTrackInput& fba, const AudioTrackInput* audio = nullptr);
+
+// The same bytes handed to `sink` in order, in pieces of about 1 MB, for files too long to hold:
+// the writer keeps the sample table (some 12 bytes a sample), not the file. The first error, the
+// writer's or the sink's, stops the writing.
+using Mp4Sink = std::function<Status(std::span<const std::uint8_t>)>;
+Status write_mp4(const FbaTrackView& fba, const AudioTrackInput* audio, const Mp4Sink& sink);
 
 }  // namespace fapc::xmt
