@@ -5,8 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 
 #include "fapc/pipeline/convert.hpp"
 #include "pipeline_test_helpers.hpp"
@@ -17,11 +15,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using pipeline::ConvertOptions;
-
-std::string file_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 // The usual way: the whole load (frames and all), then each writer's bytes up to the first error.
 struct LoadedWay {
@@ -110,7 +103,7 @@ TEST(StreamedRender, GivesTheBytesWarningsAndErrorsOfLoadingAndWriting) {
         for (std::size_t w = 0; w < expected.warnings.size(); ++w)
           EXPECT_EQ(format_diagnostic(streamed.warnings[w]), format_diagnostic(expected.warnings[w]));
         for (std::size_t i = 0; i < outputs.size(); ++i) {
-          if (i < expected.bytes.size()) EXPECT_EQ(file_bytes(outputs[i].path), expected.bytes[i]) << outputs[i].path;
+          if (i < expected.bytes.size()) EXPECT_EQ(test::read_text(outputs[i].path), expected.bytes[i]) << outputs[i].path;
           else EXPECT_FALSE(fs::exists(outputs[i].path)) << outputs[i].path;
         }
       }
