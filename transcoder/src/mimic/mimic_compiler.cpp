@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <utility>
 #include <unordered_map>
 #include <sstream>
 
@@ -131,6 +132,7 @@ class Compiler {
   std::size_t actions_built_ = 0;
   std::map<std::string, double> sizes_;  // per macro: its body's expanded_size()
   std::set<std::string> sizing_;         // macros being sized (recursion)
+  bool sizing_cut_ = false;              // a count stopped at the depth limit
   // Per clip of the timeline being built: empty when it does not connect, else the explicit end
   // value of `connect=x` (empty inside: take the next clip's value).
   std::vector<std::optional<std::optional<double>>> connects_;
@@ -150,19 +152,27 @@ class Compiler {
 
   // How many times build() runs for `action` (groups, macro uses, atomic actions), macros
   // memoised: a chain of forty macros that each use the one before twice costs forty steps, not 2^40.
-  double expanded_size(const Action& action) {
+  // Deeper than build() goes (kMaxNestingDepth) the count stops, as build() will refuse the
+  // program there: a chain of 5000 macros must not take the stack 10,000 calls deep.
+  double expanded_size(const Action& action, int depth = 0) {
+    if (depth >= kMaxNestingDepth) {
+      sizing_cut_ = true;
+      return 1;
+    }
     if (action.kind != Action::Kind::named) {
       double n = 1;
-      for (const Action& child : action.children) n += expanded_size(child);
+      for (const Action& child : action.children) n += expanded_size(child, depth + 1);
       return n;
     }
     const auto macro = macros_.find(action.name);
     if (macro == macros_.end() || macro->second->expression) return 1;
     if (const auto known = sizes_.find(action.name); known != sizes_.end()) return 1 + known->second;
     if (!sizing_.insert(action.name).second) return 1;  // a macro that uses itself: build() says so
-    const double body = expanded_size(macro->second->group);
+    const bool cut_before = std::exchange(sizing_cut_, false);
+    const double body = expanded_size(macro->second->group, depth + 1);
     sizing_.erase(action.name);
-    sizes_[action.name] = body;
+    if (!sizing_cut_) sizes_[action.name] = body;  // a cut count is not the macro's size
+    sizing_cut_ = sizing_cut_ || cut_before;
     return 1 + body;
   }
 
