@@ -1,12 +1,16 @@
-// A fresh folder per test, removed afterwards.
+// A fresh folder per test, removed afterwards; the usual way of converting, to check others by.
 #pragma once
 
 #include <unistd.h>
 
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
+
+#include "fapc/pipeline/convert.hpp"
 
 namespace fapc::test {
 
@@ -29,5 +33,41 @@ class TempFolder {
  private:
   std::filesystem::path path_;
 };
+
+// The usual way of converting, against which the streamed ways are checked: load, then each
+// writer's bytes, up to the first error (with --strict, warnings refuse the outputs as convert does).
+struct LoadedWay {
+  std::vector<std::string> bytes;
+  Diagnostics warnings;
+  std::size_t frames = 0;
+  std::optional<Diagnostic> error;
+};
+
+inline LoadedWay load_then_write(const std::string& input, const std::vector<pipeline::OutputRequest>& outputs,
+                                 const pipeline::ConvertOptions& options) {
+  LoadedWay out;
+  auto loaded = pipeline::load(input, options);
+  if (!loaded) {
+    out.error = loaded.error();
+    return out;
+  }
+  out.warnings = loaded->warnings;
+  out.frames = loaded->frames.frames.size();
+  if (options.strict && !loaded->warnings.empty()) {
+    out.error = make_error(ErrorKind::bad_input, Location{input, 0, 0, -1},
+                           std::to_string(loaded->warnings.size()) +
+                               " warning(s) treated as errors (--strict); nothing written");
+    return out;
+  }
+  for (const auto& request : outputs) {
+    auto bytes = pipeline::render_output(*loaded, request, options);
+    if (!bytes) {
+      out.error = bytes.error();
+      return out;
+    }
+    out.bytes.push_back(*bytes);
+  }
+  return out;
+}
 
 }  // namespace fapc::test

@@ -25,31 +25,8 @@ std::string contents(const std::string& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// The usual way: load, then each writer's bytes; the first error.
-struct Usual {
-  std::vector<std::string> bytes;
-  std::optional<Diagnostic> error;
-};
-
-Usual usual_way(const std::string& input, const std::vector<pipeline::OutputRequest>& outputs,
-                const ConvertOptions& options) {
-  Usual out;
-  auto loaded = pipeline::load(input, options);
-  if (!loaded) {
-    out.error = loaded.error();
-    return out;
-  }
-  loaded->origin = input;
-  for (const auto& request : outputs) {
-    auto bytes = pipeline::render_output(*loaded, request, options);
-    if (!bytes) {
-      out.error = bytes.error();
-      return out;
-    }
-    out.bytes.push_back(*bytes);
-  }
-  return out;
-}
+using test::load_then_write;
+using test::LoadedWay;
 
 std::vector<ConvertOptions> settings() {
   std::vector<ConvertOptions> all(5);
@@ -86,7 +63,7 @@ std::size_t expect_same_both_ways(const std::string& input, const test::TempFold
   };
   for (const ConvertOptions& options : settings()) {
     for (const auto& outputs : requests) {
-      const Usual expected = usual_way(input, outputs, options);
+      const LoadedWay expected = load_then_write(input, outputs, options);
       for (const auto& output : outputs) fs::remove(output.path);
       const pipeline::ConvertResult streamed = pipeline::convert(input, outputs, options);
       SCOPED_TRACE(input + " to " + std::to_string(outputs.size()) + " output(s)");

@@ -17,39 +17,8 @@ namespace fs = std::filesystem;
 using pipeline::ConvertOptions;
 
 // The usual way: the whole load (frames and all), then each writer's bytes up to the first error.
-struct LoadedWay {
-  std::vector<std::string> bytes;
-  Diagnostics warnings;
-  std::size_t frames = 0;
-  std::optional<Diagnostic> error;
-};
-
-LoadedWay load_then_write(const std::string& input, const std::vector<pipeline::OutputRequest>& outputs,
-                          const ConvertOptions& options) {
-  LoadedWay out;
-  auto loaded = pipeline::load(input, options);
-  if (!loaded) {
-    out.error = loaded.error();
-    return out;
-  }
-  out.warnings = loaded->warnings;
-  out.frames = loaded->frames.frames.size();
-  if (options.strict && !loaded->warnings.empty()) {
-    out.error = make_error(ErrorKind::bad_input, Location{input, 0, 0, -1},
-                           std::to_string(loaded->warnings.size()) +
-                               " warning(s) treated as errors (--strict); nothing written");
-    return out;
-  }
-  for (const auto& request : outputs) {
-    auto bytes = pipeline::render_output(*loaded, request, options);
-    if (!bytes) {
-      out.error = bytes.error();
-      return out;
-    }
-    out.bytes.push_back(*bytes);
-  }
-  return out;
-}
+using test::load_then_write;
+using test::LoadedWay;
 
 std::vector<ConvertOptions> settings() {
   std::vector<ConvertOptions> all(6);

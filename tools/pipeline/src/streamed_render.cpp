@@ -93,9 +93,10 @@ class FapTextOutputs {
   }
 
   void flush() {
-    for (auto& [i, file] : files_) {
-      const bool failed_before = std::any_of(failed_.begin(), failed_.end(), [&](const auto& f) { return f.first == i; });
-      if (auto written = file.write(text_); !written && !failed_before) failed_.emplace_back(i, written.error());
+    for (auto& entry : files_) {  // not a structured binding: clang 14 cannot capture one
+      const std::size_t i = entry.first;
+      const bool failed_before = std::any_of(failed_.begin(), failed_.end(), [i](const auto& f) { return f.first == i; });
+      if (auto written = entry.second.write(text_); !written && !failed_before) failed_.emplace_back(i, written.error());
     }
     text_.clear();
   }
