@@ -5,6 +5,7 @@
 
 #include "fapc/codec/did_you_mean.hpp"
 #include "fapc/codec/file_io.hpp"
+#include "fap_text_outputs.hpp"
 #include "streamed_convert.hpp"
 #include "streamed_render.hpp"
 
@@ -112,9 +113,7 @@ ConvertResult convert(const std::string& input, const std::vector<OutputRequest>
   result.frames = frames_seen(result.loaded.frames);
   result.warnings = result.loaded.warnings;
   if (options.strict && !result.warnings.empty()) {
-    result.error = make_error(ErrorKind::bad_input, Location{input, 0, 0, -1},
-                              std::to_string(result.warnings.size()) +
-                                  " warning(s) treated as errors (--strict); nothing written");
+    result.error = strict_error(input, result.warnings.size());
     return result;
   }
   write_all(result, writers, outputs, options);

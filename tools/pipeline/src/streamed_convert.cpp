@@ -21,6 +21,7 @@
 #include "fapc/codec/file_io.hpp"
 #include "fapc/mpeg4/mp4_writer.hpp"
 #include "fapc/pipeline/fba_io.hpp"
+#include "fap_text_outputs.hpp"
 
 namespace fapc::pipeline {
 
@@ -202,52 +203,6 @@ struct Encoding {
   std::optional<EncodedFba> encoded;
 };
 
-// The .fap text in pieces, to the temporary file of every .fap output.
-class FapOutputs {
- public:
-  FapOutputs(const SourceFacts& facts, const ConvertOptions& options)
-      : writer(facts.name, facts.fps, facts.frames, facts.first_number, facts.last_number, write_options(options)) {}
-
-  static FapWriteOptions write_options(const ConvertOptions& options) {
-    FapWriteOptions write;
-    write.flavour = options.fap_flavour;
-    return write;
-  }
-
-  // A temporary file for output `i`; its error, if any, is that output's.
-  void open(std::size_t i, const std::string& path) {
-    auto file = AtomicFile::create(path);
-    if (file) files.emplace_back(i, std::move(*file));
-    else failed.emplace_back(i, file.error());
-  }
-  bool any() const { return !files.empty(); }
-
-  // Hands the text made so far to every file (`always`, or once it passes 1 MB).
-  void flush(bool always) {
-    if (!always && text.size() < (std::size_t{1} << 20)) return;
-    for (auto& [i, file] : files)
-      if (auto written = file.write(text); !written && !error_of(i)) failed.emplace_back(i, written.error());
-    text.clear();
-  }
-
-  const Diagnostic* error_of(std::size_t i) const {
-    for (const auto& [at, why] : failed)
-      if (at == i) return &why;
-    return nullptr;
-  }
-  AtomicFile& file_of(std::size_t i) {
-    for (auto& [at, file] : files)
-      if (at == i) return file;
-    return files.front().second;  // not reached: every .fap output has a file or an error
-  }
-
-  FapTextWriter writer;
-  std::string text;                 // made, not yet written
-  std::optional<Diagnostic> error;  // the writer's: the flavour cannot carry a frame
-  std::vector<std::pair<std::size_t, AtomicFile>> files;  // by output index
-  std::vector<std::pair<std::size_t, Diagnostic>> failed;  // outputs whose file failed
-};
-
 // The .mp4 of the aligned encoding, through a temporary file.
 Status write_mp4_output(const EncodedFba& encoded, int fps, const std::string& path, const std::string& input) {
   auto file = AtomicFile::create(path);
@@ -280,9 +235,7 @@ bool take_facts(ConvertResult& result, const Result<SourceFacts>& read, const st
   result.loaded.warnings = facts.warnings;
   result.frames = {facts.frames, facts.fps, faps};
   if (options.strict && !result.warnings.empty()) {
-    result.error = make_error(ErrorKind::bad_input, Location{input, 0, 0, -1},
-                              std::to_string(result.warnings.size()) +
-                                  " warning(s) treated as errors (--strict); nothing written");
+    result.error = strict_error(input, result.warnings.size());
     return false;
   }
   return true;
@@ -298,7 +251,7 @@ std::optional<ConvertResult> convert_in_one_pass(FrameSource& source, const std:
   if (!source.placed_in_first_pass() || options.fap_flavour == FapFlavour::semaine) return std::nullopt;
   auto body = ScratchFile::create(path);
   if (!body) return std::nullopt;
-  const FapWriteOptions write_options = FapOutputs::write_options(options);
+  const FapWriteOptions write_options = fap_write_options(options);
   std::optional<FapTextWriter> writer;  // from the first frame, whose number the text needs
   std::string text;
   std::optional<Diagnostic> fap_error, body_error;
@@ -392,21 +345,17 @@ std::optional<ConvertResult> convert_streamed(const std::string& input, const st
   }
 
   // Pass 2: the frames again, numbered as placed in time, to the encoders and the .fap text.
-  FapOutputs fap(*facts, options);
+  FapTextOutputs fap(facts->name, facts->fps, facts->frames, facts->first_number, facts->last_number, options);
   for (std::size_t i = 0; i < outputs.size(); ++i)
     if (writers[i]->kind == "fap") fap.open(i, outputs[i].path);
   const bool wants_text = fap.any();
-  if (wants_text)
-    if (auto status = fap.writer.begin(fap.text); !status) fap.error = status.error();
+  if (wants_text) fap.begin();
   const bool coding = (fba && fba->going()) || (mp4 && mp4->going());
   if (coding || wants_text) {
     const auto code = [&](const FapFrame& frame) -> Status {
       if (fba) fba->add(frame);
       if (mp4) mp4->add(frame);
-      if (wants_text && !fap.error) {
-        if (auto status = fap.writer.add(frame, fap.text); !status) fap.error = status.error();
-        else fap.flush(false);
-      }
+      if (wants_text) fap.add(frame);
       return ok_status();
     };
     if (auto again = source->second_pass(code); !again) {
@@ -414,10 +363,7 @@ std::optional<ConvertResult> convert_streamed(const std::string& input, const st
       return result;
     }
   }
-  if (wants_text && !fap.error) {
-    fap.writer.finish(fap.text);
-    fap.flush(true);
-  }
+  if (wants_text) fap.finish();
   for (std::optional<Encoding>* encoding : {&fba, &mp4}) {
     if (!*encoding || !(*encoding)->going()) continue;
     auto finished = (*encoding)->encoder.finish();
@@ -444,12 +390,10 @@ std::optional<ConvertResult> convert_streamed(const std::string& input, const st
         written = make_error(Location{input, 0, 0, -1}, "no frames to write: an MP4 FBA track needs at least one");
       else if (mp4->error) written = *mp4->error;
       else written = write_mp4_output(*mp4->encoded, facts->fps, path, input);
-    } else if (fap.error) {
-      written = Diagnostic{fap.error->severity, Location{path, 0, 0, -1}, fap.error->message, {}, fap.error->kind};
-    } else if (const Diagnostic* failed = fap.error_of(i)) {
+    } else if (auto failed = fap.error_of(i, path)) {
       written = *failed;
     } else {
-      written = fap.file_of(i).commit();
+      written = fap.commit(i);
     }
     if (!written) {
       result.error = written.error();

@@ -18,6 +18,7 @@
 #include "fapc/codec/fba.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "fapc/pipeline/fba_io.hpp"
+#include "fap_text_outputs.hpp"
 #include "timeline_input.hpp"
 
 namespace fapc::pipeline {
@@ -41,76 +42,6 @@ bool can_stream(const std::string& input, const std::vector<OutputRequest>& outp
     if (writers[i]->kind == "fba" && (options.fps < 1 || options.fps > kMaxFbaFrameRate)) return false;
   }
   return true;
-}
-
-// The .fap text, made once, to the temporary file of every .fap output.
-class FapTextOutputs {
- public:
-  FapTextOutputs(const FrameStream& stream, const ConvertOptions& options)
-      : writer_(stream.name(), stream.fps(), static_cast<std::size_t>(stream.count()), 0,
-                std::max<std::int64_t>(stream.count() - 1, 0), write_options(options)) {}
-
-  // A temporary file for output `i`; its error, if any, is that output's.
-  void open(std::size_t i, const std::string& path) {
-    auto file = AtomicFile::create(path);
-    if (file) files_.emplace_back(i, std::move(*file));
-    else failed_.emplace_back(i, file.error());
-  }
-  bool any() const { return !files_.empty(); }
-
-  void begin() {
-    if (auto status = writer_.begin(text_); !status) error_ = status.error();
-  }
-  void add(const FapFrame& frame) {
-    if (error_) return;
-    if (auto status = writer_.add(frame, text_); !status) error_ = status.error();
-    else if (text_.size() >= (std::size_t{1} << 20)) flush();
-  }
-  void finish() {
-    if (error_) return;
-    writer_.finish(text_);
-    flush();
-  }
-
-  // The error writing output `i` (at `path`) meets, if any: the flavour's, else the file's.
-  std::optional<Diagnostic> error_of(std::size_t i, const std::string& path) const {
-    if (error_) return Diagnostic{error_->severity, Location{path, 0, 0, -1}, error_->message, {}, error_->kind};
-    for (const auto& [at, why] : failed_)
-      if (at == i) return why;
-    return std::nullopt;
-  }
-  Status commit(std::size_t i) {
-    for (auto& [at, file] : files_)
-      if (at == i) return file.commit();
-    return ok_status();  // not reached: every .fap output has a file or an error
-  }
-
- private:
-  static FapWriteOptions write_options(const ConvertOptions& options) {
-    FapWriteOptions write;
-    write.flavour = options.fap_flavour;
-    return write;
-  }
-
-  void flush() {
-    for (auto& entry : files_) {  // not a structured binding: clang 14 cannot capture one
-      const std::size_t i = entry.first;
-      const bool failed_before = std::any_of(failed_.begin(), failed_.end(), [i](const auto& f) { return f.first == i; });
-      if (auto written = entry.second.write(text_); !written && !failed_before) failed_.emplace_back(i, written.error());
-    }
-    text_.clear();
-  }
-
-  FapTextWriter writer_;
-  std::string text_;                  // made, not yet written
-  std::optional<Diagnostic> error_;   // the writer's: the flavour cannot carry a frame or the rate
-  std::vector<std::pair<std::size_t, AtomicFile>> files_;   // by output index
-  std::vector<std::pair<std::size_t, Diagnostic>> failed_;  // outputs whose file failed
-};
-
-Diagnostic strict_error(const std::string& input, std::size_t warnings) {
-  return make_error(ErrorKind::bad_input, Location{input, 0, 0, -1},
-                    std::to_string(warnings) + " warning(s) treated as errors (--strict); nothing written");
 }
 
 }  // namespace
@@ -154,7 +85,8 @@ std::optional<ConvertResult> convert_script_streamed(const std::string& input,
   std::optional<FbaEncoder> encoder;
   if (wants_fba) encoder.emplace(fba_encode_options(options));
   std::optional<Diagnostic> encode_error;
-  FapTextOutputs fap(*stream, options);
+  FapTextOutputs fap(stream->name(), stream->fps(), static_cast<std::size_t>(stream->count()), 0,
+                     std::max<std::int64_t>(stream->count() - 1, 0), options);
   for (std::size_t i = 0; i < outputs.size(); ++i)
     if (writers[i]->kind == "fap") fap.open(i, outputs[i].path);
   const bool wants_text = fap.any();
