@@ -84,12 +84,14 @@ Result<EncodedFba> encode_checked(const Loaded& loaded, const ConvertOptions& op
   if (auto error = fba_rate_error(sequence.fps, loaded.rate_at, loaded.rate_written, input)) return *error;
   FbaEncodeOptions fba = fba_encode_options(options);
   fba.align_planes = align_planes;
-  std::vector<std::int64_t> numbers;
-  if (loaded.frame_lines.size() == sequence.frames.size()) {
-    numbers.reserve(sequence.frames.size());
-    for (const FapFrame& frame : sequence.frames) numbers.push_back(frame.number);
-  }
-  fba.locate = frame_locator(numbers, loaded.frame_lines, input);
+  // The frames' numbers are gathered only when an error asks where a frame came from.
+  if (loaded.frame_lines.size() == sequence.frames.size())
+    fba.locate = [&](std::int64_t number, int fap) {
+      std::vector<std::int64_t> numbers;
+      numbers.reserve(sequence.frames.size());
+      for (const FapFrame& frame : sequence.frames) numbers.push_back(frame.number);
+      return frame_locator(numbers, loaded.frame_lines, input)(number, fap);
+    };
   auto encoded = encode_fba(sequence, fba);
   if (!encoded) {
     Diagnostic error = encoded.error();
