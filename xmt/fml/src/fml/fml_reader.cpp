@@ -1,6 +1,7 @@
 // The FML reader: walks the model and the story, builds the time tree (fml_tree.hpp), schedules it
 // and lowers the runs to clips. What it does not read is reported, never dropped silently.
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <cmath>
 #include <filesystem>
@@ -117,11 +118,11 @@ class FmlReader {
     return embedded;
   }
 
-  // `owner`: the document itself, when the reader may free its tree once walked.
+  // `owner`: the document itself, which the reader frees once walked.
   Result<FmlDocument> run(xml::XmlDocument* owner) {
     result_.warnings = doc_.warnings();
     const xmlNode* root = doc_.root();
-    if (const std::string other = other_format_name(root); !other.empty()) {
+    if (const std::string other = other_format_name(doc_, root); !other.empty()) {
       return doc_.error(root, "this is " + other + ", not FML (the Arya-DiPaola Face Modeling Language, "
                                                    "root fml with model and story): fapc does not read it");
     }
@@ -132,27 +133,38 @@ class FmlReader {
     check_attributes(root, {});
     check_text(root);
     const xmlNode* story = nullptr;
-    for (const xmlNode* child : xml::element_children(root)) {
+    // Streamed, the story is read where it is met (its parts freed as they are read), which is
+    // the order of a parsed document's reading as long as nothing follows the story.
+    bool story_read = false;
+    static constexpr std::array<std::string_view, 1> kStory{"story"};
+    for (const xmlNode* child : doc_.children(root, kStory)) {
+      if (story_read) {
+        owner->abandon_stream();
+        break;
+      }
       const std::string_view name = xml::local_name(child);
       if (name == "model") {
         read_model(child);
       } else if (name == "story") {
         if (story) return doc_.error(child, "a second story: an FML document has one");
         story = child;
+        if (doc_.streamed()) {
+          if (error_) return *error_;
+          read_story(story);
+          if (error_) return *error_;
+          story_read = true;
+        }
       } else {
         unknown(child, "is not part of FML (fml holds model and story) and was skipped");
       }
     }
     if (error_) return *error_;
     if (!story) return doc_.error(root, "fml has no story: nothing to animate");
-    check_given_events();
-    check_attributes(story, {});
-    tree_.leaves.reserve(doc_.element_count());
-    tree_.root = container(story, Kind::sequence, Timing{});
+    if (!story_read) read_story(story);
     if (error_) return *error_;
     // What follows needs no node: the tree's memory goes before the clips are made.
     templates_.clear();
-    if (owner) owner->release_tree();
+    owner->release_tree();
     if (Status s = check_runs(); !s) return s.error();
     ScheduleOptions schedule_options;
     schedule_options.root_end = options_.duration;
@@ -358,11 +370,21 @@ class FmlReader {
     return node;
   }
 
+  void read_story(const xmlNode* story) {
+    check_given_events();
+    check_attributes(story, {});
+    tree_.leaves.reserve(doc_.element_count());
+    tree_.root = container(story, Kind::sequence, Timing{});
+  }
+
   // A time container's children in order; excl branches and unknown elements are handled here.
+  // Streamed, the containers among them are read child by child, and each child of the story is
+  // freed once read (a template's, which behaviors read again, never).
   ScheduleNode container(const xmlNode* node, Kind kind, Timing timing) {
+    static constexpr std::array<std::string_view, 4> kContainers{"action", "act", "seq", "par"};
     ScheduleNode group = remember(ScheduleNode::group(kind, timing, doc_.where(node)), node);
     check_text(node);
-    for (const xmlNode* child : xml::element_children(node)) {
+    for (const xmlNode* child : doc_.children(node, kContainers, expanding_.empty())) {
       if (error_) break;
       if (auto placed = element(child)) group.children.push_back(std::move(*placed));
     }
@@ -854,7 +876,14 @@ class FmlReader {
 
 Result<FmlDocument> read_fml(std::string_view text, const std::string& file_name, const FmlOptions& options) {
   // Only talk text is read (an FML move's, embedded or not); elsewhere white space is dropped.
-  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name, xml::BlankText{false, {"talk"}});
+  const xml::BlankText blank_text{false, {"talk"}};
+  // Streamed first, holding only the part of the tree being read; a document the streamed walk
+  // cannot read as a parsed one is read (warnings and errors included) is read again whole.
+  if (Result<xml::XmlDocument> streamed = xml::XmlDocument::stream(text, file_name, blank_text)) {
+    Result<FmlDocument> read = FmlReader(*streamed, options).run(&*streamed);
+    if (read && streamed->finish_stream()) return read;
+  }
+  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name, blank_text);
   if (!doc) return doc.error();
   return FmlReader(*doc, options).run(&*doc);
 }

@@ -1,6 +1,7 @@
 // The XMT-Omega reader: walks the document, builds the time tree (xmto_tree.hpp), schedules it and
 // lowers the runs to clips. What it does not read is reported, never dropped silently.
 #include <algorithm>
+#include <array>
 #include <initializer_list>
 #include <map>
 #include <set>
@@ -51,7 +52,16 @@ class DocumentReader {
     root_namespace_ = xml::namespace_uri(root);
     check_attributes(root, {});
     const xmlNode* body = nullptr;
-    for (const xmlNode* child : xml::element_children(root)) {
+    // Streamed, the body is read where it is met (its parts freed as they are read), which is the
+    // order of a parsed document's reading as long as nothing follows the body.
+    std::optional<ScheduleNode> tree;
+    bool body_read = false;
+    static constexpr std::array<std::string_view, 1> kBody{"body"};
+    for (const xmlNode* child : doc_.children(root, kBody)) {
+      if (body_read) {
+        doc_.abandon_stream();
+        break;
+      }
       if (!is_xmto(child)) {
         unsupported(child);
       } else if (xml::local_name(child) == "head") {
@@ -59,17 +69,18 @@ class DocumentReader {
       } else if (xml::local_name(child) == "body") {
         if (body) return doc_.error(child, "a second body: an XMT-O document has one");
         body = child;
+        if (doc_.streamed()) {
+          tree = read_body(body);
+          if (error_) return *error_;
+          body_read = true;
+        }
       } else {
         unsupported(child);
       }
     }
     check_text(root);
     if (!body) return doc_.error(root, "XMT-O has no body");
-    RunBudget budget;
-    if (options_.duration) budget.available = *options_.duration;
-    // Every element is at most one leaf (FML normal moves aside): no regrowth copies.
-    tree_.leaves.reserve(doc_.element_count());
-    std::optional<ScheduleNode> tree = element(body, Fill::remove, false, budget);
+    if (!body_read) tree = read_body(body);
     if (error_) return *error_;
     // The body is a sequence (SMIL); a body that never plays leaves an empty timeline.
     tree_.root = tree ? std::move(*tree) : ScheduleNode::group(Kind::sequence, {}, doc_.where(body));
@@ -101,6 +112,14 @@ class DocumentReader {
   std::vector<ElementFacts> element_facts_;  // by ScheduleNode::tag - 1: for schedule errors
   double planned_clips_ = 0;  // upper bound, see run_budget.hpp
   std::set<std::string> fml_expressions_;  // FAP 2 targets of the FML moves read so far
+
+  std::optional<ScheduleNode> read_body(const xmlNode* body) {
+    RunBudget budget;
+    if (options_.duration) budget.available = *options_.duration;
+    // Every element is at most one leaf (FML normal moves aside): no regrowth copies.
+    tree_.leaves.reserve(doc_.element_count());
+    return element(body, Fill::remove, false, budget);
+  }
 
   ScheduleNode scheduled_node(ScheduleNode node, const xmlNode* element) {
     element_facts_.push_back(ElementFacts{names_.number(xml::local_name(element)),
@@ -136,15 +155,18 @@ class DocumentReader {
   // FML moves embedded in an XMT-O document ("FML documents can work as XMT-Omega code"): any
   // element whose namespace URI mentions fml. Elements share their namespace declaration, so the
   // answer for the last one seen is kept.
+  // (Kept by the URI, not by the xmlNs: a streamed document frees the elements it has read, and
+  // their namespace declarations with them.)
   bool is_fml(const xmlNode* node) {
-    if (node->ns == last_ns_ && node->ns) return last_ns_is_fml_;
-    std::string ns(xml::namespace_uri(node));
+    const std::string_view uri = xml::namespace_uri(node);
+    if (node->ns && uri == last_ns_) return last_ns_is_fml_;
+    std::string ns(uri);
     std::transform(ns.begin(), ns.end(), ns.begin(), [](unsigned char c) { return std::tolower(c); });
-    last_ns_ = node->ns;
+    last_ns_ = uri;
     last_ns_is_fml_ = ns.find("fml") != std::string::npos;
     return last_ns_is_fml_;
   }
-  const xmlNs* last_ns_ = nullptr;
+  std::string last_ns_;
   bool last_ns_is_fml_ = false;
 
   void unsupported(const xmlNode* node, const std::string& why = "is not supported and was skipped") {
@@ -248,7 +270,10 @@ class DocumentReader {
     check_text(node);
     ScheduleNode group = scheduled_node(
         ScheduleNode::group(kind, to_schedule_timing(timing, std::nullopt), doc_.where(node)), node);
-    for (const xmlNode* child : xml::element_children(node)) {
+    // Streamed, the containers among the children are read child by child, and each child is
+    // freed once read.
+    static constexpr std::array<std::string_view, 3> kContainers{"par", "seq", "excl"};
+    for (const xmlNode* child : doc_.children(node, kContainers, true)) {
       std::optional<ScheduleNode> placed = element(child, fill, kind == Kind::exclusive, inner);
       if (error_) return std::nullopt;
       if (placed) group.children.push_back(std::move(*placed));
@@ -417,7 +442,14 @@ class DocumentReader {
 Result<XmtoDocument> read_xmto(std::string_view text, const std::string& file_name,
                                const XmtoOptions& options) {
   // Only talk text is read (an FML move's, embedded or not); elsewhere white space is dropped.
-  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name, xml::BlankText{false, {"talk"}});
+  const xml::BlankText blank_text{false, {"talk"}};
+  // Streamed first, holding only the part of the tree being read; a document the streamed walk
+  // cannot read as a parsed one is read (warnings and errors included) is read again whole.
+  if (Result<xml::XmlDocument> streamed = xml::XmlDocument::stream(text, file_name, blank_text)) {
+    Result<XmtoDocument> read = DocumentReader(*streamed, options).run();
+    if (read && streamed->finish_stream()) return read;
+  }
+  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name, blank_text);
   // The reader frees the document's tree once it has walked it.
   if (!doc) return doc.error();
   return DocumentReader(*doc, options).run();
