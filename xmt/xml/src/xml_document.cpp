@@ -273,22 +273,21 @@ Result<XmlDocument> XmlDocument::stream(std::string_view text, const std::string
   if (text.size() > static_cast<std::size_t>(INT_MAX)) {
     return make_error(ErrorKind::limit_exceeded, Location{file_name, 0, 0, -1}, "file too large for the XML parser");
   }
-  if (Status depth = check_element_depth(text, file_name); !depth) return depth.error();
   xmlInitParser();
   XmlDocument document;
   document.file_ = file_name;
   document.text_ = text;
   document.index_lines();
   document.first_attribute_.push_back(0);
+  // One scan places the tags and checks the depth (an error here is given again, as before, by
+  // the caller's parse()).
+  bool too_deep = false;
   scan_start_tags(text, [&](const ScannedTagView& tag) {
-    document.tag_offsets_.push_back(static_cast<std::uint32_t>(tag.offset));
-    for (const auto& [name, offset] : *tag.attributes)
-      document.attribute_offsets_.push_back(static_cast<std::uint32_t>(offset));
-    document.first_attribute_.push_back(static_cast<std::uint32_t>(document.attribute_offsets_.size()));
+    too_deep = too_deep || (!tag.empty && tag.depth + 1 > static_cast<std::size_t>(kMaxNestingDepth));
+    document.add_tag(tag.offset, tag.parent, *tag.attributes);
   });
-  document.tag_offsets_.shrink_to_fit();
-  document.attribute_offsets_.shrink_to_fit();
-  document.first_attribute_.shrink_to_fit();
+  if (too_deep) return make_error(ErrorKind::limit_exceeded, Location::text(file_name, 1, 1), "elements nested too deep");
+  document.shrink_positions();
 
   auto state = std::make_unique<StreamState>();
   state->text = text;
@@ -403,17 +402,13 @@ void XmlDocument::index_positions() {
       agree = false;
       return;
     }
-    tag_offsets_.push_back(static_cast<std::uint32_t>(tag.offset));
-    for (const auto& [name, offset] : *tag.attributes) attribute_offsets_.push_back(static_cast<std::uint32_t>(offset));
-    first_attribute_.push_back(static_cast<std::uint32_t>(attribute_offsets_.size()));
+    add_tag(tag.offset, tag.parent, *tag.attributes);
     // The element's number, for where(): libxml2 leaves _private to the application.
     element->_private = numbered(tag_offsets_.size());
     element = next_element(element);
   });
   if (agree && !element) {
-    tag_offsets_.shrink_to_fit();
-    attribute_offsets_.shrink_to_fit();
-    first_attribute_.shrink_to_fit();
+    shrink_positions();
     return;
   }
   // Disagreement: no element has a position.
@@ -421,6 +416,23 @@ void XmlDocument::index_positions() {
   tag_offsets_ = {};
   first_attribute_ = {};
   attribute_offsets_ = {};
+  child_counts_ = {};
+}
+
+void XmlDocument::add_tag(std::size_t offset, std::size_t parent,
+                          const std::vector<std::pair<std::string_view, std::size_t>>& attributes) {
+  tag_offsets_.push_back(static_cast<std::uint32_t>(offset));
+  for (const auto& [name, at] : attributes) attribute_offsets_.push_back(static_cast<std::uint32_t>(at));
+  first_attribute_.push_back(static_cast<std::uint32_t>(attribute_offsets_.size()));
+  child_counts_.push_back(0);
+  if (parent) ++child_counts_[parent - 1];
+}
+
+void XmlDocument::shrink_positions() {
+  tag_offsets_.shrink_to_fit();
+  attribute_offsets_.shrink_to_fit();
+  first_attribute_.shrink_to_fit();
+  child_counts_.shrink_to_fit();
 }
 
 std::size_t XmlDocument::number_of(const xmlNode* element) const {

@@ -112,7 +112,8 @@ class FmlReader {
     if (error_) return *error_;
     once_.finish();
     EmbeddedFmlMove embedded;
-    embedded.leaf = tree_.leaves.at(placed->leaf_id);
+    embedded.leaf = std::move(tree_.leaves.at(placed->leaf_id));
+    if (embedded.leaf.kind == FmlLeaf::Kind::move) embedded.target = tree_.targets.at(embedded.leaf.target);
     embedded.timing = placed->timing;
     embedded.warnings = std::move(result_.warnings);
     return embedded;
@@ -171,6 +172,9 @@ class FmlReader {
     schedule_options.max_runs = options_.max_runs;
     auto scheduled = schedule_tree(tree_.root, schedule_options);
     if (const auto* problem = std::get_if<ScheduleError>(&scheduled)) return scheduler_error(*problem);
+    // Lowering needs the runs and the leaves, not the tree (the root's source aside): its nodes go
+    // before the clips are made.
+    std::vector<ScheduleNode>().swap(tree_.root.children);
     tree_.coarticulation = options_.coarticulation;
     result_.timeline = lower_fml(tree_, std::get<Schedule>(scheduled));
     once_.finish();
@@ -383,6 +387,7 @@ class FmlReader {
   ScheduleNode container(const xmlNode* node, Kind kind, Timing timing) {
     static constexpr std::array<std::string_view, 4> kContainers{"action", "act", "seq", "par"};
     ScheduleNode group = remember(ScheduleNode::group(kind, timing, doc_.where(node)), node);
+    group.children.reserve(doc_.child_count(node));  // no regrowth: a tree is ~all its nodes
     check_text(node);
     for (const xmlNode* child : doc_.children(node, kContainers, expanding_.empty())) {
       if (error_) break;
@@ -559,6 +564,14 @@ class FmlReader {
 
   // ---- moves ---------------------------------------------------------------------------------
 
+  // A move's target, its name kept once in the tree.
+  std::uint32_t target_number(const std::string& name) {
+    const std::uint32_t number = target_names_.number(name);
+    if (number == tree_.targets.size()) tree_.targets.push_back(name);
+    return number;
+  }
+  xml::NameTable target_names_;  // numbers of tree_.targets
+
   ScheduleNode add_leaf(const xmlNode* node, FmlLeaf leaf, Timing timing) {
     leaf.where = doc_.where(node);
     const std::size_t id = tree_.leaves.size();
@@ -626,9 +639,10 @@ class FmlReader {
       percent = std::clamp(*percent, 0.0, 100.0);
     }
     leaf.kind = FmlLeaf::Kind::move;
-    leaf.target = "expression." + std::string(expression_name(*expression));
+    const std::string target = "expression." + std::string(expression_name(*expression));
+    leaf.target = target_number(target);
     leaf.value = *percent * 63.0 / 100.0;
-    expressions_.insert(leaf.target);
+    expressions_.insert(target);
     return add_leaf(node, std::move(leaf), move_timing(timing, 1.0));
   }
 
@@ -648,7 +662,7 @@ class FmlReader {
     }
     FmlLeaf leaf;
     leaf.kind = FmlLeaf::Kind::move;
-    leaf.target = std::string(find_fap(kAxisFap[*axis])->name);
+    leaf.target = target_number(std::string(find_fap(kAxisFap[*axis])->name));
     leaf.value = clamped * kAngleUnitsPerDegree;
     return add_leaf(node, std::move(leaf), move_timing(timing, 1.0));
   }
@@ -670,7 +684,7 @@ class FmlReader {
     if (!value) return std::nullopt;
     FmlLeaf leaf;
     leaf.kind = FmlLeaf::Kind::move;
-    leaf.target = std::string(info->name);
+    leaf.target = target_number(std::string(info->name));
     leaf.value = *value;
     return add_leaf(node, std::move(leaf), move_timing(timing, 1.0));
   }
@@ -686,7 +700,7 @@ class FmlReader {
     if (!value) return std::nullopt;
     FmlLeaf leaf;
     leaf.kind = FmlLeaf::Kind::move;
-    leaf.target = name;
+    leaf.target = target_number(name);
     leaf.value = *value;
     return add_leaf(node, std::move(leaf), move_timing(timing, 1.0));
   }
@@ -704,6 +718,7 @@ class FmlReader {
     }
     FmlLeaf leaf;
     leaf.kind = FmlLeaf::Kind::talk;
+    leaf.talk = std::make_unique<FmlTalk>();
     if (file) {
       auto speech = phonemes(node, trim(*file));
       if (!speech) return std::nullopt;
@@ -712,31 +727,32 @@ class FmlReader {
                                                                 "phoneme file: fapc has no speech recogniser, so "
                                                                 "this talk is silent (it waits)"));
       }
-      leaf.speech = std::move(*speech);
+      leaf.talk->speech = std::move(*speech);
     } else {
       if (text.empty()) {
         fail(doc_.error(node, "talk needs text to say or a phoneme file (file=\"x.pho\")"));
         return std::nullopt;
       }
-      if (!speak(node, text, leaf)) return std::nullopt;
+      if (!speak(node, text, *leaf.talk)) return std::nullopt;
     }
     // The talk lasts until its sound ends and the mouth is back at neutral.
-    leaf.natural = leaf.speech.duration;
-    for (const Clip& clip : talk_timeline(leaf, leaf.speech.duration, options_.coarticulation).clips)
-      leaf.natural = std::max(leaf.natural, clip.end);
-    const double intrinsic = leaf.natural;
+    FmlTalk& talk = *leaf.talk;
+    talk.natural = talk.speech.duration;
+    for (const Clip& clip : talk_timeline(talk, leaf.where, talk.speech.duration, options_.coarticulation).clips)
+      talk.natural = std::max(talk.natural, clip.end);
+    const double intrinsic = talk.natural;
     return add_leaf(node, std::move(leaf), move_timing(timing, intrinsic));
   }
 
   // Talk text: spoken by the engine, or (built without one) the letter approximation, with a
   // warning once per document.
-  bool speak(const xmlNode* node, const std::string& text, FmlLeaf& leaf) {
+  bool speak(const xmlNode* node, const std::string& text, FmlTalk& talk) {
     if (!options_.synthesize) {
       once_.report("no speech engine", doc_.warning(node, "no speech engine (fapc built with FAPC_SPEECH=OFF, or none "
                                                           "given): talk text becomes visemes by the letter table, with "
                                                           "no voice"));
       std::string skipped;
-      leaf.speech = visemes_from_text(text, options_.words_per_minute * 12 / 175, skipped);
+      talk.speech = visemes_from_text(text, options_.words_per_minute * 12 / 175, skipped);
       if (!skipped.empty()) {
         once_.report("skipped " + skipped, doc_.warning(node, "talk: the characters '" + skipped +
                                                                   "' have no letter-to-viseme rule and are silent"));
@@ -765,9 +781,9 @@ class FmlReader {
     }
     if (std::find(result_.languages.begin(), result_.languages.end(), request.language) == result_.languages.end())
       result_.languages.push_back(request.language);
-    leaf.speech.visemes = viseme_spans(spoken->phonemes);
-    leaf.speech.duration = spoken->duration;
-    leaf.audio = std::move(spoken->audio);
+    talk.speech.visemes = viseme_spans(spoken->phonemes);
+    talk.speech.duration = spoken->duration;
+    talk.audio = std::move(spoken->audio);
     return true;
   }
 
@@ -825,7 +841,7 @@ class FmlReader {
     if (node.kind == Kind::leaf) {
       own = t.duration.value_or(0);
       const FmlLeaf& leaf = tree_.leaves[node.leaf_id];
-      children_runs = leaf.kind == FmlLeaf::Kind::talk ? std::max<double>(1, static_cast<double>(leaf.speech.visemes.size()))
+      children_runs = leaf.kind == FmlLeaf::Kind::talk ? std::max<double>(1, static_cast<double>(leaf.talk->speech.visemes.size()))
                       : leaf.kind == FmlLeaf::Kind::normal ? std::max<double>(1, static_cast<double>(expressions_.size()))
                                                            : 1;
     } else {

@@ -91,6 +91,9 @@ class DocumentReader {
     schedule_options.max_runs = options_.max_runs;
     auto scheduled = schedule_tree(tree_.root, schedule_options);
     if (const auto* problem = std::get_if<ScheduleError>(&scheduled)) return scheduler_error(*problem);
+    // Lowering needs the runs and the leaves, not the tree (the root's source aside): its nodes go
+    // before the clips are made.
+    std::vector<ScheduleNode>().swap(tree_.root.children);
     result_.timeline = lower_to_timeline(tree_, std::get<Schedule>(scheduled));
     once_.finish();
     return std::move(result_);
@@ -118,6 +121,8 @@ class DocumentReader {
     if (options_.duration) budget.available = *options_.duration;
     // Every element is at most one leaf (FML normal moves aside): no regrowth copies.
     tree_.leaves.reserve(doc_.element_count());
+    // Most animations have a few values and key times (the pages never written cost nothing).
+    tree_.numbers.reserve(4 * doc_.element_count());
     return element(body, Fill::remove, false, budget);
   }
 
@@ -273,6 +278,7 @@ class DocumentReader {
     // Streamed, the containers among the children are read child by child, and each child is
     // freed once read.
     static constexpr std::array<std::string_view, 3> kContainers{"par", "seq", "excl"};
+    group.children.reserve(doc_.child_count(node));  // no regrowth: a tree is ~all its nodes
     for (const xmlNode* child : doc_.children(node, kContainers, true)) {
       std::optional<ScheduleNode> placed = element(child, fill, kind == Kind::exclusive, inner);
       if (error_) return std::nullopt;
@@ -295,6 +301,19 @@ class DocumentReader {
     fail(std::move(d));
     return false;
   }
+
+  // The leaf's target and function, their names and numbers kept in the tree's pools.
+  void keep_function(Leaf& leaf, const std::string& target, const AnimationFunction& function) {
+    leaf.target = target_names_.number(target);
+    if (leaf.target == tree_.targets.size()) tree_.targets.push_back(target);
+    leaf.function = function;
+    leaf.first_number = static_cast<std::uint32_t>(tree_.numbers.size());
+    leaf.value_count = static_cast<std::uint32_t>(function.values.size());
+    leaf.key_time_count = static_cast<std::uint32_t>(function.key_times.size());
+    tree_.numbers.insert(tree_.numbers.end(), function.values.begin(), function.values.end());
+    tree_.numbers.insert(tree_.numbers.end(), function.key_times.begin(), function.key_times.end());
+  }
+  xml::NameTable target_names_;  // numbers of tree_.targets
 
   ScheduleNode add_leaf(const xmlNode* node, Leaf leaf, Timing timing) {
     leaf.where = doc_.where(node);
@@ -329,14 +348,13 @@ class DocumentReader {
     if (!target->warning.empty()) {
       once_.report("name " + *attribute_name, doc_.warning(node, "attributeName", target->warning));
     }
-    leaf.target = target->target;
     Result<AnimationFunction> function = is_set ? read_set(doc_, node, timing.dur)
                                                 : read_animate(doc_, node, timing.dur, result_.warnings);
     if (!function) {
       fail(function.error());
       return std::nullopt;
     }
-    leaf.function = std::move(*function);
+    keep_function(leaf, target->target, *function);
     if (!within_budget(node, budget.inside(timing, std::nullopt).repeats)) return std::nullopt;
     return add_leaf(node, std::move(leaf), to_schedule_timing(timing, std::nullopt));
   }
@@ -358,19 +376,20 @@ class DocumentReader {
     const auto hold = [&](const std::string& target, double value) {
       Leaf leaf;
       leaf.fill = Fill::freeze;
-      leaf.target = target;
-      leaf.function.values = {0, value};
-      leaf.function.to_animation = true;
-      leaf.function.simple_duration = length;
+      AnimationFunction function;
+      function.values = {0, value};
+      function.to_animation = true;
+      function.simple_duration = length;
+      keep_function(leaf, target, function);
       return leaf;
     };
     const FmlLeaf& fml = move->leaf;
     Leaf leaf;
     switch (fml.kind) {
       case FmlLeaf::Kind::move:
-        if (weight_target(fml.target)) fml_expressions_.insert(fml.target);
+        if (weight_target(move->target)) fml_expressions_.insert(move->target);
         if (!within_budget(node, runs)) return std::nullopt;
-        return add_leaf(node, hold(fml.target, fml.value), move->timing);
+        return add_leaf(node, hold(move->target, fml.value), move->timing);
       case FmlLeaf::Kind::normal: {
         if (!within_budget(node, runs * std::max<double>(1, static_cast<double>(fml_expressions_.size()))))
           return std::nullopt;
@@ -381,7 +400,7 @@ class DocumentReader {
         return scheduled_node(std::move(group), node);
       }
       case FmlLeaf::Kind::talk:
-        leaf.included = std::make_unique<Timeline>(talk_timeline(fml, length, options_.fml.coarticulation));
+        leaf.included = std::make_unique<Timeline>(talk_timeline(*fml.talk, fml.where, length, options_.fml.coarticulation));
         break;
       case FmlLeaf::Kind::wait:
         leaf.included = std::make_unique<Timeline>(Timeline{{}, length, doc_.where(node)});

@@ -106,6 +106,12 @@ class XmlDocument {
   void release_tree();
   // How many elements the document has (0 when positions are unknown): a bound for reserving.
   std::size_t element_count() const { return tag_offsets_.size(); }
+  // How many element children `element` has in the text (0 when positions are unknown): a bound
+  // for reserving.
+  std::size_t child_count(const xmlNode* element) const {
+    const std::size_t number = number_of(element);
+    return number ? child_counts_[number - 1] : 0;
+  }
   const std::string& file() const { return file_; }
   const Diagnostics& warnings() const { return warnings_; }
 
@@ -133,6 +139,7 @@ class XmlDocument {
   std::vector<std::uint32_t> tag_offsets_;
   std::vector<std::uint32_t> first_attribute_;
   std::vector<std::uint32_t> attribute_offsets_;
+  std::vector<std::uint32_t> child_counts_;  // by element number - 1
   Diagnostics warnings_;
   std::unique_ptr<StreamState> stream_;  // a streamed document's parser, null once finished
   bool streamed_ = false;
@@ -152,6 +159,8 @@ class XmlDocument {
   std::size_t number_of(const xmlNode* element) const;
   void index_positions();
   void index_lines();
+  void add_tag(std::size_t offset, std::size_t parent, const std::vector<std::pair<std::string_view, std::size_t>>& attributes);
+  void shrink_positions();
   Diagnostic with_line(Diagnostic d) const;
 };
 
