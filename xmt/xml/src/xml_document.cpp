@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cstring>
 
 #include "fapc/codec/nesting_limit.hpp"
 #include "xml_tag_scan.hpp"
@@ -339,6 +340,11 @@ void XmlDocument::abandon_stream() const { faithful_ = false; }
 void XmlDocument::release_tree() {
   finish_stream();
   doc_.reset();
+  // Positions are asked of nodes, and there are none left (line_text() stays).
+  tag_offsets_ = {};
+  first_attribute_ = {};
+  attribute_offsets_ = {};
+  child_counts_ = {};
 }
 
 bool XmlDocument::ended(const xmlNode* element) const {
@@ -441,7 +447,15 @@ std::size_t XmlDocument::number_of(const xmlNode* element) const {
 }
 
 Location XmlDocument::at_offset(std::size_t offset) const {
-  const auto after = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
+  // Readers ask in document order, mostly a line or two on from the last answer.
+  auto after = line_starts_.begin() + static_cast<std::ptrdiff_t>(line_hint_);
+  if (*(after - 1) <= offset) {
+    for (int step = 0; step < 4 && after != line_starts_.end() && *after <= offset; ++step) ++after;
+    if (after != line_starts_.end() && *after <= offset) after = std::upper_bound(after, line_starts_.end(), offset);
+  } else {
+    after = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
+  }
+  line_hint_ = static_cast<std::size_t>(after - line_starts_.begin());
   const auto line = static_cast<std::size_t>(after - line_starts_.begin());  // 1-based
   const std::size_t column = offset - line_starts_[line - 1] + 1;
   return Location::text(file_, static_cast<int>(line), static_cast<int>(column));
@@ -503,6 +517,17 @@ std::string_view namespace_uri(const xmlNode* node) {
 }
 
 std::optional<std::string> attribute(const xmlNode* element, const char* name) {
+  // The common case read directly (libxml2 copies every value it returns): a value of one text
+  // node, or none. Values with entity references, and the defaults a DTD may give, as libxml2
+  // gives them.
+  if (!element->doc || (!element->doc->intSubset && !element->doc->extSubset)) {
+    const xmlAttr* attr = element->properties;
+    while (attr && (attr->ns || std::strcmp(text_of(attr->name), name) != 0)) attr = attr->next;
+    if (!attr) return std::nullopt;
+    const xmlNode* value = attr->children;
+    if (!value) return std::string();
+    if (value->type == XML_TEXT_NODE && !value->next && value->content) return std::string(text_of(value->content));
+  }
   xmlChar* value = xmlGetNoNsProp(element, reinterpret_cast<const xmlChar*>(name));
   if (!value) return std::nullopt;
   std::string out = text_of(value);

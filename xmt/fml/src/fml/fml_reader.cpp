@@ -575,8 +575,9 @@ class FmlReader {
   ScheduleNode add_leaf(const xmlNode* node, FmlLeaf leaf, Timing timing) {
     leaf.where = doc_.where(node);
     const std::size_t id = tree_.leaves.size();
+    const Location where = leaf.where;
     tree_.leaves.push_back(std::move(leaf));
-    return remember(ScheduleNode::leaf(id, timing, doc_.where(node)), node);
+    return remember(ScheduleNode::leaf(id, timing, where), node);
   }
 
   // A move that cannot be animated (an unknown type) keeps its place in time as a wait.

@@ -318,8 +318,9 @@ class DocumentReader {
   ScheduleNode add_leaf(const xmlNode* node, Leaf leaf, Timing timing) {
     leaf.where = doc_.where(node);
     const std::size_t id = tree_.leaves.size();
+    const Location where = leaf.where;
     tree_.leaves.push_back(std::move(leaf));
-    return scheduled_node(ScheduleNode::leaf(id, timing, doc_.where(node)), node);
+    return scheduled_node(ScheduleNode::leaf(id, timing, where), node);
   }
 
   std::optional<ScheduleNode> animate_or_set(const xmlNode* node, const SmilTiming& timing, Fill fill,

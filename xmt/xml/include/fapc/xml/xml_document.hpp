@@ -101,8 +101,8 @@ class XmlDocument {
   }
 
   const xmlNode* root() const { return xmlDocGetRootElement(doc_.get()); }
-  // Frees libxml2's tree (the bulk of the memory) once a reader has taken what it needs from the
-  // nodes; line_text() and the positions of number_of() stay. No node may be used after it.
+  // Frees libxml2's tree and the elements' positions once a reader has taken what it needs from
+  // the nodes; line_text() stays. No node may be used after it.
   void release_tree();
   // How many elements the document has (0 when positions are unknown): a bound for reserving.
   std::size_t element_count() const { return tag_offsets_.size(); }
@@ -132,6 +132,7 @@ class XmlDocument {
   std::string file_;
   std::string_view text_;
   std::vector<std::uint32_t> line_starts_;
+  mutable std::size_t line_hint_ = 1;  // where at_offset() found the last line: 1 + its index
   // Positions, by element number: element k (in document order, kept in its node's _private as
   // (k + 1) << 1; bit 0 marks an element whose end tag a streamed parse has read) starts at tag_offsets_[k]; its attributes, as written, start at the offsets
   // attribute_offsets_[first_attribute_[k] .. first_attribute_[k + 1]). A few bytes per element
