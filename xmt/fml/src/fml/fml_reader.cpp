@@ -214,15 +214,15 @@ class FmlReader {
   void check_attributes(const xmlNode* element, std::initializer_list<const char*> known,
                         std::initializer_list<const char*> more = {}) {
     for (const xmlAttr* attr = element->properties; attr; attr = attr->next) {
-      const std::string name = xml::qualified_name(attr);
       if (attr->ns) continue;  // xml:lang, xsi:* and other namespaced attributes carry no FML
+      const std::string_view name = reinterpret_cast<const char*>(attr->name);  // as written: no prefix
       const auto listed = [&](std::initializer_list<const char*> list) {
         return std::any_of(list.begin(), list.end(), [&](const char* k) { return name == k; });
       };
       if (listed(known) || listed(more)) continue;
       const std::string element_name(xml::local_name(element));
-      once_.report("attribute " + element_name + "@" + name,
-                   doc_.warning(element, name, "attribute '" + name + "' of " + element_name +
+      once_.report("attribute " + element_name + "@" + std::string(name),
+                   doc_.warning(element, name, "attribute '" + std::string(name) + "' of " + element_name +
                                                    " is not part of FML and was ignored"));
     }
   }

@@ -184,17 +184,18 @@ class DocumentReader {
   void check_attributes(const xmlNode* element, std::initializer_list<const char*> known,
                         std::initializer_list<const char*> more = {}) {
     for (const xmlAttr* attr = element->properties; attr; attr = attr->next) {
-      const std::string name = xml::qualified_name(attr);
       if (attr->ns && attr->ns->href) {
         const std::string_view ns = reinterpret_cast<const char*>(attr->ns->href);
         if (ns == kXmlNamespace || ns == kSchemaInstanceNamespace) continue;
-      } else {
-        if (name == "id") continue;
+      } else if (!attr->ns || !attr->ns->prefix) {
+        const std::string_view written = reinterpret_cast<const char*>(attr->name);  // no prefix
+        if (written == "id") continue;
         bool listed = false;
-        for (const char* k : known) listed = listed || name == k;
-        for (const char* k : more) listed = listed || name == k;
+        for (const char* k : known) listed = listed || written == k;
+        for (const char* k : more) listed = listed || written == k;
         if (listed) continue;
       }
+      const std::string name = xml::qualified_name(attr);
       const std::string element_name(xml::local_name(element));
       once_.report("attribute " + element_name + "@" + name,
                    doc_.warning(element, name, "attribute '" + name + "' of " + element_name +
