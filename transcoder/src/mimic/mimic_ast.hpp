@@ -47,10 +47,10 @@ struct Definition {
   Position file_at;
 };
 
+// What the parser keeps: main's own actions go to a MainSink as they are read (mimic_parser.hpp).
 struct Program {
   std::vector<Definition> definitions;
   std::vector<Param> main_params;
-  Action main;
 };
 
 }  // namespace fapc::mimic

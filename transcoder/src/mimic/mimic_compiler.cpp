@@ -3,6 +3,9 @@
 // actions to clips; `connect` is resolved last, once every clip has its place.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <deque>
+#include <iterator>
 #include <map>
 #include <set>
 #include <utility>
@@ -31,8 +34,13 @@ using Kind = ScheduleNode::Kind;
 // second is 28800), and small enough to refuse within a second (an action costs a few µs).
 
 struct Target {
-  std::string name;
-  double factor = 1;  // a defxpr entry's value: the amplifier applied to the fade's value
+  std::uint32_t name = 0;  // an index into Compiler::names_: a script names few targets
+  double factor = 1;       // a defxpr entry's value: the amplifier applied to the fade's value
+};
+
+struct ListPoint {
+  double time = 0;
+  double value = 0;
 };
 
 struct Leaf {
@@ -41,7 +49,14 @@ struct Leaf {
   // A defxpr instance: its targets' factors are already the amplified state (the fade's value
   // applied by the Algebra's amplifier), so the fade rises to the factor itself.
   bool expression = false;
-  std::vector<Target> targets;
+  BlendMode blend = BlendMode::add;
+  Position at;  // the action's, for the clips' sources
+  // Its targets: targets_[first_target, first_target + target_count) of the Compiler.
+  std::uint32_t first_target = 0;
+  std::uint32_t target_count = 0;
+  // A time-value list: list_points_[first_point, first_point + point_count) of the Compiler.
+  std::size_t first_point = 0;
+  std::uint32_t point_count = 0;
   // What lowering needs of the action's parameters (all of ActionParams is 500 bytes a leaf).
   struct Curve {
     double in = 0, hold = 0, out = 0;  // fade
@@ -52,8 +67,6 @@ struct Leaf {
     Periodic::Shape wave = Periodic::Shape::sine;  // periodic
     double min = 0, max = 0, period = 1;
   } curve;
-  const Action* action = nullptr;
-  BlendMode blend = BlendMode::add;
 };
 
 struct Context {
@@ -70,74 +83,195 @@ std::string format_number(double v) {
   return out.str();
 }
 
-class Compiler {
+// Compiles while the parser reads: main's actions arrive one at a time (MainSink) and become
+// schedule nodes at once, so that no tree of main's actions is ever held. The errors are those a
+// compiler of the whole parsed program would give: a syntax error anywhere first, then (by rank)
+// the definitions', a macro too big, main too big, and the first of the others in source order.
+class Compiler final : public MainSink {
  public:
-  Compiler(const Program& program, std::string_view source, const std::string& file,
-           const MimicOptions& options)
-      : program_(program),
-        source_(source),
+  Compiler(std::string_view source, const std::string& file, const MimicOptions& options)
+      : source_(source),
         file_(file),
+        file_location_(Location::text(file, 0, 0)),
         options_(options),
         profile_(options.profile ? *options.profile : default_profile()) {}
 
   Result<MimicProgram> run() {
-    if (auto defined = collect_definitions(); !defined) return defined.error();
-    // Macro bombs are refused before anything is built: sizes are counted once per definition.
-    for (const Definition& d : program_.definitions) {
-      if (!d.expression && expanded_size(d.group) > run_limit()) return too_many_actions(d.group);
-    }
-    const double main_size = expanded_size(program_.main);
-    if (main_size > run_limit()) return too_many_actions(overflowing(program_.main, run_limit()));
-    // At most one leaf per node of main, macros expanded: the leaves never grow by doubling.
-    leaves_.reserve(static_cast<std::size_t>(main_size));
-    // Macro bodies are checked where they are written, even when no one uses them.
-    for (const Definition& d : program_.definitions) {
-      if (d.expression) continue;
-      stack_ = {d.name};
-      const std::size_t keep = leaves_.size();
-      if (auto body = build(d.group, Context{}); !body) return body.error();
-      leaves_.resize(keep);
-    }
-    stack_.clear();
-    Result<ActionParams> main = read(program_.main_params);
-    if (!main) return main.error();
-    if (main->right) return error(main->right->at, "'right' needs a parallel around it; main has none");
-    if (const Param* p = atomic_param(*main)) {
-      return error(p->at, "'" + p->name + "' applies to atomic actions, not to main");
-    }
-    Result<ScheduleNode> root = build(program_.main, Context{main->blend_mode(), Action::Kind::sequence});
-    if (!root) return root.error();
-    if (main->left) root->timing.offset += main->left->value;
+    if (Status parsed = parse_program(source_, file_, program_, *this); !parsed) return parsed.error();
+    if (pending_) return std::move(pending_->diagnostic);
+    ScheduleNode root = std::move(root_);
+    if (main_params_->left) root.timing.offset += main_params_->left->value;
     ScheduleOptions schedule_options;
     schedule_options.max_runs = options_.max_runs;
-    Result<Schedule> scheduled = schedule(*root, schedule_options);
+    Result<Schedule> scheduled = schedule(root, schedule_options);
     if (!scheduled) return with_source_line(scheduled.error());
-    *root = ScheduleNode{};  // the tree is scheduled: let it go before the clips are made
+    root = ScheduleNode{};  // the tree is scheduled: let it go before the clips are made
     MimicProgram out;
     out.timeline = lower(*scheduled);
     out.warnings = std::move(warnings_);
     return out;
   }
 
+  // ---- main as it is parsed (MainSink) -------------------------------------------------------
+
+  // What run() checked before building main when it had the whole tree, in the same order.
+  void begin_main(const std::vector<Definition>&, const std::vector<Param>& main_params) override {
+    if (auto defined = collect_definitions(); !defined) return hold(defined.error(), Rank::definitions);
+    // Macro bombs are refused before anything is built: sizes are counted once per definition.
+    for (const Definition& d : program_.definitions) {
+      if (!d.expression && expanded_size(d.group) > run_limit()) {
+        return hold(too_many_actions(d.group), Rank::macro_size);
+      }
+    }
+    // Macro bodies are checked where they are written, even when no one uses them.
+    for (const Definition& d : program_.definitions) {
+      if (d.expression) continue;
+      stack_ = {d.name};
+      const Sizes keep = sizes();
+      Result<ScheduleNode> body = build(d.group, Context{});
+      truncate(keep);
+      if (!body) return hold(body.error(), Rank::other);
+    }
+    stack_.clear();
+    Result<ActionParams> main = read(main_params);
+    if (!main) return hold(main.error(), Rank::other);
+    if (main->right) return hold(error(main->right->at, "'right' needs a parallel around it; main has none"), Rank::other);
+    if (const Param* p = atomic_param(*main)) {
+      return hold(error(p->at, "'" + p->name + "' applies to atomic actions, not to main"), Rank::other);
+    }
+    main_params_ = std::move(*main);
+  }
+
+  void open_group(const Action& group) override {
+    const bool is_main = open_ == 0;
+    if (open_ == frames_.size()) frames_.emplace_back();
+    Frame& frame = frames_[open_++];
+    frame.depth = is_main ? 0 : frames_[open_ - 2].depth + 1;
+    frame.children.clear();
+    main_size_ += 1;  // the group itself; its actions are counted as they come
+    if (pending_) return;
+    const Context context = is_main ? Context{main_params_->blend_mode(), Action::Kind::sequence, 0}
+                                    : frames_[open_ - 2].inner(frame.depth);
+    Result<Prepared> prepared = prepare(group, context);
+    if (!prepared) return hold(prepared.error(), Rank::other);
+    Result<ScheduleNode> node = group_node(group, *prepared);
+    if (!node) return hold(node.error(), Rank::other);
+    frame.node = std::move(*node);
+    frame.blend = prepared->blend;
+    frame.kind = group.kind;
+  }
+
+  void named_action(Action&& action) override {
+    Frame& parent = frames_[open_ - 1];
+    const int depth = parent.depth + 1;
+    if (!pending_ || pending_->rank > Rank::main_size) {
+      // main's size as run() counted it before building (expanded_size(main)): past the run
+      // limit, the error points where overflowing(main) would.
+      const double size = expanded_size(action, depth);
+      if (main_size_ + size > run_limit()) {
+        hold(too_many_actions(overflowing(action, run_limit() - main_size_)), Rank::main_size);
+      }
+      main_size_ += size;
+    }
+    if (pending_) return;
+    Result<ScheduleNode> built = build(action, parent.inner(depth));
+    if (!built) return hold(built.error(), Rank::other);
+    parent.children.push_back(std::move(*built));
+  }
+
+  void close_group() override {
+    Frame& frame = frames_[--open_];
+    if (pending_) return;
+    // Exactly as many children as it has: the tree holds a node per action of the program.
+    frame.node.children.reserve(frame.children.size());
+    std::move(frame.children.begin(), frame.children.end(), std::back_inserter(frame.node.children));
+    frame.children.clear();
+    if (open_ == 0) {
+      root_ = std::move(frame.node);
+    } else {
+      frames_[open_ - 1].children.push_back(std::move(frame.node));
+    }
+  }
+
  private:
-  const Program& program_;
+  // Errors found while main is still being read, by the order run() used to check them in.
+  enum class Rank { definitions, macro_size, main_size, other };
+  struct Pending {
+    Diagnostic diagnostic;
+    Rank rank = Rank::other;
+  };
+  // A group of main being read: its node, and its children built so far.
+  struct Frame {
+    ScheduleNode node;
+    std::vector<ScheduleNode> children;  // reused from group to group at this depth
+    std::optional<BlendMode> blend;
+    Action::Kind kind = Action::Kind::sequence;
+    int depth = 0;
+    Context inner(int child_depth) const { return Context{blend, kind, child_depth}; }
+  };
+  // build()'s reading of an action's parameters, before it looks at what the action is.
+  struct Prepared {
+    ActionParams params;
+    Timing timing;
+    std::optional<BlendMode> blend;
+  };
+  // How far the arenas reach, to drop what a macro body's check built.
+  struct Sizes {
+    std::size_t leaves = 0, targets = 0, points = 0;
+  };
+
   std::string_view source_;
   const std::string& file_;
+  const Location file_location_;  // copied per node: building a Location from the path costs more
   const MimicOptions& options_;
   const Profile& profile_;
-  std::map<std::string, const Definition*> macros_;
-  std::map<std::string, algebra::FacialState> expressions_;
-  std::vector<Leaf> leaves_;
+  Program program_;
+  std::optional<Pending> pending_;
+  std::optional<ActionParams> main_params_;
+  std::vector<Frame> frames_;  // main's groups open around the parser, outermost first
+  std::size_t open_ = 0;
+  double main_size_ = 0;  // expanded_size(main) of what has been read
+  ScheduleNode root_;
+  std::map<std::string, const Definition*, std::less<>> macros_;
+  std::map<std::string, algebra::FacialState, std::less<>> expressions_;
+  // Chunked, never copied as they grow: a million leaves would otherwise double through copies.
+  std::deque<Leaf> leaves_;
+  std::deque<Target> targets_;
+  std::deque<ListPoint> list_points_;
+  // Target names, interned: each with what it writes (resolve_target), asked once per name.
+  std::vector<std::string> names_;
+  std::vector<std::vector<FapContribution>> name_contributions_;
+  std::map<std::string, std::uint32_t, std::less<>> name_ids_;
   std::vector<std::string> stack_;  // macros being expanded, for recursion errors
   std::size_t actions_built_ = 0;
-  std::map<std::string, double> sizes_;  // per macro: its body's expanded_size()
-  std::set<std::string> sizing_;         // macros being sized (recursion)
-  bool sizing_cut_ = false;              // a count stopped at the depth limit
+  std::map<std::string, double, std::less<>> sizes_;  // per macro: its body's expanded_size()
+  std::set<std::string, std::less<>> sizing_;         // macros being sized (recursion)
+  bool sizing_cut_ = false;                           // a count stopped at the depth limit
   // Per clip of the timeline being built: empty when it does not connect, else the explicit end
   // value of `connect=x` (empty inside: take the next clip's value).
   std::vector<std::optional<std::optional<double>>> connects_;
   Diagnostics warnings_;
-  std::unordered_map<std::string, std::vector<FapContribution>> resolved_;  // per target name
+
+  void hold(Diagnostic d, Rank rank) {
+    if (!pending_ || rank < pending_->rank) pending_ = Pending{std::move(d), rank};
+  }
+  Sizes sizes() const { return {leaves_.size(), targets_.size(), list_points_.size()}; }
+  void truncate(const Sizes& keep) {
+    leaves_.resize(keep.leaves);
+    targets_.resize(keep.targets);
+    list_points_.resize(keep.points);
+  }
+
+  // The interned id of a target name, with its contributions resolved once.
+  std::uint32_t name_id(std::string_view name) {
+    if (const auto found = name_ids_.find(name); found != name_ids_.end()) return found->second;
+    const auto id = static_cast<std::uint32_t>(names_.size());
+    names_.emplace_back(name);
+    name_contributions_.push_back(resolve_target(name, profile_));
+    name_ids_.emplace(std::string(name), id);
+    return id;
+  }
+  const std::vector<FapContribution>& contributions(std::uint32_t id) const { return name_contributions_[id]; }
 
   double run_limit() const { return static_cast<double>(std::max<std::int64_t>(options_.max_runs, 0)); }
 
@@ -192,21 +326,20 @@ class Compiler {
     return action;
   }
 
-  const std::vector<FapContribution>& contributions(const std::string& target) {
-    const auto found = resolved_.find(target);
-    if (found != resolved_.end()) return found->second;
-    return resolved_.emplace(target, resolve_target(target, profile_)).first->second;
-  }
-
   Diagnostic error(Position at, const std::string& message) const {
-    return make_error(Location::text(file_, at.line, at.column), message,
+    return make_error(location(at), message,
                       source_line(source_, at.line));
   }
   Diagnostic with_source_line(Diagnostic d) const {
     if (d.where.file == file_) d.source_line = source_line(source_, d.where.line);
     return d;
   }
-  Location location(Position at) const { return Location::text(file_, at.line, at.column); }
+  Location location(Position at) const {
+    Location where = file_location_;
+    where.line = at.line;
+    where.column = at.column;
+    return where;
+  }
 
   Result<ActionParams> read(const std::vector<Param>& params) const {
     return read_params(params, [this](Position at, const std::string& m) { return error(at, m); });
@@ -260,43 +393,60 @@ class Compiler {
   }
 
   Result<ScheduleNode> build(const Action& action, const Context& context) {
+    Result<Prepared> prepared = prepare(action, context);
+    if (!prepared) return prepared.error();
+    if (action.kind != Action::Kind::named) {
+      Result<ScheduleNode> node = group_node(action, *prepared);
+      if (!node) return node.error();
+      node->children.reserve(action.children.size());
+      for (const Action& child : action.children) {
+        Result<ScheduleNode> built = build(child, Context{prepared->blend, action.kind, context.depth + 1});
+        if (!built) return built.error();
+        node->children.push_back(std::move(*built));
+      }
+      return node;
+    }
+    if (const auto macro = macros_.find(action.name); macro != macros_.end() && !macro->second->expression) {
+      return instantiate(action, *macro->second, prepared->params, prepared->timing,
+                         Context{prepared->blend, Action::Kind::sequence, context.depth + 1});
+    }
+    return atomic(action, std::move(prepared->params), prepared->timing, prepared->blend.value_or(BlendMode::add),
+                  context);
+  }
+
+  // What build() does for every action before it looks at its kind: the depth and count limits,
+  // the parameters, the timing and the blend mode its children inherit.
+  Result<Prepared> prepare(const Action& action, const Context& context) {
     if (context.depth >= kMaxNestingDepth) {
       return nesting_too_deep(location(action.at), "groups (with macros expanded)", source_line(source_, action.at.line));
     }
     // Macros that use each other twice double with every level: forty lines can ask for 2^40
     // actions. Counted over the whole compilation (the macro bodies' own checks included).
     // The bound is the run limit (each action is at least one run), so a program of 10^6
-    // honest actions passes with the defaults. run() refuses most programs over it up front.
+    // honest actions passes with the defaults. Most programs over it are refused before.
     if (static_cast<double>(++actions_built_) > run_limit()) return too_many_actions(action);
     Result<ActionParams> params = read(action.params);
     if (!params) return params.error();
-    Timing timing;
-    if (params->left) timing.offset = params->left->value;
+    Prepared prepared;
+    if (params->left) prepared.timing.offset = params->left->value;
     if (params->right) {
       if (context.parent != Action::Kind::parallel) {
         return error(params->right->at, "right alignment is only allowed in a parallel, not in a sequence");
       }
-      timing.align_right = params->right->value;
+      prepared.timing.align_right = params->right->value;
     }
-    const std::optional<BlendMode> blend = params->blend_mode() ? params->blend_mode() : context.blend;
-    if (action.kind != Action::Kind::named) {
-      if (const Param* p = atomic_param(*params)) {
-        return error(p->at, "'" + p->name + "' applies to atomic actions, not to a group");
-      }
-      ScheduleNode node = ScheduleNode::group(
-          action.kind == Action::Kind::sequence ? Kind::sequence : Kind::parallel, timing,
-          location(action.at));
-      for (const Action& child : action.children) {
-        Result<ScheduleNode> built = build(child, Context{blend, action.kind, context.depth + 1});
-        if (!built) return built.error();
-        node.children.push_back(std::move(*built));
-      }
-      return node;
+    prepared.blend = params->blend_mode() ? params->blend_mode() : context.blend;
+    prepared.params = std::move(*params);
+    return prepared;
+  }
+
+  // A group's node, without its children.
+  Result<ScheduleNode> group_node(const Action& group, const Prepared& prepared) const {
+    if (const Param* p = atomic_param(prepared.params)) {
+      return error(p->at, "'" + p->name + "' applies to atomic actions, not to a group");
     }
-    if (const auto macro = macros_.find(action.name); macro != macros_.end() && !macro->second->expression) {
-      return instantiate(action, *macro->second, *params, timing, Context{blend, Action::Kind::sequence, context.depth + 1});
-    }
-    return atomic(action, *std::move(params), timing, blend.value_or(BlendMode::add), context);
+    return ScheduleNode::group(group.kind == Action::Kind::sequence ? Kind::sequence : Kind::parallel,
+                               prepared.timing, location(group.at));
   }
 
   Result<ScheduleNode> instantiate(const Action& action, const Definition& macro,
@@ -323,8 +473,9 @@ class Compiler {
   Result<ScheduleNode> atomic(const Action& action, ActionParams params, Timing timing,
                               BlendMode blend, const Context& context) {
     Leaf leaf;
-    leaf.action = &action;
+    leaf.at = action.at;
     leaf.blend = blend;
+    leaf.first_target = static_cast<std::uint32_t>(targets_.size());
     const auto expression = expressions_.find(action.name);
     if (expression != expressions_.end()) {
       leaf.expression = true;
@@ -332,14 +483,15 @@ class Compiler {
         const algebra::FacialState amplified = algebra::amplify(expression->second, params.value->value);
         for (int fap = 3; fap <= kFapCount; ++fap) {
           if (expression->second.at(fap) == 0) continue;
-          leaf.targets.push_back({std::string(find_fap(fap)->name), static_cast<double>(amplified.at(fap))});
+          targets_.push_back({name_id(find_fap(fap)->name), static_cast<double>(amplified.at(fap))});
         }
       }
-    } else if (contributions(action.name).empty()) {
+    } else if (const std::uint32_t id = name_id(action.name); contributions(id).empty()) {
       return error(action.at, unknown_parameter_message(action.name, profile_));
     } else {
-      leaf.targets.push_back({action.name, 1});
+      targets_.push_back({id, 1});
     }
+    leaf.target_count = static_cast<std::uint32_t>(targets_.size() - leaf.first_target);
     if (action.has_list) {
       if (expression != expressions_.end()) {
         return error(action.list_at, "'" + action.name + "' is an expression; fade it with <in=..., value=...>");
@@ -374,8 +526,15 @@ class Compiler {
                               "function (min, max, freq or period) or a time-value list");
     }
     leaf.curve = curve_of(leaf.shape, params);
-    check_ranges(leaf, params);
-    leaves_.push_back(std::move(leaf));
+    if (leaf.shape == Leaf::Shape::list) {
+      leaf.first_point = list_points_.size();
+      leaf.point_count = static_cast<std::uint32_t>(action.times.size());
+      for (std::size_t i = 0; i < action.times.size(); ++i) {
+        list_points_.push_back({action.times[i].value, action.values[i].value});
+      }
+    }
+    check_ranges(leaf, params, action);
+    leaves_.push_back(leaf);
     return ScheduleNode::leaf(leaves_.size() - 1, timing, location(action.at));
   }
 
@@ -434,14 +593,15 @@ class Compiler {
 
   // Values beyond what the target can carry: a warning at the number (docs/mimic.md,
   // "Timing and values").
-  void check_ranges(const Leaf& leaf, const ActionParams& params) {
+  void check_ranges(const Leaf& leaf, const ActionParams& params, const Action& action) {
     std::vector<const Number*> numbers;
     for (const std::optional<Number>* n : {&params.value, &params.min, &params.max}) {
       if (*n) numbers.push_back(&**n);
     }
 
-    for (const Number& v : leaf.action->values) numbers.push_back(&v);
-    for (const Target& target : leaf.targets) {
+    for (const Number& v : action.values) numbers.push_back(&v);
+    for (std::uint32_t t = 0; t < leaf.target_count; ++t) {
+      const Target& target = targets_[leaf.first_target + t];
       for (const FapContribution& c : contributions(target.name)) {
         const int high = c.fap <= 2 ? 63 : find_fap(c.fap)->legal_max();
         const int low = c.fap <= 2 ? 0 : -high;
@@ -452,7 +612,7 @@ class Compiler {
           if (fap_value >= low && fap_value <= high) continue;
           warnings_.push_back(make_warning(
               {"mimic.out_of_range"}, location(n->at),
-              "value " + format_number(n->value) + " of '" + target.name + "' is " +
+              "value " + format_number(n->value) + " of '" + names_[target.name] + "' is " +
                   format_number(fap_value) + " in " + std::string(find_fap(c.fap)->name) +
                   " units, outside " + std::to_string(low) + ".." + std::to_string(high) +
                   " (it will be clamped)",
@@ -467,12 +627,12 @@ class Compiler {
   Timeline lower(const Schedule& scheduled) {
     Timeline timeline;
     std::size_t clips = 0;  // at most one per occurrence and target: no growth by doubling
-    for (const Occurrence& o : scheduled.occurrences) clips += leaves_[o.leaf_id].targets.size();
+    for (const Occurrence& o : scheduled.occurrences) clips += leaves_[o.leaf_id].target_count;
     timeline.clips.reserve(clips);
     connects_.reserve(clips);
     for (const Occurrence& o : scheduled.occurrences) {
       const Leaf& leaf = leaves_[o.leaf_id];
-      for (const Target& target : leaf.targets) add_clip(timeline, leaf, target, o);
+      for (std::uint32_t t = 0; t < leaf.target_count; ++t) add_clip(timeline, leaf, targets_[leaf.first_target + t], o);
     }
     resolve_connects(timeline);
     return timeline;
@@ -480,11 +640,11 @@ class Compiler {
 
   void add_clip(Timeline& timeline, const Leaf& leaf, const Target& target, const Occurrence& o) {
     Clip clip;
-    clip.target = target.name;
+    clip.target = names_[target.name];
     clip.begin = o.begin;
     clip.end = o.end;
     clip.blend = leaf.blend;
-    clip.source = location(leaf.action->at);
+    clip.source = location(leaf.at);
     const Leaf::Curve& p = leaf.curve;
     switch (leaf.shape) {
       case Leaf::Shape::fade: {
@@ -507,13 +667,13 @@ class Compiler {
         break;
       }
       case Leaf::Shape::list: {
-        const std::vector<Number>& times = leaf.action->times;
-        if (times.empty()) return;
+        if (leaf.point_count == 0) return;
+        const auto first = list_points_.begin() + static_cast<std::ptrdiff_t>(leaf.first_point);
         // The curve starts at the first time: before it the action is absent.
-        clip.begin = o.begin + times.front().value;
-        for (std::size_t i = 0; i < times.size(); ++i) {
-          clip.curve.keys.push_back(KeyPoint{times[i].value - times.front().value,
-                                             leaf.action->values[i].value * target.factor});
+        clip.begin = o.begin + first->time;
+        clip.curve.keys.reserve(leaf.point_count);
+        for (auto point = first; point != first + leaf.point_count; ++point) {
+          clip.curve.keys.push_back(KeyPoint{point->time - first->time, point->value * target.factor});
         }
         break;
       }
@@ -562,9 +722,7 @@ class Compiler {
 
 Result<MimicProgram> compile_mimic(std::string_view source, const std::string& file_name,
                                    const MimicOptions& options) {
-  Result<mimic::Program> program = mimic::parse_program(source, file_name);
-  if (!program) return program.error();
-  return mimic::Compiler(*program, source, file_name, options).run();
+  return mimic::Compiler(source, file_name, options).run();
 }
 
 }  // namespace fapc

@@ -24,11 +24,10 @@ bool is_keyword(std::string_view name) {
 
 class Parser {
  public:
-  Parser(std::string_view source, const std::string& file)
-      : lexer_(source, file), current_(lexer_.next()), source_(source), file_(file) {}
+  Parser(std::string_view source, const std::string& file, MainSink& sink)
+      : lexer_(source, file), current_(lexer_.next()), source_(source), file_(file), sink_(sink) {}
 
-  Result<Program> program() {
-    Program program;
+  Status program(Program& program) {
     while (peek().kind == TokenKind::identifier &&
            (peek().text == "def" || peek().text == "defxpr")) {
       Result<Definition> definition = define();
@@ -44,11 +43,12 @@ class Parser {
       if (!params) return params.error();
       program.main_params = std::move(*params);
     }
-    Result<Action> group = action_group();
+    sink_.begin_main(program.definitions, program.main_params);
+    streaming_ = true;
+    Result<Action> group = action_group({});
     if (!group) return group.error();
-    program.main = std::move(*group);
     if (peek().kind != TokenKind::end_of_input) return unexpected("the end of the program after main's group");
-    return program;
+    return ok_status();
   }
 
  private:
@@ -58,6 +58,8 @@ class Parser {
   std::string_view source_;
   const std::string& file_;
   int depth_ = 0;  // groups open around the current token: the recursion is bounded by it
+  MainSink& sink_;
+  bool streaming_ = false;  // inside main: groups and named actions go to sink_, not into a tree
 
   const Token& peek() const { return current_; }
   // Consumes the current token and returns it (valid until the next call).
@@ -103,13 +105,14 @@ class Parser {
       definition.file_at = position(*file);
       return definition;
     }
-    Result<Action> group = action_group();
+    Result<Action> group = action_group({});
     if (!group) return group.error();
     definition.group = std::move(*group);
     return definition;
   }
 
-  Result<Action> action_group() {
+  // `params`: those written before the group (`< params > group`).
+  Result<Action> action_group(std::vector<Param> params) {
     const Token open = peek();  // a copy: peek() moves on
     if (open.kind != TokenKind::left_brace && open.kind != TokenKind::left_bracket) {
       return unexpected("'{' (a sequence) or '[' (a parallel)");
@@ -119,13 +122,14 @@ class Parser {
                               source_line(source_, open.line));
     }
     ++depth_;
-    Result<Action> group = group_body(open);
+    Result<Action> group = group_body(open, std::move(params));
     --depth_;
     return group;
   }
 
-  Result<Action> group_body(const Token& open) {
+  Result<Action> group_body(const Token& open, std::vector<Param> params) {
     Action group;
+    group.params = std::move(params);
     group.kind = open.kind == TokenKind::left_brace ? Action::Kind::sequence : Action::Kind::parallel;
     group.at = position(open);
     const TokenKind close =
@@ -136,6 +140,7 @@ class Parser {
                                   (group.kind == Action::Kind::sequence ? "sequence" : "parallel") +
                                   ": a group needs at least one action");
     }
+    if (streaming_) sink_.open_group(group);
     while (peek().kind != close) {
       if (peek().kind == TokenKind::end_of_input) {
         return error_at(open, std::string("this '") + (close == TokenKind::right_brace ? "{" : "[") +
@@ -143,9 +148,14 @@ class Parser {
       }
       Result<Action> child = action(close);
       if (!child) return child.error();
-      group.children.push_back(std::move(*child));
+      if (!streaming_) {
+        group.children.push_back(std::move(*child));
+      } else if (child->kind == Action::Kind::named) {
+        sink_.named_action(std::move(*child));
+      }  // else a group, already given to the sink
     }
     next();
+    if (streaming_) sink_.close_group();
     // The tree lives until the clips are made: no room kept for growth (a script holds millions).
     group.children.shrink_to_fit();
     return group;
@@ -155,13 +165,10 @@ class Parser {
     if (peek().kind == TokenKind::less) {  // < params > group
       Result<std::vector<Param>> params = parameters();
       if (!params) return params.error();
-      Result<Action> group = action_group();
-      if (!group) return group.error();
-      group->params = std::move(*params);
-      return group;
+      return action_group(std::move(*params));
     }
     if (peek().kind == TokenKind::left_brace || peek().kind == TokenKind::left_bracket) {
-      return action_group();
+      return action_group({});
     }
     Result<Token> name = expect(TokenKind::identifier, "an action (a name, '{', '[' or '<')");
     if (!name) return name.error();
@@ -256,8 +263,8 @@ class Parser {
 
 }  // namespace
 
-Result<Program> parse_program(std::string_view source, const std::string& file_name) {
-  return Parser(source, file_name).program();
+Status parse_program(std::string_view source, const std::string& file_name, Program& program, MainSink& sink) {
+  return Parser(source, file_name, sink).program(program);
 }
 
 }  // namespace fapc::mimic
