@@ -9,6 +9,7 @@
 #include <map>
 #include <set>
 #include <utility>
+#include <variant>
 #include <unordered_map>
 #include <sstream>
 
@@ -43,30 +44,35 @@ struct ListPoint {
   double value = 0;
 };
 
+// What lowering needs of a fade's parameters.
+struct Fade {
+  double in = 0, hold = 0, out = 0;
+  double value = 0;  // the value written (an expression's: unused)
+  Interpolation interpolation = Interpolation::linear;
+  // connect: the fade ends at the value of the target's next clip; connect=x: at connect_to.
+  enum class Connect : std::uint8_t { none, next, given };
+  Connect connect = Connect::none;
+  double connect_to = 0;
+};
+
+// One atomic action as lowering needs it, in under 90 bytes: a program has millions (all of
+// ActionParams is 500 bytes).
 struct Leaf {
-  enum class Shape { fade, periodic, list };
+  enum class Shape : std::uint8_t { fade, periodic, list };
   Shape shape = Shape::fade;
   // A defxpr instance: its targets' factors are already the amplified state (the fade's value
   // applied by the Algebra's amplifier), so the fade rises to the factor itself.
   bool expression = false;
   BlendMode blend = BlendMode::add;
   Position at;  // the action's, for the clips' sources
-  // Its targets: targets_[first_target, first_target + target_count) of the Compiler.
+  // Its targets: an expression's are targets_[first_target, first_target + target_count) of the
+  // Compiler; any other action has one, the name first_target, at factor 1.
   std::uint32_t first_target = 0;
   std::uint32_t target_count = 0;
   // A time-value list: list_points_[first_point, first_point + point_count) of the Compiler.
-  std::size_t first_point = 0;
+  std::uint32_t first_point = 0;
   std::uint32_t point_count = 0;
-  // What lowering needs of the action's parameters (all of ActionParams is 500 bytes a leaf).
-  struct Curve {
-    double in = 0, hold = 0, out = 0;  // fade
-    double value = 0;                  // fade: the value written (an expression's: unused)
-    Interpolation interpolation = Interpolation::linear;
-    // Fade with connect: empty inside when it ends at the next clip's value, else connect=x.
-    std::optional<std::optional<double>> connect;
-    Periodic::Shape wave = Periodic::Shape::sine;  // periodic
-    double min = 0, max = 0, period = 1;
-  } curve;
+  std::variant<std::monostate, Fade, Periodic> curve;  // by shape (a list's points are apart)
 };
 
 struct Context {
@@ -137,7 +143,7 @@ class Compiler final : public MainSink {
     if (!main) return hold(main.error(), Rank::other);
     if (main->right) return hold(error(main->right->at, "'right' needs a parallel around it; main has none"), Rank::other);
     if (const Param* p = atomic_param(*main)) {
-      return hold(error(p->at, "'" + p->name + "' applies to atomic actions, not to main"), Rank::other);
+      return hold(error(p->at, "'" + p->name() + "' applies to atomic actions, not to main"), Rank::other);
     }
     main_params_ = std::move(*main);
   }
@@ -247,9 +253,15 @@ class Compiler final : public MainSink {
   std::map<std::string, double, std::less<>> sizes_;  // per macro: its body's expanded_size()
   std::set<std::string, std::less<>> sizing_;         // macros being sized (recursion)
   bool sizing_cut_ = false;                           // a count stopped at the depth limit
-  // Per clip of the timeline being built: empty when it does not connect, else the explicit end
-  // value of `connect=x` (empty inside: take the next clip's value).
-  std::vector<std::optional<std::optional<double>>> connects_;
+  // While lowering: each clip's target name, and the clips that end with `connect`.
+  std::vector<std::uint32_t> clip_names_;
+  struct Connecting {
+    std::size_t clip = 0;
+    bool given = false;  // connect=x: end at `to`; else at the next clip's value
+    double to = 0;
+  };
+  std::vector<Connecting> connecting_;
+  static constexpr std::uint32_t kNoConnect = UINT32_MAX;
   Diagnostics warnings_;
 
   void hold(Diagnostic d, Rank rank) {
@@ -443,7 +455,7 @@ class Compiler final : public MainSink {
   // A group's node, without its children.
   Result<ScheduleNode> group_node(const Action& group, const Prepared& prepared) const {
     if (const Param* p = atomic_param(prepared.params)) {
-      return error(p->at, "'" + p->name + "' applies to atomic actions, not to a group");
+      return error(p->at, "'" + p->name() + "' applies to atomic actions, not to a group");
     }
     return ScheduleNode::group(group.kind == Action::Kind::sequence ? Kind::sequence : Kind::parallel,
                                prepared.timing, location(group.at));
@@ -453,7 +465,7 @@ class Compiler final : public MainSink {
                                    const ActionParams& params, const Timing& timing,
                                    const Context& body_context) {
     if (const Param* p = atomic_param(params)) {
-      return error(p->at, "'" + p->name + "' does not apply to '" + macro.name +
+      return error(p->at, "'" + p->name() + "' does not apply to '" + macro.name +
                               "', a macro: give it alignment and blend parameters only");
     }
     if (action.has_list) return error(action.list_at, "'" + macro.name + "' is a macro; it takes no time-value list");
@@ -475,10 +487,10 @@ class Compiler final : public MainSink {
     Leaf leaf;
     leaf.at = action.at;
     leaf.blend = blend;
-    leaf.first_target = static_cast<std::uint32_t>(targets_.size());
     const auto expression = expressions_.find(action.name);
     if (expression != expressions_.end()) {
       leaf.expression = true;
+      leaf.first_target = static_cast<std::uint32_t>(targets_.size());
       if (params.value) {
         const algebra::FacialState amplified = algebra::amplify(expression->second, params.value->value);
         for (int fap = 3; fap <= kFapCount; ++fap) {
@@ -486,18 +498,19 @@ class Compiler final : public MainSink {
           targets_.push_back({name_id(find_fap(fap)->name), static_cast<double>(amplified.at(fap))});
         }
       }
+      leaf.target_count = static_cast<std::uint32_t>(targets_.size() - leaf.first_target);
     } else if (const std::uint32_t id = name_id(action.name); contributions(id).empty()) {
       return error(action.at, unknown_parameter_message(action.name, profile_));
     } else {
-      targets_.push_back({id, 1});
+      leaf.first_target = id;
+      leaf.target_count = 1;
     }
-    leaf.target_count = static_cast<std::uint32_t>(targets_.size() - leaf.first_target);
     if (action.has_list) {
       if (expression != expressions_.end()) {
         return error(action.list_at, "'" + action.name + "' is an expression; fade it with <in=..., value=...>");
       }
       if (const Param* p = atomic_param(params)) {
-        return error(p->at, "'" + p->name + "' does not apply to a time-value list");
+        return error(p->at, "'" + p->name() + "' does not apply to a time-value list");
       }
       if (auto checked = check_list(action); !checked) return checked.error();
       leaf.shape = Leaf::Shape::list;
@@ -508,11 +521,11 @@ class Compiler final : public MainSink {
                                     params.first_fade->at.column > params.first_periodic->at.column)
                                ? params.first_fade
                                : params.first_periodic;
-      return error(later->at, "'" + later->name + "' mixes a fade (in, hold, out, value) with a "
+      return error(later->at, "'" + later->name() + "' mixes a fade (in, hold, out, value) with a "
                                                   "periodic action (min, max, freq, period, duration)");
     } else if (params.first_fade || expression != expressions_.end()) {
       if (params.first_periodic) {
-        return error(params.first_periodic->at, "'" + params.first_periodic->name + "' does not apply to an expression fade");
+        return error(params.first_periodic->at, "'" + params.first_periodic->name() + "' does not apply to an expression fade");
       }
       if (!params.value) return error(action.at, "a fade needs value=... (and in, hold, out as needed)");
       leaf.shape = Leaf::Shape::fade;
@@ -527,7 +540,8 @@ class Compiler final : public MainSink {
     }
     leaf.curve = curve_of(leaf.shape, params);
     if (leaf.shape == Leaf::Shape::list) {
-      leaf.first_point = list_points_.size();
+      if (list_points_.size() + action.times.size() > UINT32_MAX) return too_many_actions(action);
+      leaf.first_point = static_cast<std::uint32_t>(list_points_.size());
       leaf.point_count = static_cast<std::uint32_t>(action.times.size());
       for (std::size_t i = 0; i < action.times.size(); ++i) {
         list_points_.push_back({action.times[i].value, action.values[i].value});
@@ -540,22 +554,35 @@ class Compiler final : public MainSink {
 
   static double value_or_zero(const std::optional<Number>& n) { return n ? n->value : 0; }
 
-  static Leaf::Curve curve_of(Leaf::Shape shape, const ActionParams& p) {
-    Leaf::Curve curve;
+  static decltype(Leaf::curve) curve_of(Leaf::Shape shape, const ActionParams& p) {
     if (shape == Leaf::Shape::fade) {
-      curve.in = value_or_zero(p.in);
-      curve.hold = value_or_zero(p.hold);
-      curve.out = value_or_zero(p.out);
-      curve.value = value_or_zero(p.value);
-      curve.interpolation = p.interpolation();
-      if (p.connect) curve.connect = p.connect->value ? std::optional<double>(p.connect->value->value) : std::nullopt;
-    } else if (shape == Leaf::Shape::periodic) {
-      curve.wave = p.function && p.function->name == "linear" ? Periodic::Shape::triangle : Periodic::Shape::sine;
-      curve.min = value_or_zero(p.min);
-      curve.max = p.max->value;
-      curve.period = p.period ? p.period->value : 1 / p.freq->value;
+      Fade fade;
+      fade.in = value_or_zero(p.in);
+      fade.hold = value_or_zero(p.hold);
+      fade.out = value_or_zero(p.out);
+      fade.value = value_or_zero(p.value);
+      fade.interpolation = p.interpolation();
+      if (p.connect && p.connect->value) {
+        fade.connect = Fade::Connect::given;
+        fade.connect_to = p.connect->value->value;
+      } else if (p.connect) {
+        fade.connect = Fade::Connect::next;
+      }
+      return fade;
     }
-    return curve;
+    if (shape == Leaf::Shape::periodic) {
+      Periodic wave;  // unscaled: each target scales it by its factor
+      wave.shape = p.function && p.function->id == ParamName::linear ? Periodic::Shape::triangle : Periodic::Shape::sine;
+      wave.min = value_or_zero(p.min);
+      wave.max = p.max->value;
+      wave.period = p.period ? p.period->value : 1 / p.freq->value;
+      return wave;
+    }
+    return std::monostate{};
+  }
+
+  Target target(const Leaf& leaf, std::uint32_t i) const {
+    return leaf.expression ? targets_[leaf.first_target + i] : Target{leaf.first_target, 1};
   }
 
   Status check_list(const Action& action) const {
@@ -582,8 +609,8 @@ class Compiler final : public MainSink {
                                      format_number(p.period->value) + " disagree (freq x period must be 1)");
     }
     if (!p.max) return error(action.at, "a periodic action needs max=... (min defaults to 0)");
-    if (p.function && p.function->name != "sin" && p.function->name != "linear") {
-      return error(p.function->at, "a periodic action oscillates with sin or linear, not " + p.function->name);
+    if (p.function && p.function->id != ParamName::sin && p.function->id != ParamName::linear) {
+      return error(p.function->at, "a periodic action oscillates with sin or linear, not " + p.function->name());
     }
     if (!p.duration && context.parent != Action::Kind::parallel) {
       return error(action.at, "a periodic action without duration= must be in a parallel, which gives its length");
@@ -601,7 +628,7 @@ class Compiler final : public MainSink {
 
     for (const Number& v : action.values) numbers.push_back(&v);
     for (std::uint32_t t = 0; t < leaf.target_count; ++t) {
-      const Target& target = targets_[leaf.first_target + t];
+      const Target target = this->target(leaf, t);
       for (const FapContribution& c : contributions(target.name)) {
         const int high = c.fap <= 2 ? 63 : find_fap(c.fap)->legal_max();
         const int low = c.fap <= 2 ? 0 : -high;
@@ -629,10 +656,10 @@ class Compiler final : public MainSink {
     std::size_t clips = 0;  // at most one per occurrence and target: no growth by doubling
     for (const Occurrence& o : scheduled.occurrences) clips += leaves_[o.leaf_id].target_count;
     timeline.clips.reserve(clips);
-    connects_.reserve(clips);
+    clip_names_.reserve(clips);
     for (const Occurrence& o : scheduled.occurrences) {
       const Leaf& leaf = leaves_[o.leaf_id];
-      for (std::uint32_t t = 0; t < leaf.target_count; ++t) add_clip(timeline, leaf, targets_[leaf.first_target + t], o);
+      for (std::uint32_t t = 0; t < leaf.target_count; ++t) add_clip(timeline, leaf, target(leaf, t), o);
     }
     resolve_connects(timeline);
     return timeline;
@@ -645,30 +672,28 @@ class Compiler final : public MainSink {
     clip.end = o.end;
     clip.blend = leaf.blend;
     clip.source = location(leaf.at);
-    const Leaf::Curve& p = leaf.curve;
+    const Fade* fade = std::get_if<Fade>(&leaf.curve);
     switch (leaf.shape) {
       case Leaf::Shape::fade: {
-        const double in = p.in;
-        const double hold = p.hold;
-        const double out = p.out;
-        const double v = leaf.expression ? target.factor : p.value * target.factor;
-        const Interpolation f = p.interpolation;
+        const double in = fade->in;
+        const double hold = fade->hold;
+        const double out = fade->out;
+        const double v = leaf.expression ? target.factor : fade->value * target.factor;
+        const Interpolation f = fade->interpolation;
         // Rise from the neutral 0 to v, hold, fall to the end value (0 until `connect` sets it).
         clip.curve.keys = {{0, 0, f}, {in, v, Interpolation::linear}, {in + hold, v, f}, {in + hold + out, 0}};
         break;
       }
       case Leaf::Shape::periodic: {
-        Periodic wave;
-        wave.shape = p.wave;
-        wave.min = p.min * target.factor;
-        wave.max = p.max * target.factor;
-        wave.period = p.period;
+        Periodic wave = std::get<Periodic>(leaf.curve);
+        wave.min *= target.factor;
+        wave.max *= target.factor;
         clip.curve.periodic = wave;
         break;
       }
       case Leaf::Shape::list: {
         if (leaf.point_count == 0) return;
-        const auto first = list_points_.begin() + static_cast<std::ptrdiff_t>(leaf.first_point);
+        const auto first = list_points_.begin() + leaf.first_point;
         // The curve starts at the first time: before it the action is absent.
         clip.begin = o.begin + first->time;
         clip.curve.keys.reserve(leaf.point_count);
@@ -679,29 +704,47 @@ class Compiler final : public MainSink {
       }
     }
     if (clip.end <= clip.begin) return;  // nothing to contribute (zero length, or cut away)
-    timeline.clips.push_back(std::move(clip));
-    if (leaf.shape == Leaf::Shape::fade && p.connect) {
-      connects_.emplace_back(*p.connect);
-    } else {
-      connects_.emplace_back();
+    if (fade && fade->connect != Fade::Connect::none) {
+      connecting_.push_back({timeline.clips.size(), fade->connect == Fade::Connect::given, fade->connect_to});
     }
+    timeline.clips.push_back(std::move(clip));
+    clip_names_.push_back(target.name);
   }
 
   // connect: the fade ends at the value the same target's next clip (the first beginning at or
-  // after this one's end) has at its own begin; or at connect=x when given.
+  // after this one's end) has at its own begin; or at connect=x when given. Targets are taken in
+  // the order of their names, and each target's clips in the order they begin.
   void resolve_connects(Timeline& timeline) {
-    std::map<std::string, std::vector<std::size_t>> by_target;
-    for (std::size_t i = 0; i < timeline.clips.size(); ++i) by_target[timeline.clips[i].target].push_back(i);
-    for (auto& [target, indices] : by_target) {
+    if (connecting_.empty()) return;
+    std::vector<std::uint32_t> connects(timeline.clips.size(), kNoConnect);  // index into connecting_
+    std::vector<bool> wanted(names_.size(), false);
+    for (std::size_t c = 0; c < connecting_.size(); ++c) {
+      connects[connecting_[c].clip] = static_cast<std::uint32_t>(c);
+      wanted[clip_names_[connecting_[c].clip]] = true;
+    }
+    std::vector<std::vector<std::size_t>> by_target(names_.size());  // only the targets that connect
+    for (std::size_t i = 0; i < timeline.clips.size(); ++i) {
+      if (wanted[clip_names_[i]]) by_target[clip_names_[i]].push_back(i);
+    }
+    clip_names_ = {};
+    std::vector<std::uint32_t> in_name_order;
+    for (std::uint32_t id = 0; id < names_.size(); ++id) {
+      if (wanted[id]) in_name_order.push_back(id);
+    }
+    std::sort(in_name_order.begin(), in_name_order.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return names_[a] < names_[b]; });
+    for (const std::uint32_t id : in_name_order) {
+      std::vector<std::size_t>& indices = by_target[id];
       std::stable_sort(indices.begin(), indices.end(), [&](std::size_t a, std::size_t b) {
         return timeline.clips[a].begin < timeline.clips[b].begin;
       });
       for (const std::size_t i : indices) {
-        if (!connects_[i]) continue;
+        if (connects[i] == kNoConnect) continue;
+        const Connecting& connect = connecting_[connects[i]];
         Clip& clip = timeline.clips[i];
         double end_value = 0;
-        if (const std::optional<double> given = *connects_[i]) {
-          end_value = *given;
+        if (connect.given) {
+          end_value = connect.to;
         } else {
           const auto next = std::lower_bound(indices.begin(), indices.end(), clip.end, [&](std::size_t c, double t) {
             return timeline.clips[c].begin < t;
@@ -713,6 +756,7 @@ class Compiler final : public MainSink {
         }
         clip.curve.keys.back().value = end_value;
       }
+      indices = {};
     }
   }
 };

@@ -1,8 +1,5 @@
 #include "mimic_parser.hpp"
 
-#include <array>
-#include <set>
-
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/codec/nesting_limit.hpp"
 #include "mimic_lexer.hpp"
@@ -11,12 +8,9 @@ namespace fapc::mimic {
 namespace {
 
 // Mimic Table 1 (docs/mimic.md, "Grammar"): pname (no value), pname-arg (value), and
-// left/right/connect which take either form.
-const std::set<std::string, std::less<>> kWithoutValue = {"linear", "sin", "log", "exp",
-                                                          "average", "add", "overwrite"};
-const std::set<std::string, std::less<>> kWithValue = {"in", "hold", "out", "value", "duration",
-                                                       "freq", "period", "min", "max"};
-const std::set<std::string, std::less<>> kValueOptional = {"left", "right", "connect"};
+// left/right/connect which take either form (ParamName lists them in these three runs).
+bool takes_no_value(ParamName n) { return n >= ParamName::linear; }
+bool needs_value(ParamName n) { return n >= ParamName::in && n <= ParamName::max; }
 
 bool is_keyword(std::string_view name) {
   return name == "main" || name == "def" || name == "defxpr";
@@ -223,29 +217,28 @@ class Parser {
     for (;;) {
       Result<Token> name = expect(TokenKind::identifier, "a parameter name");
       if (!name) return name.error();
-      Param param{name->str(), position(*name), std::nullopt};
-      const bool known = kWithoutValue.contains(param.name) || kWithValue.contains(param.name) ||
-                         kValueOptional.contains(param.name);
-      if (!known) {
-        return error_at(*name, "unknown parameter '" + param.name +
+      const std::optional<ParamName> id = param_name(name->text);
+      if (!id) {
+        return error_at(*name, "unknown parameter '" + name->str() +
                                    "' (expected left, right, in, hold, out, value, connect, "
                                    "duration, freq, period, min, max, linear, sin, log, exp, "
                                    "average, add or overwrite)");
       }
+      Param param{*id, position(*name), std::nullopt};
       if (peek().kind == TokenKind::equals) {
-        if (kWithoutValue.contains(param.name)) {
-          return error_at(peek(), "'" + param.name + "' takes no value");
+        if (takes_no_value(param.id)) {
+          return error_at(peek(), "'" + param.name() + "' takes no value");
         }
         next();
         if (peek().kind == TokenKind::identifier) {
-          return error_at(peek(), "'" + param.name + "' takes a number, not the name '" +
+          return error_at(peek(), "'" + param.name() + "' takes a number, not the name '" +
                                       peek().str() + "'");
         }
-        Result<Token> value = expect(TokenKind::number, "a number after '" + param.name + "='");
+        Result<Token> value = expect(TokenKind::number, "a number after '" + param.name() + "='");
         if (!value) return value.error();
         param.value = Number{value->number, position(*value)};
-      } else if (kWithValue.contains(param.name)) {
-        return error_at(*name, "'" + param.name + "' needs a value ('" + param.name + "=...')");
+      } else if (needs_value(param.id)) {
+        return error_at(*name, "'" + param.name() + "' needs a value ('" + param.name() + "=...')");
       }
       params.push_back(std::move(param));
       if (peek().kind == TokenKind::comma) {
