@@ -735,9 +735,11 @@ class Compiler final : public MainSink {
               [&](std::uint32_t a, std::uint32_t b) { return names_[a] < names_[b]; });
     for (const std::uint32_t id : in_name_order) {
       std::vector<std::size_t>& indices = by_target[id];
-      std::stable_sort(indices.begin(), indices.end(), [&](std::size_t a, std::size_t b) {
-        return timeline.clips[a].begin < timeline.clips[b].begin;
-      });
+      const auto by_begin = [&](std::size_t a, std::size_t b) { return timeline.clips[a].begin < timeline.clips[b].begin; };
+      // Clips come in schedule order, mostly already by begin: sorting them again costs a merge sort.
+      if (!std::is_sorted(indices.begin(), indices.end(), by_begin)) {
+        std::stable_sort(indices.begin(), indices.end(), by_begin);
+      }
       for (const std::size_t i : indices) {
         if (connects[i] == kNoConnect) continue;
         const Connecting& connect = connecting_[connects[i]];

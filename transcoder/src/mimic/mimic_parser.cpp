@@ -53,6 +53,9 @@ class Parser {
   const std::string& file_;
   int depth_ = 0;  // groups open around the current token: the recursion is bounded by it
   MainSink& sink_;
+  // parameters() and time_value_list() collect here, then copy out exactly what they read.
+  std::vector<Param> params_read_;
+  std::vector<Number> numbers_read_;
   bool streaming_ = false;  // inside main: groups and named actions go to sink_, not into a tree
 
   const Token& peek() const { return current_; }
@@ -196,14 +199,15 @@ class Parser {
     atomic.has_list = true;
     atomic.list_at = position(next());
     for (std::vector<Number>* list : {&atomic.times, &atomic.values}) {
+      numbers_read_.clear();
       while (peek().kind == TokenKind::number) {
         const Token& t = next();
-        list->push_back(Number{t.number, position(t)});
+        numbers_read_.push_back(Number{t.number, position(t)});
       }
       const char* wanted = list == &atomic.times ? "a time or ';' ending the times"
                                                  : "a value or ';' ending the values";
       if (auto semicolon = expect(TokenKind::semicolon, wanted); !semicolon) return semicolon.error();
-      list->shrink_to_fit();
+      list->assign(numbers_read_.begin(), numbers_read_.end());
     }
     if (auto close = expect(TokenKind::right_paren, "')' closing the time-value list"); !close) {
       return close.error();
@@ -213,7 +217,8 @@ class Parser {
 
   Result<std::vector<Param>> parameters() {
     next();  // <
-    std::vector<Param> params;
+    std::vector<Param>& params = params_read_;
+    params.clear();
     for (;;) {
       Result<Token> name = expect(TokenKind::identifier, "a parameter name");
       if (!name) return name.error();
@@ -248,8 +253,8 @@ class Parser {
       if (auto close = expect(TokenKind::greater, "',' or '>' in the parameter list"); !close) {
         return close.error();
       }
-      params.shrink_to_fit();
-      return params;
+      // One allocation of the right size per list: a program has millions of them.
+      return std::vector<Param>(params.begin(), params.end());
     }
   }
 };
