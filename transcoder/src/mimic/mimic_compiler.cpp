@@ -657,10 +657,17 @@ class Compiler final : public MainSink {
     for (const Occurrence& o : scheduled.occurrences) clips += leaves_[o.leaf_id].target_count;
     timeline.clips.reserve(clips);
     clip_names_.reserve(clips);
+    // Runs come in tree order, as the leaves were made: each leaf is let go once its runs are
+    // lowered, so that the leaves shrink as the clips grow. (A Mimic leaf runs once: no repeats.)
+    const bool in_leaf_order = std::is_sorted(scheduled.occurrences.begin(), scheduled.occurrences.end(),
+                                              [](const Occurrence& a, const Occurrence& b) { return a.leaf_id < b.leaf_id; });
+    std::size_t dropped = 0;  // leaves_ starts at this leaf id
     for (const Occurrence& o : scheduled.occurrences) {
-      const Leaf& leaf = leaves_[o.leaf_id];
+      for (; in_leaf_order && dropped < o.leaf_id; ++dropped) leaves_.pop_front();
+      const Leaf& leaf = leaves_[o.leaf_id - dropped];
       for (std::uint32_t t = 0; t < leaf.target_count; ++t) add_clip(timeline, leaf, target(leaf, t), o);
     }
+    leaves_ = {};
     resolve_connects(timeline);
     return timeline;
   }
