@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <deque>
 #include <iterator>
 #include <map>
 #include <set>
@@ -14,6 +13,7 @@
 #include <sstream>
 
 #include "action_params.hpp"
+#include "chunked_vector.hpp"
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "fapc/codec/include_policy.hpp"
@@ -240,10 +240,10 @@ class Compiler final : public MainSink {
   ScheduleNode root_;
   std::map<std::string, const Definition*, std::less<>> macros_;
   std::map<std::string, algebra::FacialState, std::less<>> expressions_;
-  // Chunked, never copied as they grow: a million leaves would otherwise double through copies.
-  std::deque<Leaf> leaves_;
-  std::deque<Target> targets_;
-  std::deque<ListPoint> list_points_;
+  // In big blocks, never copied as they grow (chunked_vector.hpp).
+  ChunkedVector<Leaf> leaves_;
+  ChunkedVector<Target> targets_;
+  ChunkedVector<ListPoint> list_points_;
   // Target names, interned: each with what it writes (resolve_target), asked once per name.
   std::vector<std::string> names_;
   std::vector<std::vector<FapContribution>> name_contributions_;
@@ -269,9 +269,9 @@ class Compiler final : public MainSink {
   }
   Sizes sizes() const { return {leaves_.size(), targets_.size(), list_points_.size()}; }
   void truncate(const Sizes& keep) {
-    leaves_.resize(keep.leaves);
-    targets_.resize(keep.targets);
-    list_points_.resize(keep.points);
+    leaves_.truncate(keep.leaves);
+    targets_.truncate(keep.targets);
+    list_points_.truncate(keep.points);
   }
 
   // The interned id of a target name, with its contributions resolved once.
@@ -661,10 +661,9 @@ class Compiler final : public MainSink {
     // lowered, so that the leaves shrink as the clips grow. (A Mimic leaf runs once: no repeats.)
     const bool in_leaf_order = std::is_sorted(scheduled.occurrences.begin(), scheduled.occurrences.end(),
                                               [](const Occurrence& a, const Occurrence& b) { return a.leaf_id < b.leaf_id; });
-    std::size_t dropped = 0;  // leaves_ starts at this leaf id
     for (const Occurrence& o : scheduled.occurrences) {
-      for (; in_leaf_order && dropped < o.leaf_id; ++dropped) leaves_.pop_front();
-      const Leaf& leaf = leaves_[o.leaf_id - dropped];
+      if (in_leaf_order) leaves_.release_before(o.leaf_id);
+      const Leaf& leaf = leaves_[o.leaf_id];
       for (std::uint32_t t = 0; t < leaf.target_count; ++t) add_clip(timeline, leaf, target(leaf, t), o);
     }
     leaves_ = {};
@@ -700,12 +699,13 @@ class Compiler final : public MainSink {
       }
       case Leaf::Shape::list: {
         if (leaf.point_count == 0) return;
-        const auto first = list_points_.begin() + leaf.first_point;
+        const ListPoint& first = list_points_[leaf.first_point];
         // The curve starts at the first time: before it the action is absent.
-        clip.begin = o.begin + first->time;
+        clip.begin = o.begin + first.time;
         clip.curve.keys.reserve(leaf.point_count);
-        for (auto point = first; point != first + leaf.point_count; ++point) {
-          clip.curve.keys.push_back(KeyPoint{point->time - first->time, point->value * target.factor});
+        for (std::size_t i = leaf.first_point; i < leaf.first_point + leaf.point_count; ++i) {
+          const ListPoint& point = list_points_[i];
+          clip.curve.keys.push_back(KeyPoint{point.time - first.time, point.value * target.factor});
         }
         break;
       }
