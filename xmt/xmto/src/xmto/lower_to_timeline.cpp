@@ -34,9 +34,23 @@ void sort_by_leaf(TaggedClips& tagged) {
   bool sorted = true;
   for (std::size_t i = 1; i < n && sorted; ++i) sorted = !before(i, i - 1);
   if (sorted) return;
-  std::vector<std::size_t> order(n);  // order[i]: the clip that goes to position i
-  for (std::size_t i = 0; i < n; ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), before);
+  // order[i]: the clip that goes to position i. Leaf numbers are dense: counted into their places
+  // (stable), then each leaf's clips sorted by begin where they are not already.
+  std::size_t leaves = 0;
+  for (const std::size_t leaf : tagged.leaf) leaves = std::max(leaves, leaf + 1);
+  std::vector<std::size_t> place(leaves + 1, 0);
+  for (const std::size_t leaf : tagged.leaf) ++place[leaf + 1];
+  for (std::size_t k = 1; k <= leaves; ++k) place[k] += place[k - 1];
+  std::vector<std::size_t> order(n);
+  {
+    std::vector<std::size_t> next(place.begin(), place.end() - 1);
+    for (std::size_t i = 0; i < n; ++i) order[next[tagged.leaf[i]]++] = i;
+  }
+  for (std::size_t k = 0; k < leaves; ++k) {
+    const auto from = order.begin() + static_cast<std::ptrdiff_t>(place[k]);
+    const auto to = order.begin() + static_cast<std::ptrdiff_t>(place[k + 1]);
+    if (!std::is_sorted(from, to, before)) std::stable_sort(from, to, before);
+  }
   // Each cycle of the permutation is moved round once through one spare clip.
   for (std::size_t i = 0; i < n; ++i) {
     if (order[i] == i) continue;
