@@ -70,18 +70,22 @@ std::optional<ConvertResult> convert_script_streamed(const std::string& input,
     return result;
   }
   if (!lowered->timeline) return std::nullopt;  // not reached: a script's load keeps its timeline
-  const Timeline timeline = std::move(*lowered->timeline);
+  // Held apart so that both can go once the tape holds every frame (the second pass needs neither).
+  auto timeline = std::make_unique<Timeline>(std::move(*lowered->timeline));
+  lowered->timeline.reset();
   Result<Profile> profile = profile_for(options);
   if (!profile) {
     result.error = profile.error();
     return result;
   }
-  Result<FrameStream> stream = stream_frames(timeline, input, *profile, options);
-  if (!stream) {
-    result.error = stream.error();
+  std::optional<FrameStream> stream;
+  if (Result<FrameStream> started = stream_frames(*timeline, input, *profile, options); started) {
+    stream.emplace(std::move(*started));
+  } else {
+    result.error = started.error();
     return result;
   }
-  if (auto audio = mixed_audio(timeline, options); !audio) {
+  if (auto audio = mixed_audio(*timeline, options); !audio) {
     result.error = audio.error();
     return result;
   }
@@ -121,13 +125,19 @@ std::optional<ConvertResult> convert_script_streamed(const std::string& input,
     return result;
   }
 
-  // Pass 2: the same frames again, coded.
+  // Pass 2: the same frames again, coded. From the tape the timeline and its index are no longer
+  // needed: their memory goes to the encoder's group of frames.
+  const std::int64_t count = stream->count();
   if (encoder && !encode_error)
     if (auto status = encoder->start(stream->fps()); !status) encode_error = status.error();
+  if (wants_fba && !tape.dropped()) {
+    stream.reset();
+    timeline.reset();
+  }
   if (wants_fba && ((encoder && !encode_error) || wants_text)) {
     if (wants_text) fap.begin();
     FrameTape::Player replay = tape.play();
-    for (std::int64_t k = 0; k < stream->count(); ++k) {
+    for (std::int64_t k = 0; k < count; ++k) {
       const FapFrame frame = tape.dropped() ? stream->frame(k) : replay.next();
       if (encoder && !encode_error)
         if (auto status = encoder->add(frame); !status) encode_error = status.error();
