@@ -15,7 +15,7 @@ namespace fapc {
 class TargetName {
  public:
   TargetName() = default;  // the empty name
-  TargetName(std::string_view name) : name_(name) {}                       // NOLINT: a name is a target
+  TargetName(std::string_view name) : name_(intern(name)) {}               // NOLINT: a name is a target
   TargetName(const std::string& name) : name_(std::string_view(name)) {}  // NOLINT
   TargetName(const char* name) : name_(std::string_view(name)) {}         // NOLINT
 
@@ -38,6 +38,8 @@ class TargetName {
   friend std::string operator+(const char* a, const TargetName& b) { return a + b.str(); }
 
  private:
+  // A front end names a few targets in turn: the ones met lately are found without the table.
+  static FileName intern(std::string_view name);
   FileName name_;  // the interning: one copy per distinct string, never freed
 };
 
