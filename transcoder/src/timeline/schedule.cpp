@@ -27,16 +27,14 @@ class Scheduler {
  public:
   std::optional<ScheduleError> error;
   std::int64_t max_runs = 0;
+  std::size_t leaves = 0;  // counted by measure_tree(): as many runs as a tree without repeats has
 
   // Numbers the nodes (depth first, the root 0) and measures each: before place().
-  // Returns the number of leaves: the runs, unless something repeats.
-  std::size_t measure_tree(const ScheduleNode& root) {
-    std::size_t leaves = 0;
-    const std::size_t nodes = count(root, leaves);
+  void measure_tree(const ScheduleNode& root) {
+    const std::size_t nodes = count(root);
     measured_.assign(nodes, std::nullopt);
     size_.assign(nodes, 0);
     measure_all(root, 0);
-    return leaves;
   }
 
   // Places `node` (number `index`) with its active span starting at `start`. `limit` is the
@@ -103,10 +101,10 @@ class Scheduler {
   std::vector<OptionalSeconds> measured_;  // 8 bytes a node, not 16
   std::vector<std::size_t> size_;
 
-  static std::size_t count(const ScheduleNode& node, std::size_t& leaves) {
-    std::size_t n = 1;
+  std::size_t count(const ScheduleNode& node) {
     if (node.kind == Kind::leaf) ++leaves;
-    for (const ScheduleNode& child : node.children) n += count(child, leaves);
+    std::size_t n = 1;
+    for (const ScheduleNode& child : node.children) n += count(child);
     return n;
   }
 
@@ -362,9 +360,10 @@ std::variant<Schedule, ScheduleError> schedule_tree(const ScheduleNode& root, co
   scheduler.max_runs = options.max_runs;
   Schedule result;
   const double cut = options.root_end.value_or(kForever);
-  // A run a leaf at least: the list never grows by copying itself when nothing repeats.
-  const std::size_t leaves = scheduler.measure_tree(root);
-  result.occurrences.reserve(std::min(leaves, static_cast<std::size_t>(std::max<std::int64_t>(options.max_runs, 0))));
+  scheduler.measure_tree(root);
+  // Room for one run per leaf up front: a million runs grown by doubling held 1.5 times their
+  // size at the end, and both the old and the new block while the last copy was made.
+  result.occurrences.reserve(std::min(scheduler.leaves, static_cast<std::size_t>(std::max<std::int64_t>(options.max_runs, 0))));
   result.end = scheduler.place(root, 0, root.timing.offset, options.root_end, cut, result.occurrences);
   if (scheduler.error) return *scheduler.error;
   if (options.root_end) result.end = *options.root_end;
