@@ -101,21 +101,19 @@ FapFrame FrameTape::Player::next() {
   for (std::size_t i = 0; i < kFapCount; ++i)
     if (every_slot || frame.mask.test(i))
       frame.values[i] = static_cast<std::int32_t>(previous_.values[i] + get_signed());
+  // Each field as its difference from the previous frame's, in the order fields() lists them.
+  const auto read = [&](const auto& before) {
+    auto now = before;
+    for (std::size_t f = 0; f < now.size(); ++f) now[f] = static_cast<int>(before[f] + get_signed());
+    return now;
+  };
   if (every_slot || frame.has(1)) {
-    const VisemeFields& p = previous_.viseme;
-    frame.viseme.select1 = static_cast<int>(p.select1 + get_signed());
-    frame.viseme.select2 = static_cast<int>(p.select2 + get_signed());
-    frame.viseme.blend = static_cast<int>(p.blend + get_signed());
-    frame.viseme.def = static_cast<int>(p.def + get_signed());
+    const auto v = read(fields(previous_.viseme));
+    frame.viseme = VisemeFields{v[0], v[1], v[2], v[3]};
   }
   if (every_slot || frame.has(2)) {
-    const ExpressionFields& p = previous_.expression;
-    frame.expression.select1 = static_cast<int>(p.select1 + get_signed());
-    frame.expression.intensity1 = static_cast<int>(p.intensity1 + get_signed());
-    frame.expression.select2 = static_cast<int>(p.select2 + get_signed());
-    frame.expression.intensity2 = static_cast<int>(p.intensity2 + get_signed());
-    frame.expression.init_face = static_cast<int>(p.init_face + get_signed());
-    frame.expression.def = static_cast<int>(p.def + get_signed());
+    const auto e = read(fields(previous_.expression));
+    frame.expression = ExpressionFields{e[0], e[1], e[2], e[3], e[4], e[5]};
   }
   previous_ = frame;
   return frame;
