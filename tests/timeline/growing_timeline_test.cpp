@@ -36,11 +36,13 @@ TEST(GrowingTimeline, AgreesWithAnEvaluatorRebuiltAfterEveryAdd) {
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::shuffle(order.begin(), order.end(), rng);
 
-    GrowingTimeline growing(planned);
-    Timeline so_far;
+    std::vector<PlannedClip> plan;
+    for (const Clip& clip : planned) plan.push_back({clip.target, clip.begin});
+    Timeline so_far;  // the clips added, in add order: the growing timeline reads them there
+    GrowingTimeline growing(plan, so_far.clips);
     for (const std::size_t i : order) {
-      growing.add(i, planned[i]);
       so_far.clips.push_back(planned[i]);
+      growing.add(i, so_far.clips.size() - 1);
       const TimelineEvaluator reference(so_far);
       for (int q = 0; q <= 30; ++q) {
         const double t = q * 0.5;
@@ -54,7 +56,8 @@ TEST(GrowingTimeline, AgreesWithAnEvaluatorRebuiltAfterEveryAdd) {
 }
 
 TEST(GrowingTimeline, AnUnplannedTargetIsNeutral) {
-  GrowingTimeline growing({});
+  const std::vector<Clip> none;
+  GrowingTimeline growing({}, none);
   EXPECT_EQ(growing.value_at("open_jaw", 1), 0);
 }
 

@@ -120,7 +120,7 @@ const std::vector<OptionSpec> kOptions = {
     {"markdown", 0, "", "print the command and option tables of docs/cli.md", "help"},
     // The resource limits (docs/security.md).
     {"max-frames", 0, "N", "refuse inputs of more frames (default 1048576)", FAPC_READERS},
-    {"max-runs", 0, "N", "refuse inputs of more runs or clips (default 1000000)", FAPC_READERS},
+    {"max-runs", 0, "N", "refuse inputs of more runs or clips (default 4000000)", FAPC_READERS},
     {"max-decompressed-bytes", 0, "N", "refuse compressed inputs that inflate to more bytes (default 2^30)",
      FAPC_READERS},
     {"max-expansion", 0, "F", "refuse scripts that expand more than F times (default 100)", FAPC_READERS},

@@ -20,7 +20,7 @@ constexpr double kForever = std::numeric_limits<double>::infinity();
 
 struct GrowingTimeline::Target {
   std::vector<double> begins;          // per slot, ascending
-  std::vector<std::uint32_t> added;    // per slot: index into added_ once added
+  std::vector<std::uint32_t> added;    // per slot: the clip's index in clips_ once added
   std::vector<double> tree;            // max-tree over the slots' effective ends, leaves at [leaves, 2 leaves)
   std::size_t leaves = 1;
   std::multimap<double, std::uint32_t> frozen_by_end;  // added fill=freeze clips: end -> slot
@@ -68,7 +68,8 @@ struct GrowingTimeline::Target {
   }
 };
 
-GrowingTimeline::GrowingTimeline(const std::vector<Clip>& planned) {
+GrowingTimeline::GrowingTimeline(const std::vector<PlannedClip>& planned, const std::vector<Clip>& clips)
+    : clips_(&clips) {
   // Slots by begin within each target; ties keep the planned order (it does not matter: only
   // begins and effective ends are compared, and blending follows the add order).
   std::vector<std::uint32_t> order(planned.size());
@@ -89,7 +90,8 @@ GrowingTimeline::~GrowingTimeline() = default;
 GrowingTimeline::GrowingTimeline(GrowingTimeline&&) noexcept = default;
 GrowingTimeline& GrowingTimeline::operator=(GrowingTimeline&&) noexcept = default;
 
-void GrowingTimeline::add(std::size_t planned_index, Clip clip) {
+void GrowingTimeline::add(std::size_t planned_index, std::size_t clip_index) {
+  const Clip& clip = (*clips_)[clip_index];
   Target& target = *where_[planned_index].first;
   const std::uint32_t slot = where_[planned_index].second;
   const double begin = target.begins[slot];
@@ -111,8 +113,7 @@ void GrowingTimeline::add(std::size_t planned_index, Clip clip) {
   }
   // An empty clip (effective end <= begin) is never found active, yet cuts frozen clips.
   target.set(slot, effective_end);
-  target.added[slot] = static_cast<std::uint32_t>(added_.size());
-  added_.push_back(std::move(clip));
+  target.added[slot] = static_cast<std::uint32_t>(clip_index);
 }
 
 double GrowingTimeline::value_at(const std::string& name, double t) const {
@@ -122,7 +123,7 @@ double GrowingTimeline::value_at(const std::string& name, double t) const {
   std::vector<std::uint32_t> active;
   target.collect(1, 0, target.leaves, target.slots_beginning_by(t), t, active);
   std::sort(active.begin(), active.end());  // add order, which blending follows
-  return blend(added_, active, t, false).value;
+  return blend(*clips_, active, t, false).value;
 }
 
 }  // namespace fapc

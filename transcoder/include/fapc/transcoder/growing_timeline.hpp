@@ -21,24 +21,32 @@
 
 namespace fapc {
 
+// A clip that will be added: its target and begin are all the plan needs.
+struct PlannedClip {
+  TargetName target;
+  double begin = 0;
+};
+
 class GrowingTimeline {
  public:
-  // Every clip that will be added, by target, begin, end and fill (its curve is not read);
-  // add() later names them by their index here. Only targets in this list can be asked about.
-  explicit GrowingTimeline(const std::vector<Clip>& planned);
+  // Every clip that will be added; add() later names them by their index here. Only targets in
+  // this list can be asked about. The added clips stay in the caller's `clips` (read, not copied:
+  // the list may grow between calls, but a clip once added must keep its place and its value).
+  GrowingTimeline(const std::vector<PlannedClip>& planned, const std::vector<Clip>& clips);
   ~GrowingTimeline();
   GrowingTimeline(GrowingTimeline&&) noexcept;
   GrowingTimeline& operator=(GrowingTimeline&&) noexcept;
 
-  // Adds planned clip `planned_index` with its final curve. Add order is the timeline's order:
-  // overwrite ties between clips that begin together go to the one added later.
-  void add(std::size_t planned_index, Clip clip);
+  // Adds planned clip `planned_index`, which is clips[clip_index] with its final curve. Clips are
+  // added in the order of their indices in `clips`, the timeline's order: overwrite ties between
+  // clips that begin together go to the one added later.
+  void add(std::size_t planned_index, std::size_t clip_index);
   // The blended value of `target` at t over the clips added so far; 0 where none is active.
   double value_at(const std::string& target, double t) const;
 
  private:
   struct Target;
-  std::vector<Clip> added_;                         // in add order
+  const std::vector<Clip>* clips_;
   std::vector<std::pair<Target*, std::uint32_t>> where_;  // per planned clip: its target, its slot
   std::map<std::string, std::unique_ptr<Target>> targets_;
 };

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <set>
 #include <string_view>
@@ -15,10 +16,12 @@ namespace {
 // side: the clips then become the timeline's as they are, without a copy.
 struct TaggedClips {
   std::vector<Clip> clips;
-  std::vector<std::size_t> leaf;
+  // 32 bits hold every leaf number: a document is under 2 GiB (the XML parser's limit) and an
+  // element takes more than one byte.
+  std::vector<std::uint32_t> leaf;
   void add(std::size_t id, Clip clip) {
     clips.push_back(std::move(clip));
-    leaf.push_back(id);
+    leaf.push_back(static_cast<std::uint32_t>(id));
   }
   std::size_t size() const { return clips.size(); }
 };
@@ -38,13 +41,14 @@ void sort_by_leaf(TaggedClips& tagged) {
   // (stable), then each leaf's clips sorted by begin where they are not already.
   std::size_t leaves = 0;
   for (const std::size_t leaf : tagged.leaf) leaves = std::max(leaves, leaf + 1);
-  std::vector<std::size_t> place(leaves + 1, 0);
+  // 32-bit positions: the clips are within the runs limit (fapc caps --max-runs at 2^30).
+  std::vector<std::uint32_t> place(leaves + 1, 0);
   for (const std::size_t leaf : tagged.leaf) ++place[leaf + 1];
   for (std::size_t k = 1; k <= leaves; ++k) place[k] += place[k - 1];
-  std::vector<std::size_t> order(n);
+  std::vector<std::uint32_t> order(n);
   {
-    std::vector<std::size_t> next(place.begin(), place.end() - 1);
-    for (std::size_t i = 0; i < n; ++i) order[next[tagged.leaf[i]]++] = i;
+    std::vector<std::uint32_t> next(place.begin(), place.end() - 1);
+    for (std::size_t i = 0; i < n; ++i) order[next[tagged.leaf[i]]++] = static_cast<std::uint32_t>(i);
   }
   for (std::size_t k = 0; k < leaves; ++k) {
     const auto from = order.begin() + static_cast<std::ptrdiff_t>(place[k]);
@@ -55,18 +59,18 @@ void sort_by_leaf(TaggedClips& tagged) {
   for (std::size_t i = 0; i < n; ++i) {
     if (order[i] == i) continue;
     Clip spare = std::move(tagged.clips[i]);
-    const std::size_t spare_leaf = tagged.leaf[i];
+    const std::uint32_t spare_leaf = tagged.leaf[i];
     std::size_t at = i;
     while (order[at] != i) {
       const std::size_t from = order[at];
       tagged.clips[at] = std::move(tagged.clips[from]);
       tagged.leaf[at] = tagged.leaf[from];
-      order[at] = at;
+      order[at] = static_cast<std::uint32_t>(at);
       at = from;
     }
     tagged.clips[at] = std::move(spare);
     tagged.leaf[at] = spare_leaf;
-    order[at] = at;
+    order[at] = static_cast<std::uint32_t>(at);
   }
 }
 
@@ -116,32 +120,27 @@ void place_to_animations(const XmtoTree& tree, const std::map<std::size_t, std::
   std::set<std::string_view> targets;
   for (const std::size_t id : order) targets.insert(tree.target(tree.leaves[id]));
   // Every clip the growing timeline will hold: those placed so far, then the runs in order.
-  std::vector<Clip> planned;
+  std::vector<PlannedClip> planned;
   std::vector<std::size_t> placed;  // indices into `clips` of the planned clips placed so far
   for (std::size_t i = 0; i < clips.size(); ++i) {
     if (!targets.contains(clips.clips[i].target)) continue;
     placed.push_back(i);
-    Clip shape = clips.clips[i];
-    shape.curve = Curve{};
-    planned.push_back(std::move(shape));
+    planned.push_back({clips.clips[i].target, clips.clips[i].begin});
   }
   for (const std::size_t id : order) {
-    for (const Occurrence& run : runs.at(id)) {
-      Clip shape = animate_clip(tree, tree.leaves[id], run, 0);
-      shape.curve = Curve{};
-      planned.push_back(std::move(shape));
-    }
+    const TargetName target = tree.target(tree.leaves[id]);
+    for (const Occurrence& run : runs.at(id)) planned.push_back({target, run.begin});
   }
-  GrowingTimeline underneath(planned);
+  GrowingTimeline underneath(planned, clips.clips);
   std::size_t next = 0;
-  for (const std::size_t i : placed) underneath.add(next++, clips.clips[i]);
+  for (const std::size_t i : placed) underneath.add(next++, i);
   for (const std::size_t id : order) {
     const Leaf& leaf = tree.leaves[id];
     const std::size_t first = clips.size();
     for (const Occurrence& run : runs.at(id)) {
       clips.add(id, animate_clip(tree, leaf, run, underneath.value_at(tree.target(leaf), run.begin)));
     }
-    for (std::size_t i = first; i < clips.size(); ++i) underneath.add(next++, clips.clips[i]);
+    for (std::size_t i = first; i < clips.size(); ++i) underneath.add(next++, i);
   }
 }
 
