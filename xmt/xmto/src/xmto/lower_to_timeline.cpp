@@ -112,13 +112,15 @@ Clip animate_clip(const XmtoTree& tree, const Leaf& leaf, const Occurrence& run,
 void place_to_animations(const XmtoTree& tree, const std::map<std::size_t, std::vector<Occurrence>>& runs,
                          TaggedClips& clips) {
   if (runs.empty()) return;
-  std::vector<std::size_t> order;
-  for (const auto& [id, list] : runs) order.push_back(id);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return runs.at(a).front().begin < runs.at(b).front().begin;
-  });
+  // The elements by their first begin (stable: document order at ties), each with its runs.
+  using Element = std::map<std::size_t, std::vector<Occurrence>>::const_iterator;
+  std::vector<Element> order;
+  order.reserve(runs.size());
+  for (auto it = runs.begin(); it != runs.end(); ++it) order.push_back(it);
+  std::stable_sort(order.begin(), order.end(),
+                   [](Element a, Element b) { return a->second.front().begin < b->second.front().begin; });
   std::set<std::string_view> targets;
-  for (const std::size_t id : order) targets.insert(tree.target(tree.leaves[id]));
+  for (const Element element : order) targets.insert(tree.target(tree.leaves[element->first]));
   // Every clip the growing timeline will hold: those placed so far, then the runs in order.
   std::vector<PlannedClip> planned;
   std::vector<std::size_t> placed;  // indices into `clips` of the planned clips placed so far
@@ -127,17 +129,18 @@ void place_to_animations(const XmtoTree& tree, const std::map<std::size_t, std::
     placed.push_back(i);
     planned.push_back({clips.clips[i].target, clips.clips[i].begin});
   }
-  for (const std::size_t id : order) {
-    const TargetName target = tree.target(tree.leaves[id]);
-    for (const Occurrence& run : runs.at(id)) planned.push_back({target, run.begin});
+  for (const Element element : order) {
+    const TargetName target = tree.target(tree.leaves[element->first]);
+    for (const Occurrence& run : element->second) planned.push_back({target, run.begin});
   }
   GrowingTimeline underneath(planned, clips.clips);
   std::size_t next = 0;
   for (const std::size_t i : placed) underneath.add(next++, i);
-  for (const std::size_t id : order) {
+  for (const Element element : order) {
+    const std::size_t id = element->first;
     const Leaf& leaf = tree.leaves[id];
     const std::size_t first = clips.size();
-    for (const Occurrence& run : runs.at(id)) {
+    for (const Occurrence& run : element->second) {
       clips.add(id, animate_clip(tree, leaf, run, underneath.value_at(tree.target(leaf), run.begin)));
     }
     for (std::size_t i = first; i < clips.size(); ++i) underneath.add(next++, i);
