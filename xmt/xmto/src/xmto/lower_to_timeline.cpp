@@ -1,6 +1,6 @@
 #include <algorithm>
 #include <cstdint>
-#include <map>
+#include <span>
 #include <set>
 #include <string_view>
 
@@ -109,18 +109,25 @@ Clip animate_clip(const XmtoTree& tree, const Leaf& leaf, const Occurrence& run,
 // element sees the clips placed before it (to-animations of earlier elements included), not its
 // own runs. One GrowingTimeline over the targets that have to-animations answers every run in
 // O(log n) instead of an evaluator built per element over all its target's clips.
-void place_to_animations(const XmtoTree& tree, const std::map<std::size_t, std::vector<Occurrence>>& runs,
-                         TaggedClips& clips) {
-  if (runs.empty()) return;
-  // The elements by their first begin (stable: document order at ties), each with its runs.
-  using Element = std::map<std::size_t, std::vector<Occurrence>>::const_iterator;
+void place_to_animations(const XmtoTree& tree, const std::vector<Occurrence>& runs_in_schedule,
+                         std::vector<std::size_t> to_runs, TaggedClips& clips) {
+  if (to_runs.empty()) return;
+  // `to_runs` (indices of the schedule's runs, in its order) grouped by element, each element's
+  // runs kept in order; then the elements by their first begin (stable: document order at ties).
+  const auto run = [&](std::size_t k) -> const Occurrence& { return runs_in_schedule[k]; };
+  std::stable_sort(to_runs.begin(), to_runs.end(),
+                   [&](std::size_t a, std::size_t b) { return run(a).leaf_id < run(b).leaf_id; });
+  using Element = std::span<const std::size_t>;
   std::vector<Element> order;
-  order.reserve(runs.size());
-  for (auto it = runs.begin(); it != runs.end(); ++it) order.push_back(it);
+  for (std::size_t from = 0, to = 0; from < to_runs.size(); from = to) {
+    while (to < to_runs.size() && run(to_runs[to]).leaf_id == run(to_runs[from]).leaf_id) ++to;
+    order.push_back(Element(to_runs).subspan(from, to - from));
+  }
   std::stable_sort(order.begin(), order.end(),
-                   [](Element a, Element b) { return a->second.front().begin < b->second.front().begin; });
+                   [&](Element a, Element b) { return run(a.front()).begin < run(b.front()).begin; });
+  const auto leaf_of = [&](Element element) { return run(element.front()).leaf_id; };
   std::set<std::string_view> targets;
-  for (const Element element : order) targets.insert(tree.target(tree.leaves[element->first]));
+  for (const Element element : order) targets.insert(tree.target(tree.leaves[leaf_of(element)]));
   // Every clip the growing timeline will hold: those placed so far, then the runs in order.
   std::vector<PlannedClip> planned;
   std::vector<std::size_t> placed;  // indices into `clips` of the planned clips placed so far
@@ -130,18 +137,18 @@ void place_to_animations(const XmtoTree& tree, const std::map<std::size_t, std::
     planned.push_back({clips.clips[i].target, clips.clips[i].begin});
   }
   for (const Element element : order) {
-    const TargetName target = tree.target(tree.leaves[element->first]);
-    for (const Occurrence& run : element->second) planned.push_back({target, run.begin});
+    const TargetName target = tree.target(tree.leaves[leaf_of(element)]);
+    for (const std::size_t k : element) planned.push_back({target, run(k).begin});
   }
   GrowingTimeline underneath(planned, clips.clips);
   std::size_t next = 0;
   for (const std::size_t i : placed) underneath.add(next++, i);
   for (const Element element : order) {
-    const std::size_t id = element->first;
+    const std::size_t id = leaf_of(element);
     const Leaf& leaf = tree.leaves[id];
     const std::size_t first = clips.size();
-    for (const Occurrence& run : element->second) {
-      clips.add(id, animate_clip(tree, leaf, run, underneath.value_at(tree.target(leaf), run.begin)));
+    for (const std::size_t k : element) {
+      clips.add(id, animate_clip(tree, leaf, run(k), underneath.value_at(tree.target(leaf), run(k).begin)));
     }
     for (std::size_t i = first; i < clips.size(); ++i) underneath.add(next++, i);
   }
@@ -154,7 +161,7 @@ Timeline lower_to_timeline(const XmtoTree& tree, const Schedule& schedule) {
   clips.clips.reserve(schedule.occurrences.size());
   clips.leaf.reserve(schedule.occurrences.size());
   std::vector<AudioClip> audio;
-  std::map<std::size_t, std::vector<Occurrence>> to_runs;
+  std::vector<std::size_t> to_runs;  // indices of the to-animations' runs
   for (const Occurrence& run : schedule.occurrences) {
     // A run cut to nothing (its parent ended first) contributes nothing, frozen or not.
     if (run.end <= run.begin) continue;
@@ -162,12 +169,12 @@ Timeline lower_to_timeline(const XmtoTree& tree, const Schedule& schedule) {
     if (leaf.included) {
       place_included(leaf, run.leaf_id, run, clips, audio);
     } else if (leaf.function.to_animation) {
-      to_runs[run.leaf_id].push_back(run);
+      to_runs.push_back(static_cast<std::size_t>(&run - schedule.occurrences.data()));
     } else {
       clips.add(run.leaf_id, animate_clip(tree, leaf, run, 0));
     }
   }
-  place_to_animations(tree, to_runs, clips);
+  place_to_animations(tree, schedule.occurrences, std::move(to_runs), clips);
   // Document order of the elements, then time: the order overwrite ties are decided by. Runs come
   // in that order unless groups repeat or to-animations were placed.
   sort_by_leaf(clips);
