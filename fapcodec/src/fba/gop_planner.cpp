@@ -9,7 +9,7 @@ namespace fapc::fba {
 
 namespace {
 
-std::array<int, kCodedFieldCount> coded_fields(const FapFrame& f) {
+std::array<int, kCodedFieldCount> coded_fields(const FrameWindow::View& f) {
   return {f.viseme.select1,     f.viseme.select2,        f.viseme.blend,
           f.expression.select1, f.expression.intensity1, f.expression.select2,
           f.expression.intensity2};
@@ -39,7 +39,7 @@ LevelOptions level_options(std::int64_t value, std::int64_t step, std::int64_t l
 
 }  // namespace
 
-GopPlanner::GopPlanner(const std::vector<FapFrame>& window, const FbaEncodeOptions& options)
+GopPlanner::GopPlanner(const FrameWindow& window, const FbaEncodeOptions& options)
     : frames_(window), options_(options) {
   quant_.fap_quant = options.quant;
   limit_ = kMaxRangeValue * kRangeDelta / quant_.range_scaler();
@@ -57,7 +57,7 @@ void GopPlanner::nearest_levels(std::size_t k, const Gop& gop, std::vector<std::
 }
 
 Status GopPlanner::check_intra(const Gop& gop) const {
-  const FapFrame& frame = frames_[gop.first];
+  const FrameWindow::View frame = frames_[gop.first];
   for (std::size_t j = 0; j < gop.faps.size(); ++j) {
     if (within(nearest_[j])) continue;
     const int fap = gop.faps[j];
