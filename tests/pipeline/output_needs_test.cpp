@@ -137,25 +137,13 @@ TEST(OutputNeeds, CurveOutputsOfScriptsMatchTheWholeLoad) {
         EXPECT_TRUE(result.loaded.frames.frames.empty());  // rendered, not held
         failing += expected.error.has_value();
         warned += !expected.warnings.empty();
-        if (expected.error) {
-          ASSERT_FALSE(result.ok());
-          EXPECT_EQ(format_diagnostic(*result.error), format_diagnostic(*expected.error));
-          EXPECT_EQ(result.error->kind, expected.error->kind);
-        } else {
-          ASSERT_TRUE(result.ok()) << format_diagnostic(*result.error);
-          ASSERT_TRUE(whole);
+        test::expect_as_loaded(result, expected, outputs);
+        if (!expected.error && whole) {
           const pipeline::FramesSeen seen = seen_in(whole->frames);
           EXPECT_EQ(result.frames.count, seen.count);
           EXPECT_EQ(result.frames.fps, seen.fps);
           EXPECT_EQ(result.frames.faps, seen.faps);
           EXPECT_EQ(result.frames.duration_seconds(), whole->frames.duration_seconds());
-        }
-        ASSERT_EQ(result.warnings.size(), expected.warnings.size());
-        for (std::size_t w = 0; w < expected.warnings.size(); ++w)
-          EXPECT_EQ(format_diagnostic(result.warnings[w]), format_diagnostic(expected.warnings[w]));
-        for (std::size_t i = 0; i < outputs.size(); ++i) {
-          if (i < expected.bytes.size()) EXPECT_EQ(test::read_text(outputs[i].path), expected.bytes[i]) << outputs[i].path;
-          else EXPECT_FALSE(fs::exists(outputs[i].path)) << outputs[i].path;
         }
       }
     }
