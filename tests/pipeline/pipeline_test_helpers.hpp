@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "fapc/pipeline/convert.hpp"
+#include "support/test_support.hpp"
 
 namespace fapc::test {
 
@@ -68,6 +69,26 @@ inline LoadedWay load_then_write(const std::string& input, const std::vector<pip
     out.bytes.push_back(*bytes);
   }
   return out;
+}
+
+// A conversion's result against the usual way's: the same error (message and kind), the same
+// warnings, and each output written with the usual bytes or, after the error, not at all.
+inline void expect_as_loaded(const pipeline::ConvertResult& result, const LoadedWay& expected,
+                             const std::vector<pipeline::OutputRequest>& outputs) {
+  if (expected.error) {
+    ASSERT_FALSE(result.ok());
+    EXPECT_EQ(format_diagnostic(*result.error), format_diagnostic(*expected.error));
+    EXPECT_EQ(result.error->kind, expected.error->kind);
+  } else {
+    ASSERT_TRUE(result.ok()) << format_diagnostic(*result.error);
+  }
+  ASSERT_EQ(result.warnings.size(), expected.warnings.size());
+  for (std::size_t w = 0; w < expected.warnings.size(); ++w)
+    EXPECT_EQ(format_diagnostic(result.warnings[w]), format_diagnostic(expected.warnings[w]));
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    if (i < expected.bytes.size()) EXPECT_EQ(read_text(outputs[i].path), expected.bytes[i]) << outputs[i].path;
+    else EXPECT_FALSE(std::filesystem::exists(outputs[i].path)) << outputs[i].path;
+  }
 }
 
 }  // namespace fapc::test

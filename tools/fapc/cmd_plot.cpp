@@ -7,6 +7,7 @@
 #include "fapc/codec/file_io.hpp"
 #include "fapc/commands.hpp"
 #include "fapc/options.hpp"
+#include "fapc/pipeline/convert.hpp"
 #include "fapc/pipeline/plot.hpp"
 #include "fapc/pipeline/registry.hpp"
 #include "fapc/report.hpp"
@@ -32,6 +33,10 @@ int run_plot(const std::vector<std::string>& argv) {
   StandardInputCopy copy;
   if (const auto error = resolve_input(args, input, options, copy)) return usage_error("plot", *error);
 
+  // A .csv is the frames as a table; the other plots draw a script's curves, or the frames of an
+  // input without a timeline (which always has them).
+  options.curves = kind != pipeline::PlotKind::csv;
+  options.frames = kind == pipeline::PlotKind::csv;
   Result<pipeline::Loaded> loaded = pipeline::load(input, options);
   if (!loaded) return report_outcome({}, loaded.error());
   report_all(loaded->warnings);
@@ -46,7 +51,7 @@ int run_plot(const std::vector<std::string>& argv) {
   if (!plot) return report_outcome({}, plot.error());
   if (verbosity() != Verbosity::quiet)
     for (const std::string& note : plot->notes) std::cerr << "fapc plot: note: " << note << '\n';
-  tell("read " + named + " (" + std::to_string(loaded->frames.frames.size()) + " frames); plot for " + *output);
+  tell("read " + named + " (" + std::to_string(pipeline::frames_seen(*loaded).count) + " frames); plot for " + *output);
   if (*output == "-") return write_standard_output(plot->bytes) ? kExitOk : kExitBadInput;
   if (auto written = write_file_atomic(*output, plot->bytes); !written) return report_outcome({}, written.error());
   return kExitOk;

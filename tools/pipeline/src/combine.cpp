@@ -55,6 +55,8 @@ Result<algebra::Value> evaluate_combination(const std::string& expression,
   if (!profile) return profile.error();
   ConvertOptions operands = options;  // operands are frames, whoever asks for the combination
   operands.render = true;
+  operands.frames = true;   // whatever the outputs of the combination read
+  operands.curves = false;  // an operand's curves are never read
   operands.facts = false;
   const auto load_file = [&](const std::string& name, int column) -> Result<algebra::Value> {
     const Location where = Location::text("<expression>", 1, column);

@@ -30,6 +30,15 @@ Result<const OutputFormat*> writer_for(const OutputRequest& request) {
                         (extension.empty() ? std::string() : did_you_mean(extension, extensions)));
 }
 
+FramesSeen frames_seen(const Loaded& loaded) {
+  if (loaded.frames_not_kept) return *loaded.frames_not_kept;
+  const FapSequence& sequence = loaded.frames;
+  FramesSeen seen{sequence.frames.size(), sequence.fps, {}, {}};
+  for (const FapFrame& frame : sequence.frames) seen.faps |= frame.mask;
+  if (!sequence.frames.empty()) seen.last_number = sequence.frames.back().number;
+  return seen;
+}
+
 Result<std::string> render_output(const Loaded& loaded, const OutputRequest& request, const ConvertOptions& options) {
   auto writer = writer_for(request);
   if (!writer) return writer.error();
@@ -74,18 +83,12 @@ std::optional<Diagnostic> find_writers(const std::vector<OutputRequest>& outputs
   return std::nullopt;
 }
 
-ConvertResult::FramesSeen frames_seen(const FapSequence& sequence) {
-  ConvertResult::FramesSeen seen{sequence.frames.size(), sequence.fps, {}};
-  for (const FapFrame& frame : sequence.frames) seen.faps |= frame.mask;
-  return seen;
-}
-
 }  // namespace
 
 ConvertResult write_outputs(Loaded loaded, const std::vector<OutputRequest>& outputs, const ConvertOptions& options) {
   ConvertResult result;
   result.loaded = std::move(loaded);
-  result.frames = frames_seen(result.loaded.frames);
+  result.frames = frames_seen(result.loaded);
   std::vector<const OutputFormat*> writers;
   if ((result.error = find_writers(outputs, writers))) return result;
   write_all(result, writers, outputs, options);
@@ -102,15 +105,18 @@ ConvertResult convert(const std::string& input, const std::vector<OutputRequest>
   if (auto streamed = convert_script_streamed(input, outputs, writers, options)) return std::move(*streamed);
   if (options.progress) options.progress("reading " + input, 0, static_cast<std::int64_t>(outputs.size()) + 1);
   // Curves only when a writer reads them (the curves JSON, the plots): half of a script's compile.
+  // A script's frames are kept only when a writer reads them; else they are rendered and dropped,
+  // one at a time, for their warnings and the summary.
   ConvertOptions load_options = options;
   load_options.curves = std::any_of(writers.begin(), writers.end(), [](const OutputFormat* w) { return w->uses_curves; });
+  load_options.frames = std::any_of(writers.begin(), writers.end(), [](const OutputFormat* w) { return w->uses_frames; });
   auto loaded = load(input, load_options);
   if (!loaded) {
     result.error = loaded.error();
     return result;
   }
   result.loaded = std::move(*loaded);
-  result.frames = frames_seen(result.loaded.frames);
+  result.frames = frames_seen(result.loaded);
   result.warnings = result.loaded.warnings;
   if (options.strict && !result.warnings.empty()) {
     result.error = strict_error(input, result.warnings.size());

@@ -71,13 +71,12 @@ json batch_report_json(const std::vector<BatchJob>& jobs, const std::vector<Batc
     job["outputs"] = outputs;
     job["written"] = o.result.written;
     if (o.ran && o.result.ok()) {
-      const FapSequence& seq = o.result.loaded.frames;
-      std::bitset<kFapCount> used;
-      for (const FapFrame& f : seq.frames) used |= f.mask;
-      job["frames"] = seq.frames.size();
-      job["fps"] = seq.fps;
-      job["duration"] = seq.duration_seconds();
-      job["faps_used"] = used.count();
+      // result.frames, not result.loaded: streamed conversions and curve outputs hold no frames.
+      const FramesSeen& seen = o.result.frames;
+      job["frames"] = seen.count;
+      job["fps"] = seen.fps;
+      job["duration"] = seen.duration_seconds();
+      job["faps_used"] = seen.faps.count();
     }
     job["error"] = o.result.error ? diagnostic_json(*o.result.error) : json(nullptr);
     job["warnings"] = diagnostics_json(o.result.warnings);

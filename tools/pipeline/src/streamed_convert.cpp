@@ -233,7 +233,7 @@ bool take_facts(ConvertResult& result, const Result<SourceFacts>& read, const st
   result.loaded.frames.name = facts.name;
   result.loaded.frames.fps = facts.fps;
   result.loaded.warnings = facts.warnings;
-  result.frames = {facts.frames, facts.fps, faps};
+  result.frames = {facts.frames, facts.fps, faps, facts.last_number};
   if (options.strict && !result.warnings.empty()) {
     result.error = strict_error(input, result.warnings.size());
     return false;

@@ -41,6 +41,25 @@ Result<std::optional<AudioTrack>> mixed_audio(const Timeline& timeline, const Co
   return mix_audio(timeline.audio, static_cast<double>(options.limits.max_frames) / options.fps);
 }
 
+namespace {
+
+// render_frames without its frames: the same stream, so the same checks, errors and warnings,
+// each frame counted and dropped. What the summary needs (count, FAPs used) goes to `seen`.
+Result<Rendered> render_not_kept(const Timeline& timeline, const RenderOptions& options, FramesSeen& seen) {
+  Result<FrameStream> stream = FrameStream::start(timeline, options);
+  if (!stream) return stream.error();
+  Rendered out;
+  out.frames.name = stream->name();
+  out.frames.fps = stream->fps();
+  seen.count = static_cast<std::size_t>(stream->count());
+  seen.fps = stream->fps();
+  for (std::int64_t k = 0; k < stream->count(); ++k) seen.faps |= stream->frame(k).mask;
+  out.warnings = stream->warnings();
+  return out;
+}
+
+}  // namespace
+
 Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
                                     const Profile& profile, const ConvertOptions& options,
                                     Diagnostics warnings, nlohmann::ordered_json facts) {
@@ -55,13 +74,16 @@ Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
     loaded.facts = std::move(facts);
     return loaded;
   }
-  Result<Rendered> rendered = render_frames(timeline, render_options_for(name, profile, options));
+  const RenderOptions render = render_options_for(name, profile, options);
+  FramesSeen seen;
+  Result<Rendered> rendered = options.frames ? render_frames(timeline, render) : render_not_kept(timeline, render, seen);
   if (!rendered) return named_after(rendered.error(), name);
   Result<std::optional<AudioTrack>> audio = mixed_audio(timeline, options);
   if (!audio) return audio.error();
   Loaded loaded;
   loaded.audio = std::move(*audio);
   loaded.frames = std::move(rendered->frames);
+  if (!options.frames) loaded.frames_not_kept = seen;
   if (options.curves) loaded.curves = render_curves(timeline, CurveOptions{options.fps, 1e-6});
   loaded.timeline = std::move(timeline);
   loaded.warnings = std::move(warnings);

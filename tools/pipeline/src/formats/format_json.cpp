@@ -15,6 +15,8 @@ Result<std::string> write_curves_json(const Loaded& loaded, const std::string&, 
 
 }  // namespace
 
-OutputFormat curves_json_output() { return {"json", {".json"}, write_curves_json, true}; }
+OutputFormat curves_json_output() {
+  return {"json", {".json"}, write_curves_json, /*uses_curves=*/true, /*uses_frames=*/false};
+}
 
 }  // namespace fapc::pipeline::builtin

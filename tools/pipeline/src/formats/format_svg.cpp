@@ -9,7 +9,10 @@ namespace fapc::pipeline::builtin {
 
 namespace {
 
+// A .csv is the frames as a table (plot/csv.cpp); .svg and .pdf draw a script's curves, or the
+// frames of an input without a timeline (plot/figure.cpp).
 OutputFormat plot_output(std::string kind, std::string extension, PlotKind plot_kind) {
+  const bool reads_frames = plot_kind == PlotKind::csv;
   return {std::move(kind), {std::move(extension)},
           [plot_kind](const Loaded& loaded, const std::string& path, const ConvertOptions&) -> Result<std::string> {
             PlotOptions options;
@@ -18,7 +21,7 @@ OutputFormat plot_output(std::string kind, std::string extension, PlotKind plot_
             if (!plot) return plot.error();
             return std::move(plot->bytes);
           },
-          /*uses_curves=*/true};
+          /*uses_curves=*/!reads_frames, /*uses_frames=*/reads_frames};
 }
 
 }  // namespace

@@ -16,6 +16,8 @@ Result<std::string> write_timeline(const Loaded& loaded, const std::string& path
 
 }  // namespace
 
-OutputFormat timeline_output() { return {"timeline", {".timeline"}, write_timeline}; }
+OutputFormat timeline_output() {
+  return {"timeline", {".timeline"}, write_timeline, /*uses_curves=*/false, /*uses_frames=*/false};
+}
 
 }  // namespace fapc::pipeline::builtin

@@ -18,6 +18,6 @@ Result<std::string> write_wav(const Loaded& loaded, const std::string& path, con
 
 }  // namespace
 
-OutputFormat wav_output() { return {"wav", {".wav"}, write_wav}; }
+OutputFormat wav_output() { return {"wav", {".wav"}, write_wav, /*uses_curves=*/false, /*uses_frames=*/false}; }
 
 }  // namespace fapc::pipeline::builtin

@@ -22,15 +22,15 @@ struct ConvertResult {
   std::optional<Diagnostic> error;   // the first error; outputs after it were not written
   std::vector<std::string> written;  // the files written, in request order
   std::string standard_output;       // the bytes of a "-" output
-  // What the frames were, for summaries, also when they went through without being held
-  // (a long .fap streamed to .fba and .fap, in which case loaded.frames has none).
-  struct FramesSeen {
-    std::size_t count = 0;
-    int fps = 25;
-    std::bitset<kFapCount> faps;  // used by any frame
-  } frames;
+  // What the frames were, for summaries, also when they went through without being held (a long
+  // .fap streamed to .fba and .fap, a script compiled to curve outputs only: loaded.frames has none).
+  using FramesSeen = pipeline::FramesSeen;
+  FramesSeen frames;
   bool ok() const { return !error; }
 };
+
+// What `loaded`'s frames were, whether it holds them or not (Loaded::frames_not_kept).
+FramesSeen frames_seen(const Loaded& loaded);
 
 // The writer for a request, or an error (unsupported) naming the known output kinds.
 Result<const OutputFormat*> writer_for(const OutputRequest& request);

@@ -62,6 +62,10 @@ struct ConvertOptions {
   // false: timeline inputs leave Loaded::curves empty. convert() sets it from its outputs
   // (OutputFormat::uses_curves): curves cost as much as the frames and most outputs never read them.
   bool curves = true;
+  // false: timeline inputs render their frames without keeping them, for their warnings, errors
+  // and summary (Loaded::frames_not_kept). convert() sets it from its outputs
+  // (OutputFormat::uses_frames): the curves JSON and the plots of a script read its curves.
+  bool frames = true;
 };
 
 }  // namespace fapc::pipeline

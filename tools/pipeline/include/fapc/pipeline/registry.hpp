@@ -29,6 +29,10 @@ struct OutputFormat {
   // The writer reads Loaded::curves (a script's own curves): convert() has them computed only
   // when some output does (ConvertOptions::curves).
   bool uses_curves = false;
+  // The writer reads Loaded::frames even when the input is a timeline. When no output does,
+  // convert() renders a script's frames without keeping them (ConvertOptions::frames). Writers
+  // of curves read the frames only of inputs without a timeline, which always have them.
+  bool uses_frames = true;
   std::string carries{};               // what a file of this kind holds, for `fapc formats`
   std::vector<std::string> options{};  // the command-line options that change what is written
 };
