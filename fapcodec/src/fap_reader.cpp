@@ -483,7 +483,7 @@ Result<FapReadResult> Reader::run() {
       expect = Expect::values;
       continue;
     }
-    if (expect == Expect::mask && fapfile::scan_integers(raw.text, integers) && integers.count == 68 &&
+    if (expect == Expect::mask && fapfile::scan_integers(raw.text, integers, lines_.text_end()) && integers.count == 68 &&
         integers.bits) {
       mask.reset();
       for (std::size_t i = 0; i < kFapCount; ++i) mask[i] = integers.values[i] != 0;
@@ -492,7 +492,7 @@ Result<FapReadResult> Reader::run() {
       expect = Expect::values;
       continue;
     }
-    if (expect == Expect::values && !scaled_values && fapfile::scan_integers(raw.text, integers) &&
+    if (expect == Expect::values && !scaled_values && fapfile::scan_integers(raw.text, integers, lines_.text_end()) &&
         read_plain_values(integers, mask, plain)) {
       note_layout(integers);
       if (auto e = deliver(plain, raw.number)) return *e;
