@@ -141,7 +141,8 @@ Status FbaEncoder::add(const FapFrame& frame) {
   if (s.masks && !s.fitter) s.fitter.emplace(std::move(*s.masks).finish());
   if (s.added == 0) s.writer->reserve(s.checked);  // a plane a frame
   ++s.added;
-  s.window.push_back(s.fitter ? s.fitter->fit(frame) : frame);
+  FapFrame& coded = s.window.emplace_back(frame);
+  if (s.fitter) s.fitter->fit(coded);
   return s.write_groups(false);
 }
 
