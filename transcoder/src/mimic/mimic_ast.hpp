@@ -1,8 +1,10 @@
 // Private: the Mimic program as parsed (Mimic Table 1), before any checking beyond the grammar.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fapc::mimic {
@@ -17,10 +19,21 @@ struct Number {
   Position at;
 };
 
+// The pname / pname-arg keywords of Mimic Table 1, as a byte: a program has millions of them.
+enum class ParamName : std::uint8_t {
+  left, right, connect,                                      // a value or none
+  in, hold, out, value, duration, freq, period, min, max,    // a value
+  linear, sin, log, exp, average, add, overwrite,            // no value
+};
+std::string_view to_string(ParamName name);
+std::optional<ParamName> param_name(std::string_view text);  // empty: not a parameter
+
 struct Param {
-  std::string name;  // one of the pname / pname-arg keywords
+  ParamName id = ParamName::left;
   Position at;
   std::optional<Number> value;  // `name = 3.5`
+
+  std::string name() const { return std::string(to_string(id)); }
 };
 
 struct Action {
@@ -47,10 +60,10 @@ struct Definition {
   Position file_at;
 };
 
+// What the parser keeps: main's own actions go to a MainSink as they are read (mimic_parser.hpp).
 struct Program {
   std::vector<Definition> definitions;
   std::vector<Param> main_params;
-  Action main;
 };
 
 }  // namespace fapc::mimic

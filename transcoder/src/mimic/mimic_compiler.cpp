@@ -3,13 +3,17 @@
 // actions to clips; `connect` is resolved last, once every clip has its place.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <iterator>
 #include <map>
 #include <set>
 #include <utility>
+#include <variant>
 #include <unordered_map>
 #include <sstream>
 
 #include "action_params.hpp"
+#include "chunked_vector.hpp"
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "fapc/codec/include_policy.hpp"
@@ -31,29 +35,44 @@ using Kind = ScheduleNode::Kind;
 // second is 28800), and small enough to refuse within a second (an action costs a few µs).
 
 struct Target {
-  std::string name;
-  double factor = 1;  // a defxpr entry's value: the amplifier applied to the fade's value
+  std::uint32_t name = 0;  // an index into Compiler::names_: a script names few targets
+  double factor = 1;       // a defxpr entry's value: the amplifier applied to the fade's value
 };
 
+struct ListPoint {
+  double time = 0;
+  double value = 0;
+};
+
+// What lowering needs of a fade's parameters.
+struct Fade {
+  double in = 0, hold = 0, out = 0;
+  double value = 0;  // the value written (an expression's: unused)
+  Interpolation interpolation = Interpolation::linear;
+  // connect: the fade ends at the value of the target's next clip; connect=x: at connect_to.
+  enum class Connect : std::uint8_t { none, next, given };
+  Connect connect = Connect::none;
+  double connect_to = 0;
+};
+
+// One atomic action as lowering needs it, in under 90 bytes: a program has millions (all of
+// ActionParams is 500 bytes).
 struct Leaf {
-  enum class Shape { fade, periodic, list };
+  enum class Shape : std::uint8_t { fade, periodic, list };
   Shape shape = Shape::fade;
   // A defxpr instance: its targets' factors are already the amplified state (the fade's value
   // applied by the Algebra's amplifier), so the fade rises to the factor itself.
   bool expression = false;
-  std::vector<Target> targets;
-  // What lowering needs of the action's parameters (all of ActionParams is 500 bytes a leaf).
-  struct Curve {
-    double in = 0, hold = 0, out = 0;  // fade
-    double value = 0;                  // fade: the value written (an expression's: unused)
-    Interpolation interpolation = Interpolation::linear;
-    // Fade with connect: empty inside when it ends at the next clip's value, else connect=x.
-    std::optional<std::optional<double>> connect;
-    Periodic::Shape wave = Periodic::Shape::sine;  // periodic
-    double min = 0, max = 0, period = 1;
-  } curve;
-  const Action* action = nullptr;
   BlendMode blend = BlendMode::add;
+  Position at;  // the action's, for the clips' sources
+  // Its targets: an expression's are targets_[first_target, first_target + target_count) of the
+  // Compiler; any other action has one, the name first_target, at factor 1.
+  std::uint32_t first_target = 0;
+  std::uint32_t target_count = 0;
+  // A time-value list: list_points_[first_point, first_point + point_count) of the Compiler.
+  std::uint32_t first_point = 0;
+  std::uint32_t point_count = 0;
+  std::variant<std::monostate, Fade, Periodic> curve;  // by shape (a list's points are apart)
 };
 
 struct Context {
@@ -70,74 +89,201 @@ std::string format_number(double v) {
   return out.str();
 }
 
-class Compiler {
+// Compiles while the parser reads: main's actions arrive one at a time (MainSink) and become
+// schedule nodes at once, so that no tree of main's actions is ever held. The errors are those a
+// compiler of the whole parsed program would give: a syntax error anywhere first, then (by rank)
+// the definitions', a macro too big, main too big, and the first of the others in source order.
+class Compiler final : public MainSink {
  public:
-  Compiler(const Program& program, std::string_view source, const std::string& file,
-           const MimicOptions& options)
-      : program_(program),
-        source_(source),
+  Compiler(std::string_view source, const std::string& file, const MimicOptions& options)
+      : source_(source),
         file_(file),
+        file_location_(Location::text(file, 0, 0)),
         options_(options),
         profile_(options.profile ? *options.profile : default_profile()) {}
 
   Result<MimicProgram> run() {
-    if (auto defined = collect_definitions(); !defined) return defined.error();
-    // Macro bombs are refused before anything is built: sizes are counted once per definition.
-    for (const Definition& d : program_.definitions) {
-      if (!d.expression && expanded_size(d.group) > run_limit()) return too_many_actions(d.group);
-    }
-    const double main_size = expanded_size(program_.main);
-    if (main_size > run_limit()) return too_many_actions(overflowing(program_.main, run_limit()));
-    // At most one leaf per node of main, macros expanded: the leaves never grow by doubling.
-    leaves_.reserve(static_cast<std::size_t>(main_size));
-    // Macro bodies are checked where they are written, even when no one uses them.
-    for (const Definition& d : program_.definitions) {
-      if (d.expression) continue;
-      stack_ = {d.name};
-      const std::size_t keep = leaves_.size();
-      if (auto body = build(d.group, Context{}); !body) return body.error();
-      leaves_.resize(keep);
-    }
-    stack_.clear();
-    Result<ActionParams> main = read(program_.main_params);
-    if (!main) return main.error();
-    if (main->right) return error(main->right->at, "'right' needs a parallel around it; main has none");
-    if (const Param* p = atomic_param(*main)) {
-      return error(p->at, "'" + p->name + "' applies to atomic actions, not to main");
-    }
-    Result<ScheduleNode> root = build(program_.main, Context{main->blend_mode(), Action::Kind::sequence});
-    if (!root) return root.error();
-    if (main->left) root->timing.offset += main->left->value;
+    if (Status parsed = parse_program(source_, file_, program_, *this); !parsed) return parsed.error();
+    if (pending_) return std::move(pending_->diagnostic);
+    ScheduleNode root = std::move(root_);
+    if (main_params_->left) root.timing.offset += main_params_->left->value;
     ScheduleOptions schedule_options;
     schedule_options.max_runs = options_.max_runs;
-    Result<Schedule> scheduled = schedule(*root, schedule_options);
+    Result<Schedule> scheduled = schedule(root, schedule_options);
     if (!scheduled) return with_source_line(scheduled.error());
-    *root = ScheduleNode{};  // the tree is scheduled: let it go before the clips are made
+    root = ScheduleNode{};  // the tree is scheduled: let it go before the clips are made
     MimicProgram out;
     out.timeline = lower(*scheduled);
     out.warnings = std::move(warnings_);
     return out;
   }
 
+  // ---- main as it is parsed (MainSink) -------------------------------------------------------
+
+  // What run() checked before building main when it had the whole tree, in the same order.
+  void begin_main(const std::vector<Definition>&, const std::vector<Param>& main_params) override {
+    if (auto defined = collect_definitions(); !defined) return hold(defined.error(), Rank::definitions);
+    // Macro bombs are refused before anything is built: sizes are counted once per definition.
+    for (const Definition& d : program_.definitions) {
+      if (!d.expression && expanded_size(d.group) > run_limit()) {
+        return hold(too_many_actions(d.group), Rank::macro_size);
+      }
+    }
+    // Macro bodies are checked where they are written, even when no one uses them.
+    for (const Definition& d : program_.definitions) {
+      if (d.expression) continue;
+      stack_ = {d.name};
+      const Sizes keep = sizes();
+      Result<ScheduleNode> body = build(d.group, Context{});
+      truncate(keep);
+      if (!body) return hold(body.error(), Rank::other);
+    }
+    stack_.clear();
+    Result<ActionParams> main = read(main_params);
+    if (!main) return hold(main.error(), Rank::other);
+    if (main->right) return hold(error(main->right->at, "'right' needs a parallel around it; main has none"), Rank::other);
+    if (const Param* p = atomic_param(*main)) {
+      return hold(error(p->at, "'" + p->name() + "' applies to atomic actions, not to main"), Rank::other);
+    }
+    main_params_ = std::move(*main);
+  }
+
+  void open_group(const Action& group) override {
+    const bool is_main = open_ == 0;
+    if (open_ == frames_.size()) frames_.emplace_back();
+    Frame& frame = frames_[open_++];
+    frame.depth = is_main ? 0 : frames_[open_ - 2].depth + 1;
+    frame.children.clear();
+    main_size_ += 1;  // the group itself; its actions are counted as they come
+    if (pending_) return;
+    const Context context = is_main ? Context{main_params_->blend_mode(), Action::Kind::sequence, 0}
+                                    : frames_[open_ - 2].inner(frame.depth);
+    Result<Prepared> prepared = prepare(group, context);
+    if (!prepared) return hold(prepared.error(), Rank::other);
+    Result<ScheduleNode> node = group_node(group, *prepared);
+    if (!node) return hold(node.error(), Rank::other);
+    frame.node = std::move(*node);
+    frame.blend = prepared->blend;
+    frame.kind = group.kind;
+  }
+
+  void named_action(Action&& action) override {
+    Frame& parent = frames_[open_ - 1];
+    const int depth = parent.depth + 1;
+    if (!pending_ || pending_->rank > Rank::main_size) {
+      // main's size as run() counted it before building (expanded_size(main)): past the run
+      // limit, the error points where overflowing(main) would.
+      const double size = expanded_size(action, depth);
+      if (main_size_ + size > run_limit()) {
+        hold(too_many_actions(overflowing(action, run_limit() - main_size_)), Rank::main_size);
+      }
+      main_size_ += size;
+    }
+    if (pending_) return;
+    Result<ScheduleNode> built = build(action, parent.inner(depth));
+    if (!built) return hold(built.error(), Rank::other);
+    parent.children.push_back(std::move(*built));
+  }
+
+  void close_group() override {
+    Frame& frame = frames_[--open_];
+    if (pending_) return;
+    // Exactly as many children as it has: the tree holds a node per action of the program.
+    frame.node.children.reserve(frame.children.size());
+    std::move(frame.children.begin(), frame.children.end(), std::back_inserter(frame.node.children));
+    frame.children.clear();
+    if (open_ == 0) {
+      root_ = std::move(frame.node);
+    } else {
+      frames_[open_ - 1].children.push_back(std::move(frame.node));
+    }
+  }
+
  private:
-  const Program& program_;
+  // Errors found while main is still being read, by the order run() used to check them in.
+  enum class Rank { definitions, macro_size, main_size, other };
+  struct Pending {
+    Diagnostic diagnostic;
+    Rank rank = Rank::other;
+  };
+  // A group of main being read: its node, and its children built so far.
+  struct Frame {
+    ScheduleNode node;
+    std::vector<ScheduleNode> children;  // reused from group to group at this depth
+    std::optional<BlendMode> blend;
+    Action::Kind kind = Action::Kind::sequence;
+    int depth = 0;
+    Context inner(int child_depth) const { return Context{blend, kind, child_depth}; }
+  };
+  // build()'s reading of an action's parameters, before it looks at what the action is.
+  struct Prepared {
+    ActionParams params;
+    Timing timing;
+    std::optional<BlendMode> blend;
+  };
+  // How far the arenas reach, to drop what a macro body's check built.
+  struct Sizes {
+    std::size_t leaves = 0, targets = 0, points = 0;
+  };
+
   std::string_view source_;
   const std::string& file_;
+  const Location file_location_;  // copied per node: building a Location from the path costs more
   const MimicOptions& options_;
   const Profile& profile_;
-  std::map<std::string, const Definition*> macros_;
-  std::map<std::string, algebra::FacialState> expressions_;
-  std::vector<Leaf> leaves_;
+  Program program_;
+  std::optional<Pending> pending_;
+  std::optional<ActionParams> main_params_;
+  std::vector<Frame> frames_;  // main's groups open around the parser, outermost first
+  std::size_t open_ = 0;
+  double main_size_ = 0;  // expanded_size(main) of what has been read
+  ScheduleNode root_;
+  std::map<std::string, const Definition*, std::less<>> macros_;
+  std::map<std::string, algebra::FacialState, std::less<>> expressions_;
+  // In big blocks, never copied as they grow (chunked_vector.hpp).
+  ChunkedVector<Leaf> leaves_;
+  ChunkedVector<Target> targets_;
+  ChunkedVector<ListPoint> list_points_;
+  // Target names, interned: each with what it writes (resolve_target), asked once per name.
+  std::vector<std::string> names_;
+  std::vector<std::vector<FapContribution>> name_contributions_;
+  std::map<std::string, std::uint32_t, std::less<>> name_ids_;
   std::vector<std::string> stack_;  // macros being expanded, for recursion errors
   std::size_t actions_built_ = 0;
-  std::map<std::string, double> sizes_;  // per macro: its body's expanded_size()
-  std::set<std::string> sizing_;         // macros being sized (recursion)
-  bool sizing_cut_ = false;              // a count stopped at the depth limit
-  // Per clip of the timeline being built: empty when it does not connect, else the explicit end
-  // value of `connect=x` (empty inside: take the next clip's value).
-  std::vector<std::optional<std::optional<double>>> connects_;
+  std::map<std::string, double, std::less<>> sizes_;  // per macro: its body's expanded_size()
+  std::set<std::string, std::less<>> sizing_;         // macros being sized (recursion)
+  bool sizing_cut_ = false;                           // a count stopped at the depth limit
+  // While lowering: each clip's target name, and the clips that end with `connect`.
+  std::vector<std::uint32_t> clip_names_;
+  struct Connecting {
+    std::size_t clip = 0;
+    bool given = false;  // connect=x: end at `to`; else at the next clip's value
+    double to = 0;
+  };
+  std::vector<Connecting> connecting_;
+  static constexpr std::uint32_t kNoConnect = UINT32_MAX;
   Diagnostics warnings_;
-  std::unordered_map<std::string, std::vector<FapContribution>> resolved_;  // per target name
+
+  void hold(Diagnostic d, Rank rank) {
+    if (!pending_ || rank < pending_->rank) pending_ = Pending{std::move(d), rank};
+  }
+  Sizes sizes() const { return {leaves_.size(), targets_.size(), list_points_.size()}; }
+  void truncate(const Sizes& keep) {
+    leaves_.truncate(keep.leaves);
+    targets_.truncate(keep.targets);
+    list_points_.truncate(keep.points);
+  }
+
+  // The interned id of a target name, with its contributions resolved once.
+  std::uint32_t name_id(std::string_view name) {
+    if (const auto found = name_ids_.find(name); found != name_ids_.end()) return found->second;
+    const auto id = static_cast<std::uint32_t>(names_.size());
+    names_.emplace_back(name);
+    name_contributions_.push_back(resolve_target(name, profile_));
+    name_ids_.emplace(std::string(name), id);
+    return id;
+  }
+  const std::vector<FapContribution>& contributions(std::uint32_t id) const { return name_contributions_[id]; }
 
   double run_limit() const { return static_cast<double>(std::max<std::int64_t>(options_.max_runs, 0)); }
 
@@ -192,21 +338,20 @@ class Compiler {
     return action;
   }
 
-  const std::vector<FapContribution>& contributions(const std::string& target) {
-    const auto found = resolved_.find(target);
-    if (found != resolved_.end()) return found->second;
-    return resolved_.emplace(target, resolve_target(target, profile_)).first->second;
-  }
-
   Diagnostic error(Position at, const std::string& message) const {
-    return make_error(Location::text(file_, at.line, at.column), message,
+    return make_error(location(at), message,
                       source_line(source_, at.line));
   }
   Diagnostic with_source_line(Diagnostic d) const {
     if (d.where.file == file_) d.source_line = source_line(source_, d.where.line);
     return d;
   }
-  Location location(Position at) const { return Location::text(file_, at.line, at.column); }
+  Location location(Position at) const {
+    Location where = file_location_;
+    where.line = at.line;
+    where.column = at.column;
+    return where;
+  }
 
   Result<ActionParams> read(const std::vector<Param>& params) const {
     return read_params(params, [this](Position at, const std::string& m) { return error(at, m); });
@@ -260,50 +405,67 @@ class Compiler {
   }
 
   Result<ScheduleNode> build(const Action& action, const Context& context) {
+    Result<Prepared> prepared = prepare(action, context);
+    if (!prepared) return prepared.error();
+    if (action.kind != Action::Kind::named) {
+      Result<ScheduleNode> node = group_node(action, *prepared);
+      if (!node) return node.error();
+      node->children.reserve(action.children.size());
+      for (const Action& child : action.children) {
+        Result<ScheduleNode> built = build(child, Context{prepared->blend, action.kind, context.depth + 1});
+        if (!built) return built.error();
+        node->children.push_back(std::move(*built));
+      }
+      return node;
+    }
+    if (const auto macro = macros_.find(action.name); macro != macros_.end() && !macro->second->expression) {
+      return instantiate(action, *macro->second, prepared->params, prepared->timing,
+                         Context{prepared->blend, Action::Kind::sequence, context.depth + 1});
+    }
+    return atomic(action, std::move(prepared->params), prepared->timing, prepared->blend.value_or(BlendMode::add),
+                  context);
+  }
+
+  // What build() does for every action before it looks at its kind: the depth and count limits,
+  // the parameters, the timing and the blend mode its children inherit.
+  Result<Prepared> prepare(const Action& action, const Context& context) {
     if (context.depth >= kMaxNestingDepth) {
       return nesting_too_deep(location(action.at), "groups (with macros expanded)", source_line(source_, action.at.line));
     }
     // Macros that use each other twice double with every level: forty lines can ask for 2^40
     // actions. Counted over the whole compilation (the macro bodies' own checks included).
     // The bound is the run limit (each action is at least one run), so a program of 10^6
-    // honest actions passes with the defaults. run() refuses most programs over it up front.
+    // honest actions passes with the defaults. Most programs over it are refused before.
     if (static_cast<double>(++actions_built_) > run_limit()) return too_many_actions(action);
     Result<ActionParams> params = read(action.params);
     if (!params) return params.error();
-    Timing timing;
-    if (params->left) timing.offset = params->left->value;
+    Prepared prepared;
+    if (params->left) prepared.timing.offset = params->left->value;
     if (params->right) {
       if (context.parent != Action::Kind::parallel) {
         return error(params->right->at, "right alignment is only allowed in a parallel, not in a sequence");
       }
-      timing.align_right = params->right->value;
+      prepared.timing.align_right = params->right->value;
     }
-    const std::optional<BlendMode> blend = params->blend_mode() ? params->blend_mode() : context.blend;
-    if (action.kind != Action::Kind::named) {
-      if (const Param* p = atomic_param(*params)) {
-        return error(p->at, "'" + p->name + "' applies to atomic actions, not to a group");
-      }
-      ScheduleNode node = ScheduleNode::group(
-          action.kind == Action::Kind::sequence ? Kind::sequence : Kind::parallel, timing,
-          location(action.at));
-      for (const Action& child : action.children) {
-        Result<ScheduleNode> built = build(child, Context{blend, action.kind, context.depth + 1});
-        if (!built) return built.error();
-        node.children.push_back(std::move(*built));
-      }
-      return node;
+    prepared.blend = params->blend_mode() ? params->blend_mode() : context.blend;
+    prepared.params = std::move(*params);
+    return prepared;
+  }
+
+  // A group's node, without its children.
+  Result<ScheduleNode> group_node(const Action& group, const Prepared& prepared) const {
+    if (const Param* p = atomic_param(prepared.params)) {
+      return error(p->at, "'" + p->name() + "' applies to atomic actions, not to a group");
     }
-    if (const auto macro = macros_.find(action.name); macro != macros_.end() && !macro->second->expression) {
-      return instantiate(action, *macro->second, *params, timing, Context{blend, Action::Kind::sequence, context.depth + 1});
-    }
-    return atomic(action, *std::move(params), timing, blend.value_or(BlendMode::add), context);
+    return ScheduleNode::group(group.kind == Action::Kind::sequence ? Kind::sequence : Kind::parallel,
+                               prepared.timing, location(group.at));
   }
 
   Result<ScheduleNode> instantiate(const Action& action, const Definition& macro,
                                    const ActionParams& params, const Timing& timing,
                                    const Context& body_context) {
     if (const Param* p = atomic_param(params)) {
-      return error(p->at, "'" + p->name + "' does not apply to '" + macro.name +
+      return error(p->at, "'" + p->name() + "' does not apply to '" + macro.name +
                               "', a macro: give it alignment and blend parameters only");
     }
     if (action.has_list) return error(action.list_at, "'" + macro.name + "' is a macro; it takes no time-value list");
@@ -323,29 +485,32 @@ class Compiler {
   Result<ScheduleNode> atomic(const Action& action, ActionParams params, Timing timing,
                               BlendMode blend, const Context& context) {
     Leaf leaf;
-    leaf.action = &action;
+    leaf.at = action.at;
     leaf.blend = blend;
     const auto expression = expressions_.find(action.name);
     if (expression != expressions_.end()) {
       leaf.expression = true;
+      leaf.first_target = static_cast<std::uint32_t>(targets_.size());
       if (params.value) {
         const algebra::FacialState amplified = algebra::amplify(expression->second, params.value->value);
         for (int fap = 3; fap <= kFapCount; ++fap) {
           if (expression->second.at(fap) == 0) continue;
-          leaf.targets.push_back({std::string(find_fap(fap)->name), static_cast<double>(amplified.at(fap))});
+          targets_.push_back({name_id(find_fap(fap)->name), static_cast<double>(amplified.at(fap))});
         }
       }
-    } else if (contributions(action.name).empty()) {
+      leaf.target_count = static_cast<std::uint32_t>(targets_.size() - leaf.first_target);
+    } else if (const std::uint32_t id = name_id(action.name); contributions(id).empty()) {
       return error(action.at, unknown_parameter_message(action.name, profile_));
     } else {
-      leaf.targets.push_back({action.name, 1});
+      leaf.first_target = id;
+      leaf.target_count = 1;
     }
     if (action.has_list) {
       if (expression != expressions_.end()) {
         return error(action.list_at, "'" + action.name + "' is an expression; fade it with <in=..., value=...>");
       }
       if (const Param* p = atomic_param(params)) {
-        return error(p->at, "'" + p->name + "' does not apply to a time-value list");
+        return error(p->at, "'" + p->name() + "' does not apply to a time-value list");
       }
       if (auto checked = check_list(action); !checked) return checked.error();
       leaf.shape = Leaf::Shape::list;
@@ -356,11 +521,11 @@ class Compiler {
                                     params.first_fade->at.column > params.first_periodic->at.column)
                                ? params.first_fade
                                : params.first_periodic;
-      return error(later->at, "'" + later->name + "' mixes a fade (in, hold, out, value) with a "
+      return error(later->at, "'" + later->name() + "' mixes a fade (in, hold, out, value) with a "
                                                   "periodic action (min, max, freq, period, duration)");
     } else if (params.first_fade || expression != expressions_.end()) {
       if (params.first_periodic) {
-        return error(params.first_periodic->at, "'" + params.first_periodic->name + "' does not apply to an expression fade");
+        return error(params.first_periodic->at, "'" + params.first_periodic->name() + "' does not apply to an expression fade");
       }
       if (!params.value) return error(action.at, "a fade needs value=... (and in, hold, out as needed)");
       leaf.shape = Leaf::Shape::fade;
@@ -374,29 +539,50 @@ class Compiler {
                               "function (min, max, freq or period) or a time-value list");
     }
     leaf.curve = curve_of(leaf.shape, params);
-    check_ranges(leaf, params);
-    leaves_.push_back(std::move(leaf));
+    if (leaf.shape == Leaf::Shape::list) {
+      if (list_points_.size() + action.times.size() > UINT32_MAX) return too_many_actions(action);
+      leaf.first_point = static_cast<std::uint32_t>(list_points_.size());
+      leaf.point_count = static_cast<std::uint32_t>(action.times.size());
+      for (std::size_t i = 0; i < action.times.size(); ++i) {
+        list_points_.push_back({action.times[i].value, action.values[i].value});
+      }
+    }
+    check_ranges(leaf, params, action);
+    leaves_.push_back(leaf);
     return ScheduleNode::leaf(leaves_.size() - 1, timing, location(action.at));
   }
 
   static double value_or_zero(const std::optional<Number>& n) { return n ? n->value : 0; }
 
-  static Leaf::Curve curve_of(Leaf::Shape shape, const ActionParams& p) {
-    Leaf::Curve curve;
+  static decltype(Leaf::curve) curve_of(Leaf::Shape shape, const ActionParams& p) {
     if (shape == Leaf::Shape::fade) {
-      curve.in = value_or_zero(p.in);
-      curve.hold = value_or_zero(p.hold);
-      curve.out = value_or_zero(p.out);
-      curve.value = value_or_zero(p.value);
-      curve.interpolation = p.interpolation();
-      if (p.connect) curve.connect = p.connect->value ? std::optional<double>(p.connect->value->value) : std::nullopt;
-    } else if (shape == Leaf::Shape::periodic) {
-      curve.wave = p.function && p.function->name == "linear" ? Periodic::Shape::triangle : Periodic::Shape::sine;
-      curve.min = value_or_zero(p.min);
-      curve.max = p.max->value;
-      curve.period = p.period ? p.period->value : 1 / p.freq->value;
+      Fade fade;
+      fade.in = value_or_zero(p.in);
+      fade.hold = value_or_zero(p.hold);
+      fade.out = value_or_zero(p.out);
+      fade.value = value_or_zero(p.value);
+      fade.interpolation = p.interpolation();
+      if (p.connect && p.connect->value) {
+        fade.connect = Fade::Connect::given;
+        fade.connect_to = p.connect->value->value;
+      } else if (p.connect) {
+        fade.connect = Fade::Connect::next;
+      }
+      return fade;
     }
-    return curve;
+    if (shape == Leaf::Shape::periodic) {
+      Periodic wave;  // unscaled: each target scales it by its factor
+      wave.shape = p.function && p.function->id == ParamName::linear ? Periodic::Shape::triangle : Periodic::Shape::sine;
+      wave.min = value_or_zero(p.min);
+      wave.max = p.max->value;
+      wave.period = p.period ? p.period->value : 1 / p.freq->value;
+      return wave;
+    }
+    return std::monostate{};
+  }
+
+  Target target(const Leaf& leaf, std::uint32_t i) const {
+    return leaf.expression ? targets_[leaf.first_target + i] : Target{leaf.first_target, 1};
   }
 
   Status check_list(const Action& action) const {
@@ -423,8 +609,8 @@ class Compiler {
                                      format_number(p.period->value) + " disagree (freq x period must be 1)");
     }
     if (!p.max) return error(action.at, "a periodic action needs max=... (min defaults to 0)");
-    if (p.function && p.function->name != "sin" && p.function->name != "linear") {
-      return error(p.function->at, "a periodic action oscillates with sin or linear, not " + p.function->name);
+    if (p.function && p.function->id != ParamName::sin && p.function->id != ParamName::linear) {
+      return error(p.function->at, "a periodic action oscillates with sin or linear, not " + p.function->name());
     }
     if (!p.duration && context.parent != Action::Kind::parallel) {
       return error(action.at, "a periodic action without duration= must be in a parallel, which gives its length");
@@ -434,14 +620,15 @@ class Compiler {
 
   // Values beyond what the target can carry: a warning at the number (docs/mimic.md,
   // "Timing and values").
-  void check_ranges(const Leaf& leaf, const ActionParams& params) {
+  void check_ranges(const Leaf& leaf, const ActionParams& params, const Action& action) {
     std::vector<const Number*> numbers;
     for (const std::optional<Number>* n : {&params.value, &params.min, &params.max}) {
       if (*n) numbers.push_back(&**n);
     }
 
-    for (const Number& v : leaf.action->values) numbers.push_back(&v);
-    for (const Target& target : leaf.targets) {
+    for (const Number& v : action.values) numbers.push_back(&v);
+    for (std::uint32_t t = 0; t < leaf.target_count; ++t) {
+      const Target target = this->target(leaf, t);
       for (const FapContribution& c : contributions(target.name)) {
         const int high = c.fap <= 2 ? 63 : find_fap(c.fap)->legal_max();
         const int low = c.fap <= 2 ? 0 : -high;
@@ -452,7 +639,7 @@ class Compiler {
           if (fap_value >= low && fap_value <= high) continue;
           warnings_.push_back(make_warning(
               {"mimic.out_of_range"}, location(n->at),
-              "value " + format_number(n->value) + " of '" + target.name + "' is " +
+              "value " + format_number(n->value) + " of '" + names_[target.name] + "' is " +
                   format_number(fap_value) + " in " + std::string(find_fap(c.fap)->name) +
                   " units, outside " + std::to_string(low) + ".." + std::to_string(high) +
                   " (it will be clamped)",
@@ -467,81 +654,106 @@ class Compiler {
   Timeline lower(const Schedule& scheduled) {
     Timeline timeline;
     std::size_t clips = 0;  // at most one per occurrence and target: no growth by doubling
-    for (const Occurrence& o : scheduled.occurrences) clips += leaves_[o.leaf_id].targets.size();
+    for (const Occurrence& o : scheduled.occurrences) clips += leaves_[o.leaf_id].target_count;
     timeline.clips.reserve(clips);
-    connects_.reserve(clips);
+    clip_names_.reserve(clips);
+    // Runs come in tree order, as the leaves were made: each leaf is let go once its runs are
+    // lowered, so that the leaves shrink as the clips grow. (A Mimic leaf runs once: no repeats.)
+    const bool in_leaf_order = std::is_sorted(scheduled.occurrences.begin(), scheduled.occurrences.end(),
+                                              [](const Occurrence& a, const Occurrence& b) { return a.leaf_id < b.leaf_id; });
     for (const Occurrence& o : scheduled.occurrences) {
+      if (in_leaf_order) leaves_.release_before(o.leaf_id);
       const Leaf& leaf = leaves_[o.leaf_id];
-      for (const Target& target : leaf.targets) add_clip(timeline, leaf, target, o);
+      for (std::uint32_t t = 0; t < leaf.target_count; ++t) add_clip(timeline, leaf, target(leaf, t), o);
     }
+    leaves_ = {};
     resolve_connects(timeline);
     return timeline;
   }
 
   void add_clip(Timeline& timeline, const Leaf& leaf, const Target& target, const Occurrence& o) {
     Clip clip;
-    clip.target = target.name;
+    clip.target = names_[target.name];
     clip.begin = o.begin;
     clip.end = o.end;
     clip.blend = leaf.blend;
-    clip.source = location(leaf.action->at);
-    const Leaf::Curve& p = leaf.curve;
+    clip.source = location(leaf.at);
+    const Fade* fade = std::get_if<Fade>(&leaf.curve);
     switch (leaf.shape) {
       case Leaf::Shape::fade: {
-        const double in = p.in;
-        const double hold = p.hold;
-        const double out = p.out;
-        const double v = leaf.expression ? target.factor : p.value * target.factor;
-        const Interpolation f = p.interpolation;
+        const double in = fade->in;
+        const double hold = fade->hold;
+        const double out = fade->out;
+        const double v = leaf.expression ? target.factor : fade->value * target.factor;
+        const Interpolation f = fade->interpolation;
         // Rise from the neutral 0 to v, hold, fall to the end value (0 until `connect` sets it).
         clip.curve.keys = {{0, 0, f}, {in, v, Interpolation::linear}, {in + hold, v, f}, {in + hold + out, 0}};
         break;
       }
       case Leaf::Shape::periodic: {
-        Periodic wave;
-        wave.shape = p.wave;
-        wave.min = p.min * target.factor;
-        wave.max = p.max * target.factor;
-        wave.period = p.period;
+        Periodic wave = std::get<Periodic>(leaf.curve);
+        wave.min *= target.factor;
+        wave.max *= target.factor;
         clip.curve.periodic = wave;
         break;
       }
       case Leaf::Shape::list: {
-        const std::vector<Number>& times = leaf.action->times;
-        if (times.empty()) return;
+        if (leaf.point_count == 0) return;
+        const ListPoint& first = list_points_[leaf.first_point];
         // The curve starts at the first time: before it the action is absent.
-        clip.begin = o.begin + times.front().value;
-        for (std::size_t i = 0; i < times.size(); ++i) {
-          clip.curve.keys.push_back(KeyPoint{times[i].value - times.front().value,
-                                             leaf.action->values[i].value * target.factor});
+        clip.begin = o.begin + first.time;
+        clip.curve.keys.reserve(leaf.point_count);
+        for (std::size_t i = leaf.first_point; i < leaf.first_point + leaf.point_count; ++i) {
+          const ListPoint& point = list_points_[i];
+          clip.curve.keys.push_back(KeyPoint{point.time - first.time, point.value * target.factor});
         }
         break;
       }
     }
     if (clip.end <= clip.begin) return;  // nothing to contribute (zero length, or cut away)
-    timeline.clips.push_back(std::move(clip));
-    if (leaf.shape == Leaf::Shape::fade && p.connect) {
-      connects_.emplace_back(*p.connect);
-    } else {
-      connects_.emplace_back();
+    if (fade && fade->connect != Fade::Connect::none) {
+      connecting_.push_back({timeline.clips.size(), fade->connect == Fade::Connect::given, fade->connect_to});
     }
+    timeline.clips.push_back(std::move(clip));
+    clip_names_.push_back(target.name);
   }
 
   // connect: the fade ends at the value the same target's next clip (the first beginning at or
-  // after this one's end) has at its own begin; or at connect=x when given.
+  // after this one's end) has at its own begin; or at connect=x when given. Targets are taken in
+  // the order of their names, and each target's clips in the order they begin.
   void resolve_connects(Timeline& timeline) {
-    std::map<std::string, std::vector<std::size_t>> by_target;
-    for (std::size_t i = 0; i < timeline.clips.size(); ++i) by_target[timeline.clips[i].target].push_back(i);
-    for (auto& [target, indices] : by_target) {
-      std::stable_sort(indices.begin(), indices.end(), [&](std::size_t a, std::size_t b) {
-        return timeline.clips[a].begin < timeline.clips[b].begin;
-      });
+    if (connecting_.empty()) return;
+    std::vector<std::uint32_t> connects(timeline.clips.size(), kNoConnect);  // index into connecting_
+    std::vector<bool> wanted(names_.size(), false);
+    for (std::size_t c = 0; c < connecting_.size(); ++c) {
+      connects[connecting_[c].clip] = static_cast<std::uint32_t>(c);
+      wanted[clip_names_[connecting_[c].clip]] = true;
+    }
+    std::vector<std::vector<std::size_t>> by_target(names_.size());  // only the targets that connect
+    for (std::size_t i = 0; i < timeline.clips.size(); ++i) {
+      if (wanted[clip_names_[i]]) by_target[clip_names_[i]].push_back(i);
+    }
+    clip_names_ = {};
+    std::vector<std::uint32_t> in_name_order;
+    for (std::uint32_t id = 0; id < names_.size(); ++id) {
+      if (wanted[id]) in_name_order.push_back(id);
+    }
+    std::sort(in_name_order.begin(), in_name_order.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return names_[a] < names_[b]; });
+    for (const std::uint32_t id : in_name_order) {
+      std::vector<std::size_t>& indices = by_target[id];
+      const auto by_begin = [&](std::size_t a, std::size_t b) { return timeline.clips[a].begin < timeline.clips[b].begin; };
+      // Clips come in schedule order, mostly already by begin: sorting them again costs a merge sort.
+      if (!std::is_sorted(indices.begin(), indices.end(), by_begin)) {
+        std::stable_sort(indices.begin(), indices.end(), by_begin);
+      }
       for (const std::size_t i : indices) {
-        if (!connects_[i]) continue;
+        if (connects[i] == kNoConnect) continue;
+        const Connecting& connect = connecting_[connects[i]];
         Clip& clip = timeline.clips[i];
         double end_value = 0;
-        if (const std::optional<double> given = *connects_[i]) {
-          end_value = *given;
+        if (connect.given) {
+          end_value = connect.to;
         } else {
           const auto next = std::lower_bound(indices.begin(), indices.end(), clip.end, [&](std::size_t c, double t) {
             return timeline.clips[c].begin < t;
@@ -553,6 +765,7 @@ class Compiler {
         }
         clip.curve.keys.back().value = end_value;
       }
+      indices = {};
     }
   }
 };
@@ -562,9 +775,7 @@ class Compiler {
 
 Result<MimicProgram> compile_mimic(std::string_view source, const std::string& file_name,
                                    const MimicOptions& options) {
-  Result<mimic::Program> program = mimic::parse_program(source, file_name);
-  if (!program) return program.error();
-  return mimic::Compiler(*program, source, file_name, options).run();
+  return mimic::Compiler(source, file_name, options).run();
 }
 
 }  // namespace fapc

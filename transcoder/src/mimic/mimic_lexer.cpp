@@ -1,6 +1,5 @@
 #include "mimic_lexer.hpp"
 
-#include <cctype>
 #include <charconv>
 #include <string>
 
@@ -42,11 +41,13 @@ std::string source_line(std::string_view source, int line) {
 
 namespace {
 
-bool starts_identifier(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool continues_identifier(char c) {
-  return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.';
-}
-bool is_digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
+// The "C" locale's classes (fapc never sets another), spelled out: the <cctype> calls are not
+// inlined and were a tenth of the lexer's time.
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+bool is_letter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+bool is_space(char c) { return c == ' ' || (c >= '\t' && c <= '\r'); }  // \t \n \v \f \r
+bool starts_identifier(char c) { return is_letter(c) || c == '_'; }
+bool continues_identifier(char c) { return is_letter(c) || is_digit(c) || c == '_' || c == '.'; }
 
 TokenKind punctuation(char c) {
   switch (c) {
@@ -109,7 +110,7 @@ void Lexer::advance() {
 bool Lexer::skip_blanks_and_comments() {
   while (at_ < source_.size()) {
     const char c = source_[at_];
-    if (std::isspace(static_cast<unsigned char>(c))) {
+    if (is_space(c)) {
       advance();
     } else if (source_.substr(at_, 2) == "//") {
       while (at_ < source_.size() && source_[at_] != '\n') ++at_;

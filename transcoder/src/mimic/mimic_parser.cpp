@@ -1,8 +1,5 @@
 #include "mimic_parser.hpp"
 
-#include <array>
-#include <set>
-
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/codec/nesting_limit.hpp"
 #include "mimic_lexer.hpp"
@@ -11,12 +8,9 @@ namespace fapc::mimic {
 namespace {
 
 // Mimic Table 1 (docs/mimic.md, "Grammar"): pname (no value), pname-arg (value), and
-// left/right/connect which take either form.
-const std::set<std::string, std::less<>> kWithoutValue = {"linear", "sin", "log", "exp",
-                                                          "average", "add", "overwrite"};
-const std::set<std::string, std::less<>> kWithValue = {"in", "hold", "out", "value", "duration",
-                                                       "freq", "period", "min", "max"};
-const std::set<std::string, std::less<>> kValueOptional = {"left", "right", "connect"};
+// left/right/connect which take either form (ParamName lists them in these three runs).
+bool takes_no_value(ParamName n) { return n >= ParamName::linear; }
+bool needs_value(ParamName n) { return n >= ParamName::in && n <= ParamName::max; }
 
 bool is_keyword(std::string_view name) {
   return name == "main" || name == "def" || name == "defxpr";
@@ -24,11 +18,10 @@ bool is_keyword(std::string_view name) {
 
 class Parser {
  public:
-  Parser(std::string_view source, const std::string& file)
-      : lexer_(source, file), current_(lexer_.next()), source_(source), file_(file) {}
+  Parser(std::string_view source, const std::string& file, MainSink& sink)
+      : lexer_(source, file), current_(lexer_.next()), source_(source), file_(file), sink_(sink) {}
 
-  Result<Program> program() {
-    Program program;
+  Status program(Program& program) {
     while (peek().kind == TokenKind::identifier &&
            (peek().text == "def" || peek().text == "defxpr")) {
       Result<Definition> definition = define();
@@ -44,11 +37,12 @@ class Parser {
       if (!params) return params.error();
       program.main_params = std::move(*params);
     }
-    Result<Action> group = action_group();
+    sink_.begin_main(program.definitions, program.main_params);
+    streaming_ = true;
+    Result<Action> group = action_group({});
     if (!group) return group.error();
-    program.main = std::move(*group);
     if (peek().kind != TokenKind::end_of_input) return unexpected("the end of the program after main's group");
-    return program;
+    return ok_status();
   }
 
  private:
@@ -58,6 +52,11 @@ class Parser {
   std::string_view source_;
   const std::string& file_;
   int depth_ = 0;  // groups open around the current token: the recursion is bounded by it
+  MainSink& sink_;
+  // parameters() and time_value_list() collect here, then copy out exactly what they read.
+  std::vector<Param> params_read_;
+  std::vector<Number> numbers_read_;
+  bool streaming_ = false;  // inside main: groups and named actions go to sink_, not into a tree
 
   const Token& peek() const { return current_; }
   // Consumes the current token and returns it (valid until the next call).
@@ -103,13 +102,14 @@ class Parser {
       definition.file_at = position(*file);
       return definition;
     }
-    Result<Action> group = action_group();
+    Result<Action> group = action_group({});
     if (!group) return group.error();
     definition.group = std::move(*group);
     return definition;
   }
 
-  Result<Action> action_group() {
+  // `params`: those written before the group (`< params > group`).
+  Result<Action> action_group(std::vector<Param> params) {
     const Token open = peek();  // a copy: peek() moves on
     if (open.kind != TokenKind::left_brace && open.kind != TokenKind::left_bracket) {
       return unexpected("'{' (a sequence) or '[' (a parallel)");
@@ -119,13 +119,14 @@ class Parser {
                               source_line(source_, open.line));
     }
     ++depth_;
-    Result<Action> group = group_body(open);
+    Result<Action> group = group_body(open, std::move(params));
     --depth_;
     return group;
   }
 
-  Result<Action> group_body(const Token& open) {
+  Result<Action> group_body(const Token& open, std::vector<Param> params) {
     Action group;
+    group.params = std::move(params);
     group.kind = open.kind == TokenKind::left_brace ? Action::Kind::sequence : Action::Kind::parallel;
     group.at = position(open);
     const TokenKind close =
@@ -136,6 +137,7 @@ class Parser {
                                   (group.kind == Action::Kind::sequence ? "sequence" : "parallel") +
                                   ": a group needs at least one action");
     }
+    if (streaming_) sink_.open_group(group);
     while (peek().kind != close) {
       if (peek().kind == TokenKind::end_of_input) {
         return error_at(open, std::string("this '") + (close == TokenKind::right_brace ? "{" : "[") +
@@ -143,9 +145,14 @@ class Parser {
       }
       Result<Action> child = action(close);
       if (!child) return child.error();
-      group.children.push_back(std::move(*child));
+      if (!streaming_) {
+        group.children.push_back(std::move(*child));
+      } else if (child->kind == Action::Kind::named) {
+        sink_.named_action(std::move(*child));
+      }  // else a group, already given to the sink
     }
     next();
+    if (streaming_) sink_.close_group();
     // The tree lives until the clips are made: no room kept for growth (a script holds millions).
     group.children.shrink_to_fit();
     return group;
@@ -155,13 +162,10 @@ class Parser {
     if (peek().kind == TokenKind::less) {  // < params > group
       Result<std::vector<Param>> params = parameters();
       if (!params) return params.error();
-      Result<Action> group = action_group();
-      if (!group) return group.error();
-      group->params = std::move(*params);
-      return group;
+      return action_group(std::move(*params));
     }
     if (peek().kind == TokenKind::left_brace || peek().kind == TokenKind::left_bracket) {
-      return action_group();
+      return action_group({});
     }
     Result<Token> name = expect(TokenKind::identifier, "an action (a name, '{', '[' or '<')");
     if (!name) return name.error();
@@ -195,14 +199,15 @@ class Parser {
     atomic.has_list = true;
     atomic.list_at = position(next());
     for (std::vector<Number>* list : {&atomic.times, &atomic.values}) {
+      numbers_read_.clear();
       while (peek().kind == TokenKind::number) {
         const Token& t = next();
-        list->push_back(Number{t.number, position(t)});
+        numbers_read_.push_back(Number{t.number, position(t)});
       }
       const char* wanted = list == &atomic.times ? "a time or ';' ending the times"
                                                  : "a value or ';' ending the values";
       if (auto semicolon = expect(TokenKind::semicolon, wanted); !semicolon) return semicolon.error();
-      list->shrink_to_fit();
+      list->assign(numbers_read_.begin(), numbers_read_.end());
     }
     if (auto close = expect(TokenKind::right_paren, "')' closing the time-value list"); !close) {
       return close.error();
@@ -212,33 +217,33 @@ class Parser {
 
   Result<std::vector<Param>> parameters() {
     next();  // <
-    std::vector<Param> params;
+    std::vector<Param>& params = params_read_;
+    params.clear();
     for (;;) {
       Result<Token> name = expect(TokenKind::identifier, "a parameter name");
       if (!name) return name.error();
-      Param param{name->str(), position(*name), std::nullopt};
-      const bool known = kWithoutValue.contains(param.name) || kWithValue.contains(param.name) ||
-                         kValueOptional.contains(param.name);
-      if (!known) {
-        return error_at(*name, "unknown parameter '" + param.name +
+      const std::optional<ParamName> id = param_name(name->text);
+      if (!id) {
+        return error_at(*name, "unknown parameter '" + name->str() +
                                    "' (expected left, right, in, hold, out, value, connect, "
                                    "duration, freq, period, min, max, linear, sin, log, exp, "
                                    "average, add or overwrite)");
       }
+      Param param{*id, position(*name), std::nullopt};
       if (peek().kind == TokenKind::equals) {
-        if (kWithoutValue.contains(param.name)) {
-          return error_at(peek(), "'" + param.name + "' takes no value");
+        if (takes_no_value(param.id)) {
+          return error_at(peek(), "'" + param.name() + "' takes no value");
         }
         next();
         if (peek().kind == TokenKind::identifier) {
-          return error_at(peek(), "'" + param.name + "' takes a number, not the name '" +
+          return error_at(peek(), "'" + param.name() + "' takes a number, not the name '" +
                                       peek().str() + "'");
         }
-        Result<Token> value = expect(TokenKind::number, "a number after '" + param.name + "='");
+        Result<Token> value = expect(TokenKind::number, "a number after '" + param.name() + "='");
         if (!value) return value.error();
         param.value = Number{value->number, position(*value)};
-      } else if (kWithValue.contains(param.name)) {
-        return error_at(*name, "'" + param.name + "' needs a value ('" + param.name + "=...')");
+      } else if (needs_value(param.id)) {
+        return error_at(*name, "'" + param.name() + "' needs a value ('" + param.name() + "=...')");
       }
       params.push_back(std::move(param));
       if (peek().kind == TokenKind::comma) {
@@ -248,16 +253,16 @@ class Parser {
       if (auto close = expect(TokenKind::greater, "',' or '>' in the parameter list"); !close) {
         return close.error();
       }
-      params.shrink_to_fit();
-      return params;
+      // One allocation of the right size per list: a program has millions of them.
+      return std::vector<Param>(params.begin(), params.end());
     }
   }
 };
 
 }  // namespace
 
-Result<Program> parse_program(std::string_view source, const std::string& file_name) {
-  return Parser(source, file_name).program();
+Status parse_program(std::string_view source, const std::string& file_name, Program& program, MainSink& sink) {
+  return Parser(source, file_name, sink).program(program);
 }
 
 }  // namespace fapc::mimic

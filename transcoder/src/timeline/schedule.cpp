@@ -27,6 +27,7 @@ class Scheduler {
  public:
   std::optional<ScheduleError> error;
   std::int64_t max_runs = 0;
+  std::size_t leaves = 0;  // counted by measure_tree(): as many runs as a tree without repeats has
 
   // Numbers the nodes (depth first, the root 0) and measures each: before place().
   void measure_tree(const ScheduleNode& root) {
@@ -100,7 +101,8 @@ class Scheduler {
   std::vector<std::optional<double>> measured_;
   std::vector<std::size_t> size_;
 
-  static std::size_t count(const ScheduleNode& node) {
+  std::size_t count(const ScheduleNode& node) {
+    if (node.kind == Kind::leaf) ++leaves;
     std::size_t n = 1;
     for (const ScheduleNode& child : node.children) n += count(child);
     return n;
@@ -359,6 +361,9 @@ std::variant<Schedule, ScheduleError> schedule_tree(const ScheduleNode& root, co
   Schedule result;
   const double cut = options.root_end.value_or(kForever);
   scheduler.measure_tree(root);
+  // Room for one run per leaf up front: a million runs grown by doubling held 1.5 times their
+  // size at the end, and both the old and the new block while the last copy was made.
+  result.occurrences.reserve(std::min(scheduler.leaves, static_cast<std::size_t>(std::max<std::int64_t>(options.max_runs, 0))));
   result.end = scheduler.place(root, 0, root.timing.offset, options.root_end, cut, result.occurrences);
   if (scheduler.error) return *scheduler.error;
   if (options.root_end) result.end = *options.root_end;

@@ -18,6 +18,9 @@ Result<Loaded> load_mimic(const std::string& path, const ConvertOptions& options
   mimic.max_runs = options.limits.max_runs;
   mimic.includes = options.includes;
   Result<MimicProgram> program = compile_mimic(*source, path, mimic);
+  // The timeline and the warnings keep nothing of the text: let it go before rendering (a
+  // million-action script is 44 MB).
+  *source = std::string();
   if (!program) return program.error();
   nlohmann::ordered_json facts = nlohmann::ordered_json::object();
   if (options.facts) {
