@@ -78,7 +78,7 @@ struct FbaEncoder::State {
       if (!gop) return gop.error();
       if (!*gop) return ok_status();
       writer->write(**gop);
-      window.erase(window.begin(), window.begin() + static_cast<std::ptrdiff_t>((*gop)->end));
+      window.erase_front((*gop)->end);
     }
   }
 
@@ -91,7 +91,7 @@ struct FbaEncoder::State {
   // Second pass.
   std::optional<fba::MaskFitter> fitter;
   std::size_t added = 0;
-  std::vector<FapFrame> window;  // one group of frames as coded, and the frame after it
+  fba::FrameWindow window;  // one group of frames as coded, and the frame after it, packed
   fba::GopPlanner planner;
   std::optional<fba::PlaneWriter> writer;  // from start()
 };

@@ -10,7 +10,7 @@ namespace fapc::fba {
 
 namespace {
 
-std::array<int, kCodedFieldCount> coded_fields(const FapFrame& f) {
+std::array<int, kCodedFieldCount> coded_fields(const FrameWindow::View& f) {
   return {f.viseme.select1,     f.viseme.select2,        f.viseme.blend,
           f.expression.select1, f.expression.intensity1, f.expression.select2,
           f.expression.intensity2};
@@ -22,7 +22,7 @@ bool field_masked(const std::bitset<kFapCount>& mask, int field) {
 
 }  // namespace
 
-GopPlanner::GopPlanner(const std::vector<FapFrame>& window, const FbaEncodeOptions& options)
+GopPlanner::GopPlanner(const FrameWindow& window, const FbaEncodeOptions& options)
     : frames_(window), options_(options) {
   quant_.fap_quant = options.quant;
   limit_ = kMaxRangeValue * kRangeDelta / quant_.range_scaler();
@@ -60,7 +60,7 @@ bool GopPlanner::differences_fit(std::size_t k, const Gop& gop) {
 }
 
 Status GopPlanner::check_intra(const Gop& gop) const {
-  const FapFrame& frame = frames_[gop.first];
+  const FrameWindow::View frame = frames_[gop.first];
   for (std::size_t j = 0; j < gop.faps.size(); ++j) {
     if (within(nearest_[j])) continue;
     const int fap = gop.faps[j];

@@ -13,6 +13,7 @@
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/fba.hpp"
 #include "fba/face_state.hpp"
+#include "fba/frame_window.hpp"
 #include "fba/level_chooser.hpp"
 #include "fba/level_rule.hpp"
 
@@ -37,7 +38,7 @@ struct Gop {
 // at the window's first frame; the caller removes a group's frames once it has written them.
 class GopPlanner {
  public:
-  GopPlanner(const std::vector<FapFrame>& window, const FbaEncodeOptions& options);
+  GopPlanner(const FrameWindow& window, const FbaEncodeOptions& options);
 
   // The next group, from the window's first frame up to the next frame that needs an intra plane:
   // a mask change, the intra period, or a difference no range can carry. Empty while the window
@@ -60,7 +61,7 @@ class GopPlanner {
   void fit_ranges(Gop& gop) const;
   bool within(std::int64_t q) const { return q <= limit_ && q >= -limit_; }
 
-  const std::vector<FapFrame>& frames_;  // the window
+  const FrameWindow& frames_;  // the window
   FbaEncodeOptions options_;
   std::optional<Gop> current_;  // the group being scanned; begun, not complete
   std::size_t scan_ = 0;        // the next frame of the window to scan

@@ -12,7 +12,7 @@ constexpr std::size_t kMaxZerosBeforeStartCode = 8;
 
 }  // namespace
 
-PlaneWriter::PlaneWriter(const std::vector<FapFrame>& window, int fps, const FbaEncodeOptions& options)
+PlaneWriter::PlaneWriter(const FrameWindow& window, int fps, const FbaEncodeOptions& options)
     : frames_(window), options_(options), fps_(fps) {
   state_.fap_quant = options.quant;
   out_.put_bits(kFbaObjectStartCode, kStartCodeBits);
@@ -110,7 +110,7 @@ void PlaneWriter::write_intra_face_header(const Gop& gop) {
 }
 
 void PlaneWriter::write_segments(const Gop& gop, std::size_t k, bool intra) {
-  const FapFrame& frame = frames_[k];
+  const FrameWindow::View frame = frames_[k];
   const std::size_t row = k - gop.first;
   const std::int16_t* fields = gop.fields.data() + row * kCodedFieldCount;
   const auto code_field = [&](int field) {

@@ -16,7 +16,7 @@ namespace fapc::fba {
 class PlaneWriter {
  public:
   // `window`: the planner's window of frames (GopPlanner); `fps`: the sequence's frame rate.
-  PlaneWriter(const std::vector<FapFrame>& window, int fps, const FbaEncodeOptions& options);
+  PlaneWriter(const FrameWindow& window, int fps, const FbaEncodeOptions& options);
 
   // Every plane of the group, in order. The window holds the frame after the group unless the
   // group ends the sequence (a plane's skip count is the gap to the next frame).
@@ -36,7 +36,7 @@ class PlaneWriter {
   void write_intra_face_header(const Gop& gop);
   void write_segments(const Gop& gop, std::size_t k, bool intra);
 
-  const std::vector<FapFrame>& frames_;  // the window
+  const FrameWindow& frames_;  // the window
   FbaEncodeOptions options_;
   std::optional<std::int64_t> first_number_;  // of the sequence's first frame
   int fps_;

@@ -1,11 +1,12 @@
 // How a script reaches .fba and .fap outputs without its frames in memory (docs/architecture.md,
 // "Streaming"). The front end lowers the script to its timeline as usual; the frames are then
-// rendered one at a time, twice when an .fba is asked for (the encoder's first pass checks every
-// frame and plans the masks over the whole sequence, its second codes), since rendering the same
-// timeline again gives the same frames:
+// rendered one at a time. An .fba takes them twice (the encoder's first pass checks every frame
+// and plans the masks over the whole sequence, its second codes): the first pass keeps them on a
+// compact tape (frame_tape.hpp) that the second replays, or, when the tape would outgrow its
+// budget, the second renders them again (rendering the same timeline gives the same frames):
 //
-//   pass 1: FrameStream::frame  --frames-->  FbaEncoder::check        every warning found here
-//   pass 2: FrameStream::frame  --frames-->  FbaEncoder::add, FapTextWriter::add
+//   pass 1: FrameStream::frame  --frames-->  FbaEncoder::check, FrameTape   every warning found here
+//   pass 2: FrameTape (or FrameStream::frame)  --frames-->  FbaEncoder::add, FapTextWriter::add
 //
 // Without an .fba the first pass is the writing pass. The .fap text goes to a temporary file in
 // the output's folder, renamed over it only when everything has succeeded; a frame costs a few
@@ -19,11 +20,16 @@
 #include "fapc/codec/file_io.hpp"
 #include "fapc/pipeline/fba_io.hpp"
 #include "fap_text_outputs.hpp"
+#include "frame_tape.hpp"
 #include "timeline_input.hpp"
 
 namespace fapc::pipeline {
 
 namespace {
+
+// The most bytes the frames may take on the tape between the passes: a byte or two per masked FAP
+// and frame, so some 10^7 frames of a few FAPs; beyond, the second pass renders again.
+constexpr std::size_t kFrameTapeBudget = std::size_t{64} << 20;
 
 bool is_gzip_path(const std::string& path) {
   return path.size() >= 3 && path.compare(path.size() - 3, 3, ".gz") == 0;
@@ -64,18 +70,22 @@ std::optional<ConvertResult> convert_script_streamed(const std::string& input,
     return result;
   }
   if (!lowered->timeline) return std::nullopt;  // not reached: a script's load keeps its timeline
-  const Timeline timeline = std::move(*lowered->timeline);
+  // Held apart so that both can go once the tape holds every frame (the second pass needs neither).
+  auto timeline = std::make_unique<Timeline>(std::move(*lowered->timeline));
+  lowered->timeline.reset();
   Result<Profile> profile = profile_for(options);
   if (!profile) {
     result.error = profile.error();
     return result;
   }
-  Result<FrameStream> stream = stream_frames(timeline, input, *profile, options);
-  if (!stream) {
-    result.error = stream.error();
+  std::optional<FrameStream> stream;
+  if (Result<FrameStream> started = stream_frames(*timeline, input, *profile, options); started) {
+    stream.emplace(std::move(*started));
+  } else {
+    result.error = started.error();
     return result;
   }
-  if (auto audio = mixed_audio(timeline, options); !audio) {
+  if (auto audio = mixed_audio(*timeline, options); !audio) {
     result.error = audio.error();
     return result;
   }
@@ -94,9 +104,11 @@ std::optional<ConvertResult> convert_script_streamed(const std::string& input,
   // Pass 1: every frame, to the encoder's check (or, without an .fba, to the .fap text).
   std::bitset<kFapCount> faps;
   if (wants_text && !wants_fba) fap.begin();
+  FrameTape tape(wants_fba ? kFrameTapeBudget : 0);
   for (std::int64_t k = 0; k < stream->count(); ++k) {
     const FapFrame frame = stream->frame(k);
     faps |= frame.mask;
+    if (wants_fba) tape.record(frame);
     if (encoder && !encode_error)
       if (auto status = encoder->check(frame); !status) encode_error = status.error();
     if (wants_text && !wants_fba) fap.add(frame);
@@ -113,13 +125,20 @@ std::optional<ConvertResult> convert_script_streamed(const std::string& input,
     return result;
   }
 
-  // Pass 2: the same frames again, coded.
+  // Pass 2: the same frames again, coded. From the tape the timeline and its index are no longer
+  // needed: their memory goes to the encoder's group of frames.
+  const std::int64_t count = stream->count();
   if (encoder && !encode_error)
     if (auto status = encoder->start(stream->fps()); !status) encode_error = status.error();
+  if (wants_fba && !tape.dropped()) {
+    stream.reset();
+    timeline.reset();
+  }
   if (wants_fba && ((encoder && !encode_error) || wants_text)) {
     if (wants_text) fap.begin();
-    for (std::int64_t k = 0; k < stream->count(); ++k) {
-      const FapFrame frame = stream->frame(k);
+    FrameTape::Player replay = tape.play();
+    for (std::int64_t k = 0; k < count; ++k) {
+      const FapFrame frame = tape.dropped() ? stream->frame(k) : replay.next();
       if (encoder && !encode_error)
         if (auto status = encoder->add(frame); !status) encode_error = status.error();
       if (wants_text) fap.add(frame);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <set>
+#include <span>
 #include <sstream>
 
 #include "timeline_index.hpp"
@@ -15,10 +16,11 @@ struct Driver {
   const TargetIndex* index;
   std::vector<FapContribution> contributions;
   int weight_slot = -1;  // viseme or expression number for viseme.X / expression.X targets
+  std::size_t cursor = 0;  // the elementary interval of the last frame: frames mostly come in order
 };
 
 // The two strongest weights become FAP 1 / FAP 2's two slots (ties: the lower number).
-std::pair<std::pair<int, int>, std::pair<int, int>> strongest_two(const std::vector<int>& weights) {
+std::pair<std::pair<int, int>, std::pair<int, int>> strongest_two(std::span<const int> weights) {
   std::pair<int, int> first{0, 0};
   std::pair<int, int> second{0, 0};
   for (int slot = 1; slot < static_cast<int>(weights.size()); ++slot) {
@@ -67,23 +69,23 @@ class FrameRenderer {
   Diagnostics warnings_;
   std::set<std::int64_t> warned_clips_;
 
-  FapFrame frame_at(const std::vector<Driver>& drivers, std::int64_t k) {
+  FapFrame frame_at(std::vector<Driver>& drivers, std::int64_t k) {
     const double t = static_cast<double>(k) / options_.fps;
     FapFrame frame;
     frame.number = k;
     std::array<double, kFapCount> sums{};
     std::array<std::int64_t, kFapCount> causes;
     causes.fill(-1);
-    std::vector<int> visemes(15, 0);
-    std::vector<int> expressions(7, 0);
-    for (const Driver& driver : drivers) {
+    std::array<int, 15> visemes{};
+    std::array<int, 7> expressions{};
+    for (Driver& driver : drivers) {
       if (t < driver.index->span_begin || t >= driver.index->span_end) continue;
-      const Blended blended = index_.value_at(*driver.index, t, false);
+      const Blended blended = index_.value_at(*driver.index, t, false, driver.cursor);
       for (const FapContribution& c : driver.contributions) {
         const auto slot = static_cast<std::size_t>(c.fap - 1);
         frame.mask.set(slot);
         if (driver.weight_slot >= 0) {
-          std::vector<int>& weights = c.fap == 1 ? visemes : expressions;
+          const std::span<int> weights = c.fap == 1 ? std::span<int>(visemes) : std::span<int>(expressions);
           weights[static_cast<std::size_t>(driver.weight_slot)] =
               clamp_and_warn(blended.value, 63, 0, blended.cause, t, "the weight");
           continue;

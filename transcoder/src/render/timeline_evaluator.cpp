@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <unordered_map>
 
 namespace fapc {
 namespace {
@@ -80,6 +81,22 @@ std::span<const std::uint32_t> TargetIndex::active_at(double t, bool from_left) 
   return std::span<const std::uint32_t>(members).subspan(offsets[j], offsets[j + 1] - offsets[j]);
 }
 
+std::span<const std::uint32_t> TargetIndex::active_at(double t, std::size_t& cursor) const {
+  // Interval j is [cuts[j], cuts[j+1]); before the first cut nothing is active. A cursor that
+  // lies ahead of t, or far behind it, gives way to the binary search.
+  constexpr std::size_t kWalk = 4;
+  std::size_t j = cursor;
+  if (j >= cuts.size() || cuts[j] > t) return active_at(t, false);
+  for (std::size_t steps = 0; j + 1 < cuts.size() && cuts[j + 1] <= t; ++j, ++steps)
+    if (steps == kWalk) {
+      const auto it = std::upper_bound(cuts.begin() + static_cast<std::ptrdiff_t>(j), cuts.end(), t);
+      j = static_cast<std::size_t>(it - cuts.begin() - 1);
+      break;
+    }
+  cursor = j;
+  return std::span<const std::uint32_t>(members).subspan(offsets[j], offsets[j + 1] - offsets[j]);
+}
+
 double clip_value(const Clip& clip, double t, bool from_left) {
   // Past its end a (frozen) clip holds the value it reached, the limit from the left.
   if (t >= clip.end) return clip.curve.left_limit(clip.local_time(clip.end));
@@ -121,17 +138,31 @@ Blended blend(const std::vector<Clip>& all, std::span<const std::uint32_t> activ
 }
 
 TimelineIndex::TimelineIndex(const std::vector<Clip>& timeline_clips) : clips(timeline_clips) {
-  std::map<std::string, std::vector<std::uint32_t>> by_target;
+  // Interned names: equal targets are one string, so the clips group by its address (a hash of a
+  // pointer, not a comparison of names per clip); the map then orders the few targets by name.
+  std::unordered_map<const std::string*, std::vector<std::uint32_t>> by_target;
+  const std::string* last = nullptr;
+  std::vector<std::uint32_t>* last_list = nullptr;
   for (std::size_t i = 0; i < clips.size(); ++i) {
-    by_target[clips[i].target].push_back(static_cast<std::uint32_t>(i));
+    const std::string* name = &clips[i].target.str();
+    if (name != last) {
+      last = name;
+      last_list = &by_target[name];
+    }
+    last_list->push_back(static_cast<std::uint32_t>(i));
   }
   for (auto& [target, list] : by_target) {
-    targets.emplace(target, TargetIndex(clips, std::move(list)));
+    targets.emplace(*target, TargetIndex(clips, std::move(list)));
   }
 }
 
 Blended TimelineIndex::value_at(const TargetIndex& target, double t, bool from_left) const {
   return blend(clips, target.active_at(t, from_left), t, from_left);
+}
+
+Blended TimelineIndex::value_at(const TargetIndex& target, double t, bool from_left, std::size_t& cursor) const {
+  if (from_left) return value_at(target, t, from_left);
+  return blend(clips, target.active_at(t, cursor), t, from_left);
 }
 
 // ---- the public face -----------------------------------------------------------------------

@@ -25,6 +25,9 @@ struct TargetIndex {
   double span_end = 0;
 
   std::span<const std::uint32_t> active_at(double t, bool from_left) const;
+  // The same, starting from the interval `cursor` names (updated): a walk of a step or two when
+  // times ascend, as frames do, instead of a binary search. Only for right-continuous queries.
+  std::span<const std::uint32_t> active_at(double t, std::size_t& cursor) const;
 
  private:
   void build_intervals(const std::vector<Clip>& all);
@@ -49,6 +52,7 @@ struct TimelineIndex {
   std::map<std::string, TargetIndex> targets;
 
   Blended value_at(const TargetIndex& target, double t, bool from_left) const;
+  Blended value_at(const TargetIndex& target, double t, bool from_left, std::size_t& cursor) const;
 };
 
 }  // namespace fapc

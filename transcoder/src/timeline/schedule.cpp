@@ -98,7 +98,7 @@ class Scheduler {
 
  private:
   // By node number: the active duration when known without a parent end; the subtree's size.
-  std::vector<std::optional<double>> measured_;
+  std::vector<OptionalSeconds> measured_;  // 8 bytes a node, not 16
   std::vector<std::size_t> size_;
 
   std::size_t count(const ScheduleNode& node) {
@@ -259,7 +259,7 @@ class Scheduler {
       const std::size_t from = out.size();
       latest = std::max(latest, place(child, this_index, child_start, child_limit, cut, out));
       if (error) return latest;
-      runs.push_back(ChildRun{child_start, from, out.size()});
+      if (node.kind == Kind::exclusive) runs.push_back(ChildRun{child_start, from, out.size()});
     }
     if (node.kind == Kind::exclusive) cut_exclusive(runs, out);
     return latest;

@@ -39,6 +39,8 @@ class Scanner {
   std::string_view text_;
   std::size_t pos_ = 0;
   std::vector<std::pair<std::string_view, std::size_t>> attributes_;  // of the tag being read
+  std::vector<std::size_t> open_;  // numbers of the elements open around the scan
+  std::size_t started_ = 0;
 
   template <class OnStart, class OnEnd>
   void scan(OnStart on_start, OnEnd on_end) {
@@ -55,9 +57,15 @@ class Scanner {
         skip_declaration();
       } else if (starts("</")) {
         skip_past(">");
+        if (!open_.empty()) open_.pop_back();
         on_end();
       } else {
-        on_start(start_tag());
+        ScannedTagView tag = start_tag();
+        tag.number = ++started_;
+        tag.parent = open_.empty() ? 0 : open_.back();
+        tag.depth = open_.size();
+        on_start(tag);
+        if (!tag.empty) open_.push_back(tag.number);
       }
     }
   }

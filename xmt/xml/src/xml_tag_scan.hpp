@@ -29,6 +29,9 @@ struct ScannedTagView {
   std::string_view name;
   const std::vector<std::pair<std::string_view, std::size_t>>* attributes = nullptr;
   bool empty = false;
+  std::size_t number = 0;  // 1-based, in document order
+  std::size_t parent = 0;  // the number of the element it is in, 0 for the root
+  std::size_t depth = 0;   // open elements around it, 0 for the root
 };
 
 // The same scan without a copy per tag: `on_tag` sees each start tag in document order.

@@ -4,7 +4,9 @@
 // occurrences. It knows timing only, nothing about curves.
 #pragma once
 
+#include <bit>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -15,6 +17,41 @@
 #include "fapc/codec/limits.hpp"
 
 namespace fapc {
+
+// std::optional<double> in 8 bytes instead of 16: "no value" is one NaN bit pattern that no
+// arithmetic produces (a quiet NaN with a payload), so every double, NaN included, stays a value.
+// Reads and assigns like the optional. A schedule tree has a node per element, each with four.
+class OptionalSeconds {
+ public:
+  constexpr OptionalSeconds() = default;
+  constexpr OptionalSeconds(std::nullopt_t) {}                    // NOLINT
+  constexpr OptionalSeconds(double value) : value_(value) {}      // NOLINT
+  constexpr OptionalSeconds(const std::optional<double>& value)  // NOLINT
+      : value_(value ? *value : none()) {}
+
+  constexpr bool has_value() const { return std::bit_cast<std::uint64_t>(value_) != kNone; }
+  constexpr explicit operator bool() const { return has_value(); }
+  constexpr const double& operator*() const { return value_; }
+  constexpr double& operator*() { return value_; }
+  constexpr double value() const {
+    if (!has_value()) throw std::bad_optional_access();
+    return value_;
+  }
+  constexpr double value_or(double otherwise) const { return has_value() ? value_ : otherwise; }
+  constexpr void reset() { value_ = none(); }
+  constexpr operator std::optional<double>() const {  // NOLINT
+    return has_value() ? std::optional<double>(value_) : std::nullopt;
+  }
+
+  friend constexpr bool operator==(const OptionalSeconds& a, const OptionalSeconds& b) {
+    return a.has_value() == b.has_value() && (!a.has_value() || a.value_ == b.value_);
+  }
+
+ private:
+  static constexpr std::uint64_t kNone = 0x7FF8'0000'0000'DEADull;
+  static constexpr double none() { return std::bit_cast<double>(kNone); }
+  double value_ = none();
+};
 
 // Timing of one node. All times in seconds. Which field a front end fills:
 //   Mimic  left=x -> offset; right=x -> align_right; periodic duration -> duration.
@@ -27,20 +64,21 @@ struct Timing {
   // The simple duration. Leaves: intrinsic (e.g. a fade's in+hold+out) or given; empty means
   // "until the parent's reference end" (a Mimic periodic without duration, SMIL indefinite).
   // Groups: empty means "from the children".
-  std::optional<double> duration;
+  OptionalSeconds duration;
   // The end, measured like offset from the default start; wins over duration (the active
   // duration becomes end - offset).
-  std::optional<double> end;
+  OptionalSeconds end;
   // Only in parallels: end at the parallel's reference end + x (the start moves, the duration
   // stays). Mimic's `right` / `right=x`.
-  std::optional<double> align_right;
+  OptionalSeconds align_right;
   double repeat = 1;               // iterations, may be fractional (SMIL repeatCount)
   bool repeat_indefinite = false;  // until the parent's end; an error when there is none
-  std::optional<double> repeat_duration;  // caps the active duration (SMIL repeatDur)
+  OptionalSeconds repeat_duration;  // caps the active duration (SMIL repeatDur)
 };
 
+// 128 bytes: the tree has a node per element of the script.
 struct ScheduleNode {
-  enum class Kind { leaf, sequence, parallel, exclusive };
+  enum class Kind : std::uint8_t { leaf, sequence, parallel, exclusive };
   Kind kind = Kind::leaf;
   Timing timing;
   std::vector<ScheduleNode> children;

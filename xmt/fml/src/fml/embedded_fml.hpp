@@ -10,6 +10,7 @@ namespace fapc::xmt {
 
 struct EmbeddedFmlMove {
   FmlLeaf leaf;   // what the move does (move, normal, talk or wait)
+  std::string target;  // a move's target
   Timing timing;  // begin, duration (always set), repeat, as the scheduler takes them
   Diagnostics warnings;
 };
@@ -21,6 +22,7 @@ Result<EmbeddedFmlMove> read_embedded_fml_move(const xml::XmlDocument& doc, cons
 
 // A talk as a timeline from time 0: its viseme clips by the coarticulation rule, and its audio.
 // A spoken talk keeps its own length; a silent one (letters, .pho) is stretched to `duration`.
-Timeline talk_timeline(const FmlLeaf& talk, double duration, const Coarticulation& rule);
+// `where`: the talk element.
+Timeline talk_timeline(const FmlTalk& talk, const Location& where, double duration, const Coarticulation& rule);
 
 }  // namespace fapc::xmt

@@ -1,6 +1,7 @@
 // The FML reader: walks the model and the story, builds the time tree (fml_tree.hpp), schedules it
 // and lowers the runs to clips. What it does not read is reported, never dropped silently.
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <cmath>
 #include <filesystem>
@@ -111,17 +112,18 @@ class FmlReader {
     if (error_) return *error_;
     once_.finish();
     EmbeddedFmlMove embedded;
-    embedded.leaf = tree_.leaves.at(placed->leaf_id);
+    embedded.leaf = std::move(tree_.leaves.at(placed->leaf_id));
+    if (embedded.leaf.kind == FmlLeaf::Kind::move) embedded.target = tree_.targets.at(embedded.leaf.target);
     embedded.timing = placed->timing;
     embedded.warnings = std::move(result_.warnings);
     return embedded;
   }
 
-  // `owner`: the document itself, when the reader may free its tree once walked.
+  // `owner`: the document itself, which the reader frees once walked.
   Result<FmlDocument> run(xml::XmlDocument* owner) {
     result_.warnings = doc_.warnings();
     const xmlNode* root = doc_.root();
-    if (const std::string other = other_format_name(root); !other.empty()) {
+    if (const std::string other = other_format_name(doc_, root); !other.empty()) {
       return doc_.error(root, "this is " + other + ", not FML (the Arya-DiPaola Face Modeling Language, "
                                                    "root fml with model and story): fapc does not read it");
     }
@@ -132,33 +134,47 @@ class FmlReader {
     check_attributes(root, {});
     check_text(root);
     const xmlNode* story = nullptr;
-    for (const xmlNode* child : xml::element_children(root)) {
+    // Streamed, the story is read where it is met (its parts freed as they are read), which is
+    // the order of a parsed document's reading as long as nothing follows the story.
+    bool story_read = false;
+    static constexpr std::array<std::string_view, 1> kStory{"story"};
+    for (const xmlNode* child : doc_.children(root, kStory)) {
+      if (story_read) {
+        owner->abandon_stream();
+        break;
+      }
       const std::string_view name = xml::local_name(child);
       if (name == "model") {
         read_model(child);
       } else if (name == "story") {
         if (story) return doc_.error(child, "a second story: an FML document has one");
         story = child;
+        if (doc_.streamed()) {
+          if (error_) return *error_;
+          read_story(story);
+          if (error_) return *error_;
+          story_read = true;
+        }
       } else {
         unknown(child, "is not part of FML (fml holds model and story) and was skipped");
       }
     }
     if (error_) return *error_;
     if (!story) return doc_.error(root, "fml has no story: nothing to animate");
-    check_given_events();
-    check_attributes(story, {});
-    tree_.leaves.reserve(doc_.element_count());
-    tree_.root = container(story, Kind::sequence, Timing{});
+    if (!story_read) read_story(story);
     if (error_) return *error_;
     // What follows needs no node: the tree's memory goes before the clips are made.
     templates_.clear();
-    if (owner) owner->release_tree();
+    owner->release_tree();
     if (Status s = check_runs(); !s) return s.error();
     ScheduleOptions schedule_options;
     schedule_options.root_end = options_.duration;
     schedule_options.max_runs = options_.max_runs;
     auto scheduled = schedule_tree(tree_.root, schedule_options);
     if (const auto* problem = std::get_if<ScheduleError>(&scheduled)) return scheduler_error(*problem);
+    // Lowering needs the runs and the leaves, not the tree (the root's source aside): its nodes go
+    // before the clips are made.
+    std::vector<ScheduleNode>().swap(tree_.root.children);
     tree_.coarticulation = options_.coarticulation;
     result_.timeline = lower_fml(tree_, std::get<Schedule>(scheduled));
     once_.finish();
@@ -198,15 +214,15 @@ class FmlReader {
   void check_attributes(const xmlNode* element, std::initializer_list<const char*> known,
                         std::initializer_list<const char*> more = {}) {
     for (const xmlAttr* attr = element->properties; attr; attr = attr->next) {
-      const std::string name = xml::qualified_name(attr);
       if (attr->ns) continue;  // xml:lang, xsi:* and other namespaced attributes carry no FML
+      const std::string_view name = reinterpret_cast<const char*>(attr->name);  // as written: no prefix
       const auto listed = [&](std::initializer_list<const char*> list) {
         return std::any_of(list.begin(), list.end(), [&](const char* k) { return name == k; });
       };
       if (listed(known) || listed(more)) continue;
       const std::string element_name(xml::local_name(element));
-      once_.report("attribute " + element_name + "@" + name,
-                   doc_.warning(element, name, "attribute '" + name + "' of " + element_name +
+      once_.report("attribute " + element_name + "@" + std::string(name),
+                   doc_.warning(element, name, "attribute '" + std::string(name) + "' of " + element_name +
                                                    " is not part of FML and was ignored"));
     }
   }
@@ -358,11 +374,22 @@ class FmlReader {
     return node;
   }
 
+  void read_story(const xmlNode* story) {
+    check_given_events();
+    check_attributes(story, {});
+    tree_.leaves.reserve(doc_.element_count());
+    tree_.root = container(story, Kind::sequence, Timing{});
+  }
+
   // A time container's children in order; excl branches and unknown elements are handled here.
+  // Streamed, the containers among them are read child by child, and each child of the story is
+  // freed once read (a template's, which behaviors read again, never).
   ScheduleNode container(const xmlNode* node, Kind kind, Timing timing) {
+    static constexpr std::array<std::string_view, 4> kContainers{"action", "act", "seq", "par"};
     ScheduleNode group = remember(ScheduleNode::group(kind, timing, doc_.where(node)), node);
+    group.children.reserve(doc_.child_count(node));  // no regrowth: a tree is ~all its nodes
     check_text(node);
-    for (const xmlNode* child : xml::element_children(node)) {
+    for (const xmlNode* child : doc_.children(node, kContainers, expanding_.empty())) {
       if (error_) break;
       if (auto placed = element(child)) group.children.push_back(std::move(*placed));
     }
@@ -537,11 +564,20 @@ class FmlReader {
 
   // ---- moves ---------------------------------------------------------------------------------
 
+  // A move's target, its name kept once in the tree.
+  std::uint32_t target_number(const std::string& name) {
+    const std::uint32_t number = target_names_.number(name);
+    if (number == tree_.targets.size()) tree_.targets.push_back(name);
+    return number;
+  }
+  xml::NameTable target_names_;  // numbers of tree_.targets
+
   ScheduleNode add_leaf(const xmlNode* node, FmlLeaf leaf, Timing timing) {
     leaf.where = doc_.where(node);
     const std::size_t id = tree_.leaves.size();
+    const Location where = leaf.where;
     tree_.leaves.push_back(std::move(leaf));
-    return remember(ScheduleNode::leaf(id, timing, doc_.where(node)), node);
+    return remember(ScheduleNode::leaf(id, timing, where), node);
   }
 
   // A move that cannot be animated (an unknown type) keeps its place in time as a wait.
@@ -604,9 +640,10 @@ class FmlReader {
       percent = std::clamp(*percent, 0.0, 100.0);
     }
     leaf.kind = FmlLeaf::Kind::move;
-    leaf.target = "expression." + std::string(expression_name(*expression));
+    const std::string target = "expression." + std::string(expression_name(*expression));
+    leaf.target = target_number(target);
     leaf.value = *percent * 63.0 / 100.0;
-    expressions_.insert(leaf.target);
+    expressions_.insert(target);
     return add_leaf(node, std::move(leaf), move_timing(timing, 1.0));
   }
 
@@ -626,7 +663,7 @@ class FmlReader {
     }
     FmlLeaf leaf;
     leaf.kind = FmlLeaf::Kind::move;
-    leaf.target = std::string(find_fap(kAxisFap[*axis])->name);
+    leaf.target = target_number(std::string(find_fap(kAxisFap[*axis])->name));
     leaf.value = clamped * kAngleUnitsPerDegree;
     return add_leaf(node, std::move(leaf), move_timing(timing, 1.0));
   }
@@ -648,7 +685,7 @@ class FmlReader {
     if (!value) return std::nullopt;
     FmlLeaf leaf;
     leaf.kind = FmlLeaf::Kind::move;
-    leaf.target = std::string(info->name);
+    leaf.target = target_number(std::string(info->name));
     leaf.value = *value;
     return add_leaf(node, std::move(leaf), move_timing(timing, 1.0));
   }
@@ -664,7 +701,7 @@ class FmlReader {
     if (!value) return std::nullopt;
     FmlLeaf leaf;
     leaf.kind = FmlLeaf::Kind::move;
-    leaf.target = name;
+    leaf.target = target_number(name);
     leaf.value = *value;
     return add_leaf(node, std::move(leaf), move_timing(timing, 1.0));
   }
@@ -682,6 +719,7 @@ class FmlReader {
     }
     FmlLeaf leaf;
     leaf.kind = FmlLeaf::Kind::talk;
+    leaf.talk = std::make_unique<FmlTalk>();
     if (file) {
       auto speech = phonemes(node, trim(*file));
       if (!speech) return std::nullopt;
@@ -690,31 +728,32 @@ class FmlReader {
                                                                 "phoneme file: fapc has no speech recogniser, so "
                                                                 "this talk is silent (it waits)"));
       }
-      leaf.speech = std::move(*speech);
+      leaf.talk->speech = std::move(*speech);
     } else {
       if (text.empty()) {
         fail(doc_.error(node, "talk needs text to say or a phoneme file (file=\"x.pho\")"));
         return std::nullopt;
       }
-      if (!speak(node, text, leaf)) return std::nullopt;
+      if (!speak(node, text, *leaf.talk)) return std::nullopt;
     }
     // The talk lasts until its sound ends and the mouth is back at neutral.
-    leaf.natural = leaf.speech.duration;
-    for (const Clip& clip : talk_timeline(leaf, leaf.speech.duration, options_.coarticulation).clips)
-      leaf.natural = std::max(leaf.natural, clip.end);
-    const double intrinsic = leaf.natural;
+    FmlTalk& talk = *leaf.talk;
+    talk.natural = talk.speech.duration;
+    for (const Clip& clip : talk_timeline(talk, leaf.where, talk.speech.duration, options_.coarticulation).clips)
+      talk.natural = std::max(talk.natural, clip.end);
+    const double intrinsic = talk.natural;
     return add_leaf(node, std::move(leaf), move_timing(timing, intrinsic));
   }
 
   // Talk text: spoken by the engine, or (built without one) the letter approximation, with a
   // warning once per document.
-  bool speak(const xmlNode* node, const std::string& text, FmlLeaf& leaf) {
+  bool speak(const xmlNode* node, const std::string& text, FmlTalk& talk) {
     if (!options_.synthesize) {
       once_.report("no speech engine", doc_.warning(node, "no speech engine (fapc built with FAPC_SPEECH=OFF, or none "
                                                           "given): talk text becomes visemes by the letter table, with "
                                                           "no voice"));
       std::string skipped;
-      leaf.speech = visemes_from_text(text, options_.words_per_minute * 12 / 175, skipped);
+      talk.speech = visemes_from_text(text, options_.words_per_minute * 12 / 175, skipped);
       if (!skipped.empty()) {
         once_.report("skipped " + skipped, doc_.warning(node, "talk: the characters '" + skipped +
                                                                   "' have no letter-to-viseme rule and are silent"));
@@ -743,9 +782,9 @@ class FmlReader {
     }
     if (std::find(result_.languages.begin(), result_.languages.end(), request.language) == result_.languages.end())
       result_.languages.push_back(request.language);
-    leaf.speech.visemes = viseme_spans(spoken->phonemes);
-    leaf.speech.duration = spoken->duration;
-    leaf.audio = std::move(spoken->audio);
+    talk.speech.visemes = viseme_spans(spoken->phonemes);
+    talk.speech.duration = spoken->duration;
+    talk.audio = std::move(spoken->audio);
     return true;
   }
 
@@ -803,7 +842,7 @@ class FmlReader {
     if (node.kind == Kind::leaf) {
       own = t.duration.value_or(0);
       const FmlLeaf& leaf = tree_.leaves[node.leaf_id];
-      children_runs = leaf.kind == FmlLeaf::Kind::talk ? std::max<double>(1, static_cast<double>(leaf.speech.visemes.size()))
+      children_runs = leaf.kind == FmlLeaf::Kind::talk ? std::max<double>(1, static_cast<double>(leaf.talk->speech.visemes.size()))
                       : leaf.kind == FmlLeaf::Kind::normal ? std::max<double>(1, static_cast<double>(expressions_.size()))
                                                            : 1;
     } else {
@@ -854,7 +893,14 @@ class FmlReader {
 
 Result<FmlDocument> read_fml(std::string_view text, const std::string& file_name, const FmlOptions& options) {
   // Only talk text is read (an FML move's, embedded or not); elsewhere white space is dropped.
-  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name, xml::BlankText{false, {"talk"}});
+  const xml::BlankText blank_text{false, {"talk"}};
+  // Streamed first, holding only the part of the tree being read; a document the streamed walk
+  // cannot read as a parsed one is read (warnings and errors included) is read again whole.
+  if (Result<xml::XmlDocument> streamed = xml::XmlDocument::stream(text, file_name, blank_text)) {
+    Result<FmlDocument> read = FmlReader(*streamed, options).run(&*streamed);
+    if (read && streamed->finish_stream()) return read;
+  }
+  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name, blank_text);
   if (!doc) return doc.error();
   return FmlReader(*doc, options).run(&*doc);
 }

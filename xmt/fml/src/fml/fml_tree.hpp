@@ -2,6 +2,8 @@
 // what its runs become on the timeline. lower_fml() turns the scheduled runs into clips.
 #pragma once
 
+#include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -11,25 +13,32 @@
 
 namespace fapc::xmt {
 
-struct FmlLeaf {
-  enum class Kind {
-    move,    // expr, hdmv, fap, param: `target` ramps from its current value to `value`
-    normal,  // expr type="normal": every expression placed before ramps to 0
-    talk,    // `speech` (and `audio`, when spoken): see lower_fml
-    wait,    // nothing
-  };
-  Kind kind = Kind::wait;
-  Location where;
-  std::string target;
-  double value = 0;
+// What a talk says: its visemes and, when spoken, its voice.
+struct FmlTalk {
   Speech speech;
   AudioClip audio;  // the voice of a spoken talk (no samples: a silent one, stretched to its runs)
   double natural = 0;  // a talk's own length: its speech, or the last viseme's fade to neutral if later
 };
 
+// A few dozen bytes per move: the target's name is kept once in the tree, a talk's speech apart.
+struct FmlLeaf {
+  enum class Kind : std::uint8_t {
+    move,    // expr, hdmv, fap, param: `target` ramps from its current value to `value`
+    normal,  // expr type="normal": every expression placed before ramps to 0
+    talk,    // `talk` (its audio when spoken): see lower_fml
+    wait,    // nothing
+  };
+  Kind kind = Kind::wait;
+  std::uint32_t target = 0;  // in FmlTree::targets
+  double value = 0;
+  Location where;
+  std::unique_ptr<FmlTalk> talk;
+};
+
 struct FmlTree {
   ScheduleNode root;
   std::vector<FmlLeaf> leaves;  // indexed by ScheduleNode::leaf_id, in document order
+  std::vector<std::string> targets;
   Coarticulation coarticulation;
 };
 

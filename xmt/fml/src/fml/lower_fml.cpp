@@ -36,7 +36,7 @@ double current_value(const std::map<std::string, Clip>& latest, const std::strin
 // One run of a talk: its visemes and audio from the run's (possibly cut) start, cut at its end.
 void place_talk(const FmlLeaf& leaf, const Occurrence& run, const Coarticulation& rule, Timeline& out) {
   const double shift = run.begin - run.curve_offset;
-  const Timeline talk = talk_timeline(leaf, run.simple_duration, rule);
+  const Timeline talk = talk_timeline(*leaf.talk, leaf.where, run.simple_duration, rule);
   for (const Clip& inner : talk.clips) {
     Clip clip = inner;
     clip.begin = std::max(inner.begin + shift, run.begin);
@@ -51,17 +51,17 @@ void place_talk(const FmlLeaf& leaf, const Occurrence& run, const Coarticulation
 
 }  // namespace
 
-Timeline talk_timeline(const FmlLeaf& talk, double duration, const Coarticulation& rule) {
+Timeline talk_timeline(const FmlTalk& talk, const Location& where, double duration, const Coarticulation& rule) {
   Timeline out;
   const Speech& speech = talk.speech;
   const double natural = std::max(talk.natural, speech.duration);
   if (natural <= 0) return out;
   const bool spoken = !talk.audio.samples.empty();
   const double stretch = spoken ? 1.0 : duration / natural;
-  out.clips = coarticulated_viseme_clips(speech.visemes, stretch, rule, talk.where);
+  out.clips = coarticulated_viseme_clips(speech.visemes, stretch, rule, where);
   if (spoken) out.audio.push_back(talk.audio);
   out.explicit_end = duration;
-  out.end_source = talk.where;
+  out.end_source = where;
   return out;
 }
 
@@ -71,6 +71,8 @@ Timeline lower_fml(const FmlTree& tree, const Schedule& schedule) {
     if (run.end > run.begin) runs.push_back(&run);  // cut to nothing by an ancestor
   std::stable_sort(runs.begin(), runs.end(), [](const Occurrence* a, const Occurrence* b) { return a->begin < b->begin; });
   Timeline timeline;
+  // A clip per run, but for talks (a clip per viseme) and normal moves (one per expression).
+  timeline.clips.reserve(runs.size());
   std::map<std::string, Clip> latest;
   const auto place_move = [&](const std::string& target, double to, const Occurrence& run, const Location& where) {
     Clip clip = ramp_clip(target, current_value(latest, target, run.begin), to, run, where);
@@ -81,7 +83,7 @@ Timeline lower_fml(const FmlTree& tree, const Schedule& schedule) {
     const FmlLeaf& leaf = tree.leaves[run->leaf_id];
     switch (leaf.kind) {
       case FmlLeaf::Kind::move:
-        place_move(leaf.target, leaf.value, *run, leaf.where);
+        place_move(tree.targets[leaf.target], leaf.value, *run, leaf.where);
         break;
       case FmlLeaf::Kind::normal: {
         std::vector<std::string> expressions;

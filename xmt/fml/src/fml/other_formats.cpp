@@ -1,12 +1,11 @@
 #include "fml/other_formats.hpp"
 
+#include <array>
 #include <string_view>
-
-#include "fapc/xml/xml_document.hpp"
 
 namespace fapc::xmt {
 
-std::string other_format_name(const xmlNode* root) {
+std::string other_format_name(const xml::XmlDocument& doc, const xmlNode* root) {
   const std::string_view name = xml::local_name(root);
   if (name == "fml-apml") return "Greta FML-APML";
   if (name == "apml") return "APML (Greta's Affective Presentation Markup Language)";
@@ -19,7 +18,8 @@ std::string other_format_name(const xmlNode* root) {
   if (name != "fml") return {};
   // FML-APML's inner <fml> holds communicative intentions (performative, emotion, ...) where
   // Arya-DiPaola FML has model and story.
-  for (const xmlNode* child : xml::element_children(root)) {
+  static constexpr std::array<std::string_view, 1> kStory{"story"};
+  for (const xmlNode* child : doc.children(root, kStory)) {
     const std::string_view c = xml::local_name(child);
     if (c == "model" || c == "story") return {};
     if (c == "performative" || c == "emotion" || c == "deictic" || c == "beat" || c == "rest" ||

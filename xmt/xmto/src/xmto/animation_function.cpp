@@ -182,18 +182,20 @@ Result<AnimationFunction> read_set(const xml::XmlDocument& doc, const xmlNode* e
   return f;
 }
 
-Curve AnimationFunction::curve(double underlying, int iteration) const {
-  std::vector<double> v = values;
-  if (to_animation) v.front() = underlying;
-  const double shift = accumulate ? iteration * v.back() : 0;
+Curve animation_curve(const AnimationShape& shape, std::span<const double> values,
+                      std::span<const double> key_times, double underlying, int iteration) {
+  std::vector<double> v(values.begin(), values.end());
+  if (shape.to_animation) v.front() = underlying;
+  const double shift = shape.accumulate ? iteration * v.back() : 0;
   const std::size_t n = v.size();
-  if (!simple_duration || n == 1) return Curve::constant(v.front() + shift);
-  const double d = *simple_duration;
+  if (!shape.simple_duration || n == 1) return Curve::constant(v.front() + shift);
+  const double d = *shape.simple_duration;
+  const CalcMode calc = shape.calc;
 
   // Where each value sits, as a fraction of the simple duration.
   std::vector<double> at(n);
   if (!key_times.empty()) {
-    at = key_times;
+    at.assign(key_times.begin(), key_times.end());
   } else if (calc == CalcMode::discrete) {
     for (std::size_t i = 0; i < n; ++i) at[i] = static_cast<double>(i) / static_cast<double>(n);
   } else {
@@ -209,6 +211,7 @@ Curve AnimationFunction::curve(double underlying, int iteration) const {
   }
   const Interpolation how = calc == CalcMode::discrete ? Interpolation::step : Interpolation::linear;
   Curve curve;
+  curve.keys.reserve(n);
   for (std::size_t i = 0; i < n; ++i) curve.keys.push_back(KeyPoint{at[i] * d, v[i] + shift, how});
   return curve;
 }

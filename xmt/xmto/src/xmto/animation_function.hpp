@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "fapc/transcoder/timeline.hpp"
@@ -13,21 +14,27 @@ namespace fapc::xmt {
 
 enum class CalcMode { linear, discrete, paced };
 
-struct AnimationFunction {
-  // For a to-animation values[0] stands for the underlying value, known only when placed.
-  std::vector<double> values;
-  std::vector<double> key_times;  // fractions of the simple duration, one per value; may be empty
+// An animation function without its numbers (values and key times), which a reader of many
+// elements keeps in one pool (XmtoTree::numbers) rather than in two vectors per element.
+struct AnimationShape {
   CalcMode calc = CalcMode::linear;
   bool to_animation = false;  // from the underlying value at the run's begin to values.back()
   bool accumulate = false;    // run k adds k times the last value
   BlendMode blend = BlendMode::overwrite;
   // dur; empty: the simple duration is indefinite and the first value holds (SMIL).
   std::optional<double> simple_duration;
-
-  // The curve of one run. `underlying` replaces values[0] of a to-animation; `iteration` is the
-  // run's repeat index (accumulate).
-  Curve curve(double underlying, int iteration) const;
 };
+
+struct AnimationFunction : AnimationShape {
+  // For a to-animation values[0] stands for the underlying value, known only when placed.
+  std::vector<double> values;
+  std::vector<double> key_times;  // fractions of the simple duration, one per value; may be empty
+};
+
+// The curve of one run. `underlying` replaces values[0] of a to-animation; `iteration` is the
+// run's repeat index (accumulate).
+Curve animation_curve(const AnimationShape& shape, std::span<const double> values,
+                      std::span<const double> key_times, double underlying, int iteration);
 
 // Reads from/to/by/values/keyTimes/calcMode/additive/accumulate of an `animate` (warnings for
 // attributes SMIL says are ignored in that combination), or `to` of a `set`. Errors at the

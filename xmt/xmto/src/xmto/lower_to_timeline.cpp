@@ -11,14 +11,68 @@
 namespace fapc::xmt {
 namespace {
 
-struct TaggedClip {
-  std::size_t leaf;
-  Clip clip;
+// The clips made so far and the leaf each comes from (for the order of the timeline), side by
+// side: the clips then become the timeline's as they are, without a copy.
+struct TaggedClips {
+  std::vector<Clip> clips;
+  std::vector<std::size_t> leaf;
+  void add(std::size_t id, Clip clip) {
+    clips.push_back(std::move(clip));
+    leaf.push_back(id);
+  }
+  std::size_t size() const { return clips.size(); }
 };
+
+// Puts the clips in order of their leaf (document order), then begin, stably; in place (a copy of
+// the clips would double the largest structure of the lowering).
+void sort_by_leaf(TaggedClips& tagged) {
+  const std::size_t n = tagged.size();
+  const auto before = [&](std::size_t a, std::size_t b) {
+    return tagged.leaf[a] != tagged.leaf[b] ? tagged.leaf[a] < tagged.leaf[b]
+                                            : tagged.clips[a].begin < tagged.clips[b].begin;
+  };
+  bool sorted = true;
+  for (std::size_t i = 1; i < n && sorted; ++i) sorted = !before(i, i - 1);
+  if (sorted) return;
+  // order[i]: the clip that goes to position i. Leaf numbers are dense: counted into their places
+  // (stable), then each leaf's clips sorted by begin where they are not already.
+  std::size_t leaves = 0;
+  for (const std::size_t leaf : tagged.leaf) leaves = std::max(leaves, leaf + 1);
+  std::vector<std::size_t> place(leaves + 1, 0);
+  for (const std::size_t leaf : tagged.leaf) ++place[leaf + 1];
+  for (std::size_t k = 1; k <= leaves; ++k) place[k] += place[k - 1];
+  std::vector<std::size_t> order(n);
+  {
+    std::vector<std::size_t> next(place.begin(), place.end() - 1);
+    for (std::size_t i = 0; i < n; ++i) order[next[tagged.leaf[i]]++] = i;
+  }
+  for (std::size_t k = 0; k < leaves; ++k) {
+    const auto from = order.begin() + static_cast<std::ptrdiff_t>(place[k]);
+    const auto to = order.begin() + static_cast<std::ptrdiff_t>(place[k + 1]);
+    if (!std::is_sorted(from, to, before)) std::stable_sort(from, to, before);
+  }
+  // Each cycle of the permutation is moved round once through one spare clip.
+  for (std::size_t i = 0; i < n; ++i) {
+    if (order[i] == i) continue;
+    Clip spare = std::move(tagged.clips[i]);
+    const std::size_t spare_leaf = tagged.leaf[i];
+    std::size_t at = i;
+    while (order[at] != i) {
+      const std::size_t from = order[at];
+      tagged.clips[at] = std::move(tagged.clips[from]);
+      tagged.leaf[at] = tagged.leaf[from];
+      order[at] = at;
+      at = from;
+    }
+    tagged.clips[at] = std::move(spare);
+    tagged.leaf[at] = spare_leaf;
+    order[at] = at;
+  }
+}
 
 // The included animation's clips and audio for one run: shifted to the run's begin, cut at its end.
 void place_included(const Leaf& leaf, std::size_t id, const Occurrence& run,
-                    std::vector<TaggedClip>& out, std::vector<AudioClip>& audio) {
+                    TaggedClips& out, std::vector<AudioClip>& audio) {
   const double shift = run.begin - run.curve_offset;
   for (const AudioClip& sound : leaf.included->audio)
     if (auto placed = placed_audio(sound, shift, run.begin, run.end)) audio.push_back(std::move(*placed));
@@ -29,17 +83,17 @@ void place_included(const Leaf& leaf, std::size_t id, const Occurrence& run,
     if (clip.end <= clip.begin) continue;
     clip.curve_offset = inner.curve_offset + (clip.begin - (inner.begin + shift));
     if (leaf.fill == Fill::freeze) clip.fill = Fill::freeze;
-    out.push_back(TaggedClip{id, std::move(clip)});
+    out.add(id, std::move(clip));
   }
 }
 
-Clip animate_clip(const Leaf& leaf, const Occurrence& run, double underlying) {
+Clip animate_clip(const XmtoTree& tree, const Leaf& leaf, const Occurrence& run, double underlying) {
   Clip clip;
-  clip.target = leaf.target;
+  clip.target = tree.target(leaf);
   clip.begin = run.begin;
   clip.end = run.end;
   clip.curve_offset = run.curve_offset;
-  clip.curve = leaf.function.curve(underlying, run.iteration);
+  clip.curve = animation_curve(leaf.function, tree.values(leaf), tree.key_times(leaf), underlying, run.iteration);
   clip.blend = leaf.function.blend;
   clip.fill = leaf.fill;
   clip.source = leaf.where;
@@ -52,7 +106,7 @@ Clip animate_clip(const Leaf& leaf, const Occurrence& run, double underlying) {
 // own runs. One GrowingTimeline over the targets that have to-animations answers every run in
 // O(log n) instead of an evaluator built per element over all its target's clips.
 void place_to_animations(const XmtoTree& tree, const std::map<std::size_t, std::vector<Occurrence>>& runs,
-                         std::vector<TaggedClip>& clips) {
+                         TaggedClips& clips) {
   if (runs.empty()) return;
   std::vector<std::size_t> order;
   for (const auto& [id, list] : runs) order.push_back(id);
@@ -60,42 +114,43 @@ void place_to_animations(const XmtoTree& tree, const std::map<std::size_t, std::
     return runs.at(a).front().begin < runs.at(b).front().begin;
   });
   std::set<std::string_view> targets;
-  for (const std::size_t id : order) targets.insert(tree.leaves[id].target);
+  for (const std::size_t id : order) targets.insert(tree.target(tree.leaves[id]));
   // Every clip the growing timeline will hold: those placed so far, then the runs in order.
   std::vector<Clip> planned;
   std::vector<std::size_t> placed;  // indices into `clips` of the planned clips placed so far
   for (std::size_t i = 0; i < clips.size(); ++i) {
-    if (!targets.contains(clips[i].clip.target)) continue;
+    if (!targets.contains(clips.clips[i].target)) continue;
     placed.push_back(i);
-    Clip shape = clips[i].clip;
+    Clip shape = clips.clips[i];
     shape.curve = Curve{};
     planned.push_back(std::move(shape));
   }
   for (const std::size_t id : order) {
     for (const Occurrence& run : runs.at(id)) {
-      Clip shape = animate_clip(tree.leaves[id], run, 0);
+      Clip shape = animate_clip(tree, tree.leaves[id], run, 0);
       shape.curve = Curve{};
       planned.push_back(std::move(shape));
     }
   }
   GrowingTimeline underneath(planned);
   std::size_t next = 0;
-  for (const std::size_t i : placed) underneath.add(next++, clips[i].clip);
+  for (const std::size_t i : placed) underneath.add(next++, clips.clips[i]);
   for (const std::size_t id : order) {
     const Leaf& leaf = tree.leaves[id];
     const std::size_t first = clips.size();
     for (const Occurrence& run : runs.at(id)) {
-      clips.push_back(TaggedClip{id, animate_clip(leaf, run, underneath.value_at(leaf.target, run.begin))});
+      clips.add(id, animate_clip(tree, leaf, run, underneath.value_at(tree.target(leaf), run.begin)));
     }
-    for (std::size_t i = first; i < clips.size(); ++i) underneath.add(next++, clips[i].clip);
+    for (std::size_t i = first; i < clips.size(); ++i) underneath.add(next++, clips.clips[i]);
   }
 }
 
 }  // namespace
 
 Timeline lower_to_timeline(const XmtoTree& tree, const Schedule& schedule) {
-  std::vector<TaggedClip> clips;
-  clips.reserve(schedule.occurrences.size());
+  TaggedClips clips;
+  clips.clips.reserve(schedule.occurrences.size());
+  clips.leaf.reserve(schedule.occurrences.size());
   std::vector<AudioClip> audio;
   std::map<std::size_t, std::vector<Occurrence>> to_runs;
   for (const Occurrence& run : schedule.occurrences) {
@@ -107,20 +162,15 @@ Timeline lower_to_timeline(const XmtoTree& tree, const Schedule& schedule) {
     } else if (leaf.function.to_animation) {
       to_runs[run.leaf_id].push_back(run);
     } else {
-      clips.push_back(TaggedClip{run.leaf_id, animate_clip(leaf, run, 0)});
+      clips.add(run.leaf_id, animate_clip(tree, leaf, run, 0));
     }
   }
   place_to_animations(tree, to_runs, clips);
   // Document order of the elements, then time: the order overwrite ties are decided by. Runs come
-  // in that order unless groups repeat or to-animations were placed: check before moving clips.
-  const auto before = [](const TaggedClip& a, const TaggedClip& b) {
-    return a.leaf != b.leaf ? a.leaf < b.leaf : a.clip.begin < b.clip.begin;
-  };
-  if (!std::is_sorted(clips.begin(), clips.end(), before)) std::stable_sort(clips.begin(), clips.end(), before);
+  // in that order unless groups repeat or to-animations were placed.
+  sort_by_leaf(clips);
   Timeline timeline;
-  timeline.clips.reserve(clips.size());
-  for (TaggedClip& tagged : clips) timeline.clips.push_back(std::move(tagged.clip));
-  clips = {};
+  timeline.clips = std::move(clips.clips);
   timeline.audio = std::move(audio);
   timeline.explicit_end = schedule.end;
   timeline.end_source =

@@ -1,6 +1,7 @@
 // The XMT-Omega reader: walks the document, builds the time tree (xmto_tree.hpp), schedules it and
 // lowers the runs to clips. What it does not read is reported, never dropped silently.
 #include <algorithm>
+#include <array>
 #include <initializer_list>
 #include <map>
 #include <set>
@@ -51,7 +52,16 @@ class DocumentReader {
     root_namespace_ = xml::namespace_uri(root);
     check_attributes(root, {});
     const xmlNode* body = nullptr;
-    for (const xmlNode* child : xml::element_children(root)) {
+    // Streamed, the body is read where it is met (its parts freed as they are read), which is the
+    // order of a parsed document's reading as long as nothing follows the body.
+    std::optional<ScheduleNode> tree;
+    bool body_read = false;
+    static constexpr std::array<std::string_view, 1> kBody{"body"};
+    for (const xmlNode* child : doc_.children(root, kBody)) {
+      if (body_read) {
+        doc_.abandon_stream();
+        break;
+      }
       if (!is_xmto(child)) {
         unsupported(child);
       } else if (xml::local_name(child) == "head") {
@@ -59,17 +69,18 @@ class DocumentReader {
       } else if (xml::local_name(child) == "body") {
         if (body) return doc_.error(child, "a second body: an XMT-O document has one");
         body = child;
+        if (doc_.streamed()) {
+          tree = read_body(body);
+          if (error_) return *error_;
+          body_read = true;
+        }
       } else {
         unsupported(child);
       }
     }
     check_text(root);
     if (!body) return doc_.error(root, "XMT-O has no body");
-    RunBudget budget;
-    if (options_.duration) budget.available = *options_.duration;
-    // Every element is at most one leaf (FML normal moves aside): no regrowth copies.
-    tree_.leaves.reserve(doc_.element_count());
-    std::optional<ScheduleNode> tree = element(body, Fill::remove, false, budget);
+    if (!body_read) tree = read_body(body);
     if (error_) return *error_;
     // The body is a sequence (SMIL); a body that never plays leaves an empty timeline.
     tree_.root = tree ? std::move(*tree) : ScheduleNode::group(Kind::sequence, {}, doc_.where(body));
@@ -80,6 +91,9 @@ class DocumentReader {
     schedule_options.max_runs = options_.max_runs;
     auto scheduled = schedule_tree(tree_.root, schedule_options);
     if (const auto* problem = std::get_if<ScheduleError>(&scheduled)) return scheduler_error(*problem);
+    // Lowering needs the runs and the leaves, not the tree (the root's source aside): its nodes go
+    // before the clips are made.
+    std::vector<ScheduleNode>().swap(tree_.root.children);
     result_.timeline = lower_to_timeline(tree_, std::get<Schedule>(scheduled));
     once_.finish();
     return std::move(result_);
@@ -101,6 +115,16 @@ class DocumentReader {
   std::vector<ElementFacts> element_facts_;  // by ScheduleNode::tag - 1: for schedule errors
   double planned_clips_ = 0;  // upper bound, see run_budget.hpp
   std::set<std::string> fml_expressions_;  // FAP 2 targets of the FML moves read so far
+
+  std::optional<ScheduleNode> read_body(const xmlNode* body) {
+    RunBudget budget;
+    if (options_.duration) budget.available = *options_.duration;
+    // Every element is at most one leaf (FML normal moves aside): no regrowth copies.
+    tree_.leaves.reserve(doc_.element_count());
+    // Most animations have a few values and key times (the pages never written cost nothing).
+    tree_.numbers.reserve(4 * doc_.element_count());
+    return element(body, Fill::remove, false, budget);
+  }
 
   ScheduleNode scheduled_node(ScheduleNode node, const xmlNode* element) {
     element_facts_.push_back(ElementFacts{names_.number(xml::local_name(element)),
@@ -136,15 +160,18 @@ class DocumentReader {
   // FML moves embedded in an XMT-O document ("FML documents can work as XMT-Omega code"): any
   // element whose namespace URI mentions fml. Elements share their namespace declaration, so the
   // answer for the last one seen is kept.
+  // (Kept by the URI, not by the xmlNs: a streamed document frees the elements it has read, and
+  // their namespace declarations with them.)
   bool is_fml(const xmlNode* node) {
-    if (node->ns == last_ns_ && node->ns) return last_ns_is_fml_;
-    std::string ns(xml::namespace_uri(node));
+    const std::string_view uri = xml::namespace_uri(node);
+    if (node->ns && uri == last_ns_) return last_ns_is_fml_;
+    std::string ns(uri);
     std::transform(ns.begin(), ns.end(), ns.begin(), [](unsigned char c) { return std::tolower(c); });
-    last_ns_ = node->ns;
+    last_ns_ = uri;
     last_ns_is_fml_ = ns.find("fml") != std::string::npos;
     return last_ns_is_fml_;
   }
-  const xmlNs* last_ns_ = nullptr;
+  std::string last_ns_;
   bool last_ns_is_fml_ = false;
 
   void unsupported(const xmlNode* node, const std::string& why = "is not supported and was skipped") {
@@ -157,17 +184,18 @@ class DocumentReader {
   void check_attributes(const xmlNode* element, std::initializer_list<const char*> known,
                         std::initializer_list<const char*> more = {}) {
     for (const xmlAttr* attr = element->properties; attr; attr = attr->next) {
-      const std::string name = xml::qualified_name(attr);
       if (attr->ns && attr->ns->href) {
         const std::string_view ns = reinterpret_cast<const char*>(attr->ns->href);
         if (ns == kXmlNamespace || ns == kSchemaInstanceNamespace) continue;
-      } else {
-        if (name == "id") continue;
+      } else if (!attr->ns || !attr->ns->prefix) {
+        const std::string_view written = reinterpret_cast<const char*>(attr->name);  // no prefix
+        if (written == "id") continue;
         bool listed = false;
-        for (const char* k : known) listed = listed || name == k;
-        for (const char* k : more) listed = listed || name == k;
+        for (const char* k : known) listed = listed || written == k;
+        for (const char* k : more) listed = listed || written == k;
         if (listed) continue;
       }
+      const std::string name = xml::qualified_name(attr);
       const std::string element_name(xml::local_name(element));
       once_.report("attribute " + element_name + "@" + name,
                    doc_.warning(element, name, "attribute '" + name + "' of " + element_name +
@@ -248,7 +276,11 @@ class DocumentReader {
     check_text(node);
     ScheduleNode group = scheduled_node(
         ScheduleNode::group(kind, to_schedule_timing(timing, std::nullopt), doc_.where(node)), node);
-    for (const xmlNode* child : xml::element_children(node)) {
+    // Streamed, the containers among the children are read child by child, and each child is
+    // freed once read.
+    static constexpr std::array<std::string_view, 3> kContainers{"par", "seq", "excl"};
+    group.children.reserve(doc_.child_count(node));  // no regrowth: a tree is ~all its nodes
+    for (const xmlNode* child : doc_.children(node, kContainers, true)) {
       std::optional<ScheduleNode> placed = element(child, fill, kind == Kind::exclusive, inner);
       if (error_) return std::nullopt;
       if (placed) group.children.push_back(std::move(*placed));
@@ -271,11 +303,25 @@ class DocumentReader {
     return false;
   }
 
+  // The leaf's target and function, their names and numbers kept in the tree's pools.
+  void keep_function(Leaf& leaf, const std::string& target, const AnimationFunction& function) {
+    leaf.target = target_names_.number(target);
+    if (leaf.target == tree_.targets.size()) tree_.targets.push_back(target);
+    leaf.function = function;
+    leaf.first_number = static_cast<std::uint32_t>(tree_.numbers.size());
+    leaf.value_count = static_cast<std::uint32_t>(function.values.size());
+    leaf.key_time_count = static_cast<std::uint32_t>(function.key_times.size());
+    tree_.numbers.insert(tree_.numbers.end(), function.values.begin(), function.values.end());
+    tree_.numbers.insert(tree_.numbers.end(), function.key_times.begin(), function.key_times.end());
+  }
+  xml::NameTable target_names_;  // numbers of tree_.targets
+
   ScheduleNode add_leaf(const xmlNode* node, Leaf leaf, Timing timing) {
     leaf.where = doc_.where(node);
     const std::size_t id = tree_.leaves.size();
+    const Location where = leaf.where;
     tree_.leaves.push_back(std::move(leaf));
-    return scheduled_node(ScheduleNode::leaf(id, timing, doc_.where(node)), node);
+    return scheduled_node(ScheduleNode::leaf(id, timing, where), node);
   }
 
   std::optional<ScheduleNode> animate_or_set(const xmlNode* node, const SmilTiming& timing, Fill fill,
@@ -304,14 +350,13 @@ class DocumentReader {
     if (!target->warning.empty()) {
       once_.report("name " + *attribute_name, doc_.warning(node, "attributeName", target->warning));
     }
-    leaf.target = target->target;
     Result<AnimationFunction> function = is_set ? read_set(doc_, node, timing.dur)
                                                 : read_animate(doc_, node, timing.dur, result_.warnings);
     if (!function) {
       fail(function.error());
       return std::nullopt;
     }
-    leaf.function = std::move(*function);
+    keep_function(leaf, target->target, *function);
     if (!within_budget(node, budget.inside(timing, std::nullopt).repeats)) return std::nullopt;
     return add_leaf(node, std::move(leaf), to_schedule_timing(timing, std::nullopt));
   }
@@ -333,19 +378,20 @@ class DocumentReader {
     const auto hold = [&](const std::string& target, double value) {
       Leaf leaf;
       leaf.fill = Fill::freeze;
-      leaf.target = target;
-      leaf.function.values = {0, value};
-      leaf.function.to_animation = true;
-      leaf.function.simple_duration = length;
+      AnimationFunction function;
+      function.values = {0, value};
+      function.to_animation = true;
+      function.simple_duration = length;
+      keep_function(leaf, target, function);
       return leaf;
     };
     const FmlLeaf& fml = move->leaf;
     Leaf leaf;
     switch (fml.kind) {
       case FmlLeaf::Kind::move:
-        if (weight_target(fml.target)) fml_expressions_.insert(fml.target);
+        if (weight_target(move->target)) fml_expressions_.insert(move->target);
         if (!within_budget(node, runs)) return std::nullopt;
-        return add_leaf(node, hold(fml.target, fml.value), move->timing);
+        return add_leaf(node, hold(move->target, fml.value), move->timing);
       case FmlLeaf::Kind::normal: {
         if (!within_budget(node, runs * std::max<double>(1, static_cast<double>(fml_expressions_.size()))))
           return std::nullopt;
@@ -356,7 +402,7 @@ class DocumentReader {
         return scheduled_node(std::move(group), node);
       }
       case FmlLeaf::Kind::talk:
-        leaf.included = std::make_unique<Timeline>(talk_timeline(fml, length, options_.fml.coarticulation));
+        leaf.included = std::make_unique<Timeline>(talk_timeline(*fml.talk, fml.where, length, options_.fml.coarticulation));
         break;
       case FmlLeaf::Kind::wait:
         leaf.included = std::make_unique<Timeline>(Timeline{{}, length, doc_.where(node)});
@@ -417,7 +463,14 @@ class DocumentReader {
 Result<XmtoDocument> read_xmto(std::string_view text, const std::string& file_name,
                                const XmtoOptions& options) {
   // Only talk text is read (an FML move's, embedded or not); elsewhere white space is dropped.
-  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name, xml::BlankText{false, {"talk"}});
+  const xml::BlankText blank_text{false, {"talk"}};
+  // Streamed first, holding only the part of the tree being read; a document the streamed walk
+  // cannot read as a parsed one is read (warnings and errors included) is read again whole.
+  if (Result<xml::XmlDocument> streamed = xml::XmlDocument::stream(text, file_name, blank_text)) {
+    Result<XmtoDocument> read = DocumentReader(*streamed, options).run();
+    if (read && streamed->finish_stream()) return read;
+  }
+  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name, blank_text);
   // The reader frees the document's tree once it has walked it.
   if (!doc) return doc.error();
   return DocumentReader(*doc, options).run();

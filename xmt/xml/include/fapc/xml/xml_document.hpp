@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,20 +27,91 @@ struct BlankText {
   std::vector<std::string_view> kept_in;  // local names of the elements whose text is read
 };
 
+class XmlDocument;
+
+// The local names of the elements a walk hands out as soon as their start tag is read (see
+// XmlDocument::children): the containers a reader walks child by child.
+using OpenNames = std::span<const std::string_view>;
+
+// The element children of one element, in document order, as a range for `for`.
+class ChildWalk {
+ public:
+  class iterator {
+   public:
+    const xmlNode* operator*() const { return current_; }
+    iterator& operator++();
+    bool operator!=(const iterator& other) const { return current_ != other.current_; }
+
+   private:
+    friend class ChildWalk;
+    const ChildWalk* walk_ = nullptr;
+    const xmlNode* current_ = nullptr;
+  };
+  iterator begin() const;
+  iterator end() const { return {}; }
+
+ private:
+  friend class XmlDocument;
+  ChildWalk(const XmlDocument& doc, const xmlNode* parent, OpenNames open, bool release)
+      : doc_(doc), parent_(parent), open_(open), release_(release) {}
+  const XmlDocument& doc_;
+  const xmlNode* parent_;
+  OpenNames open_;
+  bool release_;
+};
+
+struct StreamState;
+
 class XmlDocument {
  public:
+  XmlDocument();
+  XmlDocument(XmlDocument&&) noexcept;
+  XmlDocument& operator=(XmlDocument&&) noexcept;
+  ~XmlDocument();
+
   // Errors: not well-formed (libxml2's message at its line:col), namespace errors, a text larger
   // than libxml2 takes. Warnings of the parser are kept in warnings(). The document refers to
   // `text` (for positions and source lines) without copying it: the text must outlive it.
   static Result<XmlDocument> parse(std::string_view text, const std::string& file_name,
                                    const BlankText& blank_text = {});
 
+  // The same document read as the readers walk it, for texts too large to hold as a tree (libxml2
+  // takes about 1 KB per element): children() reads the text only as far as the walk needs and
+  // frees, when asked, the children it has passed, so the tree alive is the path being read. The
+  // readers' code is the same for both; what a streamed walk cannot see as a whole parse does (text
+  // or entity references where the readers report them, a warning of the parser, an error
+  // anywhere, an element the tag scan does not place) makes finish_stream() false, and the caller
+  // then reads the text again with parse(), which gives every message as before.
+  static Result<XmlDocument> stream(std::string_view text, const std::string& file_name,
+                                    const BlankText& blank_text = {});
+  bool streamed() const { return streamed_; }
+  // Reads the rest of a streamed text (no-op for a parsed one). True when the reader's result
+  // stands: see stream(). Called by release_tree().
+  bool finish_stream();
+  // A reader met something whose messages a streamed walk would give in another order than
+  // parse(): finish_stream() will be false.
+  void abandon_stream() const;
+
+  // Element children of `element` in document order. Streamed: a child whose local name is in
+  // `open` comes as soon as its start tag is read (its own children are read by a walk of their
+  // own), any other once its end tag is; with `release`, each child the walk has passed is freed
+  // with its subtree (no pointer into it may be kept). Parsed: simply the children.
+  ChildWalk children(const xmlNode* element, OpenNames open = {}, bool release = false) const {
+    return ChildWalk(*this, element, open, release);
+  }
+
   const xmlNode* root() const { return xmlDocGetRootElement(doc_.get()); }
-  // Frees libxml2's tree (the bulk of the memory) once a reader has taken what it needs from the
-  // nodes; line_text() and the positions of number_of() stay. No node may be used after it.
-  void release_tree() { doc_.reset(); }
+  // Frees libxml2's tree and the elements' positions once a reader has taken what it needs from
+  // the nodes; line_text() stays. No node may be used after it.
+  void release_tree();
   // How many elements the document has (0 when positions are unknown): a bound for reserving.
   std::size_t element_count() const { return tag_offsets_.size(); }
+  // How many element children `element` has in the text (0 when positions are unknown): a bound
+  // for reserving.
+  std::size_t child_count(const xmlNode* element) const {
+    const std::size_t number = number_of(element);
+    return number ? child_counts_[number - 1] : 0;
+  }
   const std::string& file() const { return file_; }
   const Diagnostics& warnings() const { return warnings_; }
 
@@ -60,19 +132,36 @@ class XmlDocument {
   std::string file_;
   std::string_view text_;
   std::vector<std::uint32_t> line_starts_;
+  mutable std::size_t line_hint_ = 1;  // where at_offset() found the last line: 1 + its index
   // Positions, by element number: element k (in document order, kept in its node's _private as
-  // k + 1) starts at tag_offsets_[k]; its attributes, as written, start at the offsets
+  // (k + 1) << 1; bit 0 marks an element whose end tag a streamed parse has read) starts at tag_offsets_[k]; its attributes, as written, start at the offsets
   // attribute_offsets_[first_attribute_[k] .. first_attribute_[k + 1]). A few bytes per element
   // and attribute, where a map from nodes to Locations cost hundreds.
   std::vector<std::uint32_t> tag_offsets_;
   std::vector<std::uint32_t> first_attribute_;
   std::vector<std::uint32_t> attribute_offsets_;
+  std::vector<std::uint32_t> child_counts_;  // by element number - 1
   Diagnostics warnings_;
+  std::unique_ptr<StreamState> stream_;  // a streamed document's parser, null once finished
+  bool streamed_ = false;
+  mutable bool faithful_ = true;
+
+  friend class ChildWalk;
+  friend struct StreamState;
+  // The element child after `after` (the first when null), waiting, when streamed, until it is
+  // there (and complete unless its name is in `open`); null when there is none.
+  const xmlNode* next_child(const xmlNode* parent, const xmlNode* after, OpenNames open) const;
+  bool ended(const xmlNode* element) const;
+  void release(const xmlNode* element) const;
+  Status scan_positions();
 
   Location at_offset(std::size_t offset) const;
   // The element's number + 1, 0 when positions are unknown (libxml2's line numbers then).
   std::size_t number_of(const xmlNode* element) const;
   void index_positions();
+  void index_lines();
+  void add_tag(std::size_t offset, std::size_t parent, const std::vector<std::pair<std::string_view, std::size_t>>& attributes);
+  void shrink_positions();
   Diagnostic with_line(Diagnostic d) const;
 };
 
