@@ -141,8 +141,13 @@ Status FbaEncoder::add(const FapFrame& frame) {
   if (s.masks && !s.fitter) s.fitter.emplace(std::move(*s.masks).finish());
   if (s.added == 0) s.writer->reserve(s.checked);  // a plane a frame
   ++s.added;
-  FapFrame& coded = s.window.emplace_back(frame);
-  if (s.fitter) s.fitter->fit(coded);
+  if (s.fitter) {
+    FapFrame coded = frame;
+    s.fitter->fit(coded);
+    s.window.push_back(coded);
+  } else {
+    s.window.push_back(frame);
+  }
   return s.write_groups(false);
 }
 

@@ -43,12 +43,11 @@ bool GopPlanner::differences_fit(std::size_t k, const Gop& gop) {
   // moves it by less than one step more), so two levels differ by at most |a - b| / step + 2:
   // differences of values within `bounds_` need no rounding. Only a frame that jumps further
   // (hardly ever) has its levels and those of the frame before worked out.
-  const FapFrame& now = frames_[k];
-  const FapFrame& before = frames_[k - 1];
+  const FrameWindow::View now = frames_[k];
+  const FrameWindow::View before = frames_[k - 1];
   bool near = true;
   for (std::size_t j = 0; j < gop.faps.size(); ++j) {
-    const auto i = static_cast<std::size_t>(gop.faps[j] - 1);
-    const std::int64_t d = std::int64_t{now.values[i]} - before.values[i];
+    const std::int64_t d = std::int64_t{now.value(gop.faps[j])} - before.value(gop.faps[j]);
     near = near && d <= bounds_[j] && d >= -bounds_[j];
   }
   if (near) return true;
