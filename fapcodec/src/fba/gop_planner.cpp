@@ -35,7 +35,8 @@ bool GopPlanner::needs_intra(std::size_t k, std::size_t gop_first) const {
 
 void GopPlanner::nearest_levels(std::size_t k, const Gop& gop, std::vector<std::int64_t>& levels) const {
   levels.clear();
-  for (std::size_t j = 0; j < gop.faps.size(); ++j) levels.push_back(rules_[j].nearest(frames_[k].value(gop.faps[j])));
+  const std::int32_t* values = frames_.masked_values(k);  // the group's FAPs, in order
+  for (std::size_t j = 0; j < gop.faps.size(); ++j) levels.push_back(rules_[j].nearest(values[j]));
 }
 
 bool GopPlanner::differences_fit(std::size_t k, const Gop& gop) {
@@ -43,11 +44,11 @@ bool GopPlanner::differences_fit(std::size_t k, const Gop& gop) {
   // moves it by less than one step more), so two levels differ by at most |a - b| / step + 2:
   // differences of values within `bounds_` need no rounding. Only a frame that jumps further
   // (hardly ever) has its levels and those of the frame before worked out.
-  const FrameWindow::View now = frames_[k];
-  const FrameWindow::View before = frames_[k - 1];
+  const std::int32_t* now = frames_.masked_values(k);  // the group's FAPs, in order
+  const std::int32_t* before = frames_.masked_values(k - 1);
   bool near = true;
   for (std::size_t j = 0; j < gop.faps.size(); ++j) {
-    const std::int64_t d = std::int64_t{now.value(gop.faps[j])} - before.value(gop.faps[j]);
+    const std::int64_t d = std::int64_t{now[j]} - before[j];
     near = near && d <= bounds_[j] && d >= -bounds_[j];
   }
   if (near) return true;
@@ -81,7 +82,7 @@ void GopPlanner::choose_levels(Gop& gop, std::size_t frames) {
   levels_.resize(frames);
   for (std::size_t j = 0; j < n; ++j) {
     for (std::size_t t = 0; t < frames; ++t)
-      column_[t] = rules_[j].options(frames_[gop.first + t].value(gop.faps[j]));
+      column_[t] = rules_[j].options(frames_.masked_values(gop.first + t)[j]);
     chooser_.choose(column_, limit_, quant_.range_scaler(), levels_);
     gop.symbols[j] = static_cast<std::int16_t>(levels_[0]);
     for (std::size_t t = 1; t < frames; ++t)
