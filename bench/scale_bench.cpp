@@ -5,6 +5,8 @@
 // size, then the growth exponent fitted between the sizes (time ~ size^k; k near 1 is linear).
 // Not a test: it prints figures. Usage: scale_bench [--max N] [--only SUBSTRING] [--folder DIR]
 // (--folder keeps the generated inputs there, and uses those already there, between runs).
+#include <malloc.h>
+
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -414,6 +416,9 @@ struct Bench {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // The allocator as fapc's main() sets it (its children inherit it), so that the figures are
+  // those of the program.
+  mallopt(M_MMAP_THRESHOLD, 256 * 1024);
   Bench bench;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--max") && i + 1 < argc) bench.max_size = std::atoll(argv[++i]);

@@ -212,6 +212,20 @@ void MappedFile::release(std::size_t offset) const {
   if (data_ && end > 0) ::madvise(const_cast<char*>(data_), end, MADV_DONTNEED);
 }
 
+Result<SourceText> SourceText::open(const std::string& path, const Limits& limits) {
+  Result<MappedFile> mapped = MappedFile::open(path);
+  if (!mapped) return mapped.error();
+  SourceText text;
+  if (is_gzip(mapped->bytes())) {
+    Result<std::string> inflated = gunzip(mapped->bytes(), path, limits);
+    if (!inflated) return inflated.error();
+    text.read_ = std::move(*inflated);
+  } else {
+    text.mapped_ = std::move(*mapped);
+  }
+  return text;
+}
+
 namespace {
 
 std::string temporary_path(const std::string& path) {

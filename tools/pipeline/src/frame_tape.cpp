@@ -65,7 +65,7 @@ bool FrameTape::record(const FapFrame& frame) {
   previous_ = frame;
   if (bytes_.size() > budget_) {
     dropped_ = true;
-    bytes_ = {};
+    std::vector<std::uint8_t>().swap(bytes_);  // `= {}` would keep the capacity
     return false;
   }
   return true;

@@ -733,7 +733,7 @@ class Compiler final : public MainSink {
     for (std::size_t i = 0; i < timeline.clips.size(); ++i) {
       if (wanted[clip_names_[i]]) by_target[clip_names_[i]].push_back(i);
     }
-    clip_names_ = {};
+    std::vector<std::uint32_t>().swap(clip_names_);  // `= {}` would keep the capacity
     std::vector<std::uint32_t> in_name_order;
     for (std::uint32_t id = 0; id < names_.size(); ++id) {
       if (wanted[id]) in_name_order.push_back(id);
@@ -765,7 +765,7 @@ class Compiler final : public MainSink {
         }
         clip.curve.keys.back().value = end_value;
       }
-      indices = {};
+      std::vector<std::size_t>().swap(indices);  // `= {}` would keep the capacity
     }
   }
 };

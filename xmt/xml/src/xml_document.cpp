@@ -28,6 +28,7 @@ struct ParseReport {
 // A streamed document's push parser and what its SAX handlers learn (see XmlDocument::stream).
 struct StreamState {
   std::string_view text;
+  XmlDocument::TextReleaser release_text;
   std::size_t fed = 0;  // bytes given to the parser
   bool done = false;    // the parser has the whole text, or stopped at an error
   // Whether the walk sees the document as parse() would (see XmlDocument::stream).
@@ -264,13 +265,14 @@ bool StreamState::feed() {
   xmlParseChunk(context.get(), text.data() + fed, static_cast<int>(size), last ? 1 : 0);
   xmlSetGenericErrorFunc(nullptr, nullptr);
   fed += size;
+  if (release_text) release_text(fed);  // the parser keeps what it still needs
   if (report->first_error || !report->warnings.empty()) faithful = false;
   if (last || report->first_error) done = true;
   return true;
 }
 
 Result<XmlDocument> XmlDocument::stream(std::string_view text, const std::string& file_name,
-                                        const BlankText& blank_text) {
+                                        const BlankText& blank_text, TextReleaser release_text) {
   if (text.size() > static_cast<std::size_t>(INT_MAX)) {
     return make_error(ErrorKind::limit_exceeded, Location{file_name, 0, 0, -1}, "file too large for the XML parser");
   }
@@ -289,9 +291,13 @@ Result<XmlDocument> XmlDocument::stream(std::string_view text, const std::string
   });
   if (too_deep) return make_error(ErrorKind::limit_exceeded, Location::text(file_name, 1, 1), "elements nested too deep");
   document.shrink_positions();
+  // The scans touched every page; the parser reads them again one part at a time.
+  if (release_text) release_text(text.size());
+  document.release_text_ = release_text;
 
   auto state = std::make_unique<StreamState>();
   state->text = text;
+  state->release_text = std::move(release_text);
   state->blank_text = blank_text;
   state->tag_offsets = document.tag_offsets_.data();
   state->tag_count = document.tag_offsets_.size();
@@ -340,11 +346,9 @@ void XmlDocument::abandon_stream() const { faithful_ = false; }
 void XmlDocument::release_tree() {
   finish_stream();
   doc_.reset();
+  if (release_text_) release_text_(text_.size());
   // Positions are asked of nodes, and there are none left (line_text() stays).
-  tag_offsets_ = {};
-  first_attribute_ = {};
-  attribute_offsets_ = {};
-  child_counts_ = {};
+  drop_positions();
 }
 
 bool XmlDocument::ended(const xmlNode* element) const {
@@ -419,10 +423,7 @@ void XmlDocument::index_positions() {
   }
   // Disagreement: no element has a position.
   for (xmlNode* e = xmlDocGetRootElement(doc_.get()); e; e = next_element(e)) e->_private = nullptr;
-  tag_offsets_ = {};
-  first_attribute_ = {};
-  attribute_offsets_ = {};
-  child_counts_ = {};
+  drop_positions();
 }
 
 void XmlDocument::add_tag(std::size_t offset, std::size_t parent,
@@ -432,6 +433,15 @@ void XmlDocument::add_tag(std::size_t offset, std::size_t parent,
   first_attribute_.push_back(static_cast<std::uint32_t>(attribute_offsets_.size()));
   child_counts_.push_back(0);
   if (parent) ++child_counts_[parent - 1];
+}
+
+void XmlDocument::drop_positions() {
+  // Assigning {} would keep each vector's capacity (it is an empty initializer list): swap with
+  // empty ones so the memory goes.
+  std::vector<std::uint32_t>().swap(tag_offsets_);
+  std::vector<std::uint32_t>().swap(first_attribute_);
+  std::vector<std::uint32_t>().swap(attribute_offsets_);
+  std::vector<std::uint32_t>().swap(child_counts_);
 }
 
 void XmlDocument::shrink_positions() {

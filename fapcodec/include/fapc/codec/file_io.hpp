@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -40,6 +41,23 @@ class MappedFile {
   MappedFile(const char* data, std::size_t size) : data_(data), size_(size) {}
   const char* data_ = nullptr;
   std::size_t size_ = 0;
+};
+
+// A text input's bytes for a reader that goes through it front to back: mapped when the file can
+// be, so that release() lets the pages already read go (a script of a million elements is some
+// 100 MB of text, as much as everything else its compile keeps); read whole when it is gzip,
+// where release() does nothing. Views into bytes() stay valid while the object is not moved.
+class SourceText {
+ public:
+  static Result<SourceText> open(const std::string& path, const Limits& limits = {});
+  std::string_view bytes() const { return mapped_ ? mapped_->bytes() : std::string_view(read_); }
+  void release(std::size_t offset) const {
+    if (mapped_) mapped_->release(offset);
+  }
+
+ private:
+  std::optional<MappedFile> mapped_;
+  std::string read_;
 };
 
 bool is_gzip(std::string_view bytes);

@@ -889,14 +889,14 @@ class FmlReader {
   }
 };
 
-}  // namespace
-
-Result<FmlDocument> read_fml(std::string_view text, const std::string& file_name, const FmlOptions& options) {
+// read_fml, told which parts of the text it may let go (see XmlDocument::stream).
+Result<FmlDocument> read_fml_text(std::string_view text, const std::string& file_name, const FmlOptions& options,
+                                  const xml::XmlDocument::TextReleaser& release_text) {
   // Only talk text is read (an FML move's, embedded or not); elsewhere white space is dropped.
   const xml::BlankText blank_text{false, {"talk"}};
   // Streamed first, holding only the part of the tree being read; a document the streamed walk
   // cannot read as a parsed one is read (warnings and errors included) is read again whole.
-  if (Result<xml::XmlDocument> streamed = xml::XmlDocument::stream(text, file_name, blank_text)) {
+  if (Result<xml::XmlDocument> streamed = xml::XmlDocument::stream(text, file_name, blank_text, release_text)) {
     Result<FmlDocument> read = FmlReader(*streamed, options).run(&*streamed);
     if (read && streamed->finish_stream()) return read;
   }
@@ -905,15 +905,21 @@ Result<FmlDocument> read_fml(std::string_view text, const std::string& file_name
   return FmlReader(*doc, options).run(&*doc);
 }
 
+}  // namespace
+
 Result<EmbeddedFmlMove> read_embedded_fml_move(const xml::XmlDocument& doc, const xmlNode* move,
                                                const FmlOptions& options) {
   return FmlReader(doc, options).run_embedded(move);
 }
 
+Result<FmlDocument> read_fml(std::string_view text, const std::string& file_name, const FmlOptions& options) {
+  return read_fml_text(text, file_name, options, {});
+}
+
 Result<FmlDocument> load_fml(const std::string& path, const FmlOptions& options) {
-  const auto bytes = read_file_bytes(path);
-  if (!bytes) return bytes.error();
-  return read_fml(*bytes, path, options);
+  const auto source = SourceText::open(path);
+  if (!source) return source.error();
+  return read_fml_text(source->bytes(), path, options, [&](std::size_t offset) { source->release(offset); });
 }
 
 }  // namespace fapc::xmt

@@ -458,15 +458,14 @@ class DocumentReader {
   }
 };
 
-}  // namespace
-
-Result<XmtoDocument> read_xmto(std::string_view text, const std::string& file_name,
-                               const XmtoOptions& options) {
+// read_xmto, told which parts of the text it may let go (see XmlDocument::stream).
+Result<XmtoDocument> read_xmto_text(std::string_view text, const std::string& file_name, const XmtoOptions& options,
+                                    const xml::XmlDocument::TextReleaser& release_text) {
   // Only talk text is read (an FML move's, embedded or not); elsewhere white space is dropped.
   const xml::BlankText blank_text{false, {"talk"}};
   // Streamed first, holding only the part of the tree being read; a document the streamed walk
   // cannot read as a parsed one is read (warnings and errors included) is read again whole.
-  if (Result<xml::XmlDocument> streamed = xml::XmlDocument::stream(text, file_name, blank_text)) {
+  if (Result<xml::XmlDocument> streamed = xml::XmlDocument::stream(text, file_name, blank_text, release_text)) {
     Result<XmtoDocument> read = DocumentReader(*streamed, options).run();
     if (read && streamed->finish_stream()) return read;
   }
@@ -476,10 +475,17 @@ Result<XmtoDocument> read_xmto(std::string_view text, const std::string& file_na
   return DocumentReader(*doc, options).run();
 }
 
+}  // namespace
+
+Result<XmtoDocument> read_xmto(std::string_view text, const std::string& file_name,
+                               const XmtoOptions& options) {
+  return read_xmto_text(text, file_name, options, {});
+}
+
 Result<XmtoDocument> load_xmto(const std::string& path, const XmtoOptions& options) {
-  const auto bytes = read_file_bytes(path);
-  if (!bytes) return bytes.error();
-  return read_xmto(*bytes, path, options);
+  const auto source = SourceText::open(path);
+  if (!source) return source.error();
+  return read_xmto_text(source->bytes(), path, options, [&](std::size_t offset) { source->release(offset); });
 }
 
 }  // namespace fapc::xmt

@@ -8,6 +8,7 @@
 #include <libxml/tree.h>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -82,8 +83,12 @@ class XmlDocument {
   // or entity references where the readers report them, a warning of the parser, an error
   // anywhere, an element the tag scan does not place) makes finish_stream() false, and the caller
   // then reads the text again with parse(), which gives every message as before.
+  // `release_text(offset)`, when given, is told as the parser passes each part of the text that
+  // it may drop the pages before `offset` (SourceText::release: they come back if looked at
+  // again, for a message's source line), and the whole text once the tree is released.
+  using TextReleaser = std::function<void(std::size_t offset)>;
   static Result<XmlDocument> stream(std::string_view text, const std::string& file_name,
-                                    const BlankText& blank_text = {});
+                                    const BlankText& blank_text = {}, TextReleaser release_text = {});
   bool streamed() const { return streamed_; }
   // Reads the rest of a streamed text (no-op for a parsed one). True when the reader's result
   // stands: see stream(). Called by release_tree().
@@ -131,6 +136,7 @@ class XmlDocument {
   std::shared_ptr<xmlDoc> doc_;
   std::string file_;
   std::string_view text_;
+  TextReleaser release_text_;  // streamed: see stream()
   std::vector<std::uint32_t> line_starts_;
   mutable std::size_t line_hint_ = 1;  // where at_offset() found the last line: 1 + its index
   // Positions, by element number: element k (in document order, kept in its node's _private as
@@ -162,6 +168,7 @@ class XmlDocument {
   void index_lines();
   void add_tag(std::size_t offset, std::size_t parent, const std::vector<std::pair<std::string_view, std::size_t>>& attributes);
   void shrink_positions();
+  void drop_positions();  // frees the position tables
   Diagnostic with_line(Diagnostic d) const;
 };
 
