@@ -128,6 +128,10 @@ class Reader {
   std::vector<FrameLine> frame_lines(const std::vector<std::size_t>& frames) const;
   // The header's frame count, for the warning when the file holds another number of frames.
   FrameLine header_count_at_{0, {}, 0};
+  // read_plain_values' frame: the mask it last read and where that mask's values go.
+  bool plain_slots_ready_ = false;
+  std::bitset<kFapCount> plain_mask_;
+  std::vector<std::uint8_t> plain_slots_;
   bool warned_float_ = false;
   bool warned_comment_after_header_ = false;
 };
@@ -433,12 +437,20 @@ bool Reader::read_plain_values(const fapfile::IntegerLine& line, const std::bits
   for (int k = 1; k < line.count; ++k)
     if (line.values[static_cast<std::size_t>(k)] > kLimit || line.values[static_cast<std::size_t>(k)] < -kLimit)
       return false;
+  // The masked FAPs' places, found again only when the mask changes (`frame` is the same frame
+  // each time: its other values are still 0 from then).
+  if (!plain_slots_ready_ || mask != plain_mask_) {
+    frame.values = {};
+    plain_mask_ = mask;
+    plain_slots_.clear();
+    for (std::size_t i = 2; i < kFapCount; ++i)  // FAP 3 on
+      if (mask[i]) plain_slots_.push_back(static_cast<std::uint8_t>(i));
+    plain_slots_ready_ = true;
+  }
   frame.number = number;
   frame.mask = mask;
-  frame.values = {};
-  std::size_t next = 1;
-  for (std::size_t i = 2; i < kFapCount; ++i)  // FAP 3 on
-    if (mask[i]) frame.values[i] = static_cast<std::int32_t>(line.values[next++]);
+  for (std::size_t k = 0; k < plain_slots_.size(); ++k)
+    frame.values[plain_slots_[k]] = static_cast<std::int32_t>(line.values[k + 1]);
   return true;
 }
 
@@ -483,7 +495,7 @@ Result<FapReadResult> Reader::run() {
       expect = Expect::values;
       continue;
     }
-    if (expect == Expect::mask && fapfile::scan_integers(raw.text, integers) && integers.count == 68 &&
+    if (expect == Expect::mask && fapfile::scan_integers(raw.text, integers, lines_.text_end()) && integers.count == 68 &&
         integers.bits) {
       mask.reset();
       for (std::size_t i = 0; i < kFapCount; ++i) mask[i] = integers.values[i] != 0;
@@ -492,7 +504,7 @@ Result<FapReadResult> Reader::run() {
       expect = Expect::values;
       continue;
     }
-    if (expect == Expect::values && !scaled_values && fapfile::scan_integers(raw.text, integers) &&
+    if (expect == Expect::values && !scaled_values && fapfile::scan_integers(raw.text, integers, lines_.text_end()) &&
         read_plain_values(integers, mask, plain)) {
       note_layout(integers);
       if (auto e = deliver(plain, raw.number)) return *e;

@@ -44,7 +44,10 @@ void tokenize(const RawLine& raw, Line& line) {
   line.trailing_blank = !text.empty() && is_blank(text.back()) && !line.tokens.empty();
 }
 
-bool scan_integers(std::string_view text, IntegerLine& line) {
+namespace {
+
+// A character at a time, watching for the end.
+bool scan_integers_bounded(std::string_view text, IntegerLine& line) {
   line.count = 0;
   line.has_tab = false;
   line.bits = true;
@@ -71,6 +74,43 @@ bool scan_integers(std::string_view text, IntegerLine& line) {
   }
   line.trailing_blank = !text.empty() && is_blank(text.back());
   return line.count > 0;
+}
+
+}  // namespace
+
+bool scan_integers(std::string_view text, IntegerLine& line, const char* readable_end) {
+  const char* at = text.data();
+  const char* const end = at + text.size();
+  // With a byte after the line that is neither a blank nor a digit (its line end), the loops below
+  // stop at it by themselves and need not watch for the end; otherwise a character at a time.
+  if (readable_end == end || is_blank(*end) || static_cast<unsigned>(static_cast<unsigned char>(*end) - '0') <= 9)
+    return scan_integers_bounded(text, line);
+  line.count = 0;
+  line.has_tab = false;
+  line.bits = true;
+  int count = 0;
+  bool tab = false, bits = true;
+  for (;;) {
+    for (; is_blank(*at); ++at) tab = tab || *at == '\t';
+    if (at == end) break;
+    if (count == IntegerLine::kMaxTokens) return false;
+    const bool negative = *at == '-';
+    const char* const digits = at + (negative ? 1 : 0);
+    const char* p = digits;
+    unsigned long long magnitude = 0;
+    for (unsigned digit; (digit = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9; ++p) magnitude = magnitude * 10 + digit;
+    // No digit, more than 18 (which could overflow), or something else in the token.
+    if (p == digits || p - digits > 18 || (p != end && !is_blank(*p))) return false;
+    bits = bits && p - at == 1 && magnitude <= 1;
+    const auto value = static_cast<long long>(magnitude);
+    line.values[static_cast<std::size_t>(count++)] = negative ? -value : value;
+    at = p;
+  }
+  line.count = count;
+  line.has_tab = tab;
+  line.bits = bits;
+  line.trailing_blank = !text.empty() && is_blank(text.back());
+  return count > 0;
 }
 
 bool scan_plain_mask(std::string_view text, std::bitset<68>& mask, bool& trailing_blank) {

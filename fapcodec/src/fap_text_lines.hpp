@@ -42,6 +42,7 @@ class LineCursor {
   bool final_newline() const { return final_newline_; }
   bool utf8_bom() const { return utf8_bom_; }
   std::size_t text_size() const { return text_.size(); }
+  const char* text_end() const { return text_.data() + text_.size(); }
   // Bytes of the text before the next line (the BOM included).
   std::size_t offset() const { return next_ + (utf8_bom_ ? 3 : 0); }
   // A cursor at the first line again: the diagnostics made after reading keep only line numbers
@@ -71,8 +72,13 @@ struct IntegerLine {
 };
 // False when the line is anything else (empty, a comment, a token that is not '-'? and at most 18
 // digits, more than kMaxTokens tokens): the reader then tokenizes it and reads it the general way,
-// which gives every diagnostic.
-bool scan_integers(std::string_view text, IntegerLine& line);
+// which gives every diagnostic. `readable_end` (at or after the text's end, in the same buffer):
+// when the byte after the text is there and ends its tokens (a line end), the scan stops at it
+// instead of checking for the end at every character.
+bool scan_integers(std::string_view text, IntegerLine& line, const char* readable_end);
+inline bool scan_integers(std::string_view text, IntegerLine& line) {
+  return scan_integers(text, line, text.data() + text.size());
+}
 
 // The mask line nearly every writer makes: 68 digits 0 or 1 separated by single spaces, perhaps
 // followed by spaces (no tab). Sets `mask` (bit i from the i-th digit) and `trailing_blank`;

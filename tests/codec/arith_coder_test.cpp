@@ -3,6 +3,7 @@
 // stuffing rule holds around runs of zeros.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <vector>
 
@@ -137,6 +138,43 @@ TEST(AdaptiveModel, UpdatesAcrossWholeVectorsLeaveLaterCountsAlone) {
   for (int t = 0; t < m.total(); ++t) {
     const int s = m.find(t);
     EXPECT_TRUE(m.cum(s + 1) <= t && t < m.cum(s)) << t;
+  }
+}
+
+TEST(AdaptiveModel, KeepsTheCountsOfAPlainListOfFrequencies) {
+  // A second implementation, as section 6.2 states the model: one count per symbol, all 1 at
+  // first, cum[j] the sum from j up, halved rounding up when the total has reached 16383. Random
+  // alphabets (odd and even, one symbol, the widest), symbols crowded round the middle or
+  // anywhere, long enough to rescale several times; every cum, the total and find compared.
+  std::mt19937 rng(23);
+  for (const int n : {1, 2, 3, 7, 8, 9, 16, 17, 121, 181, 361, 1081, kMaxSymbols}) {
+    for (const bool crowded : {true, false}) {
+      AdaptiveModel m;
+      m.reset(n);
+      std::vector<std::int32_t> counts(static_cast<std::size_t>(n), 1);
+      const auto cum = [&](int j) {
+        std::int32_t sum = 0;
+        for (int i = j; i < n; ++i) sum += counts[static_cast<std::size_t>(i)];
+        return sum;
+      };
+      for (int step = 0; step < 40000; ++step) {
+        int s = static_cast<int>(rng() % static_cast<unsigned>(n));
+        if (crowded) s = std::clamp(n / 2 + static_cast<int>(rng() % 7) - 3, 0, n - 1);
+        if (n > 1) {
+          if (cum(0) == kMaxFrequency)
+            for (std::int32_t& c : counts) c = (c + 1) / 2;
+          ++counts[static_cast<std::size_t>(s)];
+        }
+        m.update(s);
+        if (step % 997 != 0 && step < 39990) continue;
+        ASSERT_EQ(m.total(), cum(0)) << n << " step " << step;
+        for (int j = 0; j <= n; ++j) ASSERT_EQ(m.cum(j), cum(j)) << n << " cum " << j << " step " << step;
+        for (std::int32_t t = 0; t < m.total(); t += 1 + static_cast<std::int32_t>(rng() % 37)) {
+          const int found = m.find(t);
+          ASSERT_TRUE(cum(found + 1) <= t && t < cum(found)) << n << " target " << t;
+        }
+      }
+    }
   }
 }
 

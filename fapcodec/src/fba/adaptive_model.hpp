@@ -4,8 +4,13 @@
 // the symbol's count grows by one, and all counts are halved (rounding up) when the total has
 // reached 16383. Encoder and decoder update at exactly the same points. Private to fapcodec.
 //
-// Speed: the counts are 16-bit (they stay below 2^15) and are incremented eight at a time with
-// GCC/Clang vector extensions (SSE2 on x86-64, NEON on ARM), padded to whole vectors.
+// Speed: counting symbol s raises cum[0..s], on average half the alphabet, though the symbols
+// (differences of a FAP from one frame to the next) crowd around the middle of the alphabet, the
+// difference 0. So the sums are kept from the middle m outwards: for j <= m the sum of the counts
+// below j (cum[j] = total - that), for j > m cum[j] itself. Counting s then changes only the
+// entries between s and m, a few at most, besides the total. The entries are 16-bit (they stay
+// below 2^15) and change eight at a time with GCC/Clang vector extensions (SSE2 on x86-64, NEON
+// on ARM), padded to whole vectors.
 #pragma once
 
 #include <cstdint>
@@ -28,8 +33,10 @@ class AdaptiveModel {
   void reset(int symbols);
 
   int symbols() const { return symbols_; }
-  std::int32_t total() const { return cum_[0]; }
-  std::int32_t cum(int j) const { return cum_[static_cast<std::size_t>(j)]; }
+  std::int32_t total() const { return total_; }
+  std::int32_t cum(int j) const {
+    return sums_[static_cast<std::size_t>(j)] + (j <= middle_ ? total_ : 0);
+  }
 
   // The symbol s with cum[s+1] <= target < cum[s], for 0 <= target < total().
   int find(std::int32_t target) const { return find_scaled(target + 1, 1); }
@@ -39,7 +46,7 @@ class AdaptiveModel {
   // faster here than counting a vector at a time, as the processor runs ahead on its guesses.
   // Products stay below 2^30 for lengths up to 65536.
   int find_scaled(std::int32_t scaled, std::int32_t length) const {
-    const auto above = [&](int k) { return cum_[static_cast<std::size_t>(k)] * length >= scaled; };
+    const auto above = [&](int k) { return cum(k) * length >= scaled; };
     // lo is above the target, hi is not (cum[0] always is, cum[n] = 0 never): s is in [lo, hi).
     int lo, hi;
     int step = 1;
@@ -71,14 +78,18 @@ class AdaptiveModel {
     return lo;
   }
 
-  // After coding symbol s: rescale if the total has reached kMaxFrequency, then count s:
-  // cum[0..s] += 1, whole vectors with later lanes masked off. The counts of a one-symbol
-  // alphabet never matter (its symbol always owns the whole interval), so they are left alone.
+  // After coding symbol s: rescale if the total has reached kMaxFrequency, then count s: the
+  // total, and the entries from s to the middle (below it, the sums below them grow; above it,
+  // the sums above them), whole vectors with the lanes outside masked off. The counts of a
+  // one-symbol alphabet never matter (its symbol always owns the whole interval), so they are
+  // left alone.
   void update(int s) {
     if (symbols_ == 1) return;
-    if (cum_[0] == kMaxFrequency) rescale();
+    if (total_ == kMaxFrequency) rescale();
     last_ = s;
-    increment_prefix(cum_, static_cast<std::size_t>(s));
+    ++total_;
+    const bool below = s < middle_;
+    add_to_range(below ? s + 1 : middle_ + 1, below ? middle_ : s, below ? -1 : 1);
   }
 
  private:
@@ -90,27 +101,33 @@ class AdaptiveModel {
     std::memcpy(&lanes, v.data() + j, sizeof lanes);
     return lanes;
   }
-  // v[0..last] += 1: whole vectors, then the first lanes of one more.
-  static void increment_prefix(std::vector<std::int16_t>& v, std::size_t last) {
-    static constexpr Lanes kOnes = {1, 1, 1, 1, 1, 1, 1, 1};
-    static constexpr Lanes kFirst[kLanes] = {{0, 0, 0, 0, 0, 0, 0, 0}, {1, 0, 0, 0, 0, 0, 0, 0},
-                                             {1, 1, 0, 0, 0, 0, 0, 0}, {1, 1, 1, 0, 0, 0, 0, 0},
-                                             {1, 1, 1, 1, 0, 0, 0, 0}, {1, 1, 1, 1, 1, 0, 0, 0},
-                                             {1, 1, 1, 1, 1, 1, 0, 0}, {1, 1, 1, 1, 1, 1, 1, 0}};
-    const std::size_t count = last + 1;
-    std::size_t j = 0;
-    for (; j + kLanes <= count; j += kLanes) store(v, j, load(v, j) + kOnes);
-    store(v, j, load(v, j) + kFirst[count - j]);  // in the padding when count is a multiple of 8
-  }
   static void store(std::vector<std::int16_t>& v, std::size_t j, Lanes lanes) {
     std::memcpy(v.data() + j, &lanes, sizeof lanes);
+  }
+  // sums_[first..last] += delta (nothing when last < first), a vector at a time from the one
+  // holding `first`.
+  void add_to_range(int first, int last, int delta) {
+    static constexpr Lanes kLane = {0, 1, 2, 3, 4, 5, 6, 7};
+    const auto d = static_cast<std::int16_t>(delta);
+    const Lanes deltas = {d, d, d, d, d, d, d, d};
+    const auto low = static_cast<std::int16_t>(first), high = static_cast<std::int16_t>(last);
+    for (int j = first & ~static_cast<int>(kLanes - 1); j <= last; j += static_cast<int>(kLanes)) {
+      const auto base = static_cast<std::int16_t>(j);
+      const Lanes index = Lanes{base, base, base, base, base, base, base, base} + kLane;
+      const Lanes inside = (index >= low) & (index <= high);
+      store(sums_, static_cast<std::size_t>(j), load(sums_, static_cast<std::size_t>(j)) + (deltas & inside));
+    }
   }
   static std::size_t round_up(std::size_t n) { return (n + kLanes - 1) / kLanes * kLanes; }
   void rescale();
 
   int symbols_ = 0;
-  int last_ = 0;  // the last symbol counted, where the search starts
-  std::vector<std::int16_t> cum_;  // n + 1 entries then zeros to a whole number of vectors
+  int last_ = 0;    // the last symbol counted, where the search starts
+  int middle_ = 0;  // m = n / 2
+  std::int32_t total_ = 0;
+  // n + 1 entries then zeros to a whole number of vectors: for j <= m minus the sum of the counts
+  // below j, for j > m the sum of the counts from j up (cum[j]; 0 at j = n).
+  std::vector<std::int16_t> sums_;
 };
 
 }  // namespace fapc::fba

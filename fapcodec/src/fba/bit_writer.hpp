@@ -13,8 +13,7 @@ class BitWriter {
  public:
   // The low `count` bits of `value`, most significant first; count is 0..32.
   void put_bits(std::uint32_t value, int count) {
-    if (count == 0) return;
-    pending_ = (pending_ << count) | (value & (~std::uint32_t{0} >> (32 - count)));
+    pending_ = (pending_ << count) | (value & ((std::uint64_t{1} << count) - 1));
     used_ += count;  // at most 31 + 32
     if (used_ >= 32) {
       used_ -= 32;

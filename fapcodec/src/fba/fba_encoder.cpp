@@ -141,7 +141,13 @@ Status FbaEncoder::add(const FapFrame& frame) {
   if (s.masks && !s.fitter) s.fitter.emplace(std::move(*s.masks).finish());
   if (s.added == 0) s.writer->reserve(s.checked);  // a plane a frame
   ++s.added;
-  s.window.push_back(s.fitter ? s.fitter->fit(frame) : frame);
+  if (s.fitter) {
+    FapFrame coded = frame;
+    s.fitter->fit(coded);
+    s.window.push_back(coded);
+  } else {
+    s.window.push_back(frame);
+  }
   return s.write_groups(false);
 }
 

@@ -50,6 +50,10 @@ class FrameWindow {
     const Entry& e = frames_[k];
     return View(e.number, masks_[e.mask], pool_.data() + e.first);
   }
+  // Frame k's values of its masked FAPs 3..68, in ascending FAP order: within a group (one mask)
+  // the j-th is that of the group's j-th FAP. For the planner's loops over every value, which
+  // need no view per value.
+  const std::int32_t* masked_values(std::size_t k) const { return pool_.data() + frames_[k].first; }
   void push_back(const FapFrame& frame);
   // Drops the first n frames (a group written).
   void erase_front(std::size_t n);

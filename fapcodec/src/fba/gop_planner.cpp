@@ -4,6 +4,7 @@
 #include <string>
 
 #include "fba/fba_quant.hpp"
+#include "fba/level_rule.hpp"
 
 namespace fapc::fba {
 
@@ -17,24 +18,6 @@ std::array<int, kCodedFieldCount> coded_fields(const FrameWindow::View& f) {
 
 bool field_masked(const std::bitset<kFapCount>& mask, int field) {
   return mask.test(field < kVisemeFields ? 0 : 1);
-}
-
-// Every lattice point within half a step of the value is a correct reconstruction: one, or two
-// when the value lies exactly half way (even steps only); level_chooser.hpp picks between two. A
-// value within half a step of 0 is always sent as 0, so that a FAP the mask fitter leaves out of
-// the next group shows 0 to players either way (mask_fitter.hpp).
-// A value inside its FAP's legal range (`legal`) is never given a level beyond it: one step
-// closer to 0 instead (docs/fba.md 2, "Legal ranges").
-LevelOptions level_options(std::int64_t value, std::int64_t step, std::int64_t legal) {
-  std::int64_t nearest = step <= 1 ? value : quantise(value, step);
-  const std::int64_t cap = largest_legal_level(legal, step);
-  const bool inside = std::llabs(value) <= legal;
-  if (inside) nearest = std::clamp(nearest, -cap, cap);
-  LevelOptions options{nearest, nearest};
-  if (step % 2 == 0 && step != 0 && 2 * std::llabs(value - nearest * step) == step && std::llabs(value) > step / 2)
-    options.other = value > nearest * step ? nearest + 1 : nearest - 1;
-  if (inside && std::llabs(options.other) > cap) options.other = nearest;
-  return options;
 }
 
 }  // namespace
@@ -52,8 +35,28 @@ bool GopPlanner::needs_intra(std::size_t k, std::size_t gop_first) const {
 
 void GopPlanner::nearest_levels(std::size_t k, const Gop& gop, std::vector<std::int64_t>& levels) const {
   levels.clear();
-  for (std::size_t j = 0; j < gop.faps.size(); ++j)
-    levels.push_back(level_options(frames_[k].value(gop.faps[j]), steps_[j], legal_[j]).nearest);
+  const std::int32_t* values = frames_.masked_values(k);  // the group's FAPs, in order
+  for (std::size_t j = 0; j < gop.faps.size(); ++j) levels.push_back(rules_[j].nearest(values[j]));
+}
+
+bool GopPlanner::differences_fit(std::size_t k, const Gop& gop) {
+  // A nearest level lies within 1 of value / step (half a step of rounding, and the legal cap
+  // moves it by less than one step more), so two levels differ by at most |a - b| / step + 2:
+  // differences of values within `bounds_` need no rounding. Only a frame that jumps further
+  // (hardly ever) has its levels and those of the frame before worked out.
+  const std::int32_t* now = frames_.masked_values(k);  // the group's FAPs, in order
+  const std::int32_t* before = frames_.masked_values(k - 1);
+  bool near = true;
+  for (std::size_t j = 0; j < gop.faps.size(); ++j) {
+    const std::int64_t d = std::int64_t{now[j]} - before[j];
+    near = near && d <= bounds_[j] && d >= -bounds_[j];
+  }
+  if (near) return true;
+  nearest_levels(k - 1, gop, previous_nearest_);
+  nearest_levels(k, gop, nearest_);
+  for (std::size_t j = 0; j < nearest_.size(); ++j)
+    if (!within(nearest_[j] - previous_nearest_[j])) return false;
+  return true;
 }
 
 Status GopPlanner::check_intra(const Gop& gop) const {
@@ -66,7 +69,7 @@ Status GopPlanner::check_intra(const Gop& gop) const {
                       "frame " + std::to_string(frame.number) + ": FAP " + std::to_string(fap) + " (" +
                           std::string(info.name) + ") value " + std::to_string(frame.value(fap)) +
                           " is beyond the largest range the bitstream carries (+-" +
-                          std::to_string(limit_ * std::max<std::int64_t>(steps_[j], 1)) + " at fap_quant " +
+                          std::to_string(limit_ * std::max<std::int64_t>(rules_[j].step(), 1)) + " at fap_quant " +
                           std::to_string(options_.quant) + ")");
   }
   return ok_status();
@@ -79,7 +82,7 @@ void GopPlanner::choose_levels(Gop& gop, std::size_t frames) {
   levels_.resize(frames);
   for (std::size_t j = 0; j < n; ++j) {
     for (std::size_t t = 0; t < frames; ++t)
-      column_[t] = level_options(frames_[gop.first + t].value(gop.faps[j]), steps_[j], legal_[j]);
+      column_[t] = rules_[j].options(frames_.masked_values(gop.first + t)[j]);
     chooser_.choose(column_, limit_, quant_.range_scaler(), levels_);
     gop.symbols[j] = static_cast<std::int16_t>(levels_[0]);
     for (std::size_t t = 1; t < frames; ++t)
@@ -144,11 +147,11 @@ Status GopPlanner::begin_group() {
   gop.mask = frames_[next_].mask;
   for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap)
     if (gop.mask.test(FaceState::index(fap))) gop.faps.push_back(fap);
-  steps_.clear();
-  legal_.clear();
+  rules_.clear();
+  bounds_.clear();
   for (const int fap : gop.faps) {
-    steps_.push_back(quant_.step(fap));
-    legal_.push_back(fap_table()[FaceState::index(fap)].legal_max());
+    rules_.emplace_back(quant_.step(fap), fap_table()[FaceState::index(fap)].legal_max());
+    bounds_.push_back((limit_ - 2) * std::max<std::int64_t>(rules_.back().step(), 1));
   }
   nearest_levels(next_, gop, nearest_);
   if (auto status = check_intra(gop); !status) return status;
@@ -163,12 +166,8 @@ Result<std::optional<Gop>> GopPlanner::next(bool input_ended) {
   // The group ends where the next intra plane must go. Whether a range can carry each difference
   // is judged on the nearest levels; the chooser then keeps to the same bound.
   for (; scan_ < frames_.size(); ++scan_) {
-    if (needs_intra(scan_, current_->first)) return std::optional<Gop>{complete_group(scan_)};
-    previous_nearest_.swap(nearest_);
-    nearest_levels(scan_, *current_, nearest_);
-    bool fits = true;
-    for (std::size_t j = 0; j < nearest_.size(); ++j) fits = fits && within(nearest_[j] - previous_nearest_[j]);
-    if (!fits) return std::optional<Gop>{complete_group(scan_)};
+    if (needs_intra(scan_, current_->first) || !differences_fit(scan_, *current_))
+      return std::optional<Gop>{complete_group(scan_)};
   }
   if (input_ended) return std::optional<Gop>{complete_group(scan_)};
   return std::optional<Gop>{};

@@ -15,6 +15,7 @@
 #include "fba/face_state.hpp"
 #include "fba/frame_window.hpp"
 #include "fba/level_chooser.hpp"
+#include "fba/level_rule.hpp"
 
 namespace fapc::fba {
 
@@ -52,6 +53,8 @@ class GopPlanner {
   bool needs_intra(std::size_t k, std::size_t gop_first) const;
   // The standard's rounding of every FAP of the group in frame k, into `levels`.
   void nearest_levels(std::size_t k, const Gop& gop, std::vector<std::int64_t>& levels) const;
+  // Whether every difference of nearest levels from frame k - 1 to frame k fits a range.
+  bool differences_fit(std::size_t k, const Gop& gop);
   Status check_intra(const Gop& gop) const;
   void choose_levels(Gop& gop, std::size_t frames);
   void quantise_fields(std::size_t k, bool intra, Gop& gop);
@@ -65,8 +68,8 @@ class GopPlanner {
   FaceState quant_;  // only fap_quant, steps and field limits are used
   std::int32_t limit_;  // the largest |q| any range can carry: 31 * 60 / scaler
   const std::size_t next_ = 0;  // groups start at the window's first frame
-  std::vector<std::int64_t> steps_;  // of the group's FAPs, in coding order
-  std::vector<std::int64_t> legal_;  // and their legal ranges (FapInfo::legal_max)
+  std::vector<LevelRule> rules_;       // of the group's FAPs, in coding order
+  std::vector<std::int64_t> bounds_;   // and the value differences whose levels surely fit
   std::vector<std::int64_t> nearest_, previous_nearest_;  // nearest levels of two frames
   std::vector<LevelOptions> column_;  // one FAP's choices over the group
   std::vector<std::int64_t> levels_;  // and its chosen levels

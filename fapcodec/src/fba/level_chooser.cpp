@@ -56,6 +56,7 @@ void LevelChooser::choose(std::span<const LevelOptions> options, std::int64_t li
     if (t > 0 && (free || options[t - 1].other != options[t - 1].nearest)) steps_.push_back(t);
   }
   if (steps_.empty()) return;
+  count_fixed(options);
   double cost = exact_cost(levels);  // leaves the counts of `levels` for the first replan
   trial_.assign(levels.begin(), levels.end());
   for (int round = 0; round < kMaxReplans; ++round) {
@@ -67,15 +68,41 @@ void LevelChooser::choose(std::span<const LevelOptions> options, std::int64_t li
   }
 }
 
-void LevelChooser::count(std::span<const std::int64_t> levels) {
+void LevelChooser::count_fixed(std::span<const LevelOptions> options) {
+  // The steps not in steps_ join two frames without a choice: the same in every plan.
   std::int64_t low = 0, high = 0;
-  for (std::size_t t = 1; t < levels.size(); ++t) {
+  for (std::size_t t = 1, next = 0; t < options.size(); ++t) {
+    if (next < steps_.size() && steps_[next] == t) {
+      ++next;
+      continue;
+    }
+    const std::int64_t d = options[t].nearest - options[t - 1].nearest;
+    low = std::min(low, d);
+    high = std::max(high, d);
+  }
+  fixed_low_ = low;
+  fixed_high_ = high;
+  fixed_counts_.assign(static_cast<std::size_t>(high - low + 1), 0);
+  for (std::size_t t = 1, next = 0; t < options.size(); ++t) {
+    if (next < steps_.size() && steps_[next] == t) {
+      ++next;
+      continue;
+    }
+    ++fixed_counts_[static_cast<std::size_t>(options[t].nearest - options[t - 1].nearest - low)];
+  }
+}
+
+void LevelChooser::count(std::span<const std::int64_t> levels) {
+  // The fixed steps' counts, counted once per choice, plus those of the steps a plan chooses.
+  std::int64_t low = fixed_low_, high = fixed_high_;
+  for (const std::size_t t : steps_) {
     low = std::min(low, levels[t] - levels[t - 1]);
     high = std::max(high, levels[t] - levels[t - 1]);
   }
   low_ = low;
   counts_.assign(static_cast<std::size_t>(high - low + 1), 0);
-  for (std::size_t t = 1; t < levels.size(); ++t) ++counts_[static_cast<std::size_t>(levels[t] - levels[t - 1] - low)];
+  std::copy(fixed_counts_.begin(), fixed_counts_.end(), counts_.begin() + (fixed_low_ - low));
+  for (const std::size_t t : steps_) ++counts_[static_cast<std::size_t>(levels[t] - levels[t - 1] - low)];
   alphabet_ = fitted_alphabet(low, high, scaler_);
 }
 
@@ -107,29 +134,31 @@ bool LevelChooser::replan(std::span<const LevelOptions> options, std::int64_t li
 
   const std::size_t n = options.size();
   from_.assign(2 * n, 0);
-  double best[2];
-  for (int s = 0; s < 2; ++s) {
-    const std::int64_t level = level_of(options[0], s);
-    best[s] = level > limit || level < -limit ? kInfinite : intra_bits(level, scaler_);
-  }
-  if (options[0].other == options[0].nearest) best[1] = kInfinite;
+  // The cheapest cost of a plan up to the last step taken, ending at its nearest level (0) or at
+  // its other one (1); two scalars, which the compiler keeps in registers.
+  const auto first_cost = [&](std::int64_t level) {
+    return level > limit || level < -limit ? kInfinite : intra_bits(level, scaler_);
+  };
+  double best0 = first_cost(options[0].nearest);
+  double best1 = options[0].other == options[0].nearest ? kInfinite : first_cost(options[0].other);
+  // Each state keeps the cheaper way in, the first (p = 0) on a tie; a frame without a second
+  // choice has no state 1.
   for (const std::size_t t : steps_) {
-    double next[2] = {kInfinite, kInfinite};
-    for (int s = 0; s < 2; ++s) {
-      if (s == 1 && options[t].other == options[t].nearest) continue;
-      for (int p = 0; p < 2; ++p) {
-        const double c = best[p] + price(level_of(options[t], s) - level_of(options[t - 1], p));
-        if (c < next[s]) {
-          next[s] = c;
-          from_[2 * t + static_cast<std::size_t>(s)] = static_cast<std::uint8_t>(p);
-        }
-      }
-    }
-    best[0] = next[0];
-    best[1] = next[1];
+    const LevelOptions& now = options[t];
+    const LevelOptions& before = options[t - 1];
+    const double from_nearest_0 = best0 + price(now.nearest - before.nearest);
+    const double from_other_0 = best1 + price(now.nearest - before.other);
+    const double from_nearest_1 = best0 + price(now.other - before.nearest);
+    const double from_other_1 = best1 + price(now.other - before.other);
+    const bool via_other_0 = from_other_0 < from_nearest_0;
+    const bool via_other_1 = now.other != now.nearest && from_other_1 < from_nearest_1;
+    best0 = via_other_0 ? from_other_0 : from_nearest_0;
+    best1 = now.other == now.nearest ? kInfinite : via_other_1 ? from_other_1 : from_nearest_1;
+    from_[2 * t] = via_other_0;
+    from_[2 * t + 1] = via_other_1;
   }
-  int s = best[1] < best[0] ? 1 : 0;
-  if (best[s] == kInfinite) return false;
+  int s = best1 < best0 ? 1 : 0;
+  if ((s == 1 ? best1 : best0) == kInfinite) return false;
   for (std::size_t t = n; t-- > 0;) {
     levels[t] = level_of(options[t], s);
     s = from_[2 * t + static_cast<std::size_t>(s)];

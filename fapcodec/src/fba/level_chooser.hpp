@@ -53,7 +53,10 @@ class LevelChooser {
               std::span<std::int64_t> levels);
 
  private:
-  // Counts the differences of `levels` into counts_, low_ and alphabet_.
+  // Counts the differences that no choice changes (steps between two frames without a choice).
+  void count_fixed(std::span<const LevelOptions> options);
+  // Counts the differences of `levels` into counts_, low_ and alphabet_: the fixed ones, and
+  // those of steps_.
   void count(std::span<const std::int64_t> levels);
   double exact_cost(std::span<const std::int64_t> levels);  // in bits; recounts
   // The cheapest chain under the prices of the last count(); false if none keeps to the limits.
@@ -62,6 +65,8 @@ class LevelChooser {
   int scaler_ = 1;
   std::int64_t low_ = 0;               // counts_[d - low_] is how often difference d occurs
   std::vector<std::uint32_t> counts_;
+  std::int64_t fixed_low_ = 0, fixed_high_ = 0;  // count_fixed's, as low_ and counts_
+  std::vector<std::uint32_t> fixed_counts_;
   std::vector<double> price_;          // the bits each difference costs under the current counts
   std::vector<std::uint8_t> from_;     // Viterbi back pointers: 2 per frame
   std::vector<std::int64_t> trial_;

@@ -64,16 +64,15 @@ MaskPlanner::Plan MaskPlanner::finish() && {
   return std::move(plan_);
 }
 
-FapFrame MaskFitter::fit(const FapFrame& frame) {
+void MaskFitter::fit(FapFrame& frame) {
   const std::size_t k = next_++;
   const Mask& free = plan_.free[k];
   if (k == 0 || ((mask_ ^ frame.mask) & ~free).any()) mask_ = plan_.ahead[k];
-  FapFrame coded = frame;
   const Mask filled = mask_ & ~frame.mask;
-  for (int fap = 3; fap <= kFapCount; ++fap)
-    if (filled.test(bit(fap))) coded.values[bit(fap)] = 0;
-  coded.mask = mask_;
-  return coded;
+  if (filled.any())
+    for (int fap = 3; fap <= kFapCount; ++fap)
+      if (filled.test(bit(fap))) frame.values[bit(fap)] = 0;
+  frame.mask = mask_;
 }
 
 std::vector<FapFrame> fit_masks(std::span<const FapFrame> frames, int quant) {
@@ -82,7 +81,7 @@ std::vector<FapFrame> fit_masks(std::span<const FapFrame> frames, int quant) {
   MaskFitter fitter(std::move(planner).finish());
   std::vector<FapFrame> coded;
   coded.reserve(frames.size());
-  for (const FapFrame& frame : frames) coded.push_back(fitter.fit(frame));
+  for (const FapFrame& frame : frames) fitter.fit(coded.emplace_back(frame));
   return coded;
 }
 

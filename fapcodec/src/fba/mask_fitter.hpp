@@ -46,8 +46,9 @@ class MaskPlanner {
 class MaskFitter {
  public:
   explicit MaskFitter(MaskPlanner::Plan plan) : plan_(std::move(plan)) {}
-  // Frame k of the sequence the plan was made from, as coded.
-  FapFrame fit(const FapFrame& frame);
+  // Frame k of the sequence the plan was made from, made into the frame as coded (in place: the
+  // encoder copies each frame once, into its window).
+  void fit(FapFrame& frame);
 
  private:
   MaskPlanner::Plan plan_;
