@@ -98,11 +98,6 @@ TEST(OutputNeeds, WritersThatReadDataChangeWithIt) {
   EXPECT_NE(written(no_curves, *json, tmp / "x.json"), written(whole, *json, tmp / "x.json"));
 }
 
-bool is_script(const fs::path& path) {
-  const std::string ext = path.extension().string();
-  return ext == ".mimic" || ext == ".mim" || ext == ".fml" || ext == ".xmt";
-}
-
 // What the whole load's frames were.
 pipeline::FramesSeen seen_in(const FapSequence& sequence) {
   Loaded loaded;
@@ -118,33 +113,29 @@ TEST(OutputNeeds, CurveOutputsOfScriptsMatchTheWholeLoad) {
   settings[2].limits.max_frames = 40;  // most corpus scripts are longer: the render's error
   settings[3].strict = true;
   std::size_t scripts = 0, failing = 0, warned = 0;
-  for (const char* folder : {"examples", "mimic", "fml", "xmto", "mimic-bad", "fml-bad", "xmto-bad"}) {
-    for (const auto& entry : fs::recursive_directory_iterator(test::corpus_dir() + "/" + folder)) {
-      if (!entry.is_regular_file() || !is_script(entry.path())) continue;
-      ++scripts;
-      const std::string input = entry.path().string();
-      for (const ConvertOptions& options : settings) {
-        const std::vector<pipeline::OutputRequest> outputs = {{tmp / "x.json", ""}, {tmp / "x.svg", ""},
-                                                              {tmp / "x.timeline", ""}};
-        ConvertOptions everything = options;  // frames and curves, as before outputs said what they read
-        everything.frames = true;
-        everything.curves = true;
-        const test::LoadedWay expected = test::load_then_write(input, outputs, everything);
-        auto whole = pipeline::load(input, everything);
-        for (const auto& request : outputs) fs::remove(request.path);
-        const pipeline::ConvertResult result = pipeline::convert(input, outputs, options);
-        SCOPED_TRACE(input + " at " + std::to_string(options.fps) + " fps");
-        EXPECT_TRUE(result.loaded.frames.frames.empty());  // rendered, not held
-        failing += expected.error.has_value();
-        warned += !expected.warnings.empty();
-        test::expect_as_loaded(result, expected, outputs);
-        if (!expected.error && whole) {
-          const pipeline::FramesSeen seen = seen_in(whole->frames);
-          EXPECT_EQ(result.frames.count, seen.count);
-          EXPECT_EQ(result.frames.fps, seen.fps);
-          EXPECT_EQ(result.frames.faps, seen.faps);
-          EXPECT_EQ(result.frames.duration_seconds(), whole->frames.duration_seconds());
-        }
+  for (const std::string& input : test::corpus_scripts()) {
+    ++scripts;
+    for (const ConvertOptions& options : settings) {
+      const std::vector<pipeline::OutputRequest> outputs = {{tmp / "x.json", ""}, {tmp / "x.svg", ""},
+                                                            {tmp / "x.timeline", ""}};
+      ConvertOptions everything = options;  // frames and curves, as before outputs said what they read
+      everything.frames = true;
+      everything.curves = true;
+      const test::LoadedWay expected = test::load_then_write(input, outputs, everything);
+      auto whole = pipeline::load(input, everything);
+      for (const auto& request : outputs) fs::remove(request.path);
+      const pipeline::ConvertResult result = pipeline::convert(input, outputs, options);
+      SCOPED_TRACE(input + " at " + std::to_string(options.fps) + " fps");
+      EXPECT_TRUE(result.loaded.frames.frames.empty());  // rendered, not held
+      failing += expected.error.has_value();
+      warned += !expected.warnings.empty();
+      test::expect_as_loaded(result, expected, outputs);
+      if (!expected.error && whole) {
+        const pipeline::FramesSeen seen = seen_in(whole->frames);
+        EXPECT_EQ(result.frames.count, seen.count);
+        EXPECT_EQ(result.frames.fps, seen.fps);
+        EXPECT_EQ(result.frames.faps, seen.faps);
+        EXPECT_EQ(result.frames.duration_seconds(), whole->frames.duration_seconds());
       }
     }
   }

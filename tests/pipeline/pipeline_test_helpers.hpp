@@ -71,6 +71,20 @@ inline LoadedWay load_then_write(const std::string& input, const std::vector<pip
   return out;
 }
 
+// Every script of the corpus, good and bad (Mimic, FML, XMT-Omega), for tests that compare two
+// ways of compiling them.
+inline std::vector<std::string> corpus_scripts() {
+  std::vector<std::string> scripts;
+  for (const char* folder : {"examples", "mimic", "fml", "xmto", "mimic-bad", "fml-bad", "xmto-bad"}) {
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(corpus_dir() + "/" + folder)) {
+      const std::string ext = entry.path().extension().string();
+      if (entry.is_regular_file() && (ext == ".mimic" || ext == ".mim" || ext == ".fml" || ext == ".xmt"))
+        scripts.push_back(entry.path().string());
+    }
+  }
+  return scripts;
+}
+
 // A conversion's result against the usual way's: the same error (message and kind), the same
 // warnings, and each output written with the usual bytes or, after the error, not at all.
 inline void expect_as_loaded(const pipeline::ConvertResult& result, const LoadedWay& expected,

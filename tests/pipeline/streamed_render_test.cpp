@@ -37,44 +37,24 @@ std::vector<ConvertOptions> settings() {
   return all;
 }
 
-bool is_script(const fs::path& path) {
-  const std::string ext = path.extension().string();
-  return ext == ".mimic" || ext == ".mim" || ext == ".fml" || ext == ".xmt";
-}
-
 TEST(StreamedRender, GivesTheBytesWarningsAndErrorsOfLoadingAndWriting) {
   const test::TempFolder tmp;
   std::size_t scripts = 0, failing = 0, warned = 0;
-  for (const char* folder : {"examples", "mimic", "fml", "xmto", "mimic-bad", "fml-bad", "xmto-bad"}) {
-    for (const auto& entry : fs::recursive_directory_iterator(test::corpus_dir() + "/" + folder)) {
-      if (!entry.is_regular_file() || !is_script(entry.path())) continue;
-      ++scripts;
-      const std::string input = entry.path().string();
-      for (const ConvertOptions& options : settings()) {
-        const std::vector<pipeline::OutputRequest> outputs = {{tmp / "x.fap", ""}, {tmp / "x.fba", ""}};
-        const LoadedWay expected = load_then_write(input, outputs, options);
-        fs::remove(tmp / "x.fap");
-        fs::remove(tmp / "x.fba");
-        const pipeline::ConvertResult streamed = pipeline::convert(input, outputs, options);
-        SCOPED_TRACE(input + " at " + std::to_string(options.fps) + " fps");
-        EXPECT_TRUE(streamed.loaded.frames.frames.empty());  // streamed, not loaded
-        failing += expected.error.has_value();
-        warned += !expected.warnings.empty();
-        if (expected.error) {
-          ASSERT_FALSE(streamed.ok());
-          EXPECT_EQ(format_diagnostic(*streamed.error), format_diagnostic(*expected.error));
-          EXPECT_EQ(streamed.error->kind, expected.error->kind);
-        } else {
-          ASSERT_TRUE(streamed.ok()) << format_diagnostic(*streamed.error);
-          EXPECT_EQ(streamed.frames.count, expected.frames);
-        }
-        ASSERT_EQ(streamed.warnings.size(), expected.warnings.size());
-        for (std::size_t w = 0; w < expected.warnings.size(); ++w)
-          EXPECT_EQ(format_diagnostic(streamed.warnings[w]), format_diagnostic(expected.warnings[w]));
-        for (std::size_t i = 0; i < outputs.size(); ++i) {
-          if (i < expected.bytes.size()) EXPECT_EQ(test::read_text(outputs[i].path), expected.bytes[i]) << outputs[i].path;
-          else EXPECT_FALSE(fs::exists(outputs[i].path)) << outputs[i].path;
-        }
+  for (const std::string& input : test::corpus_scripts()) {
+    ++scripts;
+    for (const ConvertOptions& options : settings()) {
+      const std::vector<pipeline::OutputRequest> outputs = {{tmp / "x.fap", ""}, {tmp / "x.fba", ""}};
+      const LoadedWay expected = load_then_write(input, outputs, options);
+      fs::remove(tmp / "x.fap");
+      fs::remove(tmp / "x.fba");
+      const pipeline::ConvertResult streamed = pipeline::convert(input, outputs, options);
+      SCOPED_TRACE(input + " at " + std::to_string(options.fps) + " fps");
+      EXPECT_TRUE(streamed.loaded.frames.frames.empty());  // streamed, not loaded
+      failing += expected.error.has_value();
+      warned += !expected.warnings.empty();
+      test::expect_as_loaded(streamed, expected, outputs);
+      if (!expected.error) {
+        EXPECT_EQ(streamed.frames.count, expected.frames);
       }
     }
   }
