@@ -64,7 +64,13 @@ play.onclick = () => { if (video.paused) { video.play(); } else { video.pause();
 video.onplay = () => { play.textContent = 'pause'; requestAnimationFrame(tick); };
 video.onpause = () => { play.textContent = 'play'; show(video.currentTime); };
 scrub.oninput = () => { video.currentTime = parseFloat(scrub.value) + 0.5 / data.rate; show(parseFloat(scrub.value)); };
-video.addEventListener('seeked', () => { show(video.currentTime); document.title = 'ready ' + video.currentTime; });
+// 'seeked' comes when the frame is decoded, before it is on screen: the page says it is ready two
+// animation frames later, once the browser has painted (a screenshot taken at once showed the old
+// frame under load; requestVideoFrameCallback never fires for a paused seek in headless Chromium).
+video.addEventListener('seeked', () => {
+  show(video.currentTime);
+  requestAnimationFrame(() => requestAnimationFrame(() => { document.title = 'ready ' + video.currentTime; }));
+});
 const wanted = /#t=([0-9.]+)/.exec(location.hash);
 video.addEventListener('loadeddata', () => {
   if (wanted) { video.currentTime = parseFloat(wanted[1]); } else { show(0); document.title = 'ready 0'; }
