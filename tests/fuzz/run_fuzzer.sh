@@ -8,7 +8,8 @@
 set -euo pipefail
 fuzzer=$1 fuzz_dir=$2 name=$3 work=$4/$3 seconds=$5
 shift 5
-rm -rf "$work"
+# A fresh corpus each run; earlier runs' artifacts stay, so a rerun does not wipe a failure's input.
+rm -rf "$work/corpus"
 mkdir -p "$work/corpus" "$work/artifacts"
 flags=(-max_total_time="$seconds" -max_len=1048576 -timeout=10 -rss_limit_mb=2048
        -malloc_limit_mb=2048 -artifact_prefix="$work/artifacts/" -print_final_stats=1)
