@@ -77,11 +77,9 @@ void characters(void* user_data, const xmlChar* text, int length) {
     if (stream_keeps(report, context, is_blank(text, length))) xmlSAX2Characters(user_data, text, length);
     return;
   }
-  if (report && !report->blank_text->keep_everywhere && context->node && is_blank(text, length)) {
-    const std::string_view name = reinterpret_cast<const char*>(context->node->name);
-    const auto& kept = report->blank_text->kept_in;
-    if (std::find(kept.begin(), kept.end(), name) == kept.end()) return;
-  }
+  if (report && !report->blank_text->keep_everywhere && context->node && is_blank(text, length) &&
+      !is_kept_in(*report->blank_text, context->node))
+    return;
   xmlSAX2Characters(user_data, text, length);
 }
 

@@ -894,15 +894,8 @@ Result<FmlDocument> read_fml_text(std::string_view text, const std::string& file
                                   const xml::XmlDocument::TextReleaser& release_text) {
   // Only talk text is read (an FML move's, embedded or not); elsewhere white space is dropped.
   const xml::BlankText blank_text{false, {"talk"}};
-  // Streamed first, holding only the part of the tree being read; a document the streamed walk
-  // cannot read as a parsed one is read (warnings and errors included) is read again whole.
-  if (Result<xml::XmlDocument> streamed = xml::XmlDocument::stream(text, file_name, blank_text, release_text)) {
-    Result<FmlDocument> read = FmlReader(*streamed, options).run(&*streamed);
-    if (read && streamed->finish_stream()) return read;
-  }
-  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name, blank_text);
-  if (!doc) return doc.error();
-  return FmlReader(*doc, options).run(&*doc);
+  return xml::read_streamed_or_whole(text, file_name, blank_text, release_text,
+                                     [&](xml::XmlDocument& doc) { return FmlReader(doc, options).run(&doc); });
 }
 
 }  // namespace

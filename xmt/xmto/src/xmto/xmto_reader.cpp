@@ -463,16 +463,9 @@ Result<XmtoDocument> read_xmto_text(std::string_view text, const std::string& fi
                                     const xml::XmlDocument::TextReleaser& release_text) {
   // Only talk text is read (an FML move's, embedded or not); elsewhere white space is dropped.
   const xml::BlankText blank_text{false, {"talk"}};
-  // Streamed first, holding only the part of the tree being read; a document the streamed walk
-  // cannot read as a parsed one is read (warnings and errors included) is read again whole.
-  if (Result<xml::XmlDocument> streamed = xml::XmlDocument::stream(text, file_name, blank_text, release_text)) {
-    Result<XmtoDocument> read = DocumentReader(*streamed, options).run();
-    if (read && streamed->finish_stream()) return read;
-  }
-  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name, blank_text);
   // The reader frees the document's tree once it has walked it.
-  if (!doc) return doc.error();
-  return DocumentReader(*doc, options).run();
+  return xml::read_streamed_or_whole(text, file_name, blank_text, release_text,
+                                     [&](xml::XmlDocument& doc) { return DocumentReader(doc, options).run(); });
 }
 
 }  // namespace

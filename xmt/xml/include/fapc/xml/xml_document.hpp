@@ -14,6 +14,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "fapc/codec/diagnostic.hpp"
@@ -159,7 +160,6 @@ class XmlDocument {
   const xmlNode* next_child(const xmlNode* parent, const xmlNode* after, OpenNames open) const;
   bool ended(const xmlNode* element) const;
   void release(const xmlNode* element) const;
-  Status scan_positions();
 
   Location at_offset(std::size_t offset) const;
   // The element's number + 1, 0 when positions are unknown (libxml2's line numbers then).
@@ -171,6 +171,22 @@ class XmlDocument {
   void drop_positions();  // frees the position tables
   Diagnostic with_line(Diagnostic d) const;
 };
+
+// A reader's walk (`read(document)`, giving a Result) over `text` streamed, and again over the
+// whole parsed tree when the streamed walk cannot stand for it (see XmlDocument::stream): what
+// the FML and XMT-Omega readers do with every document.
+template <class Read>
+auto read_streamed_or_whole(std::string_view text, const std::string& file_name, const BlankText& blank_text,
+                            const XmlDocument::TextReleaser& release_text, Read read)
+    -> decltype(read(std::declval<XmlDocument&>())) {
+  if (Result<XmlDocument> streamed = XmlDocument::stream(text, file_name, blank_text, release_text)) {
+    auto result = read(*streamed);
+    if (result && streamed->finish_stream()) return result;
+  }
+  Result<XmlDocument> parsed = XmlDocument::parse(text, file_name, blank_text);
+  if (!parsed) return parsed.error();
+  return read(*parsed);
+}
 
 // Elements nested deeper than kMaxNestingDepth: an error at the first start tag too deep
 // (ErrorKind::limit_exceeded). Every reader of XML text (parse, validation) checks it first.
