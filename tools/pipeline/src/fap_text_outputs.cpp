@@ -10,6 +10,10 @@ FapWriteOptions fap_write_options(const ConvertOptions& options) {
   return write;
 }
 
+Diagnostic fap_writer_error_at(const Diagnostic& error, const std::string& path) {
+  return Diagnostic{error.severity, Location{path, 0, 0, -1}, error.message, {}, error.kind};
+}
+
 FapTextOutputs::FapTextOutputs(const std::string& name, int fps, std::size_t frames, std::int64_t first_number,
                                std::int64_t last_number, const ConvertOptions& options)
     : writer_(name, fps, frames, first_number, last_number, fap_write_options(options)) {}
@@ -37,7 +41,7 @@ void FapTextOutputs::finish() {
 }
 
 std::optional<Diagnostic> FapTextOutputs::error_of(std::size_t i, const std::string& path) const {
-  if (error_) return Diagnostic{error_->severity, Location{path, 0, 0, -1}, error_->message, {}, error_->kind};
+  if (error_) return fap_writer_error_at(*error_, path);
   for (const auto& [at, why] : failed_)
     if (at == i) return why;
   return std::nullopt;

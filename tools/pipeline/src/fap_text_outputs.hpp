@@ -1,6 +1,7 @@
 // The .fap text of a streamed conversion, made once and handed in pieces to a temporary file per
 // .fap output (AtomicFile): an output appears only when committed, so an error found late leaves
-// nothing. Shared by the streamed frame-file and script conversions. Private to the pipeline.
+// nothing. Shared by the streamed frame-file and script conversions; the option and error helpers
+// also by the .fap writer. Private to the pipeline.
 #pragma once
 
 #include <cstddef>
@@ -18,6 +19,8 @@ namespace fapc::pipeline {
 
 // --fap-flavour as the writer's options.
 FapWriteOptions fap_write_options(const ConvertOptions& options);
+// The .fap writer's error (a frame or a rate the flavour cannot carry) as writing `path` gives it.
+Diagnostic fap_writer_error_at(const Diagnostic& error, const std::string& path);
 
 class FapTextOutputs {
  public:

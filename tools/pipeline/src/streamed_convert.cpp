@@ -281,7 +281,7 @@ std::optional<ConvertResult> convert_in_one_pass(FrameSource& source, const std:
   flush(true);
   Status written = ok_status();
   if (fap_error) {
-    written = Diagnostic{fap_error->severity, Location{path, 0, 0, -1}, fap_error->message, {}, fap_error->kind};
+    written = fap_writer_error_at(*fap_error, path);
   } else if (body_error) {
     written = *body_error;
   } else if (auto file = AtomicFile::create(path); !file) {

@@ -3,6 +3,7 @@
 
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/codec/file_io.hpp"
+#include "fap_text_outputs.hpp"
 #include "formats.hpp"
 
 namespace fapc::pipeline::builtin {
@@ -54,10 +55,8 @@ Result<Loaded> load_fap(const std::string& path, const ConvertOptions& options) 
 }
 
 Result<std::string> write_fap(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
-  FapWriteOptions write;
-  write.flavour = options.fap_flavour;
-  auto text = write_fap_flavour(loaded.frames, write);
-  if (!text) return Diagnostic{text.error().severity, Location{path, 0, 0, -1}, text.error().message, {}, text.error().kind};
+  auto text = write_fap_flavour(loaded.frames, fap_write_options(options));
+  if (!text) return fap_writer_error_at(text.error(), path);
   return text;
 }
 
