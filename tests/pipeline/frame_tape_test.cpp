@@ -44,6 +44,18 @@ TEST(FrameTape, GivesBackEveryFrameFieldForField) {
   for (std::size_t k = 0; k < frames.size(); ++k) ASSERT_TRUE(identical(player.next(), frames[k])) << "frame " << k;
 }
 
+TEST(FrameTape, GivesBackFramesAcrossItsBlocks) {
+  // Enough frames for several of the tape's 1 MiB blocks, each block freed as the player leaves it.
+  std::vector<FapFrame> frames;
+  for (int round = 0; round < 32; ++round)
+    for (const FapFrame& f : varied_frames()) frames.push_back(f);
+  FrameTape tape(std::size_t{1} << 30);
+  for (const FapFrame& f : frames) ASSERT_TRUE(tape.record(f));
+  ASSERT_GT(tape.bytes(), std::size_t{3} << 20);
+  FrameTape::Player player = tape.play();
+  for (std::size_t k = 0; k < frames.size(); ++k) ASSERT_TRUE(identical(player.next(), frames[k])) << "frame " << k;
+}
+
 TEST(FrameTape, CostsAByteOrTwoPerMaskedFapOfASmoothAnimation) {
   FrameTape tape(std::size_t{1} << 30);
   for (int k = 0; k < 1000; ++k) {

@@ -1,20 +1,27 @@
-// Rendered frames kept compactly between the FBA encoder's two passes, so that a streamed compile
-// renders each frame once (docs/architecture.md, "Streaming"). The encoder must see every frame
-// before it codes the first (it plans masks over the whole sequence), so the frames are needed
-// twice; rendering a frame costs about a microsecond, replaying it from the tape a few dozen
-// nanoseconds. A frame costs a byte or two per masked FAP: its number and the values' differences
+// Frames kept compactly between the FBA encoder's two passes, so that a streamed compile renders
+// each frame once and a streamed conversion decodes its input once (docs/architecture.md,
+// "Streaming"). The encoder must see every frame before it codes the first (it plans masks over
+// the whole sequence), so the frames are needed twice; rendering or decoding a frame costs about a
+// microsecond, replaying it from the tape a few dozen nanoseconds. A frame costs a byte or two per masked FAP: its number and the values' differences
 // from the previous frame, as variable-length integers. A tape that would outgrow its budget is
-// dropped (the caller renders the frames again), so memory stays bounded whatever the animation.
-// Private to the pipeline.
+// dropped (the caller makes the frames again), so memory stays bounded whatever the animation.
+// The tape is held in blocks that the replay gives back as it passes them: the second pass's
+// outputs grow while the tape shrinks. Private to the pipeline.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "fapc/codec/fap_sequence.hpp"
 
 namespace fapc::pipeline {
+
+// The most bytes the frames may take on the tape between the passes: a byte or two per masked FAP
+// and frame, so some 10^6 frames of every FAP or 10^7 of a few; beyond, the second pass makes the
+// frames again.
+inline constexpr std::size_t kFrameTapeBudget = std::size_t{64} << 20;
 
 class FrameTape {
  public:
@@ -24,28 +31,41 @@ class FrameTape {
   // Appends the frame; false (and the tape emptied for good) once the budget is exceeded.
   bool record(const FapFrame& frame);
   bool dropped() const { return dropped_; }
-  std::size_t bytes() const { return bytes_.size(); }
+  std::size_t bytes() const { return bytes_; }
 
-  // The recorded frames again, in order, each equal in every field to the one recorded.
+  // The recorded frames again, in order, each equal in every field to the one recorded. A tape is
+  // played once: each block is freed as the player leaves it.
   class Player {
    public:
-    explicit Player(const FrameTape& tape) : tape_(tape) {}
-    FapFrame next();
+    explicit Player(FrameTape& tape) : tape_(tape) {}
+    // The next frame, valid until the next call (it is rebuilt in place from its differences).
+    const FapFrame& next();
 
    private:
-    const FrameTape& tape_;
-    std::size_t at_ = 0;
-    FapFrame previous_;
+    FrameTape& tape_;
+    std::size_t block_ = 0;
+    std::size_t at_ = 0;  // in that block
+    FapFrame frame_;      // the last frame played
   };
-  Player play() const { return Player(*this); }
+  Player play() { return Player(*this); }
 
  private:
-  void put(std::uint64_t v);
-  void put_signed(std::int64_t v) { put((static_cast<std::uint64_t>(v) << 1) ^ static_cast<std::uint64_t>(v >> 63)); }
+  // A block's size, and the most bytes one frame can take (a flag, the mask, a number's
+  // difference, and differences of 32-bit values for 68 FAPs and 10 fields), so that no frame is
+  // split across blocks: 1 + 9 + 10 + 78 * 5 = 410.
+  static constexpr std::size_t kBlockBytes = std::size_t{1} << 20;
+  static constexpr std::size_t kMostFrameBytes = 512;
+
+  struct Block {
+    std::unique_ptr<std::uint8_t[]> bytes;  // kBlockBytes
+    std::size_t size = 0;                   // of them recorded
+  };
+  void drop();
 
   std::size_t budget_;
   bool dropped_ = false;
-  std::vector<std::uint8_t> bytes_;
+  std::size_t bytes_ = 0;     // recorded, over every block
+  std::vector<Block> blocks_;  // the last is being filled
   FapFrame previous_;  // the last frame recorded: values are coded as differences from it
 };
 

@@ -2,11 +2,13 @@
 // (docs/architecture.md, "Streaming"). The FBA encoder needs two passes over the frames (the first
 // checks them and gathers what fitting masks needs, the second codes), the .fap writer needs the
 // frame count for its header, and the .fap reader knows what its frame numbers mean only at the
-// end of the file; so the input is read twice from one mapping whose pages are let go behind the
-// reader:
+// end of the file; so the frames are taken twice. The first pass reads the input from a mapping
+// whose pages are let go behind the reader and keeps the frames on a compact tape; the second
+// replays the tape, or, when the frames outgrew the tape's budget, reads the input again:
 //
-//   pass 1: a .fap read (scan_fap_text) or a .fba decoded  --frames-->  FbaEncoder::check
-//   pass 2: the same, frames numbered as placed in time    --frames-->  FbaEncoder::add, FapTextWriter::add
+//   pass 1: a .fap read (scan_fap_text) or a .fba decoded  --frames-->  FbaEncoder::check, FrameTape
+//   pass 2: FrameTape (or the input again), frames numbered as placed in time
+//                                                          --frames-->  FbaEncoder::add, FapTextWriter::add
 //
 // The coded bytes stay in memory (a few bytes a frame); the .fap text goes to a temporary file in
 // the output's folder as it is made, the .mp4 (whose moov, before mdat, holds every sample's size)
@@ -22,6 +24,7 @@
 #include "fapc/mpeg4/mp4_writer.hpp"
 #include "fapc/pipeline/fba_io.hpp"
 #include "fap_text_outputs.hpp"
+#include "frame_tape.hpp"
 
 namespace fapc::pipeline {
 
@@ -54,15 +57,33 @@ struct SourceFacts {
   std::int64_t first_number = 0, last_number = 0;  // as placed in time
 };
 
-// A frame file read twice. The first pass hands the frames to `check` numbered so that the
+// A frame file read once, its frames kept on a tape for the second pass, or read twice when the
+// tape would outgrow its budget. The first pass hands the frames to `check` numbered so that the
 // encoder's checks of numbers hold (a .fap's numbers mean something only once it is all read: its
 // reader checks them itself); the second hands them numbered as placed in time. Reading errors
 // come from the first pass.
 class FrameSource {
  public:
   virtual ~FrameSource() = default;
-  virtual Result<SourceFacts> first_pass(const FapFrameSink& check) = 0;
-  virtual Status second_pass(const FapFrameSink& code) = 0;
+  // `keep` when a second pass will follow.
+  Result<SourceFacts> first_pass(const FapFrameSink& check, bool keep) {
+    if (!keep) return read(check);
+    tape_.emplace(kFrameTapeBudget);
+    return read([&](const FapFrame& frame) {
+      tape_->record(frame);
+      return check(frame);
+    });
+  }
+  Status second_pass(const FapFrameSink& code) {
+    if (!tape_ || tape_->dropped()) return read_again(code);
+    FrameTape::Player replay = tape_->play();
+    for (std::size_t k = 0; k < frames_read(); ++k) {
+      FapFrame frame = replay.next();
+      frame.number = placed(k, frame.number);
+      if (auto status = code(frame); !status) return status;
+    }
+    return ok_status();
+  }
   // Whether the first pass already numbers the frames as placed in time.
   virtual bool placed_in_first_pass() const { return false; }
   // Where frame `number` (as placed) was read, for the encoder's errors about one frame
@@ -71,6 +92,20 @@ class FrameSource {
     (void)number, (void)fap;
     return Location{};
   }
+
+ protected:
+  virtual Result<SourceFacts> read(const FapFrameSink& check) = 0;
+  // The second pass from the file again, frames numbered as placed.
+  virtual Status read_again(const FapFrameSink& code) = 0;
+  // How many frames the first pass read, and frame k's number as placed in time.
+  virtual std::size_t frames_read() const = 0;
+  virtual std::int64_t placed(std::size_t k, std::int64_t number) const {
+    (void)k;
+    return number;
+  }
+
+ private:
+  std::optional<FrameTape> tape_;
 };
 
 class FapSource : public FrameSource {
@@ -80,7 +115,12 @@ class FapSource : public FrameSource {
     read_options_.max_frames = options.limits.max_frames;
   }
 
-  Result<SourceFacts> first_pass(const FapFrameSink& check) override {
+  Location locate(std::int64_t number, int fap) const override {
+    return locator_ ? locator_(number, fap) : Location{};
+  }
+
+ protected:
+  Result<SourceFacts> read(const FapFrameSink& check) override {
     std::int64_t ordinal = 0;
     auto scan = scan_fap_text(text(), path_, read_options_, [&](const FapFrame& frame) {
       FapFrame in_order = frame;
@@ -98,7 +138,7 @@ class FapSource : public FrameSource {
     return facts;
   }
 
-  Status second_pass(const FapFrameSink& code) override {
+  Status read_again(const FapFrameSink& code) override {
     std::size_t k = 0;
     auto again = scan_fap_text(text(), path_, read_options_, [&](const FapFrame& read) {
       if (k == numbers_.size()) return Status(changed());
@@ -109,10 +149,8 @@ class FapSource : public FrameSource {
     if (!again || k != numbers_.size()) return changed();
     return ok_status();
   }
-
-  Location locate(std::int64_t number, int fap) const override {
-    return locator_ ? locator_(number, fap) : Location{};
-  }
+  std::size_t frames_read() const override { return numbers_.size(); }
+  std::int64_t placed(std::size_t k, std::int64_t) const override { return numbers_[k]; }
 
  private:
   std::string_view text() const { return file_.bytes(); }
@@ -139,7 +177,10 @@ class FbaSource : public FrameSource {
     name_ = std::filesystem::path(path).stem().string();
   }
 
-  Result<SourceFacts> first_pass(const FapFrameSink& check) override {
+  bool placed_in_first_pass() const override { return true; }
+
+ protected:
+  Result<SourceFacts> read(const FapFrameSink& check) override {
     SourceFacts facts;
     auto decoded = decode_fba(bytes(), options_, [&](const FapFrame& frame) {
       if (facts.frames++ == 0) facts.first_number = frame.number;
@@ -154,9 +195,7 @@ class FbaSource : public FrameSource {
     return facts;
   }
 
-  bool placed_in_first_pass() const override { return true; }
-
-  Status second_pass(const FapFrameSink& code) override {
+  Status read_again(const FapFrameSink& code) override {
     std::size_t k = 0;
     auto again = decode_fba(bytes(), options_, [&](const FapFrame& frame) {
       ++k;
@@ -166,6 +205,7 @@ class FbaSource : public FrameSource {
       return make_error(ErrorKind::io, Location{options_.file, 0, 0, -1}, "the file changed while it was read");
     return ok_status();
   }
+  std::size_t frames_read() const override { return frames_; }
 
  private:
   std::span<const std::uint8_t> bytes() const {
@@ -269,7 +309,7 @@ std::optional<ConvertResult> convert_in_one_pass(FrameSource& source, const std:
     if (auto status = writer->add(frame, text); !status) fap_error = status.error();
     else flush(false);
     return ok_status();
-  });
+  }, false);
   ConvertResult result;
   if (!take_facts(result, facts, faps, input, options)) return result;
   FapTextWriter header_writer(facts->name, facts->fps, facts->frames, facts->first_number, facts->last_number,
@@ -326,13 +366,18 @@ std::optional<ConvertResult> convert_streamed(const std::string& input, const st
   std::optional<Encoding> fba, mp4;
   if (wants_fba) fba.emplace(options, false, *source);
   if (wants_mp4) mp4.emplace(options, true, *source);
+  // The frames go on the tape where that pays: a decoded .fba (replaying takes a third of the time
+  // of decoding again) and frames for an encoder (as fast as reading the .fap again, and a lower
+  // peak: 149 against 165 MB at 10^6 frames). A .fap only rewritten as .fap is read again (the
+  // tape would be some 50 bytes a frame more for the same time).
+  const bool keep = wants_fba || wants_mp4 || source->placed_in_first_pass();
   std::bitset<kFapCount> faps;
   auto facts = source->first_pass([&](const FapFrame& frame) -> Status {
     faps |= frame.mask;
     if (fba) fba->check(frame);
     if (mp4) mp4->check(frame);
     return ok_status();
-  });
+  }, keep);
   ConvertResult result;
   if (!take_facts(result, facts, faps, input, options)) return result;
   // As encode_checked: a rate the stream cannot code comes before any other error of encoding.

@@ -27,10 +27,6 @@ namespace fapc::pipeline {
 
 namespace {
 
-// The most bytes the frames may take on the tape between the passes: a byte or two per masked FAP
-// and frame, so some 10^7 frames of a few FAPs; beyond, the second pass renders again.
-constexpr std::size_t kFrameTapeBudget = std::size_t{64} << 20;
-
 bool is_gzip_path(const std::string& path) {
   return path.size() >= 3 && path.compare(path.size() - 3, 3, ".gz") == 0;
 }
