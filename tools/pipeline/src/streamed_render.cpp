@@ -59,6 +59,7 @@ std::optional<ConvertResult> convert_script_streamed(const std::string& input,
   // The front end alone: the timeline, its warnings, no frames and no curves.
   ConvertOptions lower_only = options;
   lower_only.render = false;
+  lower_only.renders_later = true;
   lower_only.curves = false;
   Result<Loaded> lowered = load(input, lower_only);
   if (!lowered) {

@@ -7,6 +7,11 @@
 
 namespace fapc::pipeline {
 
+FrameBudget frame_budget_for(const ConvertOptions& options) {
+  if ((!options.render && !options.renders_later) || options.duration) return FrameBudget{};
+  return FrameBudget{options.fps, options.limits.max_frames};
+}
+
 Result<Profile> profile_for(const ConvertOptions& options) {
   if (!options.profile) return default_profile();
   return load_profile(*options.profile);

@@ -6,10 +6,16 @@
 
 #include "fapc/pipeline/loaded.hpp"
 #include "fapc/pipeline/options.hpp"
+#include "fapc/transcoder/frame_budget.hpp"
 #include "fapc/transcoder/profile.hpp"
 #include "fapc/transcoder/render.hpp"
 
 namespace fapc::pipeline {
+
+// The frame budget a front end checks as soon as it has scheduled its input, before its clips are
+// made: the rate and limit the timeline will be rendered at. None (fps 0) when its frames are never
+// made (an XMT-Omega include) or when --duration sets the end (rendering checks that, at the input).
+FrameBudget frame_budget_for(const ConvertOptions& options);
 
 // The profile of --profile, or the default one.
 Result<Profile> profile_for(const ConvertOptions& options);

@@ -111,6 +111,7 @@ class Compiler final : public MainSink {
     schedule_options.max_runs = options_.max_runs;
     Result<Schedule> scheduled = schedule(root, schedule_options);
     if (!scheduled) return with_source_line(scheduled.error());
+    if (auto too_long = check_length(*scheduled); !too_long) return too_long.error();
     root = ScheduleNode{};  // the tree is scheduled: let it go before the clips are made
     MimicProgram out;
     out.timeline = lower(*scheduled);
@@ -651,6 +652,35 @@ class Compiler final : public MainSink {
 
   // ---- lowering ------------------------------------------------------------------------------
 
+  // Whether a run of the leaf makes clips (one per target): not when it has no target, no points,
+  // or nothing left of its span.
+  bool makes_clips(const Leaf& leaf, const Occurrence& o) const {
+    if (leaf.target_count == 0) return false;
+    double begin = o.begin;
+    if (leaf.shape == Leaf::Shape::list) {
+      if (leaf.point_count == 0) return false;
+      begin += list_points_[leaf.first_point].time;  // the curve starts at the first time
+    }
+    return o.end > begin;
+  }
+
+  // The frame budget against the timeline's end before the clips are made: the end and the source
+  // that Timeline::end() and FrameStream::start find among the clips (the last clip that ends
+  // last; clips come in the order of the runs).
+  Status check_length(const Schedule& scheduled) const {
+    double end = 0;
+    const Leaf* last = nullptr;
+    for (const Occurrence& o : scheduled.occurrences) {
+      const Leaf& leaf = leaves_[o.leaf_id];
+      if (!makes_clips(leaf, o) || (last && o.end < end)) continue;
+      end = o.end;
+      last = &leaf;
+    }
+    end = std::max(end, 0.0);
+    if (!options_.frames.exceeded_by(end)) return ok_status();
+    return frame_budget_error(end, last ? location(last->at) : Location{}, options_.frames);
+  }
+
   Timeline lower(const Schedule& scheduled) {
     Timeline timeline;
     std::size_t clips = 0;  // at most one per occurrence and target: no growth by doubling
@@ -664,6 +694,7 @@ class Compiler final : public MainSink {
     for (const Occurrence& o : scheduled.occurrences) {
       if (in_leaf_order) leaves_.release_before(o.leaf_id);
       const Leaf& leaf = leaves_[o.leaf_id];
+      if (!makes_clips(leaf, o)) continue;
       for (std::uint32_t t = 0; t < leaf.target_count; ++t) add_clip(timeline, leaf, target(leaf, t), o);
     }
     leaves_ = {};
@@ -698,7 +729,6 @@ class Compiler final : public MainSink {
         break;
       }
       case Leaf::Shape::list: {
-        if (leaf.point_count == 0) return;
         const ListPoint& first = list_points_[leaf.first_point];
         // The curve starts at the first time: before it the action is absent.
         clip.begin = o.begin + first.time;
@@ -710,7 +740,6 @@ class Compiler final : public MainSink {
         break;
       }
     }
-    if (clip.end <= clip.begin) return;  // nothing to contribute (zero length, or cut away)
     if (fade && fade->connect != Fade::Connect::none) {
       connecting_.push_back({timeline.clips.size(), fade->connect == Fade::Connect::given, fade->connect_to});
     }

@@ -2,11 +2,11 @@
 // FAP, round halves away from zero, clamp to the legal range with one warning per clip.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <set>
 #include <span>
 #include <sstream>
 
+#include "fapc/transcoder/frame_budget.hpp"
 #include "timeline_index.hpp"
 
 namespace fapc {
@@ -161,15 +161,8 @@ FrameStream::~FrameStream() = default;
 
 Result<FrameStream> FrameStream::start(const Timeline& timeline, const RenderOptions& options) {
   if (options.fps <= 0) return make_error(ErrorKind::usage, Location{}, "the frame rate must be positive");
-  const double frames = std::ceil(timeline.end() * options.fps);
-  if (!(frames <= static_cast<double>(options.max_frames))) {
-    char text[96];
-    std::snprintf(text, sizeof text, "the animation lasts %g s, %.15g frames at %d fps", timeline.end(), frames,
-                  options.fps);
-    Limits limits;
-    limits.max_frames = options.max_frames;
-    return limit_error(where_it_ends(timeline), text, Limit::frames, limits);
-  }
+  const FrameBudget budget{options.fps, options.max_frames};
+  if (budget.exceeded_by(timeline.end())) return frame_budget_error(timeline.end(), where_it_ends(timeline), budget);
   const auto count = static_cast<std::int64_t>(std::ceil(timeline.end() * options.fps - 1e-9));
   auto state = std::make_unique<State>(timeline, options, std::max<std::int64_t>(count, 0));
   if (auto resolved = state->renderer.resolve(); !resolved) return resolved.error();

@@ -343,6 +343,7 @@ void XmlDocument::abandon_stream() const { faithful_ = false; }
 
 void XmlDocument::release_tree() {
   finish_stream();
+  released_ = true;
   doc_.reset();
   if (release_text_) release_text_(text_.size());
   // Positions are asked of nodes, and there are none left (line_text() stays).

@@ -14,6 +14,7 @@ Result<xmt::FmlDocument> read_document(const std::string& path, const ConvertOpt
   fml.events = options.events;
   fml.duration = options.duration;
   fml.max_runs = options.limits.max_runs;
+  fml.frames = frame_budget_for(options);
   set_speech(fml, options);
   fml.profile = &profile;
   fml.includes = options.includes;

@@ -16,6 +16,7 @@ Result<Loaded> load_mimic(const std::string& path, const ConvertOptions& options
   MimicOptions mimic;
   mimic.profile = &*profile;
   mimic.max_runs = options.limits.max_runs;
+  mimic.frames = frame_budget_for(options);
   mimic.includes = options.includes;
   Result<MimicProgram> program = compile_mimic(*source, path, mimic);
   // The timeline and the warnings keep nothing of the text: let it go before rendering (a

@@ -23,6 +23,7 @@ Result<xmt::IncludedAnimation> load_animation(const std::string& path, const Loc
   ConvertOptions inner = options;
   inner.duration.reset();
   inner.render = false;
+  inner.renders_later = false;
   inner.facts = false;
   Result<Loaded> loaded = load_included_input(path, where, inner);
   if (!loaded) {
@@ -52,6 +53,7 @@ Result<xmt::XmtoDocument> read_document(const std::string& path, const ConvertOp
   xmto.fml.includes = options.includes;
   xmto.duration = options.duration;
   xmto.max_runs = options.limits.max_runs;
+  xmto.frames = frame_budget_for(options);
   xmto.fml.max_runs = options.limits.max_runs;
   xmto.max_audio_bytes = options.limits.max_decompressed_bytes;
   xmto.load_animation = [&options](const std::string& included, const Location& where) {

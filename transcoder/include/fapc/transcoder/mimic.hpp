@@ -10,6 +10,7 @@
 #include "fapc/codec/limits.hpp"
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/include_policy.hpp"
+#include "fapc/transcoder/frame_budget.hpp"
 #include "fapc/transcoder/profile.hpp"
 #include "fapc/transcoder/timeline.hpp"
 
@@ -21,6 +22,10 @@ struct MimicOptions {
   // pass their own.
   std::function<Result<std::string>(const std::string& path)> read_file;
   std::int64_t max_runs = Limits{}.max_runs;  // scheduled runs after repeats (--max-runs)
+  // The frames the program will be rendered at: a program too long for them is refused once it
+  // is scheduled, before its clips are made (the error FrameStream::start would give). fps 0:
+  // unchecked.
+  FrameBudget frames;
   // Which files a defxpr may name (docs/security.md); by default the program's own folder tree.
   IncludePolicy includes;
 };

@@ -47,5 +47,8 @@ struct FmlTree {
 // A talk's visemes overlap by the coarticulation rule; a spoken talk keeps its own length (its
 // audio and visemes cut at the run's end), a silent one is stretched to the run.
 Timeline lower_fml(const FmlTree& tree, const Schedule& schedule);
+// Where the story ends (the end_source of lower_fml's timeline), known before lowering: for
+// errors about the story's length.
+Location story_end_source(const FmlTree& tree, const Schedule& schedule);
 
 }  // namespace fapc::xmt

@@ -100,9 +100,12 @@ Timeline lower_fml(const FmlTree& tree, const Schedule& schedule) {
     }
   }
   timeline.explicit_end = schedule.end;
-  timeline.end_source =
-      end_source(schedule, tree.root.source, [&](std::size_t leaf) { return tree.leaves[leaf].where; });
+  timeline.end_source = story_end_source(tree, schedule);
   return timeline;
+}
+
+Location story_end_source(const FmlTree& tree, const Schedule& schedule) {
+  return end_source(schedule, tree.root.source, [&](std::size_t leaf) { return tree.leaves[leaf].where; });
 }
 
 }  // namespace fapc::xmt

@@ -182,9 +182,12 @@ Timeline lower_to_timeline(const XmtoTree& tree, const Schedule& schedule) {
   timeline.clips = std::move(clips.clips);
   timeline.audio = std::move(audio);
   timeline.explicit_end = schedule.end;
-  timeline.end_source =
-      end_source(schedule, tree.root.source, [&](std::size_t leaf) { return tree.leaves[leaf].where; });
+  timeline.end_source = body_end_source(tree, schedule);
   return timeline;
+}
+
+Location body_end_source(const XmtoTree& tree, const Schedule& schedule) {
+  return end_source(schedule, tree.root.source, [&](std::size_t leaf) { return tree.leaves[leaf].where; });
 }
 
 }  // namespace fapc::xmt

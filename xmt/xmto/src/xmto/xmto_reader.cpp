@@ -91,10 +91,13 @@ class DocumentReader {
     schedule_options.max_runs = options_.max_runs;
     auto scheduled = schedule_tree(tree_.root, schedule_options);
     if (const auto* problem = std::get_if<ScheduleError>(&scheduled)) return scheduler_error(*problem);
+    const Schedule& schedule = std::get<Schedule>(scheduled);
+    if (options_.frames.exceeded_by(schedule.end))
+      return frame_budget_error(schedule.end, body_end_source(tree_, schedule), options_.frames);
     // Lowering needs the runs and the leaves, not the tree (the root's source aside): its nodes go
     // before the clips are made.
     std::vector<ScheduleNode>().swap(tree_.root.children);
-    result_.timeline = lower_to_timeline(tree_, std::get<Schedule>(scheduled));
+    result_.timeline = lower_to_timeline(tree_, schedule);
     once_.finish();
     return std::move(result_);
   }

@@ -50,5 +50,8 @@ struct XmtoTree {
 // Clips in document order of their elements (ties between overwrite clips go to the later
 // element), each run of a leaf one clip (an included animation: its clips shifted).
 Timeline lower_to_timeline(const XmtoTree& tree, const Schedule& schedule);
+// Where the body ends (the end_source of lower_to_timeline's timeline), known before lowering:
+// for errors about the body's length.
+Location body_end_source(const XmtoTree& tree, const Schedule& schedule);
 
 }  // namespace fapc::xmt

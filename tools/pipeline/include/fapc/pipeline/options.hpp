@@ -59,6 +59,9 @@ struct ConvertOptions {
   // What a load does beyond the frames (see Loaded):
   bool facts = false;   // fill Loaded::facts (what `fapc info` shows of the format)
   bool render = true;   // false: timeline inputs stop at the timeline (no frames, no curves)
+  // With render false: the caller renders the timeline itself at fps (the streamed compile), so
+  // the frame limit still applies and front ends check it as soon as they know the end.
+  bool renders_later = false;
   // false: timeline inputs leave Loaded::curves empty. convert() sets it from its outputs
   // (OutputFormat::uses_curves): curves cost as much as the frames and most outputs never read them.
   bool curves = true;

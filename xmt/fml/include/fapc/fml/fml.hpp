@@ -15,6 +15,7 @@
 #include "fapc/codec/limits.hpp"
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/include_policy.hpp"
+#include "fapc/transcoder/frame_budget.hpp"
 #include "fapc/transcoder/profile.hpp"
 #include "fapc/transcoder/speech.hpp"
 #include "fapc/transcoder/timeline.hpp"
@@ -28,6 +29,9 @@ struct FmlOptions {
   std::optional<double> duration;
   // The most runs (elements after template expansion, runs after repeats): Limits::max_runs.
   std::int64_t max_runs = Limits{}.max_runs;
+  // The frames the story will be rendered at: a story too long for them is refused once it is
+  // scheduled, before its clips are made (the error FrameStream::start would give). fps 0: unchecked.
+  FrameBudget frames;
   // Names that `param` moves may use besides the FAP names; nullptr: the default profile.
   const Profile* profile = nullptr;
   // talk text (docs/speech.md): spoken by `synthesize` (fapc::speech::engine()); without one, the

@@ -110,6 +110,7 @@ class XmlDocument {
   // Frees libxml2's tree and the elements' positions once a reader has taken what it needs from
   // the nodes; line_text() stays. No node may be used after it.
   void release_tree();
+  bool tree_released() const { return released_; }
   // How many elements the document has (0 when positions are unknown): a bound for reserving.
   std::size_t element_count() const { return tag_offsets_.size(); }
   // How many element children `element` has in the text (0 when positions are unknown): a bound
@@ -151,6 +152,7 @@ class XmlDocument {
   Diagnostics warnings_;
   std::unique_ptr<StreamState> stream_;  // a streamed document's parser, null once finished
   bool streamed_ = false;
+  bool released_ = false;
   mutable bool faithful_ = true;
 
   friend class ChildWalk;
@@ -181,7 +183,9 @@ auto read_streamed_or_whole(std::string_view text, const std::string& file_name,
     -> decltype(read(std::declval<XmlDocument&>())) {
   if (Result<XmlDocument> streamed = XmlDocument::stream(text, file_name, blank_text, release_text)) {
     auto result = read(*streamed);
-    if (result && streamed->finish_stream()) return result;
+    // An error the reader met after letting the tree go (scheduling, the frame limit) comes from
+    // what it took from the walk: when the walk was faithful, a whole parse gives the same error.
+    if ((result || streamed->tree_released()) && streamed->finish_stream()) return result;
   }
   Result<XmlDocument> parsed = XmlDocument::parse(text, file_name, blank_text);
   if (!parsed) return parsed.error();

@@ -15,6 +15,7 @@
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/include_policy.hpp"
 #include "fapc/fml/fml.hpp"
+#include "fapc/transcoder/frame_budget.hpp"
 #include "fapc/transcoder/timeline.hpp"
 #include "fapc/xml/clock_value.hpp"  // parse_clock_value, part of this reader's interface
 
@@ -40,6 +41,10 @@ struct XmtoOptions {
   std::optional<double> duration;
   // The most runs (clips after repeats) in the whole document: Limits::max_runs.
   std::int64_t max_runs = Limits{}.max_runs;
+  // The frames the body will be rendered at: a body too long for them is refused once it is
+  // scheduled, before its clips are made (the error FrameStream::start would give). fps 0:
+  // unchecked (an included document, whose frames are never made).
+  FrameBudget frames;
   // Documents being read around this one, outermost first (their paths as given): an `animation`
   // that names one of them, or this document, is an inclusion cycle and an error.
   std::vector<std::string> including;
