@@ -12,15 +12,28 @@ namespace {
 
 using Points = std::vector<std::pair<double, double>>;
 
-// The times where a clip's curve has a key point, an edge, or a jump, in absolute seconds.
+// The times where a clip's curve has a key point, an edge, or a jump, in absolute seconds, in
+// order (so that the times of clips that do not overlap, taken in order, need no sort).
 void add_clip_times(const Clip& clip, double end, std::vector<double>& times) {
   times.push_back(clip.begin);
-  if (std::isfinite(end)) times.push_back(end);
-  if (clip.curve.periodic) return;
-  for (const KeyPoint& key : clip.curve.keys) {
-    const double t = clip.begin + key.time - clip.curve_offset;
-    if (t >= clip.begin && t <= end) times.push_back(t);
+  if (!clip.curve.periodic) {
+    for (const KeyPoint& key : clip.curve.keys) {
+      const double t = clip.begin + key.time - clip.curve_offset;
+      if (t >= clip.begin && t <= end) times.push_back(t);
+    }
   }
+  if (std::isfinite(end)) times.push_back(end);
+}
+
+// The frames k with from <= k / fps < to, as [first, end): the k that add_frame_times lists.
+std::pair<std::int64_t, std::int64_t> frame_range(double from, double to, int fps) {
+  const auto first = static_cast<std::int64_t>(std::ceil(from * fps));
+  const auto time = [fps](std::int64_t k) { return static_cast<double>(k) / fps; };
+  // k / fps grows with k: start near the end and step to the first k at or past `to`.
+  std::int64_t end = std::max(first, static_cast<std::int64_t>(std::ceil(to * fps)));
+  while (end > first && time(end - 1) >= to) --end;
+  while (time(end) < to) ++end;
+  return {first, end};
 }
 
 void add_frame_times(double from, double to, int fps, std::vector<double>& times) {
@@ -30,7 +43,7 @@ void add_frame_times(double from, double to, int fps, std::vector<double>& times
 }
 
 void sort_unique(std::vector<double>& times) {
-  std::sort(times.begin(), times.end());
+  if (!std::is_sorted(times.begin(), times.end())) std::sort(times.begin(), times.end());
   times.erase(std::unique(times.begin(), times.end()), times.end());
 }
 
@@ -46,11 +59,18 @@ void add_sample(Points& points, double t, ValueFn& value) {
   points.emplace_back(t, right);
 }
 
+// Into `points` (emptied first).
 template <class ValueFn>
-Points sample(const std::vector<double>& times, ValueFn value) {
-  Points points;
+void sample(const std::vector<double>& times, ValueFn value, Points& points) {
+  points.clear();
   for (const double t : times) add_sample(points, t, value);
-  return points;
+}
+
+// The samples thinned (in place: `samples` keeps its memory for the next list), as a list of its
+// own size.
+Points thinned(Points& samples, double tolerance) {
+  thin_points(samples, tolerance);
+  return Points(samples.begin(), samples.end());
 }
 
 // The clips of one target active at ascending times: found by walking forward through its
@@ -81,11 +101,16 @@ class ForwardLookup {
 
 // One target's curve at its clips' own times (`clip_times`, sorted, no repeats) and at every frame
 // time from `from` to before `to`, in time order, each time once: the frame times are merged in as
-// they are counted rather than listed and sorted with the others.
+// they are counted rather than listed and sorted with the others. Into `points` (emptied first).
 template <class ValueFn>
-Points sample_merged(const std::vector<double>& clip_times, double from, double to, int fps, ValueFn value) {
-  Points points;
+void sample_merged(const std::vector<double>& clip_times, double from, double to, int fps, ValueFn value,
+                   Points& points) {
+  points.clear();
   auto k = static_cast<std::int64_t>(std::ceil(from * fps));
+  // Every time once, a jump twice: reserved at once, the points of a long target (tens of MB) are
+  // never copied as the vector grows.
+  const double frames = std::max(0.0, std::ceil(to * fps) - static_cast<double>(k));
+  points.reserve(2 * clip_times.size() + static_cast<std::size_t>(frames) + 1);
   std::size_t c = 0;
   const auto frame_time = [&] { return static_cast<double>(k) / fps; };
   const auto add = [&](double t) { add_sample(points, t, value); };
@@ -101,28 +126,39 @@ Points sample_merged(const std::vector<double>& clip_times, double from, double 
       ++k;
     }
   }
-  return points;
 }
 
 // docs/cli.md: FAP 1 and FAP 2 appear as "viseme" and "expression" curves whose value is the
 // number of the strongest weight (0 when none), as for frame inputs; the weights themselves stay
 // under their own targets. The number steps, so every change is a jump.
-void add_strongest_curve(const TimelineIndex& index, int fap, const char* name, Curves& out) {
+void add_strongest_curve(const TimelineIndex& index, int fap, const char* name, Curves& out, Points& points) {
   std::vector<std::pair<const TargetIndex*, double>> members;  // with the viseme/expression number
-  std::vector<double> times;
+  std::vector<double> edges;  // the clips' begins and ends
+  std::vector<std::pair<std::int64_t, std::int64_t>> frames;  // each clip's frames, as frame_range
   for (const auto& [target, target_index] : index.targets) {
     const std::optional<WeightTarget> weight = weight_target(target);
     if (!weight || weight->fap != fap) continue;
     members.emplace_back(&target_index, weight->number);
     for (std::size_t i = 0; i < target_index.clips.size(); ++i) {
-      times.push_back(index.clips[target_index.clips[i]].begin);
-      if (std::isfinite(target_index.effective_end[i])) times.push_back(target_index.effective_end[i]);
-      add_frame_times(index.clips[target_index.clips[i]].begin,
-                      std::min(target_index.effective_end[i], out.duration), out.fps, times);
+      const double begin = index.clips[target_index.clips[i]].begin;
+      const double end = target_index.effective_end[i];
+      edges.push_back(begin);
+      if (std::isfinite(end)) edges.push_back(end);
+      frames.push_back(frame_range(begin, std::min(end, out.duration), out.fps));
     }
   }
   if (members.empty()) return;
-  sort_unique(times);
+  sort_unique(edges);
+  // The frames of all clips in order, each once: the clips' ranges merged (a sort of two numbers
+  // per clip, not of every frame time of every clip).
+  std::sort(frames.begin(), frames.end());
+  std::vector<std::pair<std::int64_t, std::int64_t>> spans;
+  for (const auto& range : frames) {
+    if (range.first >= range.second) continue;
+    if (!spans.empty() && range.first <= spans.back().second) spans.back().second = std::max(spans.back().second, range.second);
+    else spans.push_back(range);
+  }
+  std::vector<std::pair<std::int64_t, std::int64_t>>().swap(frames);
   std::vector<ForwardLookup> lookups;
   for (const auto& member : members) lookups.emplace_back(*member.first);
   const auto strongest = [&](double t, bool from_left) {
@@ -138,13 +174,24 @@ void add_strongest_curve(const TimelineIndex& index, int fap, const char* name, 
     }
     return slot;
   };
-  Points points;
-  for (const double t : times) {
+  points.clear();
+  const auto add = [&](double t) {
     const double now = strongest(t, false);
     if (!points.empty() && points.back().second != now) points.emplace_back(t, points.back().second);
     points.emplace_back(t, now);
+  };
+  // The edges and the frame times merged in order, a time in both taken once.
+  std::size_t e = 0;
+  for (const auto& [first, end] : spans) {
+    for (std::int64_t k = first; k < end; ++k) {
+      const double t = static_cast<double>(k) / out.fps;
+      for (; e < edges.size() && edges[e] < t; ++e) add(edges[e]);
+      if (e < edges.size() && edges[e] == t) ++e;
+      add(t);
+    }
   }
-  out.curves[name] = thin_points(std::move(points), 0);
+  for (; e < edges.size(); ++e) add(edges[e]);
+  out.curves[name] = thinned(points, 0);
 }
 
 }  // namespace
@@ -154,6 +201,7 @@ Curves render_curves(const Timeline& timeline, const CurveOptions& options) {
   Curves out;
   out.fps = options.fps;
   out.duration = timeline.end();
+  Points samples;  // one target's at a time: the memory of the longest is touched once
   for (const auto& [target, target_index] : index.targets) {
     std::vector<double> times;
     for (std::size_t i = 0; i < target_index.clips.size(); ++i) {
@@ -164,13 +212,13 @@ Curves render_curves(const Timeline& timeline, const CurveOptions& options) {
     times.push_back(last);
     sort_unique(times);
     ForwardLookup lookup(target_index);
-    Points points = sample_merged(times, target_index.span_begin, last, options.fps, [&](double t, bool from_left) {
+    sample_merged(times, target_index.span_begin, last, options.fps, [&](double t, bool from_left) {
       return blend(index.clips, lookup.active_at(t, from_left), t, from_left).value;
-    });
-    out.curves[target] = thin_points(std::move(points), options.tolerance);
+    }, samples);
+    out.curves[target] = thinned(samples, options.tolerance);
   }
-  add_strongest_curve(index, 1, "viseme", out);
-  add_strongest_curve(index, 2, "expression", out);
+  add_strongest_curve(index, 1, "viseme", out, samples);
+  add_strongest_curve(index, 2, "expression", out, samples);
   return out;
 }
 
@@ -181,21 +229,22 @@ Curves render_clip_curves(const Timeline& timeline, const CurveOptions& options)
   // How many clips had each label so far: a macro used n times from one place must not look for
   // a free " #k" from 2 up each time (n^2 / 2 lookups).
   std::map<std::string, int> uses;
+  Points samples;
   for (const Clip& clip : timeline.clips) {
     std::vector<double> times;
     add_clip_times(clip, clip.end, times);
     add_frame_times(clip.begin, clip.end, options.fps, times);
     sort_unique(times);
-    Points points = sample(times, [&](double t, bool from_left) {
+    sample(times, [&](double t, bool from_left) {
       return t >= clip.end && !from_left ? clip_value(clip, t, true) : clip_value(clip, t, from_left);
-    });
+    }, samples);
     // "jaw (table2.mimic:5)"; a second clip from the same place (a macro used twice) gets " #2".
     std::string label = clip.target + " (" +
                         std::filesystem::path(clip.source.file.str()).filename().string() + ":" +
                         std::to_string(clip.source.line) + ")";
     std::string unique = label;
     for (int& n = uses[label]; out.curves.contains(unique);) unique = label + " #" + std::to_string(++n + 1);
-    out.curves[unique] = thin_points(std::move(points), options.tolerance);
+    out.curves[unique] = thinned(samples, options.tolerance);
   }
   return out;
 }

@@ -12,9 +12,8 @@ constexpr std::size_t kMaxRun = 512;
 
 }  // namespace
 
-std::vector<std::pair<double, double>> thin_points(std::vector<std::pair<double, double>> points,
-                                                   double tolerance) {
-  if (points.size() <= 2) return points;
+void thin_points(std::vector<std::pair<double, double>>& points, double tolerance) {
+  if (points.size() <= 2) return;
   double low = points.front().second;
   double high = low;
   for (const auto& [t, v] : points) {
@@ -39,18 +38,20 @@ std::vector<std::pair<double, double>> thin_points(std::vector<std::pair<double,
     return true;
   };
 
-  std::vector<std::pair<double, double>> kept{points.front()};
+  // The kept points are moved to the front of `points` as they are found: the first `kept` slots
+  // lie at or before the anchor, and nothing before the anchor is looked at again.
+  std::size_t kept = 1;
   std::size_t anchor = 0;
   for (std::size_t i = 1; i + 1 < points.size(); ++i) {
     const bool droppable = !is_jump(i) && i + 1 - anchor <= kMaxRun &&
                            chord_fits(anchor, i + 1);
     if (!droppable) {
-      kept.push_back(points[i]);
+      points[kept++] = points[i];
       anchor = i;
     }
   }
-  kept.push_back(points.back());
-  return kept;
+  points[kept++] = points.back();
+  points.resize(kept);
 }
 
 }  // namespace fapc

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <set>
+#include <tuple>
 #include <unordered_map>
 
 namespace fapc {
@@ -18,48 +18,65 @@ constexpr double kForever = std::numeric_limits<double>::infinity();
 
 TargetIndex::TargetIndex(const std::vector<Clip>& all, std::vector<std::uint32_t> of_target)
     : clips(std::move(of_target)) {
-  std::stable_sort(clips.begin(), clips.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return all[a].begin < all[b].begin;
-  });
+  // By begin, ties in source order. The begins are copied beside the indices first: a target's
+  // clips lie scattered among the others', and comparing through the indices would miss the cache
+  // at every step on a long timeline. They mostly come in order already.
+  std::vector<std::pair<double, std::uint32_t>> by_begin(clips.size());
+  for (std::size_t i = 0; i < clips.size(); ++i) by_begin[i] = {all[clips[i]].begin, clips[i]};
+  if (!std::is_sorted(by_begin.begin(), by_begin.end())) std::sort(by_begin.begin(), by_begin.end());
+  std::vector<double> begins(clips.size());
+  for (std::size_t i = 0; i < clips.size(); ++i) std::tie(begins[i], clips[i]) = by_begin[i];
+  std::vector<std::pair<double, std::uint32_t>>().swap(by_begin);
   // A frozen clip holds until the next clip of its target that begins at or after its end.
   effective_end.reserve(clips.size());
   for (const std::uint32_t c : clips) {
     const Clip& clip = all[c];
     double end = clip.end;
     if (clip.fill == Fill::freeze) {
-      const auto next = std::lower_bound(
-          clips.begin(), clips.end(), clip.end,
-          [&](std::uint32_t other, double t) { return all[other].begin < t; });
-      end = next == clips.end() ? kForever : std::max(clip.end, all[*next].begin);
+      const auto next = std::lower_bound(begins.begin(), begins.end(), clip.end);
+      end = next == begins.end() ? kForever : std::max(clip.end, *next);
     }
     effective_end.push_back(end);
   }
-  build_intervals(all);
+  build_intervals(begins);
 }
 
-void TargetIndex::build_intervals(const std::vector<Clip>& all) {
+void TargetIndex::build_intervals(const std::vector<double>& begins) {
   struct Event {
     double time;
     bool starts;
     std::uint32_t clip;
   };
-  std::vector<Event> events;
+  // The starts come in order of time (`clips` is by begin); the ends mostly do too. The two lists
+  // are merged rather than sorted together. The order within one time does not matter: all its
+  // events are taken before the interval after it is recorded, and no clip both starts and ends
+  // at one time.
+  std::vector<Event> starts, ends;
+  starts.reserve(clips.size());
+  ends.reserve(clips.size());
   for (std::size_t i = 0; i < clips.size(); ++i) {
-    if (!(effective_end[i] > all[clips[i]].begin)) continue;  // empty clips never count
-    events.push_back(Event{all[clips[i]].begin, true, clips[i]});
-    events.push_back(Event{effective_end[i], false, clips[i]});
+    if (!(effective_end[i] > begins[i])) continue;  // empty clips never count
+    starts.push_back(Event{begins[i], true, clips[i]});
+    ends.push_back(Event{effective_end[i], false, clips[i]});
   }
-  std::sort(events.begin(), events.end(),
-            [](const Event& a, const Event& b) { return a.time < b.time; });
-  std::set<std::uint32_t> active;  // clip indices: source order, which blending needs
+  const auto by_time = [](const Event& a, const Event& b) { return a.time < b.time; };
+  if (!std::is_sorted(ends.begin(), ends.end(), by_time)) std::sort(ends.begin(), ends.end(), by_time);
+  std::vector<Event> events(starts.size() + ends.size());
+  std::merge(starts.begin(), starts.end(), ends.begin(), ends.end(), events.begin(), by_time);
+  std::vector<Event>().swap(starts);
+  std::vector<Event>().swap(ends);
+  // The clips active, in source order (which blending needs): a sorted vector, as a target has
+  // few clips active at once.
+  std::vector<std::uint32_t> active;
   offsets.push_back(0);
   for (std::size_t i = 0; i < events.size();) {
     const double time = events[i].time;
     for (; i < events.size() && events[i].time == time; ++i) {
+      const auto at = std::lower_bound(active.begin(), active.end(), events[i].clip);
       if (events[i].starts) {
-        active.insert(events[i].clip);
+        active.insert(at, events[i].clip);
       } else {
-        active.erase(events[i].clip);
+        active.erase(at);
       }
     }
     cuts.push_back(time);

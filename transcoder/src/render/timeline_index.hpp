@@ -30,7 +30,7 @@ struct TargetIndex {
   std::span<const std::uint32_t> active_at(double t, std::size_t& cursor) const;
 
  private:
-  void build_intervals(const std::vector<Clip>& all);
+  void build_intervals(const std::vector<double>& begins);  // of `clips`
 };
 
 struct Blended {
