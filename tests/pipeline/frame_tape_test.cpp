@@ -44,6 +44,22 @@ TEST(FrameTape, GivesBackEveryFrameFieldForField) {
   for (std::size_t k = 0; k < frames.size(); ++k) ASSERT_TRUE(identical(player.next(), frames[k])) << "frame " << k;
 }
 
+TEST(FrameTape, KeepsValuesOutsideAMaskFromTheFirstFrameOn) {
+  // The first frame's mask is the tape's starting one (none): its slots must still count as outside.
+  std::vector<FapFrame> frames(3);
+  frames[0].values[5] = 7;  // no FAP masked
+  frames[1].set(3, 10);
+  frames[1].values[20] = -4;
+  frames[2].number = 2;
+  FrameTape tape(std::size_t{1} << 20);
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    frames[k].number = static_cast<std::int64_t>(k);
+    ASSERT_TRUE(tape.record(frames[k]));
+  }
+  FrameTape::Player player = tape.play();
+  for (std::size_t k = 0; k < frames.size(); ++k) ASSERT_TRUE(identical(player.next(), frames[k])) << "frame " << k;
+}
+
 TEST(FrameTape, GivesBackFramesAcrossItsBlocks) {
   // Enough frames for several of the tape's 1 MiB blocks, each block freed as the player leaves it.
   std::vector<FapFrame> frames;

@@ -20,12 +20,6 @@ std::array<int, 6> fields(const ExpressionFields& e) {
   return {e.select1, e.intensity1, e.select2, e.intensity2, e.init_face, e.def};
 }
 
-// Only masked slots carry anything: the rest at 0 (or default fields) need not be taped.
-bool at_rest_outside_mask(const FapFrame& frame) {
-  for (std::size_t i = 0; i < kFapCount; ++i)
-    if (!frame.mask.test(i) && frame.values[i] != 0) return false;
-  return (frame.has(1) || frame.viseme == VisemeFields{}) && (frame.has(2) || frame.expression == ExpressionFields{});
-}
 
 // Variable-length integers, 7 bits a byte, low bits first; signed ones zigzagged (small
 // magnitudes of either sign take one byte). Most differences of a smooth animation take one.
@@ -54,6 +48,22 @@ std::int64_t get_signed(const std::uint8_t*& in) {
 
 }  // namespace
 
+void FrameTape::Slots::take(const std::bitset<kFapCount>& new_mask) {
+  mask = new_mask;
+  count = 0;
+  for (std::size_t i = 0; i < kFapCount; ++i) {
+    outside[i] = mask[i] ? 0 : -1;
+    if (mask[i]) index[count++] = static_cast<std::uint8_t>(i);
+  }
+}
+
+bool FrameTape::Slots::at_rest_outside(const FapFrame& frame) const {
+  std::int32_t any = 0;  // a loop without a branch, over whole vectors
+  for (std::size_t i = 0; i < kFapCount; ++i) any |= frame.values[i] & outside[i];
+  return any == 0 && (frame.has(1) || frame.viseme == VisemeFields{}) &&
+         (frame.has(2) || frame.expression == ExpressionFields{});
+}
+
 void FrameTape::drop() {
   dropped_ = true;
   bytes_ = 0;
@@ -68,20 +78,26 @@ bool FrameTape::record(const FapFrame& frame) {
   Block& block = blocks_.back();
   std::uint8_t* const start = block.bytes.get() + block.size;
   std::uint8_t* out = start;
-  const bool every_slot = !at_rest_outside_mask(frame);
   const bool new_mask = frame.mask != previous_.mask;
+  if (new_mask) slots_.take(frame.mask);
+  // Only masked slots carry anything: the rest at 0 (or default fields) need not be taped.
+  const bool every_slot = !slots_.at_rest_outside(frame);
   const bool jump = frame.number != previous_.number + 1;
   *out++ = static_cast<std::uint8_t>((new_mask ? kNewMask : 0) | (jump ? kNumberJump : 0) | (every_slot ? kEverySlot : 0));
   if (new_mask)
     for (std::size_t byte = 0; byte < kMaskBytes; ++byte) {
       std::uint8_t bits = 0;
       for (std::size_t bit = 0; bit < 8 && byte * 8 + bit < kFapCount; ++bit)
-        if (frame.mask.test(byte * 8 + bit)) bits = static_cast<std::uint8_t>(bits | (1u << bit));
+        if (frame.mask[byte * 8 + bit]) bits = static_cast<std::uint8_t>(bits | (1u << bit));
       *out++ = bits;
     }
   if (jump) out = put_signed(out, frame.number - previous_.number);
-  for (std::size_t i = 0; i < kFapCount; ++i)
-    if (every_slot || frame.mask.test(i)) out = put_signed(out, std::int64_t{frame.values[i]} - previous_.values[i]);
+  const auto put_slot = [&](std::size_t i) { out = put_signed(out, std::int64_t{frame.values[i]} - previous_.values[i]); };
+  if (every_slot) {
+    for (std::size_t i = 0; i < kFapCount; ++i) put_slot(i);
+  } else {
+    for (std::size_t k = 0; k < slots_.count; ++k) put_slot(slots_.index[k]);
+  }
   if (every_slot || frame.has(1)) {
     const auto now = fields(frame.viseme), before = fields(previous_.viseme);
     for (std::size_t f = 0; f < now.size(); ++f) out = put_signed(out, std::int64_t{now[f]} - before[f]);
@@ -117,13 +133,19 @@ const FapFrame& FrameTape::Player::next() {
       for (std::size_t bit = 0; bit < 8 && byte * 8 + bit < kFapCount; ++bit)
         if (bits & (1u << bit)) frame_.mask.set(byte * 8 + bit);
     }
+    slots_.take(frame_.mask);
   }
   frame_.number += (flags & kNumberJump) ? get_signed(in) : 1;
   // The frame is rebuilt in place over the previous one (which the recording took its differences
   // from): taped slots and fields move by their difference, the others are at rest.
   const bool every_slot = flags & kEverySlot;
-  for (std::size_t i = 0; i < kFapCount; ++i)
-    frame_.values[i] = every_slot || frame_.mask.test(i) ? static_cast<std::int32_t>(frame_.values[i] + get_signed(in)) : 0;
+  const auto get_slot = [&](std::size_t i) { frame_.values[i] = static_cast<std::int32_t>(frame_.values[i] + get_signed(in)); };
+  if (every_slot) {
+    for (std::size_t i = 0; i < kFapCount; ++i) get_slot(i);
+  } else {
+    for (std::size_t i = 0; i < kFapCount; ++i) frame_.values[i] &= ~slots_.outside[i];
+    for (std::size_t k = 0; k < slots_.count; ++k) get_slot(slots_.index[k]);
+  }
   // Each field as its difference from the previous frame's, in the order fields() lists them.
   const auto read = [&](const auto& before) {
     auto now = before;

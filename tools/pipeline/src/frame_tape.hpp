@@ -9,6 +9,8 @@
 // outputs grow while the tape shrinks. Private to the pipeline.
 #pragma once
 
+#include <array>
+#include <bitset>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -24,6 +26,18 @@ namespace fapc::pipeline {
 inline constexpr std::size_t kFrameTapeBudget = std::size_t{64} << 20;
 
 class FrameTape {
+  // A mask's slots, worked out once per mask rather than per frame.
+  struct Slots {
+    Slots() { take({}); }
+    std::bitset<kFapCount> mask;
+    std::array<std::uint8_t, kFapCount> index{};  // the masked slots, ascending
+    std::size_t count = 0;
+    std::array<std::int32_t, kFapCount> outside{};  // -1 for a slot outside the mask, else 0
+    void take(const std::bitset<kFapCount>& new_mask);
+    // Whether every slot and field outside the mask is at rest (0, default fields).
+    bool at_rest_outside(const FapFrame& frame) const;
+  };
+
  public:
   // The most bytes the tape may hold (frames beyond drop it).
   explicit FrameTape(std::size_t budget) : budget_(budget) {}
@@ -46,6 +60,7 @@ class FrameTape {
     std::size_t block_ = 0;
     std::size_t at_ = 0;  // in that block
     FapFrame frame_;      // the last frame played
+    Slots slots_;         // of its mask
   };
   Player play() { return Player(*this); }
 
@@ -67,6 +82,7 @@ class FrameTape {
   std::size_t bytes_ = 0;     // recorded, over every block
   std::vector<Block> blocks_;  // the last is being filled
   FapFrame previous_;  // the last frame recorded: values are coded as differences from it
+  Slots slots_;        // of its mask
 };
 
 }  // namespace fapc::pipeline
