@@ -37,6 +37,8 @@ double intra_bits(std::int64_t level, int scaler) {
 
 std::int64_t level_of(const LevelOptions& option, int state) { return state == 0 ? option.nearest : option.other; }
 
+bool has_choice(const LevelOptions& option) { return option.other != option.nearest; }
+
 }  // namespace
 
 std::int64_t fitted_alphabet(std::int64_t low, std::int64_t high, int range_scaler) {
@@ -48,48 +50,43 @@ void LevelChooser::choose(std::span<const LevelOptions> options, std::int64_t li
   scaler_ = range_scaler;
   // The steps a choice can change: into or out of a frame with two choices. Between two frames
   // without a choice every plan takes the same step, which shifts all costs alike and so decides
-  // nothing.
+  // nothing. Only the levels of the steps' frames (and of frame 0) are ever read or changed below:
+  // every other frame keeps its nearest level.
   steps_.clear();
+  std::int64_t fixed_low = 0, fixed_high = 0;
   for (std::size_t t = 0; t < options.size(); ++t) {
     levels[t] = options[t].nearest;
-    const bool free = options[t].other != options[t].nearest;
-    if (t > 0 && (free || options[t - 1].other != options[t - 1].nearest)) steps_.push_back(t);
+    if (t == 0) continue;
+    if (has_choice(options[t]) || has_choice(options[t - 1])) {
+      steps_.push_back(t);
+    } else {
+      const std::int64_t d = options[t].nearest - options[t - 1].nearest;
+      fixed_low = std::min(fixed_low, d);
+      fixed_high = std::max(fixed_high, d);
+    }
   }
   if (steps_.empty()) return;
-  count_fixed(options);
+  count_fixed(options, fixed_low, fixed_high);
   double cost = exact_cost(levels);  // leaves the counts of `levels` for the first replan
-  trial_.assign(levels.begin(), levels.end());
+  trial_.resize(levels.size());
   for (int round = 0; round < kMaxReplans; ++round) {
     if (!replan(options, limit, trial_)) break;
     const double trial_cost = exact_cost(trial_);  // and those of the trial for the next
     if (!(trial_cost < cost)) break;
     cost = trial_cost;
-    std::copy(trial_.begin(), trial_.end(), levels.begin());
+    levels[0] = trial_[0];
+    for (const std::size_t t : steps_) levels[t - 1] = trial_[t - 1], levels[t] = trial_[t];
   }
 }
 
-void LevelChooser::count_fixed(std::span<const LevelOptions> options) {
+void LevelChooser::count_fixed(std::span<const LevelOptions> options, std::int64_t low, std::int64_t high) {
   // The steps not in steps_ join two frames without a choice: the same in every plan.
-  std::int64_t low = 0, high = 0;
-  for (std::size_t t = 1, next = 0; t < options.size(); ++t) {
-    if (next < steps_.size() && steps_[next] == t) {
-      ++next;
-      continue;
-    }
-    const std::int64_t d = options[t].nearest - options[t - 1].nearest;
-    low = std::min(low, d);
-    high = std::max(high, d);
-  }
   fixed_low_ = low;
   fixed_high_ = high;
   fixed_counts_.assign(static_cast<std::size_t>(high - low + 1), 0);
-  for (std::size_t t = 1, next = 0; t < options.size(); ++t) {
-    if (next < steps_.size() && steps_[next] == t) {
-      ++next;
-      continue;
-    }
-    ++fixed_counts_[static_cast<std::size_t>(options[t].nearest - options[t - 1].nearest - low)];
-  }
+  for (std::size_t t = 1; t < options.size(); ++t)
+    if (!has_choice(options[t]) && !has_choice(options[t - 1]))
+      ++fixed_counts_[static_cast<std::size_t>(options[t].nearest - options[t - 1].nearest - low)];
 }
 
 void LevelChooser::count(std::span<const std::int64_t> levels) {
@@ -132,18 +129,18 @@ bool LevelChooser::replan(std::span<const LevelOptions> options, std::int64_t li
   }
   const auto price = [&](std::int64_t d) { return price_[static_cast<std::size_t>(d - low_ + kReach)]; };
 
-  const std::size_t n = options.size();
-  from_.assign(2 * n, 0);
+  from_.resize(2 * steps_.size());
   // The cheapest cost of a plan up to the last step taken, ending at its nearest level (0) or at
   // its other one (1); two scalars, which the compiler keeps in registers.
   const auto first_cost = [&](std::int64_t level) {
     return level > limit || level < -limit ? kInfinite : intra_bits(level, scaler_);
   };
   double best0 = first_cost(options[0].nearest);
-  double best1 = options[0].other == options[0].nearest ? kInfinite : first_cost(options[0].other);
+  double best1 = has_choice(options[0]) ? first_cost(options[0].other) : kInfinite;
   // Each state keeps the cheaper way in, the first (p = 0) on a tie; a frame without a second
   // choice has no state 1.
-  for (const std::size_t t : steps_) {
+  for (std::size_t k = 0; k < steps_.size(); ++k) {
+    const std::size_t t = steps_[k];
     const LevelOptions& now = options[t];
     const LevelOptions& before = options[t - 1];
     const double from_nearest_0 = best0 + price(now.nearest - before.nearest);
@@ -151,17 +148,25 @@ bool LevelChooser::replan(std::span<const LevelOptions> options, std::int64_t li
     const double from_nearest_1 = best0 + price(now.other - before.nearest);
     const double from_other_1 = best1 + price(now.other - before.other);
     const bool via_other_0 = from_other_0 < from_nearest_0;
-    const bool via_other_1 = now.other != now.nearest && from_other_1 < from_nearest_1;
+    const bool via_other_1 = has_choice(now) && from_other_1 < from_nearest_1;
     best0 = via_other_0 ? from_other_0 : from_nearest_0;
-    best1 = now.other == now.nearest ? kInfinite : via_other_1 ? from_other_1 : from_nearest_1;
-    from_[2 * t] = via_other_0;
-    from_[2 * t + 1] = via_other_1;
+    best1 = !has_choice(now) ? kInfinite : via_other_1 ? from_other_1 : from_nearest_1;
+    from_[2 * k] = via_other_0;
+    from_[2 * k + 1] = via_other_1;
   }
   int s = best1 < best0 ? 1 : 0;
   if ((s == 1 ? best1 : best0) == kInfinite) return false;
-  for (std::size_t t = n; t-- > 0;) {
+  // Back from the last step. A frame before a run of steps that is not itself a step has no
+  // choice, or is frame 0; the frames between runs have none: the state going back past them is 0.
+  levels[0] = options[0].nearest;
+  for (std::size_t k = steps_.size(); k-- > 0;) {
+    const std::size_t t = steps_[k];
     levels[t] = level_of(options[t], s);
-    s = from_[2 * t + static_cast<std::size_t>(s)];
+    s = from_[2 * k + static_cast<std::size_t>(s)];
+    if (k == 0 || steps_[k - 1] != t - 1) {
+      levels[t - 1] = level_of(options[t - 1], s);
+      s = 0;
+    }
   }
   return true;
 }

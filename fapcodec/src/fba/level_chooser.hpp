@@ -53,8 +53,9 @@ class LevelChooser {
               std::span<std::int64_t> levels);
 
  private:
-  // Counts the differences that no choice changes (steps between two frames without a choice).
-  void count_fixed(std::span<const LevelOptions> options);
+  // Counts the differences that no choice changes (steps between two frames without a choice),
+  // which lie in [low, high].
+  void count_fixed(std::span<const LevelOptions> options, std::int64_t low, std::int64_t high);
   // Counts the differences of `levels` into counts_, low_ and alphabet_: the fixed ones, and
   // those of steps_.
   void count(std::span<const std::int64_t> levels);
@@ -68,8 +69,8 @@ class LevelChooser {
   std::int64_t fixed_low_ = 0, fixed_high_ = 0;  // count_fixed's, as low_ and counts_
   std::vector<std::uint32_t> fixed_counts_;
   std::vector<double> price_;          // the bits each difference costs under the current counts
-  std::vector<std::uint8_t> from_;     // Viterbi back pointers: 2 per frame
-  std::vector<std::int64_t> trial_;
+  std::vector<std::uint8_t> from_;     // Viterbi back pointers: 2 per step
+  std::vector<std::int64_t> trial_;    // a plan: read and written only at the steps' frames and frame 0
   std::vector<std::size_t> steps_;     // the frames whose step from the previous one can change
   std::int64_t alphabet_ = 1;
   CountLogs logs_;
