@@ -2,6 +2,7 @@
 
 #include <array>
 #include <bitset>
+#include <cstdint>
 #include <cstdlib>
 
 #include "fapc/codec/fba.hpp"
@@ -45,8 +46,16 @@ MaskPlanner::MaskPlanner(int quant) {
 
 void MaskPlanner::add(const FapFrame& frame) {
   static const PartnerSwap swap;
-  for (std::size_t i = bit(3); i < kFapCount; ++i)
-    if (frame.mask[i]) holds_far_[i] = std::llabs(frame.values[i]) > tolerance_[i];
+  // Which values lie beyond their tolerance, gathered into words without a branch (a loop over
+  // the bitset's proxies costs a read and a write of its word per FAP); a masked FAP's bit is
+  // its value's, an absent one keeps what it held.
+  std::uint64_t low = 0, high = 0;  // FAPs 1..64, 65..68
+  for (std::size_t i = bit(3); i < 64; ++i)
+    low |= static_cast<std::uint64_t>(std::llabs(frame.values[i]) > tolerance_[i]) << i;
+  for (std::size_t i = 64; i < kFapCount; ++i)
+    high |= static_cast<std::uint64_t>(std::llabs(frame.values[i]) > tolerance_[i]) << (i - 64);
+  const Mask far = (Mask(high) << 64) | Mask(low);
+  holds_far_ = (holds_far_ & ~frame.mask) | (far & frame.mask & low_level_);
   const Mask near = low_level_ & ~holds_far_ & ~(swap(holds_far_ & frame.mask) & ~frame.mask);
   plan_.free.push_back(near & was_near_ & ~swap(low_level_ & ~near));
   plan_.ahead.push_back(frame.mask);
