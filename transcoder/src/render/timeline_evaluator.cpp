@@ -21,12 +21,14 @@ TargetIndex::TargetIndex(const std::vector<Clip>& all, std::vector<std::uint32_t
   // By begin, ties in source order. The begins are copied beside the indices first: a target's
   // clips lie scattered among the others', and comparing through the indices would miss the cache
   // at every step on a long timeline. They mostly come in order already.
-  std::vector<std::pair<double, std::uint32_t>> by_begin(clips.size());
-  for (std::size_t i = 0; i < clips.size(); ++i) by_begin[i] = {all[clips[i]].begin, clips[i]};
-  if (!std::is_sorted(by_begin.begin(), by_begin.end())) std::sort(by_begin.begin(), by_begin.end());
   std::vector<double> begins(clips.size());
-  for (std::size_t i = 0; i < clips.size(); ++i) std::tie(begins[i], clips[i]) = by_begin[i];
-  std::vector<std::pair<double, std::uint32_t>>().swap(by_begin);
+  for (std::size_t i = 0; i < clips.size(); ++i) begins[i] = all[clips[i]].begin;
+  if (!std::is_sorted(begins.begin(), begins.end())) {
+    std::vector<std::pair<double, std::uint32_t>> by_begin(clips.size());
+    for (std::size_t i = 0; i < clips.size(); ++i) by_begin[i] = {begins[i], clips[i]};
+    std::sort(by_begin.begin(), by_begin.end());  // the indices ascend: ties stay in source order
+    for (std::size_t i = 0; i < clips.size(); ++i) std::tie(begins[i], clips[i]) = by_begin[i];
+  }
   // A frozen clip holds until the next clip of its target that begins at or after its end.
   effective_end.reserve(clips.size());
   for (const std::uint32_t c : clips) {
@@ -42,43 +44,33 @@ TargetIndex::TargetIndex(const std::vector<Clip>& all, std::vector<std::uint32_t
 }
 
 void TargetIndex::build_intervals(const std::vector<double>& begins) {
-  struct Event {
-    double time;
-    bool starts;
-    std::uint32_t clip;
-  };
-  // The starts come in order of time (`clips` is by begin); the ends mostly do too. The two lists
-  // are merged rather than sorted together. The order within one time does not matter: all its
-  // events are taken before the interval after it is recorded, and no clip both starts and ends
-  // at one time.
-  std::vector<Event> starts, ends;
-  starts.reserve(clips.size());
-  ends.reserve(clips.size());
-  for (std::size_t i = 0; i < clips.size(); ++i) {
-    if (!(effective_end[i] > begins[i])) continue;  // empty clips never count
-    starts.push_back(Event{begins[i], true, clips[i]});
-    ends.push_back(Event{effective_end[i], false, clips[i]});
-  }
-  const auto by_time = [](const Event& a, const Event& b) { return a.time < b.time; };
-  if (!std::is_sorted(ends.begin(), ends.end(), by_time)) std::sort(ends.begin(), ends.end(), by_time);
-  std::vector<Event> events(starts.size() + ends.size());
-  std::merge(starts.begin(), starts.end(), ends.begin(), ends.end(), events.begin(), by_time);
-  std::vector<Event>().swap(starts);
-  std::vector<Event>().swap(ends);
+  // The clips' starts come in the order of `clips` (by begin), their ends in the order of
+  // `by_end` (the same order unless clips overlap): the two are merged as they are walked, so that
+  // nothing but 4 bytes a clip is held besides the result. The order within one time does not
+  // matter: all its starts and ends are taken before the interval after it is recorded, and no
+  // clip both starts and ends at one time. Empty clips never count.
+  const auto counts = [&](std::size_t i) { return effective_end[i] > begins[i]; };
+  std::vector<std::uint32_t> by_end;  // positions in `clips`
+  by_end.reserve(clips.size());
+  for (std::size_t i = 0; i < clips.size(); ++i)
+    if (counts(i)) by_end.push_back(static_cast<std::uint32_t>(i));
+  const auto ends_before = [&](std::uint32_t a, std::uint32_t b) { return effective_end[a] < effective_end[b]; };
+  if (!std::is_sorted(by_end.begin(), by_end.end(), ends_before)) std::sort(by_end.begin(), by_end.end(), ends_before);
   // The clips active, in source order (which blending needs): a sorted vector, as a target has
   // few clips active at once.
   std::vector<std::uint32_t> active;
   offsets.push_back(0);
-  for (std::size_t i = 0; i < events.size();) {
-    const double time = events[i].time;
-    for (; i < events.size() && events[i].time == time; ++i) {
-      const auto at = std::lower_bound(active.begin(), active.end(), events[i].clip);
-      if (events[i].starts) {
-        active.insert(at, events[i].clip);
-      } else {
-        active.erase(at);
-      }
-    }
+  std::size_t start = 0, end = 0;  // the next start (in `clips`) and end (in `by_end`)
+  const auto skip_empty = [&] {
+    while (start < clips.size() && !counts(start)) ++start;
+  };
+  for (skip_empty(); start < clips.size() || end < by_end.size();) {
+    const double time = std::min(start < clips.size() ? begins[start] : kForever,
+                                 end < by_end.size() ? effective_end[by_end[end]] : kForever);
+    for (; start < clips.size() && begins[start] == time; ++start, skip_empty())
+      active.insert(std::lower_bound(active.begin(), active.end(), clips[start]), clips[start]);
+    for (; end < by_end.size() && effective_end[by_end[end]] == time; ++end)
+      active.erase(std::lower_bound(active.begin(), active.end(), clips[by_end[end]]));
     cuts.push_back(time);
     members.insert(members.end(), active.begin(), active.end());
     offsets.push_back(static_cast<std::uint32_t>(members.size()));
