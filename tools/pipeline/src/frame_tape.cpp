@@ -92,7 +92,9 @@ bool FrameTape::record(const FapFrame& frame) {
       *out++ = bits;
     }
   if (jump) out = put_signed(out, frame.number - previous_.number);
-  const auto put_slot = [&](std::size_t i) { out = put_signed(out, std::int64_t{frame.values[i]} - previous_.values[i]); };
+  const auto put_slot = [&](std::size_t i) {
+    out = put_signed(out, std::int64_t{frame.values[i]} - previous_.values[i]);
+  };
   if (every_slot) {
     for (std::size_t i = 0; i < kFapCount; ++i) put_slot(i);
   } else {
@@ -139,7 +141,9 @@ const FapFrame& FrameTape::Player::next() {
   // The frame is rebuilt in place over the previous one (which the recording took its differences
   // from): taped slots and fields move by their difference, the others are at rest.
   const bool every_slot = flags & kEverySlot;
-  const auto get_slot = [&](std::size_t i) { frame_.values[i] = static_cast<std::int32_t>(frame_.values[i] + get_signed(in)); };
+  const auto get_slot = [&](std::size_t i) {
+    frame_.values[i] = static_cast<std::int32_t>(frame_.values[i] + get_signed(in));
+  };
   if (every_slot) {
     for (std::size_t i = 0; i < kFapCount; ++i) get_slot(i);
   } else {

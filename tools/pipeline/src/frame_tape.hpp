@@ -2,11 +2,12 @@
 // each frame once and a streamed conversion decodes its input once (docs/architecture.md,
 // "Streaming"). The encoder must see every frame before it codes the first (it plans masks over
 // the whole sequence), so the frames are needed twice; rendering or decoding a frame costs about a
-// microsecond, replaying it from the tape a few dozen nanoseconds. A frame costs a byte or two per masked FAP: its number and the values' differences
-// from the previous frame, as variable-length integers. A tape that would outgrow its budget is
-// dropped (the caller makes the frames again), so memory stays bounded whatever the animation.
-// The tape is held in blocks that the replay gives back as it passes them: the second pass's
-// outputs grow while the tape shrinks. Private to the pipeline.
+// microsecond, replaying it from the tape a few dozen nanoseconds. A frame costs a byte or two per
+// masked FAP: its number and the values' differences from the previous frame, as variable-length
+// integers. A tape that would outgrow its budget is dropped (the caller makes the frames again),
+// so memory stays bounded whatever the animation. The tape is held in blocks that the replay gives
+// back as it passes them: the second pass's outputs grow while the tape shrinks. Private to the
+// pipeline.
 #pragma once
 
 #include <array>

@@ -155,8 +155,11 @@ void add_strongest_curve(const TimelineIndex& index, int fap, const char* name, 
   std::vector<std::pair<std::int64_t, std::int64_t>> spans;
   for (const auto& range : frames) {
     if (range.first >= range.second) continue;
-    if (!spans.empty() && range.first <= spans.back().second) spans.back().second = std::max(spans.back().second, range.second);
-    else spans.push_back(range);
+    if (!spans.empty() && range.first <= spans.back().second) {
+      spans.back().second = std::max(spans.back().second, range.second);
+    } else {
+      spans.push_back(range);
+    }
   }
   std::vector<std::pair<std::int64_t, std::int64_t>>().swap(frames);
   std::vector<ForwardLookup> lookups;
