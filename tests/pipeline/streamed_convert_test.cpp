@@ -29,7 +29,7 @@ using test::load_then_write;
 using test::LoadedWay;
 
 std::vector<ConvertOptions> settings() {
-  std::vector<ConvertOptions> all(5);
+  std::vector<ConvertOptions> all(6);
   all[1].quant = 0;
   all[1].masks = "keep";
   all[2].quant = 7;
@@ -38,6 +38,8 @@ std::vector<ConvertOptions> settings() {
   all[2].fap_flavour = FapFlavour::greta_java;
   all[3].fap_flavour = FapFlavour::semaine;
   all[4].limits.max_frames = 50;  // some corpus files are longer
+  all[5].verify = true;  // each stream decoded and compared with the frames on the tape
+  all[5].quant = 3;
   return all;
 }
 
@@ -132,7 +134,7 @@ TEST(StreamedConvert, AnEncoderErrorAboutOneFramePointsAtTheFramesLine) {
   mask += "\n";
   std::ofstream(input) << "2.1 far 25 3\n" << mask << "0 10\n" << mask << "1 20\n" << mask << "2 2000000000\n";
   ConvertOptions loaded;
-  loaded.verify = true;  // takes the usual way
+  loaded.facts = true;  // takes the usual way
   for (const ConvertOptions& options : {ConvertOptions{}, loaded}) {
     for (const char* output : {"x.fba", "x.mp4"}) {
       const pipeline::ConvertResult r = pipeline::convert(input, {{tmp / output, ""}}, options);

@@ -120,9 +120,10 @@ bool FrameTape::record(const FapFrame& frame) {
 }
 
 const FapFrame& FrameTape::Player::next() {
-  // Past the end of a block: it is freed and the next one read.
+  // Past the end of a block: it is freed (unless kept) and the next one read.
   while (at_ == tape_.blocks_[block_].size) {
-    tape_.blocks_[block_++].bytes.reset();
+    if (!kept_) tape_.blocks_[block_].bytes.reset();
+    ++block_;
     at_ = 0;
   }
   const std::uint8_t* const start = tape_.blocks_[block_].bytes.get() + at_;

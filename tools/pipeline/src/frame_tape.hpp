@@ -48,22 +48,23 @@ class FrameTape {
   bool dropped() const { return dropped_; }
   std::size_t bytes() const { return bytes_; }
 
-  // The recorded frames again, in order, each equal in every field to the one recorded. A tape is
-  // played once: each block is freed as the player leaves it.
+  // The recorded frames again, in order, each equal in every field to the one recorded. Each
+  // block is freed as the player leaves it, unless the tape is `kept` for another playing.
   class Player {
    public:
-    explicit Player(FrameTape& tape) : tape_(tape) {}
+    Player(FrameTape& tape, bool kept) : tape_(tape), kept_(kept) {}
     // The next frame, valid until the next call (it is rebuilt in place from its differences).
     const FapFrame& next();
 
    private:
     FrameTape& tape_;
+    bool kept_;
     std::size_t block_ = 0;
     std::size_t at_ = 0;  // in that block
     FapFrame frame_;      // the last frame played
     Slots slots_;         // of its mask
   };
-  Player play() { return Player(*this); }
+  Player play(bool kept = false) { return Player(*this, kept); }
 
  private:
   // A block's size, and the most bytes one frame can take (a flag, the mask, a number's

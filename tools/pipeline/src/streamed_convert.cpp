@@ -37,8 +37,7 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 bool can_stream(const std::string& input, const std::vector<OutputRequest>& outputs,
                 const std::vector<const OutputFormat*>& writers, const ConvertOptions& options) {
   const InputFormat* format = formats().input_for(input);
-  if (input == "-" || !format || (format->kind != "fap" && format->kind != "fba") || options.verify ||
-      options.facts || outputs.empty())
+  if (input == "-" || !format || (format->kind != "fap" && format->kind != "fba") || options.facts || outputs.empty())
     return false;
   for (std::size_t i = 0; i < outputs.size(); ++i)
     if ((writers[i]->kind != "fba" && writers[i]->kind != "fap" && writers[i]->kind != "mp4") ||
@@ -74,15 +73,31 @@ class FrameSource {
       return check(frame);
     });
   }
-  Status second_pass(const FapFrameSink& code) {
-    if (!tape_ || tape_->dropped()) return read_again(code);
-    FrameTape::Player replay = tape_->play();
+  // `keep`: the tape stays for verify().
+  Status second_pass(const FapFrameSink& code, bool keep) {
+    if (!taped()) return read_again(code);
+    FrameTape::Player replay = tape_->play(keep);
     for (std::size_t k = 0; k < frames_read(); ++k) {
       FapFrame frame = replay.next();
       frame.number = placed(k, frame.number);
       if (auto status = code(frame); !status) return status;
     }
     return ok_status();
+  }
+  // Whether the first pass kept every frame on the tape.
+  bool taped() const { return tape_ && !tape_->dropped(); }
+  // verify_fba of `encoded` against the frames on the tape (kept through the second pass),
+  // numbered as placed.
+  Status verify(const EncodedFba& encoded, const FbaEncodeOptions& options, int fps, const std::string& file) {
+    FrameTape::Player replay = tape_->play(true);
+    FapFrame frame;
+    std::size_t k = 0;
+    return verify_fba(frames_read(), fps, [&]() -> const FapFrame& {
+      frame = replay.next();
+      frame.number = placed(k, frame.number);
+      ++k;
+      return frame;
+    }, encoded, options, file);
   }
   // Whether the first pass already numbers the frames as placed in time.
   virtual bool placed_in_first_pass() const { return false; }
@@ -220,7 +235,7 @@ class FbaSource : public FrameSource {
 // One FBA encoding (the .fba's, or the .mp4's with planes aligned to bytes) over both passes.
 struct Encoding {
   Encoding(const ConvertOptions& options, bool align_planes, const FrameSource& source)
-      : encoder(options_with(options, align_planes, source)) {}
+      : fba_options(options_with(options, align_planes, source)), encoder(fba_options) {}
   static FbaEncodeOptions options_with(const ConvertOptions& options, bool align_planes, const FrameSource& source) {
     FbaEncodeOptions fba = fba_encode_options(options);
     fba.align_planes = align_planes;
@@ -238,6 +253,7 @@ struct Encoding {
       if (auto status = encoder.add(frame); !status) error = status.error();
   }
 
+  FbaEncodeOptions fba_options;
   FbaEncoder encoder;
   std::optional<Diagnostic> error;  // the first, as encode_checked would give it
   std::optional<EncodedFba> encoded;
@@ -380,6 +396,9 @@ std::optional<ConvertResult> convert_streamed(const std::string& input, const st
   }, keep);
   ConvertResult result;
   if (!take_facts(result, facts, faps, input, options)) return result;
+  // --verify compares the stream with the frames on the tape; frames too many for it take the
+  // usual way (nothing is written yet).
+  if (options.verify && (fba || mp4) && !source->taped()) return std::nullopt;
   // As encode_checked: a rate the stream cannot code comes before any other error of encoding.
   const auto rate_error = fba_rate_error(facts->fps, facts->rate_at, facts->fps, input);
   for (std::optional<Encoding>* encoding : {&fba, &mp4}) {
@@ -403,7 +422,7 @@ std::optional<ConvertResult> convert_streamed(const std::string& input, const st
       if (wants_text) fap.add(frame);
       return ok_status();
     };
-    if (auto again = source->second_pass(code); !again) {
+    if (auto again = source->second_pass(code, options.verify); !again) {
       result.error = again.error();
       return result;
     }
@@ -415,6 +434,9 @@ std::optional<ConvertResult> convert_streamed(const std::string& input, const st
     if (finished) (*encoding)->encoded = std::move(*finished);
     else (*encoding)->error = finished.error();
     (*encoding)->encoder = FbaEncoder();  // its statistics of the masks go before the outputs are made
+    if (options.verify && finished)  // as encode_checked verifies
+      if (auto verified = source->verify(*(*encoding)->encoded, (*encoding)->fba_options, facts->fps, input); !verified)
+        (*encoding)->error = verified.error();
   }
   for (std::optional<Encoding>* encoding : {&fba, &mp4})
     if (*encoding && (*encoding)->error && (*encoding)->error->where.file.empty())

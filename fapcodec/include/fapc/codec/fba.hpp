@@ -186,4 +186,13 @@ Result<DecodedFba> decode_fba(std::span<const std::uint8_t> bytes, const FbaDeco
 Status verify_fba(const FapSequence& input, const EncodedFba& encoded, const FbaEncodeOptions& options,
                   const std::string& file = "stream.fba");
 
+// The same verification for an input too long to hold: its `count` frames at `fps` come again one
+// at a time from `next` (each call the next frame, in order, valid until the next call; never
+// called more than `count` times). The stream is decoded twice, a frame at a time (to compare,
+// then to encode again), so nothing but the encoder's group of frames is held; the checks, their
+// order and their messages are the other verify_fba's (which is this one over the sequence).
+using FbaInputFrames = std::function<const FapFrame&()>;
+Status verify_fba(std::size_t count, int fps, const FbaInputFrames& next, const EncodedFba& encoded,
+                  const FbaEncodeOptions& options, const std::string& file = "stream.fba");
+
 }  // namespace fapc
