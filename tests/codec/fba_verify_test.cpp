@@ -5,30 +5,27 @@
 #include <gtest/gtest.h>
 
 #include <initializer_list>
-#include <utility>
 
 #include "fapc/codec/fba.hpp"
 
 namespace fapc {
 namespace {
 
-FapFrame frame(std::int64_t number, std::initializer_list<std::pair<int, std::int32_t>> faps) {
-  FapFrame f;
-  f.number = number;
-  for (const auto& [fap, value] : faps) f.set(fap, value);
-  return f;
-}
-
-FapSequence sequence(int fps, std::vector<FapFrame> frames) {
+// Frames 0, 1, ... whose FAP 3 (open_jaw) takes these values, at `fps`.
+FapSequence jaw(int fps, std::initializer_list<std::int32_t> values) {
   FapSequence s;
   s.fps = fps;
-  s.frames = std::move(frames);
+  for (const std::int32_t value : values) {
+    FapFrame& f = s.frames.emplace_back();
+    f.number = static_cast<std::int64_t>(s.frames.size()) - 1;
+    f.set(3, value);
+  }
   return s;
 }
 
 std::string message_of(const Status& status) { return status ? std::string() : status.error().message; }
 
-const FapSequence kSent = sequence(25, {frame(0, {{3, 100}}), frame(1, {{3, 200}}), frame(2, {{3, 300}})});
+const FapSequence kSent = jaw(25, {100, 200, 300});
 
 TEST(FbaVerify, AcceptsTheFramesItEncoded) {
   const auto encoded = encode_fba(kSent);
@@ -39,7 +36,7 @@ TEST(FbaVerify, AcceptsTheFramesItEncoded) {
 TEST(FbaVerify, ReportsADifferentCountBeforeAnyFrameThatDiffers) {
   const auto encoded = encode_fba(kSent);
   ASSERT_TRUE(encoded.ok());
-  const FapSequence shorter = sequence(25, {frame(0, {{3, 900}}), frame(1, {{3, 200}})});
+  const FapSequence shorter = jaw(25, {900, 200});
   EXPECT_EQ(message_of(verify_fba(shorter, *encoded, FbaEncodeOptions{}, "x.fba")),
             "verification failed: 3 frames decoded, 2 encoded");
 }
@@ -47,7 +44,7 @@ TEST(FbaVerify, ReportsADifferentCountBeforeAnyFrameThatDiffers) {
 TEST(FbaVerify, ReportsTheRateBeforeAnyFrameThatDiffers) {
   const auto encoded = encode_fba(kSent);
   ASSERT_TRUE(encoded.ok());
-  const FapSequence other_rate = sequence(30, {frame(0, {{3, 900}}), frame(1, {{3, 200}}), frame(2, {{3, 300}})});
+  const FapSequence other_rate = jaw(30, {900, 200, 300});
   EXPECT_EQ(message_of(verify_fba(other_rate, *encoded, FbaEncodeOptions{})),
             "verification failed: frame rate 25 decoded, 30 encoded");
 }
@@ -55,7 +52,7 @@ TEST(FbaVerify, ReportsTheRateBeforeAnyFrameThatDiffers) {
 TEST(FbaVerify, ReportsTheFirstFrameThatDiffers) {
   const auto encoded = encode_fba(kSent);
   ASSERT_TRUE(encoded.ok());
-  const FapSequence later = sequence(25, {frame(0, {{3, 100}}), frame(1, {{3, 250}}), frame(2, {{3, 900}})});
+  const FapSequence later = jaw(25, {100, 250, 900});
   // FAP 3's step at fap_quant 1 is its QP, 4: a tolerance of 2.
   EXPECT_EQ(message_of(verify_fba(later, *encoded, FbaEncodeOptions{})),
             "verification failed: frame 1: FAP 3 (open_jaw) decoded 200, encoded 250 (tolerance 2, as a player that "
