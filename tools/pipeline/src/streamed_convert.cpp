@@ -64,19 +64,19 @@ struct SourceFacts {
 class FrameSource {
  public:
   virtual ~FrameSource() = default;
-  // `keep` when a second pass will follow.
-  Result<SourceFacts> first_pass(const FapFrameSink& check, bool keep) {
-    if (!keep) return read(check);
+  // `onto_tape`: the frames are kept for the second pass (within the tape's budget).
+  Result<SourceFacts> first_pass(const FapFrameSink& check, bool onto_tape) {
+    if (!onto_tape) return read(check);
     tape_.emplace(kFrameTapeBudget);
     return read([&](const FapFrame& frame) {
       tape_->record(frame);
       return check(frame);
     });
   }
-  // `keep`: the tape stays for verify().
-  Status second_pass(const FapFrameSink& code, bool keep) {
+  // `keep_tape`: the tape stays for verify().
+  Status second_pass(const FapFrameSink& code, bool keep_tape) {
     if (!taped()) return read_again(code);
-    FrameTape::Player replay = tape_->play(keep);
+    FrameTape::Player replay = tape_->play(keep_tape);
     for (std::size_t k = 0; k < frames_read(); ++k) {
       FapFrame frame = replay.next();
       frame.number = placed(k, frame.number);
@@ -386,14 +386,14 @@ std::optional<ConvertResult> convert_streamed(const std::string& input, const st
   // of decoding again) and frames for an encoder (as fast as reading the .fap again, and a lower
   // peak: 149 against 165 MB at 10^6 frames). A .fap only rewritten as .fap is read again (the
   // tape would be some 50 bytes a frame more for the same time).
-  const bool keep = wants_fba || wants_mp4 || source->placed_in_first_pass();
+  const bool onto_tape = wants_fba || wants_mp4 || source->placed_in_first_pass();
   std::bitset<kFapCount> faps;
   auto facts = source->first_pass([&](const FapFrame& frame) -> Status {
     faps |= frame.mask;
     if (fba) fba->check(frame);
     if (mp4) mp4->check(frame);
     return ok_status();
-  }, keep);
+  }, onto_tape);
   ConvertResult result;
   if (!take_facts(result, facts, faps, input, options)) return result;
   // --verify compares the stream with the frames on the tape; frames too many for it take the
