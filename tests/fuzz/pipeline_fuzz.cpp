@@ -26,8 +26,14 @@ namespace {
 
 constexpr std::array<const char*, 8> kInputExtensions = {".fap", ".fap.gz", ".fba", ".mp4",
                                                          ".mimic", ".fml", ".xmt", ".combine"};
-// Writing is linear in the frames; past this the fuzzer would spend its time encoding.
-constexpr std::size_t kMaxFramesWritten = 20000;
+// Writing is linear in the frames; past this the fuzzer would spend its time encoding and drawing
+// faces (the picture and video writers: about a millisecond a frame under the sanitizers, so a
+// 36-byte script of 10^4 frames took past the 10 s a fuzzer allows an input).
+constexpr std::size_t kMaxFramesWritten = 2000;
+// Loading is too, and under the sanitizers a million frames (the default limit: a 36-byte Mimic
+// script holding a value for 10^4 s at 100 fps) take past the 10 s a fuzzer allows an input. A
+// lower limit keeps inputs quick and sends the long ones through the limit's checks instead.
+constexpr std::int64_t kMaxFramesLoaded = std::int64_t{1} << 17;
 
 std::filesystem::path folder_of_this_process() {
   return std::filesystem::temp_directory_path() / ("fapc-pipeline-fuzz-" + std::to_string(::getpid()));
@@ -50,6 +56,7 @@ fapc::pipeline::ConvertOptions options_from(std::uint8_t bits) {
   fapc::pipeline::ConvertOptions options;
   constexpr std::array<int, 4> kRates = {25, 10, 30, 100};
   options.fps = kRates[bits & 3];
+  options.limits.max_frames = kMaxFramesLoaded;
   if (bits & 4) options.duration = 5;
   options.quant = 1 + ((bits >> 3) & 7);
   if (bits & 0x40) options.events["e"] = "1";
