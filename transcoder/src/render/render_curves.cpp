@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <span>
 
 #include "thin_points.hpp"
 #include "timeline_index.hpp"
@@ -25,8 +26,11 @@ void add_clip_times(const Clip& clip, double end, std::vector<double>& times) {
   if (std::isfinite(end)) times.push_back(end);
 }
 
-// The frames k with from <= k / fps < to, as [first, end): the k that add_frame_times lists.
-std::pair<std::int64_t, std::int64_t> frame_range(double from, double to, int fps) {
+// Frames k, as [first, end).
+using FrameRange = std::pair<std::int64_t, std::int64_t>;
+
+// The frames k with from <= k / fps < to: k from ceil(from * fps) while k / fps < to.
+FrameRange frame_range(double from, double to, int fps) {
   const auto first = static_cast<std::int64_t>(std::ceil(from * fps));
   const auto time = [fps](std::int64_t k) { return static_cast<double>(k) / fps; };
   // k / fps grows with k: start near the end and step to the first k at or past `to`.
@@ -34,12 +38,6 @@ std::pair<std::int64_t, std::int64_t> frame_range(double from, double to, int fp
   while (end > first && time(end - 1) >= to) --end;
   while (time(end) < to) ++end;
   return {first, end};
-}
-
-void add_frame_times(double from, double to, int fps, std::vector<double>& times) {
-  for (auto k = static_cast<std::int64_t>(std::ceil(from * fps)); static_cast<double>(k) / fps < to; ++k) {
-    times.push_back(static_cast<double>(k) / fps);
-  }
 }
 
 void sort_unique(std::vector<double>& times) {
@@ -59,11 +57,21 @@ void add_sample(Points& points, double t, ValueFn& value) {
   points.emplace_back(t, right);
 }
 
-// Into `points` (emptied first).
-template <class ValueFn>
-void sample(const std::vector<double>& times, ValueFn value, Points& points) {
-  points.clear();
-  for (const double t : times) add_sample(points, t, value);
+// Calls visit(t) at each of `times` (sorted, no repeats) and at each frame time k / fps of the
+// `frames` (ascending, apart), in time order, a time in both once: the frame times are merged in
+// as they are counted rather than listed and sorted with the others.
+template <class Visit>
+void merge_times(const std::vector<double>& times, std::span<const FrameRange> frames, int fps, Visit visit) {
+  std::size_t c = 0;
+  for (const auto& [first, end] : frames) {
+    for (std::int64_t k = first; k < end; ++k) {
+      const double t = static_cast<double>(k) / fps;
+      for (; c < times.size() && times[c] < t; ++c) visit(times[c]);
+      if (c < times.size() && times[c] == t) ++c;
+      visit(t);
+    }
+  }
+  for (; c < times.size(); ++c) visit(times[c]);
 }
 
 // The samples thinned (in place: `samples` keeps its memory for the next list), as a list of its
@@ -99,33 +107,19 @@ class ForwardLookup {
   std::size_t cuts_at_or_before_ = 0;
 };
 
-// One target's curve at its clips' own times (`clip_times`, sorted, no repeats) and at every frame
-// time from `from` to before `to`, in time order, each time once: the frame times are merged in as
-// they are counted rather than listed and sorted with the others. Into `points` (emptied first).
+// One target's (or clip's) curve at its clips' own times (`clip_times`, sorted, no repeats) and at
+// every frame time from `from` to before `to`, in time order, each time once. Into `points`
+// (emptied first).
 template <class ValueFn>
 void sample_merged(const std::vector<double>& clip_times, double from, double to, int fps, ValueFn value,
                    Points& points) {
   points.clear();
-  auto k = static_cast<std::int64_t>(std::ceil(from * fps));
+  const FrameRange frames = frame_range(from, to, fps);
   // Every time once, a jump twice: reserved at once, the points of a long target (tens of MB) are
   // never copied as the vector grows.
-  const double frames = std::max(0.0, std::ceil(to * fps) - static_cast<double>(k));
-  points.reserve(2 * clip_times.size() + static_cast<std::size_t>(frames) + 1);
-  std::size_t c = 0;
-  const auto frame_time = [&] { return static_cast<double>(k) / fps; };
-  const auto add = [&](double t) { add_sample(points, t, value); };
-  while (true) {
-    const bool frames_left = frame_time() < to;
-    if (!frames_left && c == clip_times.size()) break;
-    if (!frames_left || (c < clip_times.size() && clip_times[c] < frame_time())) {
-      add(clip_times[c++]);
-    } else {
-      const double t = frame_time();
-      if (c < clip_times.size() && clip_times[c] == t) ++c;  // the same time from both lists
-      add(t);
-      ++k;
-    }
-  }
+  const std::int64_t frame_count = std::max<std::int64_t>(frames.second - frames.first, 0);
+  points.reserve(2 * clip_times.size() + static_cast<std::size_t>(frame_count) + 1);
+  merge_times(clip_times, std::span<const FrameRange>(&frames, 1), fps, [&](double t) { add_sample(points, t, value); });
 }
 
 // docs/cli.md: FAP 1 and FAP 2 appear as "viseme" and "expression" curves whose value is the
@@ -134,7 +128,7 @@ void sample_merged(const std::vector<double>& clip_times, double from, double to
 void add_strongest_curve(const TimelineIndex& index, int fap, const char* name, Curves& out, Points& points) {
   std::vector<std::pair<const TargetIndex*, double>> members;  // with the viseme/expression number
   std::vector<double> edges;  // the clips' begins and ends
-  std::vector<std::pair<std::int64_t, std::int64_t>> frames;  // each clip's frames, as frame_range
+  std::vector<FrameRange> frames;  // each clip's
   for (const auto& [target, target_index] : index.targets) {
     const std::optional<WeightTarget> weight = weight_target(target);
     if (!weight || weight->fap != fap) continue;
@@ -152,7 +146,7 @@ void add_strongest_curve(const TimelineIndex& index, int fap, const char* name, 
   // The frames of all clips in order, each once: the clips' ranges merged (a sort of two numbers
   // per clip, not of every frame time of every clip).
   std::sort(frames.begin(), frames.end());
-  std::vector<std::pair<std::int64_t, std::int64_t>> spans;
+  std::vector<FrameRange> spans;
   for (const auto& range : frames) {
     if (range.first >= range.second) continue;
     if (!spans.empty() && range.first <= spans.back().second) {
@@ -161,7 +155,7 @@ void add_strongest_curve(const TimelineIndex& index, int fap, const char* name, 
       spans.push_back(range);
     }
   }
-  std::vector<std::pair<std::int64_t, std::int64_t>>().swap(frames);
+  std::vector<FrameRange>().swap(frames);
   std::vector<ForwardLookup> lookups;
   for (const auto& member : members) lookups.emplace_back(*member.first);
   const auto strongest = [&](double t, bool from_left) {
@@ -183,17 +177,7 @@ void add_strongest_curve(const TimelineIndex& index, int fap, const char* name, 
     if (!points.empty() && points.back().second != now) points.emplace_back(t, points.back().second);
     points.emplace_back(t, now);
   };
-  // The edges and the frame times merged in order, a time in both taken once.
-  std::size_t e = 0;
-  for (const auto& [first, end] : spans) {
-    for (std::int64_t k = first; k < end; ++k) {
-      const double t = static_cast<double>(k) / out.fps;
-      for (; e < edges.size() && edges[e] < t; ++e) add(edges[e]);
-      if (e < edges.size() && edges[e] == t) ++e;
-      add(t);
-    }
-  }
-  for (; e < edges.size(); ++e) add(edges[e]);
+  merge_times(edges, spans, out.fps, add);
   out.curves[name] = thinned(points, 0);
 }
 
@@ -236,9 +220,8 @@ Curves render_clip_curves(const Timeline& timeline, const CurveOptions& options)
   for (const Clip& clip : timeline.clips) {
     std::vector<double> times;
     add_clip_times(clip, clip.end, times);
-    add_frame_times(clip.begin, clip.end, options.fps, times);
     sort_unique(times);
-    sample(times, [&](double t, bool from_left) {
+    sample_merged(times, clip.begin, clip.end, options.fps, [&](double t, bool from_left) {
       return t >= clip.end && !from_left ? clip_value(clip, t, true) : clip_value(clip, t, from_left);
     }, samples);
     // "jaw (table2.mimic:5)"; a second clip from the same place (a macro used twice) gets " #2".
