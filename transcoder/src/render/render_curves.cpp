@@ -81,30 +81,21 @@ Points thinned(Points& samples, double tolerance) {
   return Points(samples.begin(), samples.end());
 }
 
-// The clips of one target active at ascending times: found by walking forward through its
-// elementary intervals (TargetIndex) instead of a binary search per time, which, with the sort of
-// every frame time, was most of the curves' cost on long scripts.
+// One target's blended value at ascending times: a cursor for each kind of query walks forward
+// through its elementary intervals (TargetIndex::active_at) instead of a binary search per time,
+// which, with the sort of every frame time, was most of the curves' cost on long scripts.
 class ForwardLookup {
  public:
-  explicit ForwardLookup(const TargetIndex& target) : target_(target) {}
-
-  // As TargetIndex::active_at; `t` may not go back between calls with the same `from_left`.
-  std::span<const std::uint32_t> active_at(double t, bool from_left) {
-    // Interval j is [cuts[j], cuts[j+1]) (from the left: (cuts[j], cuts[j+1]]): j + 1 is the
-    // number of cuts at or before t (strictly before, from the left).
-    std::size_t& count = from_left ? cuts_before_ : cuts_at_or_before_;
-    const std::vector<double>& cuts = target_.cuts;
-    while (count < cuts.size() && (from_left ? cuts[count] < t : cuts[count] <= t)) ++count;
-    if (count == 0) return {};
-    const std::size_t j = count - 1;
-    return std::span<const std::uint32_t>(target_.members)
-        .subspan(target_.offsets[j], target_.offsets[j + 1] - target_.offsets[j]);
+  ForwardLookup(const TimelineIndex& index, const TargetIndex& target) : index_(index), target_(target) {}
+  // `t` may not go back between calls with the same `from_left`.
+  double value_at(double t, bool from_left) {
+    return blend(index_.clips, target_.active_at(t, from_left, from_left ? left_ : right_), t, from_left).value;
   }
 
  private:
+  const TimelineIndex& index_;
   const TargetIndex& target_;
-  std::size_t cuts_before_ = 0;
-  std::size_t cuts_at_or_before_ = 0;
+  std::size_t left_ = 0, right_ = 0;
 };
 
 // One target's (or clip's) curve at its clips' own times (`clip_times`, sorted, no repeats) and at
@@ -157,13 +148,13 @@ void add_strongest_curve(const TimelineIndex& index, int fap, const char* name, 
   }
   std::vector<FrameRange>().swap(frames);
   std::vector<ForwardLookup> lookups;
-  for (const auto& member : members) lookups.emplace_back(*member.first);
+  for (const auto& member : members) lookups.emplace_back(index, *member.first);
   const auto strongest = [&](double t, bool from_left) {
     double best = 0;
     double slot = 0;
     for (std::size_t m = 0; m < members.size(); ++m) {
       const double number = members[m].second;
-      const double w = blend(index.clips, lookups[m].active_at(t, from_left), t, from_left).value;
+      const double w = lookups[m].value_at(t, from_left);
       if (w > best) {
         best = w;
         slot = number;
@@ -198,10 +189,9 @@ Curves render_curves(const Timeline& timeline, const CurveOptions& options) {
     const double last = std::min(target_index.span_end, out.duration);
     times.push_back(last);
     sort_unique(times);
-    ForwardLookup lookup(target_index);
-    sample_merged(times, target_index.span_begin, last, options.fps, [&](double t, bool from_left) {
-      return blend(index.clips, lookup.active_at(t, from_left), t, from_left).value;
-    }, samples);
+    ForwardLookup lookup(index, target_index);
+    sample_merged(times, target_index.span_begin, last, options.fps,
+                  [&](double t, bool from_left) { return lookup.value_at(t, from_left); }, samples);
     out.curves[target] = thinned(samples, options.tolerance);
   }
   add_strongest_curve(index, 1, "viseme", out, samples);

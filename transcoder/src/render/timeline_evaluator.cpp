@@ -90,22 +90,6 @@ std::span<const std::uint32_t> TargetIndex::active_at(double t, bool from_left) 
   return std::span<const std::uint32_t>(members).subspan(offsets[j], offsets[j + 1] - offsets[j]);
 }
 
-std::span<const std::uint32_t> TargetIndex::active_at(double t, std::size_t& cursor) const {
-  // Interval j is [cuts[j], cuts[j+1]); before the first cut nothing is active. A cursor that
-  // lies ahead of t, or far behind it, gives way to the binary search.
-  constexpr std::size_t kWalk = 4;
-  std::size_t j = cursor;
-  if (j >= cuts.size() || cuts[j] > t) return active_at(t, false);
-  for (std::size_t steps = 0; j + 1 < cuts.size() && cuts[j + 1] <= t; ++j, ++steps)
-    if (steps == kWalk) {
-      const auto it = std::upper_bound(cuts.begin() + static_cast<std::ptrdiff_t>(j), cuts.end(), t);
-      j = static_cast<std::size_t>(it - cuts.begin() - 1);
-      break;
-    }
-  cursor = j;
-  return std::span<const std::uint32_t>(members).subspan(offsets[j], offsets[j + 1] - offsets[j]);
-}
-
 double clip_value(const Clip& clip, double t, bool from_left) {
   // Past its end a (frozen) clip holds the value it reached, the limit from the left.
   if (t >= clip.end) return clip.curve.left_limit(clip.local_time(clip.end));
@@ -170,8 +154,7 @@ Blended TimelineIndex::value_at(const TargetIndex& target, double t, bool from_l
 }
 
 Blended TimelineIndex::value_at(const TargetIndex& target, double t, bool from_left, std::size_t& cursor) const {
-  if (from_left) return value_at(target, t, from_left);
-  return blend(clips, target.active_at(t, cursor), t, from_left);
+  return blend(clips, target.active_at(t, from_left, cursor), t, from_left);
 }
 
 // ---- the public face -----------------------------------------------------------------------
