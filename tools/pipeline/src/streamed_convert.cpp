@@ -76,28 +76,16 @@ class FrameSource {
   // `keep_tape`: the tape stays for verify().
   Status second_pass(const FapFrameSink& code, bool keep_tape) {
     if (!taped()) return read_again(code);
-    FrameTape::Player replay = tape_->play(keep_tape);
-    for (std::size_t k = 0; k < frames_read(); ++k) {
-      FapFrame frame = replay.next();
-      frame.number = placed(k, frame.number);
-      if (auto status = code(frame); !status) return status;
-    }
+    const FbaInputFrames next = replayed(keep_tape);
+    for (std::size_t k = 0; k < frames_read(); ++k)
+      if (auto status = code(next()); !status) return status;
     return ok_status();
   }
   // Whether the first pass kept every frame on the tape.
   bool taped() const { return tape_ && !tape_->dropped(); }
-  // verify_fba of `encoded` against the frames on the tape (kept through the second pass),
-  // numbered as placed.
+  // verify_fba of `encoded` against the frames on the tape (kept through the second pass).
   Status verify(const EncodedFba& encoded, const FbaEncodeOptions& options, int fps, const std::string& file) {
-    FrameTape::Player replay = tape_->play(true);
-    FapFrame frame;
-    std::size_t k = 0;
-    return verify_fba(frames_read(), fps, [&]() -> const FapFrame& {
-      frame = replay.next();
-      frame.number = placed(k, frame.number);
-      ++k;
-      return frame;
-    }, encoded, options, file);
+    return verify_fba(frames_read(), fps, replayed(true), encoded, options, file);
   }
   // Whether the first pass already numbers the frames as placed in time.
   virtual bool placed_in_first_pass() const { return false; }
@@ -120,6 +108,16 @@ class FrameSource {
   }
 
  private:
+  // The frames on the tape, numbered as placed: each call the next one.
+  FbaInputFrames replayed(bool keep_tape) {
+    return [this, replay = tape_->play(keep_tape), frame = FapFrame{},
+            k = std::size_t{0}]() mutable -> const FapFrame& {
+      frame = replay.next();
+      frame.number = placed(k++, frame.number);
+      return frame;
+    };
+  }
+
   std::optional<FrameTape> tape_;
 };
 
