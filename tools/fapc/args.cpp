@@ -10,11 +10,26 @@
 
 namespace fapc::cli {
 
+namespace {
+
+// Whether an argument can only be an operand (docs/cli.md, "Operands"): "-" (standard input or
+// output), anything not starting with '-', anything holding a space ("-0.5 * joy.fap": no option
+// has one), and a minus sign before a digit or a point (a number: no option starts so).
+bool is_operand(const std::string& arg) {
+  if (arg.size() < 2 || arg[0] != '-') return true;
+  if (arg.find_first_of(" \t\n") != std::string::npos) return true;
+  return (arg[1] >= '0' && arg[1] <= '9') || arg[1] == '.';
+}
+
+}  // namespace
+
 Args::Args(const std::string& command, const std::vector<std::string>& argv) {
   for (std::size_t i = 0; i < argv.size() && ok(); ++i) {
+    // "--" makes the argument after it an operand whatever it looks like; options may follow
+    // (`fapc compile -- -odd-name.fap -o x.fap`).
     if (argv[i] == "--") {
-      positionals_.insert(positionals_.end(), argv.begin() + static_cast<std::ptrdiff_t>(i) + 1, argv.end());
-      return;
+      if (++i < argv.size()) positionals_.push_back(argv[i]);
+      continue;
     }
     take(command, argv, i);
   }
@@ -22,8 +37,8 @@ Args::Args(const std::string& command, const std::vector<std::string>& argv) {
 
 void Args::take(const std::string& command, const std::vector<std::string>& argv, std::size_t& i) {
   const std::string& arg = argv[i];
-  if (arg.size() < 2 || arg[0] != '-') {
-    positionals_.push_back(arg);  // includes "-" (standard input/output)
+  if (is_operand(arg)) {
+    positionals_.push_back(arg);
     return;
   }
   const OptionSpec* option = nullptr;

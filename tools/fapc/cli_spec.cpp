@@ -1,6 +1,9 @@
 #include "fapc/cli_spec.hpp"
 
 #include <algorithm>
+#include <deque>
+
+#include "fapc/pipeline/registry.hpp"
 
 namespace fapc::cli {
 
@@ -16,15 +19,14 @@ using VC = ValueCompletion;
 
 const std::vector<CommandSpec> kCommands = {
     {"compile", "INPUT -o OUTPUT", "convert any input to any output (the kinds come from the extensions)",
-     "Loads INPUT (a Mimic, FML, XMT or .combine script, a .fap, .fba or .mp4 file) and writes it as "
-     "OUTPUT, whose kind comes from its extension or --to: .fap, .fba, .mp4, .xmt, .json curves, "
-     ".svg/.pdf plot, .csv frames, .png/.webm/.html face, .wav voice, .timeline dump. `fapc formats` "
-     "lists them all."},
+     "Loads INPUT (by its extension or --from: {inputs}) and writes it as OUTPUT, whose kind comes "
+     "from its extension or --to: {outputs}. `fapc formats` lists them all with what each carries."},
     {"encode", "INPUT -o OUT.fba", "encode frames as a raw MPEG-4 FBA stream, with the encoder's settings in view",
      "Any input, encoded as an FBA elementary stream with the given quantiser, intra period, ranges and "
      "masks; with --verify the stream is decoded and checked before it is written."},
-    {"decode", "IN.fba|IN.mp4 -o OUT.fap", "decode an FBA stream or an .mp4's FBA track to frames",
-     "Decodes a .fba stream or the FBA track of an .mp4 and writes the frames, normally as a .fap file."},
+    {"decode", "{streams} -o OUT.fap", "decode an FBA stream or an .mp4's FBA track to frames",
+     "Decodes an FBA stream, bare or in a container ({stream extensions}), and writes the frames, normally as a "
+     ".fap file."},
     {"verify", "FILE...", "check that files decode and re-encode to the same bytes",
      "A .fba or .mp4 decodes and encodes again to the same bytes; any other input encodes, decodes within "
      "half a quantiser step and re-encodes identically. Exit status 3 when a check fails."},
@@ -37,7 +39,7 @@ const std::vector<CommandSpec> kCommands = {
     {"plot", "INPUT -o OUT.svg|OUT.png|OUT.pdf|OUT.csv", "draw the curves of an input, one panel per parameter",
      "The input's curves (a script's own, or the frames') as a figure (SVG, PNG or PDF) or a .csv of curves "
      "and frames; with --per-clip every clip's own curve too, labelled by its source line."},
-    {"render", "INPUT -o OUT.png|OUT.webm|OUT.html", "show any input as a face: a picture, a video or a preview page",
+    {"render", "INPUT -o {pictures}", "show any input as a face: a picture, a video or a preview page",
      "Draws the face the input animates (docs/render.md): one frame or a contact sheet as .png, a .webm "
      "video, or an .html page that plays it."},
     {"validate", "FILE...", "check XML documents against the project's schemas",
@@ -151,11 +153,57 @@ std::string OptionSpec::label() const {
 }
 
 const std::vector<OptionSpec>& option_specs() { return kOptions; }
-const std::vector<CommandSpec>& command_specs() { return kCommands; }
+namespace {
+
+// "IN.fba|IN.mp4": each row's first extension after `prefix`.
+template <class Format>
+std::string operands_of(const std::vector<const Format*>& rows, const std::string& prefix) {
+  std::string out;
+  for (const Format* f : rows) out += (out.empty() ? "" : "|") + prefix + f->extensions.front().substr(1);
+  return out;
+}
+
+// A declared text with the kinds it names taken from the pipeline's tables (the row is the only
+// place that knows a format): {inputs} and {outputs} every extension, {streams} and {stream
+// extensions} the inputs that hold an FBA stream, {pictures} the outputs that draw the face.
+std::string with_kinds(std::string_view declared) {
+  namespace fp = pipeline;
+  const auto streams = fp::inputs_where([](const fp::InputFormat& f) { return bool(f.verify_stream); });
+  const auto pictures = fp::outputs_where([](const fp::OutputFormat& f) { return f.picture; });
+  const std::pair<std::string, std::string> names[] = {
+      {"{inputs}", fp::extension_list(fp::inputs_where())},
+      {"{outputs}", fp::extension_list(fp::outputs_where())},
+      {"{streams}", operands_of(streams, "IN.")},
+      {"{stream extensions}", fp::extension_list(streams)},
+      {"{pictures}", operands_of(pictures, "OUT.")},
+  };
+  std::string text(declared);
+  for (const auto& [name, value] : names)
+    for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + value.size()))
+      text.replace(at, name.size(), value);
+  return text;
+}
+
+}  // namespace
+
+const std::vector<CommandSpec>& command_specs() {
+  static const std::vector<CommandSpec> specs = [] {
+    static std::deque<std::string> texts;  // what the specs' views see
+    std::vector<CommandSpec> made;
+    for (CommandSpec c : kCommands) {
+      c.operands = texts.emplace_back(with_kinds(c.operands));
+      c.details = texts.emplace_back(with_kinds(c.details));
+      made.push_back(c);
+    }
+    return made;
+  }();
+  return specs;
+}
 
 const CommandSpec* find_command_spec(std::string_view name) {
-  const auto it = std::find_if(kCommands.begin(), kCommands.end(), [&](const CommandSpec& c) { return c.name == name; });
-  return it == kCommands.end() ? nullptr : &*it;
+  const auto& specs = command_specs();
+  const auto it = std::find_if(specs.begin(), specs.end(), [&](const CommandSpec& c) { return c.name == name; });
+  return it == specs.end() ? nullptr : &*it;
 }
 
 std::vector<const OptionSpec*> options_of(std::string_view command) {

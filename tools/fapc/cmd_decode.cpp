@@ -4,6 +4,7 @@
 #include "fapc/conversion.hpp"
 #include "fapc/options.hpp"
 #include "fapc/pipeline/convert.hpp"
+#include "fapc/pipeline/registry.hpp"
 #include "fapc/report.hpp"
 #include "fapc/streams.hpp"
 
@@ -23,8 +24,11 @@ int run_decode(const std::vector<std::string>& argv) {
   StandardInputCopy copy;
   if (const auto error = resolve_input(args, input, options, copy)) return usage_error("decode", *error);
   const pipeline::InputFormat* format = pipeline::reader_for(input, options);
-  if (format && format->kind != "fba" && format->kind != "mp4")
-    return usage_error("decode", "decode reads .fba or .mp4 streams; use compile for '" + args.positionals().front() + "'");
+  if (format && !format->verify_stream)
+    return usage_error("decode", "decode reads FBA streams (" +
+                                     pipeline::extension_list(pipeline::inputs_where(
+                                         [](const pipeline::InputFormat& f) { return bool(f.verify_stream); })) +
+                                     "); use compile for '" + args.positionals().front() + "'");
   // Without --to the output's extension decides, as it always has; -o - writes .fap text.
   return convert_one(args.positionals().front(), input, *output, args.value("to") || *output == "-" ? to : "", options);
 }

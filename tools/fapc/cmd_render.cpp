@@ -3,6 +3,7 @@
 #include "fapc/conversion.hpp"
 #include "fapc/options.hpp"
 #include "fapc/pipeline/convert.hpp"
+#include "fapc/pipeline/registry.hpp"
 #include "fapc/report.hpp"
 #include "fapc/streams.hpp"
 
@@ -20,13 +21,16 @@ int run_render(const std::vector<std::string>& argv) {
   if (picture.sheet && (picture.frame || picture.time))
     return usage_error("render", "--sheet picks its own frames; drop --frame/--time");
   const auto output = args.value("output");
-  if (!output) return usage_error("render", "missing -o OUT.png, OUT.webm or OUT.html");
+  if (!output) return usage_error("render", "missing -o OUTPUT (a picture: fapc formats lists them)");
   const std::string to = output_kind(args, *output);
   if (!args.ok()) return usage_error("render", args.error());
   const pipeline::OutputFormat* format =
       to.empty() ? pipeline::formats().output_for(*output) : pipeline::formats().output_named(to);
-  if (!format || (format->kind != "png" && format->kind != "webm" && format->kind != "html"))
-    return usage_error("render", "the output must end in .png, .webm or .html: '" + *output + "'");
+  if (!format || !format->picture)
+    return usage_error("render", "the output must end in " +
+                                     pipeline::extension_list(pipeline::outputs_where(
+                                         [](const pipeline::OutputFormat& f) { return f.picture; })) +
+                                     ": '" + *output + "'");
   std::string input = args.positionals().front();
   StandardInputCopy copy;
   if (const auto error = resolve_input(args, input, options, copy)) return usage_error("render", *error);

@@ -125,8 +125,9 @@ std::string man_page() {
   for (const CommandSpec& c : command_specs())
     out << ".B fapc " << c.name << "\n" << roff(c.operands) << " [options]\n.br\n";
   out << ".SH DESCRIPTION\n"
-      << roff("fapc turns facial-animation scripts (Mimic, FML, XMT-Omega, the Algebra of Expressions) and "
-              ".fap, .fba and .mp4 files into MPEG-4 face animation and back. The kind of an input or output "
+      << roff("fapc turns facial-animation scripts and frame files (" +
+              pipeline::extension_list(pipeline::inputs_where()) +
+              ") into MPEG-4 face animation and back. The kind of an input or output "
               "comes from its extension (fapc formats lists them), or from --from and --to; - is standard "
               "input or output. Diagnostics go to standard error as FILE:LINE:COL: error: MESSAGE. Outputs "
               "are written whole or not at all.")
@@ -246,6 +247,17 @@ std::string markdown_tables() {
     out << "| `" << label << "`" << (o.repeatable ? " (repeatable)" : "") << " | "
         << (o.commands == "*" ? std::string("all") : std::string(o.commands)) << " | " << o.help << " |\n";
   }
+  // The kinds, from the pipeline's tables (the row is the only place that knows a format).
+  const auto kinds = [&out](const std::string& header, const auto& table) {
+    out << "\n| " << header << " | Extensions | What it carries |\n|---|---|---|\n";
+    for (const auto& f : table) {
+      std::string extensions;
+      for (const std::string& ext : f.extensions) extensions += (extensions.empty() ? "`" : ", `") + ext + "`";
+      out << "| `" << f.kind << "` | " << extensions << " | " << f.carries << " |\n";
+    }
+  };
+  kinds("Input kind (`--from`)", pipeline::formats().inputs());
+  kinds("Output kind (`--to`)", pipeline::formats().outputs());
   return out.str();
 }
 

@@ -8,7 +8,6 @@
 #include <iostream>
 #include <system_error>
 
-#include "fapc/codec/did_you_mean.hpp"
 #include "fapc/pipeline/registry.hpp"
 #include "fapc/report.hpp"
 
@@ -32,23 +31,11 @@ std::string StandardInputCopy::path() {
   return path_;
 }
 
-namespace {
-
-template <class Formats>
-std::vector<std::string> kinds_of(const Formats& table) {
-  std::vector<std::string> kinds;
-  for (const auto& f : table) kinds.push_back(f.kind);
-  return kinds;
-}
-
-}  // namespace
-
 std::optional<std::string> resolve_input(Args& args, std::string& operand, pipeline::ConvertOptions& options,
                                          StandardInputCopy& copy) {
   if (const auto from = args.value("from")) {
     if (!pipeline::formats().input_named(*from))
-      return "unknown input kind '" + *from + "'" + did_you_mean(*from, kinds_of(pipeline::formats().inputs())) +
-             " (fapc formats lists them)";
+      return pipeline::unknown_kind_message(*from, false);
     options.input_kind = *from;
   }
   if (operand != "-") return std::nullopt;

@@ -45,7 +45,7 @@ Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs,
   std::vector<const OutputFormat*> writers;
   for (const std::string& kind : kinds) {
     const OutputFormat* writer = formats().output_named(kind);
-    if (!writer) return usage("unknown output kind '" + kind + "'");
+    if (!writer) return usage(unknown_kind_message(kind, true));
     writers.push_back(writer);
   }
   if (kinds.empty()) return usage("no output kind in --to");

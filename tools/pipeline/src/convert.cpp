@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "fapc/codec/did_you_mean.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "fap_text_outputs.hpp"
 #include "streamed_convert.hpp"
-#include "streamed_render.hpp"
 
 namespace fapc::pipeline {
 
@@ -15,19 +13,7 @@ Result<const OutputFormat*> writer_for(const OutputRequest& request) {
   const OutputFormat* writer =
       request.kind.empty() ? formats().output_for(request.path) : formats().output_named(request.kind);
   if (writer) return writer;
-  std::vector<std::string> kinds, extensions;
-  for (const OutputFormat& f : formats().outputs()) {
-    kinds.push_back(f.kind);
-    extensions.insert(extensions.end(), f.extensions.begin(), f.extensions.end());
-  }
-  if (!request.kind.empty())
-    return make_error(ErrorKind::unsupported, Location{request.path, 0, 0, -1},
-                      "unknown output kind '" + request.kind + "'" + did_you_mean(request.kind, kinds) +
-                          " (fapc formats lists them)");
-  const std::string extension = std::filesystem::path(request.path).extension().string();
-  return make_error(ErrorKind::unsupported, Location{request.path, 0, 0, -1},
-                    "unknown output kind (expected .fap, .fap.gz, .fba, .mp4, .xmt, .json, .svg, .pdf, .csv, .png, .webm or .html)" +
-                        (extension.empty() ? std::string() : did_you_mean(extension, extensions)));
+  return unknown_output_kind(request.path, request.kind);
 }
 
 FramesSeen frames_seen(const Loaded& loaded) {
@@ -99,10 +85,10 @@ ConvertResult convert(const std::string& input, const std::vector<OutputRequest>
   ConvertResult result;
   std::vector<const OutputFormat*> writers;
   if ((result.error = find_writers(outputs, writers))) return result;
-  // A long .fap to .fba or .fap goes through without its frames in memory.
+  // The one engine: when the input's row gives a frame source and every writer's row takes frames
+  // one at a time, they go through without the frames in memory; else the input is loaded whole
+  // (and, a script, rendered) and each writer gets the loaded value.
   if (auto streamed = convert_streamed(input, outputs, writers, options)) return std::move(*streamed);
-  // So does a script's animation, rendered frame by frame.
-  if (auto streamed = convert_script_streamed(input, outputs, writers, options)) return std::move(*streamed);
   if (options.progress) options.progress("reading " + input, 0, static_cast<std::int64_t>(outputs.size()) + 1);
   // Curves only when a writer reads them (the curves JSON, the plots): half of a script's compile.
   // A script's frames are kept only when a writer reads them; else they are rendered and dropped,

@@ -1,7 +1,7 @@
-// The .fap text of a streamed conversion, made once and handed in pieces to a temporary file per
-// .fap output (AtomicFile): an output appears only when committed, so an error found late leaves
-// nothing. Shared by the streamed frame-file and script conversions; the option and error helpers
-// also by the .fap writer. Private to the pipeline.
+// The .fap text of a streamed conversion, made as the frames come and handed in pieces to a
+// temporary file per .fap output (AtomicFile): an output appears only when committed, so an error
+// found late leaves nothing. The .fap row's frame writer uses it (formats/format_fap.cpp); the
+// option and error helpers serve the loaded .fap writer too. Private to the pipeline.
 #pragma once
 
 #include <cstddef>

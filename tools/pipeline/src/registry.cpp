@@ -1,5 +1,6 @@
 #include "fapc/pipeline/registry.hpp"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "fapc/codec/did_you_mean.hpp"
@@ -97,20 +98,78 @@ const InputFormat* reader_for(const std::string& path, const ConvertOptions& opt
   return options.input_kind.empty() ? formats().input_for(path) : formats().input_named(options.input_kind);
 }
 
-Diagnostic unknown_input_kind(const std::string& path, const ConvertOptions& options) {
-  std::vector<std::string> kinds, extensions;
-  for (const InputFormat& f : formats().inputs()) {
-    kinds.push_back(f.kind);
-    extensions.insert(extensions.end(), f.extensions.begin(), f.extensions.end());
-  }
-  if (!options.input_kind.empty())
-    return make_error(ErrorKind::usage, Location{path, 0, 0, -1},
-                      "unknown input kind '" + options.input_kind + "'" + did_you_mean(options.input_kind, kinds) +
-                          " (fapc formats lists them)");
+namespace {
+
+template <class Format>
+std::vector<const Format*> rows_where(const std::vector<Format>& table, const std::function<bool(const Format&)>& keep) {
+  std::vector<const Format*> rows;
+  for (const Format& f : table)
+    if (!keep || keep(f)) rows.push_back(&f);
+  return rows;
+}
+
+// "a, b or c".
+std::string spelt_out(const std::vector<std::string>& names) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  return out;
+}
+
+template <class Format>
+std::vector<std::string> kinds_of(const std::vector<const Format*>& rows) {
+  std::vector<std::string> kinds;
+  for (const Format* f : rows) kinds.push_back(f->kind);
+  return kinds;
+}
+
+template <class Format>
+std::vector<std::string> extensions_of(const std::vector<const Format*>& rows) {
+  std::vector<std::string> extensions;
+  for (const Format* f : rows)
+    for (const std::string& ext : f->extensions)
+      if (std::find(extensions.begin(), extensions.end(), ext) == extensions.end()) extensions.push_back(ext);
+  return extensions;
+}
+
+// An unknown kind by name (usage: what the caller typed) or by extension (unsupported: the file).
+template <class Format>
+Diagnostic unknown_kind(const std::vector<Format>& table, const std::string& path, const std::string& kind,
+                        bool outputs, ErrorKind named_kind) {
+  if (!kind.empty()) return make_error(named_kind, Location{path, 0, 0, -1}, unknown_kind_message(kind, outputs));
+  const auto rows = rows_where<Format>(table, {});
   const std::string extension = std::filesystem::path(path).extension().string();
   return make_error(ErrorKind::unsupported, Location{path, 0, 0, -1},
-                    "unknown input kind (expected .fap, .fap.gz, .fba, .mp4, .mimic, .fml or .xmt)" +
-                        (extension.empty() ? std::string() : did_you_mean(extension, extensions)));
+                    std::string(outputs ? "unknown output kind" : "unknown input kind") + " (expected " +
+                        spelt_out(extensions_of(rows)) + ")" +
+                        (extension.empty() ? std::string() : did_you_mean(extension, extensions_of(rows))));
+}
+
+}  // namespace
+
+std::vector<const InputFormat*> inputs_where(const std::function<bool(const InputFormat&)>& keep) {
+  return rows_where(formats().inputs(), keep);
+}
+std::vector<const OutputFormat*> outputs_where(const std::function<bool(const OutputFormat&)>& keep) {
+  return rows_where(formats().outputs(), keep);
+}
+std::string kind_list(const std::vector<const InputFormat*>& rows) { return spelt_out(kinds_of(rows)); }
+std::string kind_list(const std::vector<const OutputFormat*>& rows) { return spelt_out(kinds_of(rows)); }
+std::string extension_list(const std::vector<const InputFormat*>& rows) { return spelt_out(extensions_of(rows)); }
+std::string extension_list(const std::vector<const OutputFormat*>& rows) { return spelt_out(extensions_of(rows)); }
+
+std::string unknown_kind_message(const std::string& kind, bool outputs) {
+  const std::vector<std::string> kinds = outputs ? kinds_of(outputs_where()) : kinds_of(inputs_where());
+  return std::string(outputs ? "unknown output kind '" : "unknown input kind '") + kind + "'" +
+         did_you_mean(kind, kinds) + " (fapc formats lists them)";
+}
+
+Diagnostic unknown_input_kind(const std::string& path, const ConvertOptions& options) {
+  return unknown_kind(formats().inputs(), path, options.input_kind, false, ErrorKind::usage);
+}
+
+Diagnostic unknown_output_kind(const std::string& path, const std::string& kind) {
+  return unknown_kind(formats().outputs(), path, kind, true, ErrorKind::unsupported);
 }
 
 Result<Loaded> load(const std::string& path, const ConvertOptions& options) {

@@ -23,7 +23,7 @@ Result<Profile> profile_for(const ConvertOptions& options);
 // How a timeline read from `name` is rendered: --fps, --max-frames, the profile, the name.
 RenderOptions render_options_for(const std::string& name, const Profile& profile, const ConvertOptions& options);
 
-// Frames of `timeline` one at a time (streamed_render.cpp), with render_frames' checks and errors
+// Frames of `timeline` one at a time (timeline_source.cpp), with render_frames' checks and errors
 // as loaded_from_timeline reports them; `profile` must outlive the stream.
 Result<FrameStream> stream_frames(const Timeline& timeline, const std::string& name, const Profile& profile,
                                   const ConvertOptions& options);

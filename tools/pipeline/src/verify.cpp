@@ -12,6 +12,7 @@
 #include "fapc/codec/file_io.hpp"
 #include "fapc/pipeline/fba_io.hpp"
 #include "fapc/pipeline/registry.hpp"
+#include "verify_streams.hpp"
 
 namespace fapc::pipeline {
 
@@ -111,7 +112,9 @@ VerifyResult reencode_matches(const std::string& path, const DecodedFba& decoded
   return failure("re-encoding the decoded frames does not give the same bytes (a stream fapc did not write?)");
 }
 
-VerifyResult verify_stream(const std::string& path, const Limits& limits) {
+}  // namespace
+
+VerifyResult verify_fba_file(const std::string& path, const Limits& limits) {
   auto raw = read_file_bytes(path, limits);
   if (!raw) return failed(raw.error());
   const std::vector<std::uint8_t> bytes(raw->begin(), raw->end());
@@ -125,6 +128,8 @@ VerifyResult verify_stream(const std::string& path, const Limits& limits) {
   return reencode_matches(path, *decoded, aligned, [&](const EncodedFba& again) { return again.bytes == bytes; },
                           bytes.size());
 }
+
+namespace {
 
 // An MP4's FBA track: each sample must be the plane fapc writes for its frame, with its duration
 // and sync flag.
@@ -160,7 +165,9 @@ std::optional<Diagnostic> audio_mismatch(const std::string& path, const xmt::Mp4
                     "verification failed: " + why + " (more than one frame, " + seconds(frame) + ", apart)");
 }
 
-VerifyResult verify_mp4(const std::string& path, const Limits& limits) {
+}  // namespace
+
+VerifyResult verify_mp4_file(const std::string& path, const Limits& limits) {
   auto raw = read_file_bytes(path, limits);
   if (!raw) return failed(raw.error());
   auto mp4 = xmt::read_mp4(xmt::Bytes(raw->begin(), raw->end()), path);
@@ -186,6 +193,8 @@ VerifyResult verify_mp4(const std::string& path, const Limits& limits) {
   return reencode_matches(path, fba->decoded, true, same, bytes);
 }
 
+namespace {
+
 VerifyResult verify_input(const std::string& path, const ConvertOptions& options) {
   auto loaded = load(path, options);
   if (!loaded) return failed(loaded.error());
@@ -205,10 +214,9 @@ VerifyResult verify_input(const std::string& path, const ConvertOptions& options
 }  // namespace
 
 VerifyResult verify(const std::string& path, const ConvertOptions& options) {
+  // An FBA stream re-encodes to the same bytes; any other input encodes, then is checked.
   const InputFormat* format = reader_for(path, options);
-  const std::string kind = format ? format->kind : "";
-  if (kind == "fba") return verify_stream(path, options.limits);
-  if (kind == "mp4") return verify_mp4(path, options.limits);
+  if (format && format->verify_stream) return format->verify_stream(path, options.limits);
   return verify_input(path, options);
 }
 

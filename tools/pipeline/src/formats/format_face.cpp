@@ -43,10 +43,17 @@ Result<std::string> write_html(const Loaded& loaded, const std::string& path, co
                          std::filesystem::path(path).stem().string(), path);
 }
 
+// A picture of the face, and with the video and the page the voice when the input has one.
+OutputFormat face_output(OutputFormat format, bool with_voice) {
+  format.picture = true;
+  format.uses_audio = with_voice;
+  return format;
+}
+
 }  // namespace
 
-OutputFormat png_output() { return {"png", {".png"}, write_png}; }
-OutputFormat webm_output() { return {"webm", {".webm"}, write_webm}; }
-OutputFormat html_output() { return {"html", {".html"}, write_html}; }
+OutputFormat png_output() { return face_output({"png", {".png"}, write_png}, false); }
+OutputFormat webm_output() { return face_output({"webm", {".webm"}, write_webm}, true); }
+OutputFormat html_output() { return face_output({"html", {".html"}, write_html}, true); }
 
 }  // namespace fapc::pipeline::builtin

@@ -1,7 +1,10 @@
-// .fba raw MPEG-4 FBA streams, in and out; `fapc info` gets the stream's statistics.
+// .fba raw MPEG-4 FBA streams, in and out; `fapc info` gets the stream's statistics. Streamed, a
+// .fba is decoded from its mapping frame by frame, and written by the encoder fed so.
 #include <filesystem>
 
 #include "fapc/pipeline/fba_io.hpp"
+#include "../fba_frame_writer.hpp"
+#include "../verify_streams.hpp"
 #include "formats.hpp"
 
 namespace fapc::pipeline::builtin {
@@ -59,9 +62,73 @@ Result<std::string> write_fba(const Loaded& loaded, const std::string& path, con
   return std::string(encoded->bytes.begin(), encoded->bytes.end());
 }
 
+// A .fba decoded twice, or once onto the tape: its frames have their numbers as soon as decoded.
+class FbaSource : public FrameSource {
+ public:
+  FbaSource(MappedFile file, const std::string& path, const ConvertOptions& options) : file_(std::move(file)) {
+    options_.file = path;
+    options_.max_frames = options.limits.max_frames;
+    name_ = std::filesystem::path(path).stem().string();
+  }
+
+  bool placed_in_first_pass() const override { return true; }
+
+ protected:
+  Result<SourceFacts> read(const FapFrameSink& check) override {
+    SourceFacts facts;
+    auto decoded = decode_fba(bytes(), options_, [&](const FapFrame& frame) {
+      if (facts.frames++ == 0) facts.first_number = frame.number;
+      facts.last_number = frame.number;
+      return check(frame);
+    });
+    if (!decoded) return decoded.error();
+    facts.name = name_;
+    facts.fps = decoded->sequence.fps;
+    facts.warnings = std::move(decoded->warnings);
+    frames_ = facts.frames;
+    return facts;
+  }
+
+  Status read_again(const FapFrameSink& code) override {
+    std::size_t k = 0;
+    auto again = decode_fba(bytes(), options_, [&](const FapFrame& frame) {
+      ++k;
+      return code(frame);
+    });
+    if (!again || k != frames_)
+      return make_error(ErrorKind::io, Location{options_.file, 0, 0, -1}, "the file changed while it was read");
+    return ok_status();
+  }
+  std::size_t frames_read() const override { return frames_; }
+
+ private:
+  std::span<const std::uint8_t> bytes() const {
+    return {reinterpret_cast<const std::uint8_t*>(file_.bytes().data()), file_.bytes().size()};
+  }
+  MappedFile file_;
+  FbaDecodeOptions options_;
+  std::string name_;
+  std::size_t frames_ = 0;
+};
+
 }  // namespace
 
-InputFormat fba_input() { return {"fba", {".fba", ".fba.gz"}, load_fba}; }
-OutputFormat fba_output() { return {"fba", {".fba"}, write_fba}; }
+InputFormat fba_input() {
+  InputFormat format{"fba", {".fba", ".fba.gz"}, load_fba};
+  format.frames = [](MappedFile file, const std::string& path, const ConvertOptions& options) {
+    return std::unique_ptr<FrameSource>(std::make_unique<FbaSource>(std::move(file), path, options));
+  };
+  format.verify_stream = verify_fba_file;
+  return format;
+}
+
+OutputFormat fba_output() {
+  OutputFormat format{"fba", {".fba"}, write_fba};
+  format.frame_writer = [](const std::string& path, const std::string& input, const ConvertOptions& options,
+                           FrameSource& source) {
+    return std::unique_ptr<FrameWriter>(std::make_unique<FbaFrameWriter>(path, input, options, source, false));
+  };
+  return format;
+}
 
 }  // namespace fapc::pipeline::builtin

@@ -48,6 +48,10 @@ Result<Loaded> load_fml(const std::string& path, const ConvertOptions& options) 
 
 }  // namespace
 
-InputFormat fml_input() { return {"fml", {".fml"}, load_fml}; }
+InputFormat fml_input() {
+  InputFormat format{"fml", {".fml"}, load_fml};
+  format.timeline = true;
+  return format;
+}
 
 }  // namespace fapc::pipeline::builtin

@@ -34,6 +34,10 @@ Result<Loaded> load_mimic(const std::string& path, const ConvertOptions& options
 
 }  // namespace
 
-InputFormat mimic_input() { return {"mimic", {".mimic", ".mim"}, load_mimic}; }
+InputFormat mimic_input() {
+  InputFormat format{"mimic", {".mimic", ".mim"}, load_mimic};
+  format.timeline = true;
+  return format;
+}
 
 }  // namespace fapc::pipeline::builtin

@@ -9,6 +9,8 @@
 #include "fapc/mpeg4/mp4_reader.hpp"
 #include "fapc/mpeg4/mp4_writer.hpp"
 #include "../audio_io.hpp"
+#include "../fba_frame_writer.hpp"
+#include "../verify_streams.hpp"
 #include "formats.hpp"
 
 namespace fapc::pipeline::builtin {
@@ -154,9 +156,49 @@ Result<std::string> write_mp4_file(const Loaded& loaded, const std::string& path
   return bytes;
 }
 
+// Streamed (frames without a voice): the aligned encoding, then the file through a temporary
+// one, in pieces, with the bytes of write_mp4_file.
+class Mp4FrameWriter : public FbaFrameWriter {
+ public:
+  Mp4FrameWriter(const std::string& path, const std::string& input, const ConvertOptions& options, FrameSource& source)
+      : FbaFrameWriter(path, input, options, source, /*align_planes=*/true) {}
+
+  Status commit() override {
+    // As write_mp4_file: an empty input would make a track without samples.
+    if (facts_.frames == 0)
+      return make_error(Location{input_, 0, 0, -1}, "no frames to write: an MP4 FBA track needs at least one");
+    if (error_) return *error_;
+    auto file = AtomicFile::create(path_);
+    if (!file) return file.error();
+    const Status written = xmt::write_mp4(fba_track_view(*encoded_, facts_.fps), nullptr,
+                                          [&](std::span<const std::uint8_t> bytes) {
+                                            return file->write({reinterpret_cast<const char*>(bytes.data()), bytes.size()});
+                                          });
+    if (!written) {
+      Diagnostic error = written.error();
+      if (error.where.file.empty()) error.where.file = input_;
+      return error;
+    }
+    return file->commit();
+  }
+};
+
 }  // namespace
 
-InputFormat mp4_input() { return {"mp4", {".mp4"}, load_mp4}; }
-OutputFormat mp4_output() { return {"mp4", {".mp4"}, write_mp4_file}; }
+InputFormat mp4_input() {
+  InputFormat format{"mp4", {".mp4"}, load_mp4};
+  format.verify_stream = verify_mp4_file;
+  return format;
+}
+
+OutputFormat mp4_output() {
+  OutputFormat format{"mp4", {".mp4"}, write_mp4_file};
+  format.uses_audio = true;
+  format.frame_writer = [](const std::string& path, const std::string& input, const ConvertOptions& options,
+                           FrameSource& source) {
+    return std::unique_ptr<FrameWriter>(std::make_unique<Mp4FrameWriter>(path, input, options, source));
+  };
+  return format;
+}
 
 }  // namespace fapc::pipeline::builtin

@@ -9,7 +9,8 @@ Result<std::string> write_timeline(const Loaded& loaded, const std::string& path
                                    const ConvertOptions&) {
   if (!loaded.timeline) {
     return make_error(ErrorKind::unsupported, Location{path, 0, 0, -1},
-                      "this input has frames, not a timeline (.timeline needs Mimic, FML or XMT-Omega)");
+                      "this input has frames, not a timeline (.timeline needs a script: " +
+                          kind_list(inputs_where([](const InputFormat& f) { return f.timeline; })) + ")");
   }
   return dump(*loaded.timeline);
 }

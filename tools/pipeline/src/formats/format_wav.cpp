@@ -18,6 +18,10 @@ Result<std::string> write_wav(const Loaded& loaded, const std::string& path, con
 
 }  // namespace
 
-OutputFormat wav_output() { return {"wav", {".wav"}, write_wav, /*uses_curves=*/false, /*uses_frames=*/false}; }
+OutputFormat wav_output() {
+  OutputFormat format{"wav", {".wav"}, write_wav, /*uses_curves=*/false, /*uses_frames=*/false};
+  format.uses_audio = true;
+  return format;
+}
 
 }  // namespace fapc::pipeline::builtin

@@ -41,7 +41,11 @@ Result<std::string> write_bifs_commands(const Loaded& loaded, const std::string&
 
 }  // namespace
 
-OutputFormat xmta_scene_output() { return {"xmt", {".xmt"}, write_fba_scene}; }
+OutputFormat xmta_scene_output() {
+  OutputFormat format{"xmt", {".xmt"}, write_fba_scene};
+  format.uses_audio = true;  // the voice's configuration
+  return format;
+}
 OutputFormat xmta_commands_output() { return {"xmt-bifs", {".bifs.xmt"}, write_bifs_commands}; }
 
 }  // namespace fapc::pipeline::builtin

@@ -87,6 +87,10 @@ Result<Loaded> load_xmto(const std::string& path, const ConvertOptions& options)
 
 }  // namespace
 
-InputFormat xmto_input() { return {"xmt", {".xmt"}, load_xmto}; }
+InputFormat xmto_input() {
+  InputFormat format{"xmt", {".xmt"}, load_xmto};
+  format.timeline = true;
+  return format;
+}
 
 }  // namespace fapc::pipeline::builtin

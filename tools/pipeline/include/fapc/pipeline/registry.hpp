@@ -1,17 +1,28 @@
 // The readers and writers, in two tables (the model: pandoc's reader and writer tables). A
-// format is one entry: its kind name, its extensions and one function. The built-in tables are
-// assembled by one function from the list in src/registry.cpp, not by static initialisers, which
-// a static link may drop.
+// format is one entry: its kind name, its extensions, one function, and what else the pipeline may
+// do with it (its capabilities: fields with defaults, so that an entry of a kind name, extensions
+// and a function is a whole reader or writer). The row is the only place that knows a format:
+// nothing outside the entries compares kind names or extensions (tests/pipeline/
+// one_place_per_format_test.cpp). The built-in tables are assembled by one function from the list
+// in src/registry.cpp, not by static initialisers, which a static link may drop.
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "fapc/codec/file_io.hpp"
 #include "fapc/pipeline/loaded.hpp"
 #include "fapc/pipeline/options.hpp"
+#include "fapc/pipeline/verify.hpp"
 
 namespace fapc::pipeline {
+
+// The one engine's pieces (src/frame_source.hpp, private to the pipeline): frames read one at a
+// time, and a writer that takes them so.
+class FrameSource;
+class FrameWriter;
 
 struct InputFormat {
   std::string kind;                     // "fap", "fba", "mimic", ...
@@ -19,6 +30,17 @@ struct InputFormat {
   std::function<Result<Loaded>(const std::string& path, const ConvertOptions&)> load;
   std::string carries{};                // what a file of this kind holds, for `fapc formats`
   std::vector<std::string> options{};   // the command-line options that change how it is read
+
+  // Capabilities: what the one engine (convert, docs/architecture.md) may do besides loading.
+  // A script: lowered to a timeline (ConvertOptions::render false), then rendered frame by frame.
+  bool timeline = false;
+  // Frames read one at a time from the mapped file (gzip and empty files are loaded whole); null
+  // for a reader that only loads.
+  std::function<std::unique_ptr<FrameSource>(MappedFile file, const std::string& path, const ConvertOptions&)>
+      frames{};
+  // An FBA stream, bare or in a container: `fapc decode` reads it, and `verify` checks with this
+  // that it re-encodes to the same bytes; null for every other input (encoded, then checked).
+  std::function<VerifyResult(const std::string& path, const Limits&)> verify_stream{};
 };
 
 struct OutputFormat {
@@ -35,6 +57,18 @@ struct OutputFormat {
   bool uses_frames = true;
   std::string carries{};               // what a file of this kind holds, for `fapc formats`
   std::vector<std::string> options{};  // the command-line options that change what is written
+
+  // Capabilities (docs/architecture.md, "One engine"):
+  // The writer reads Loaded::audio, the voice. A script's voice is known only once it is lowered,
+  // so such an output takes a script the loaded way.
+  bool uses_audio = false;
+  // It draws the face (what `fapc render` writes).
+  bool picture = false;
+  // It takes the frames one at a time: the writer of output `path` made from `input` whose frames
+  // come from `source`. With every requested writer so, convert() streams; null: it needs them all.
+  std::function<std::unique_ptr<FrameWriter>(const std::string& path, const std::string& input,
+                                             const ConvertOptions&, FrameSource& source)>
+      frame_writer{};
 };
 
 class Registry {
@@ -65,6 +99,21 @@ const InputFormat* reader_for(const std::string& path, const ConvertOptions& opt
 
 // "unknown input kind 'fbx'; did you mean fba?" or, by extension, the kinds expected.
 Diagnostic unknown_input_kind(const std::string& path, const ConvertOptions& options);
+// The same for outputs: `kind` (empty: by the extension of `path`) names no writer.
+Diagnostic unknown_output_kind(const std::string& path, const std::string& kind);
+// The message alone, for a kind given by name: "unknown input kind 'fbx'; did you mean fba? (fapc
+// formats lists them)". `outputs` picks the table. Used by every command and by batch.
+std::string unknown_kind_message(const std::string& kind, bool outputs);
+
+// The tables' kinds and extensions as a list for people: "fap, fba or mp4", ".fap, .fba or .mp4".
+// `which` picks the rows (every row when empty).
+std::string kind_list(const std::vector<const InputFormat*>& rows);
+std::string kind_list(const std::vector<const OutputFormat*>& rows);
+std::string extension_list(const std::vector<const InputFormat*>& rows);
+std::string extension_list(const std::vector<const OutputFormat*>& rows);
+// Every row of a table, or those with a capability.
+std::vector<const InputFormat*> inputs_where(const std::function<bool(const InputFormat&)>& keep = {});
+std::vector<const OutputFormat*> outputs_where(const std::function<bool(const OutputFormat&)>& keep = {});
 
 // Loads any input the built-in readers know (by --from or extension), or says why not (unsupported for an
 // unknown extension). Includes and operands inside inputs are loaded through this too.
