@@ -31,10 +31,10 @@ set(CPACK_PACKAGE_NAME fapc)
 set(CPACK_PACKAGE_VENDOR "the fapc authors")
 set(CPACK_PACKAGE_CONTACT "fapc authors <fapc@example.org>")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "MPEG-4 face animation transcoder")
-# (Lines under 80 characters: Debian's limit for a description.)
+# (Lines under 80 characters, none starting with a full stop: Debian's rules for a description.)
 string(CONCAT CPACK_PACKAGE_DESCRIPTION
-    "fapc turns authored facial animation (Mimic, FML, XMT-Omega scripts,\n"
-    ".fap files) into MPEG-4 face animation (FBA streams, MP4) and back,\n"
+    "fapc turns authored facial animation (Mimic, FML and XMT-Omega scripts,\n"
+    "FAP text files) into MPEG-4 face animation (FBA streams, MP4) and back,\n"
     "renders it as a face, and converts whole data sets in parallel, also\n"
     "as a sharded, resumable batch on a cluster (Slurm, Kubernetes).")
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)

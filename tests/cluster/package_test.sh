@@ -22,7 +22,7 @@ depends=$(dpkg-deb -f "$deb" Depends)
 echo "Depends: $depends"
 
 # lintian: no error (warnings are reported, not fatal).
-lintian --fail-on error --no-tag-display-limit "$deb" | tee "$tmp/lintian.txt" || fail "lintian found errors"
+lintian --fail-on error --tag-display-limit 0 "$deb" | tee "$tmp/lintian.txt" || fail "lintian found errors"
 
 # What the program needs, from the package's own binary.
 mkdir -p "$tmp/x"
@@ -32,11 +32,12 @@ for doc in copyright changelog.Debian.gz; do [ -f "$tmp/x/usr/share/doc/fapc/$do
 [ -f "$tmp/x/usr/share/man/man1/fapc.1.gz" ] || fail "no manual page"
 [ -z "$(find "$tmp/x" -name '*.a' -o -name '*.hpp')" ] || fail "libraries or headers in the program's package"
 names=$(echo "$depends" | tr ',' '\n' | sed 's/^ *//; s/ .*//; s/|.*//')
+ldconfig -p > "$tmp/ldconfig.txt"  # (read from a file: awk stopping early must not break a pipe)
 for library in $(objdump -p "$tmp/x/usr/bin/fapc" | awk '/NEEDED/ {print $2}'); do
-  path=$(ldconfig -p | awk -v l="$library" '$1 == l && /x86-64/ {print $NF; exit}')
+  path=$(awk -v l="$library" '$1 == l && /x86-64/ {print $NF; exit}' "$tmp/ldconfig.txt")
   [ -n "$path" ] || fail "$library is not on this machine"
-  package=$(dpkg -S "$(realpath "$path")" 2> /dev/null | head -1 | cut -d: -f1) ||
-    package=$(dpkg -S "$path" | head -1 | cut -d: -f1)
+  # dpkg knows a library by the path its package installed (/lib or /usr/lib: merged /usr).
+  package=$( (dpkg -S "$(realpath "$path")" 2> /dev/null || dpkg -S "$path") | sed -n '1s/:.*//p')
   echo "$names" | grep -qx "$package" || fail "$library comes from $package, which Depends does not name"
 done
 
