@@ -56,6 +56,10 @@ const std::vector<CommandSpec> kCommands = {
     {"help", "[COMMAND]", "show the help of fapc or of one subcommand",
      "Without COMMAND, the list of subcommands; with one, its options. The other forms print what "
      "packagers install: the man page, the shell completions, the option tables of docs/cli.md."},
+    {"batch-report", "merge REPORT.json...", "merge the JSON reports of a batch's shards; name the jobs with no result",
+     "Reads the --report-json files of the tasks of a sharded batch (docs/cluster.md) and says what became "
+     "of every planned job: the failures, the jobs no task converted, the shards with no report. Exit status "
+     "0 only when every job converted; --report-json and --report write the merged reports."},
 };
 
 const std::vector<OptionSpec> kOptions = {
@@ -112,8 +116,9 @@ const std::vector<OptionSpec> kOptions = {
     {"title", 0, "TEXT", "the figure's title (default: the input's name)", "plot"},
     {"states", 0, "", "print one state of the result as 66 integers instead of writing it", "combine"},
     {"jobs", 'j', "N", "conversions at a time (default one per core)", "batch"},
-    {"report", 0, "FILE", "write a JUnit XML report of the inputs that ran", "batch", false, VC::file},
-    {"report-json", 0, "FILE", "write a JSON report of the inputs that ran (docs/json.md)", "batch", false, VC::file},
+    {"report", 0, "FILE", "write a JUnit XML report of the inputs that ran", "batch batch-report", false, VC::file},
+    {"report-json", 0, "FILE", "write a JSON report of the inputs that ran (docs/json.md)", "batch batch-report", false,
+     VC::file},
     {"keep-going", 0, "", "try every input even after a failure", "batch"},
     {"json", 0, "", "print the results as JSON on standard output", "verify info formats faps"},
     {"man", 0, "", "print the man page (roff)", "help"},
@@ -126,6 +131,13 @@ const std::vector<OptionSpec> kOptions = {
     {"max-decompressed-bytes", 0, "N", "refuse compressed inputs that inflate to more bytes (default 2^30)",
      FAPC_READERS},
     {"max-expansion", 0, "F", "refuse scripts that expand more than F times (default 100)", FAPC_READERS},
+    // A batch over several machines (docs/cluster.md).
+    {"files-from", 0, "LIST", "convert the files LIST names, one a line, relative to the one folder INPUT "
+     "(default the current folder); - reads standard input", "batch", false, VC::file},
+    {"shard", 0, "I/N", "convert shard I of N (counted from 0) of the planned jobs; default from "
+     "SLURM_ARRAY_TASK_ID or JOB_COMPLETION_INDEX", "batch"},
+    {"shards", 0, "N", "the shard count, for an index from SLURM_ARRAY_TASK_ID or JOB_COMPLETION_INDEX", "batch"},
+    {"force", 0, "", "convert every input, also those a completion record says are up to date", "batch"},
 };
 
 #undef FAPC_READERS

@@ -10,7 +10,9 @@
 #include <sstream>
 #include <thread>
 
-#include "fapc/codec/xml_escape.hpp"
+#include "fapc/pipeline/batch_merge.hpp"
+#include "fapc/pipeline/batch_resume.hpp"
+#include "fapc/pipeline/json_output.hpp"
 
 namespace fapc::pipeline {
 
@@ -38,10 +40,33 @@ bool contains(const fs::path& folder, const fs::path& path) {
 // Whether `path` is `folder` or inside it (`path` made absolute, "." and ".." and links resolved).
 bool inside(const fs::path& path, const fs::path& folder) { return contains(folder, fs::weakly_canonical(path)); }
 
+// The files of a --files-from list, relative to the base folder, checked: each a file under the
+// base, none under the output folder.
+Result<std::vector<std::string>> listed_files(const std::string& base, const fs::path& canonical_base,
+                                              const fs::path& out_folder, const std::vector<std::string>& listed) {
+  std::vector<std::string> files;
+  for (const std::string& entry : listed) {
+    fs::path relative = fs::path(entry).lexically_normal();
+    if (relative.is_absolute()) {
+      const fs::path canonical = fs::weakly_canonical(relative);
+      if (!contains(canonical_base, canonical)) return usage("listed file " + entry + " is not inside " + base);
+      relative = canonical.lexically_relative(canonical_base);
+    }
+    if (relative.empty() || *relative.begin() == "..") return usage("listed file " + entry + " is not inside " + base);
+    std::error_code ec;
+    if (!fs::is_regular_file(fs::path(base) / relative, ec))
+      return usage("listed file " + entry + " is not a file under " + base);
+    if (contains(out_folder, canonical_base / relative))
+      return usage("listed file " + entry + " is inside the output folder");
+    files.push_back(relative.string());
+  }
+  return files;
+}
+
 }  // namespace
 
 Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs, const std::string& out_dir,
-                                         const std::vector<std::string>& kinds) {
+                                         const std::vector<std::string>& kinds, const std::vector<std::string>* listed) {
   std::vector<const OutputFormat*> writers;
   for (const std::string& kind : kinds) {
     const OutputFormat* writer = formats().output_named(kind);
@@ -50,6 +75,8 @@ Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs,
   }
   if (kinds.empty()) return usage("no output kind in --to");
   std::error_code ec;
+  if (listed && (inputs.size() != 1 || !fs::is_directory(inputs.front(), ec)))
+    return usage("--files-from takes one folder INPUT, the one its paths are relative to (none: the current folder)");
   // Checked here, not by the command line, so every caller gets it: the error names the file.
   if (fs::exists(out_dir, ec) && !fs::is_directory(out_dir, ec))
     return make_error(ErrorKind::usage, Location{out_dir, 0, 0, -1},
@@ -75,7 +102,14 @@ Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs,
     // large batch: 20,000 readlink calls for 500 files.
     const fs::path canonical_input = fs::weakly_canonical(input);
     std::vector<std::string> files;  // relative to the folder
-    for (auto it = fs::recursive_directory_iterator(input); it != fs::recursive_directory_iterator(); ++it) {
+    if (listed) {
+      auto taken = listed_files(input, canonical_input, out_folder, *listed);
+      if (!taken) return taken.error();
+      files = std::move(*taken);
+    }
+    // A listed folder is not walked (the empty iterator is the walk's end).
+    for (auto it = listed ? fs::recursive_directory_iterator() : fs::recursive_directory_iterator(input);
+         it != fs::recursive_directory_iterator(); ++it) {
       const fs::path relative = it->path().lexically_relative(input);
       const auto is_output = [&] {
         return it->is_symlink() ? inside(it->path(), out_folder) : contains(out_folder, canonical_input / relative);
@@ -125,9 +159,20 @@ namespace {
 // One job, whatever happens inside: an exception becomes the job's error.
 BatchOutcome run_job(const BatchJob& job, const ConvertOptions& options, const BatchRunOptions& run) {
   BatchOutcome outcome;
-  outcome.ran = true;
   const auto start = std::chrono::steady_clock::now();
+  const auto finish = [&] {
+    outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return std::move(outcome);
+  };
+  if (run.records && !run.redo_all && run.records->complete(job)) {
+    outcome.up_to_date = true;
+    for (const OutputRequest& output : job.outputs) outcome.result.written.push_back(output.path);
+    return finish();
+  }
+  outcome.ran = true;
   try {
+    std::optional<FileStamp> input_stamp;
+    if (run.records) input_stamp = run.records->prepare(job);
     for (const OutputRequest& output : job.outputs) {
       std::error_code ec;
       const fs::path folder = fs::path(output.path).parent_path();
@@ -140,6 +185,8 @@ BatchOutcome run_job(const BatchJob& job, const ConvertOptions& options, const B
     }
     if (!outcome.result.error)
       outcome.result = run.convert ? run.convert(job, options) : convert(job.input, job.outputs, options);
+    if (run.records && outcome.result.ok())
+      if (Status recorded = run.records->record(job, input_stamp); !recorded) outcome.result.error = recorded.error();
   } catch (const std::exception& e) {
     outcome.result.error = make_error(ErrorKind::bad_input, Location{job.input, 0, 0, -1},
                                       std::string("internal error while converting: ") + e.what());
@@ -147,8 +194,7 @@ BatchOutcome run_job(const BatchJob& job, const ConvertOptions& options, const B
     outcome.result.error = make_error(ErrorKind::bad_input, Location{job.input, 0, 0, -1},
                                       "internal error while converting (unknown exception)");
   }
-  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return outcome;
+  return finish();
 }
 
 }  // namespace
@@ -165,7 +211,7 @@ std::vector<BatchOutcome> run_batch(const std::vector<BatchJob>& jobs, const Con
   // Hands every job finished in input order since the last call to in_order. Under `report`.
   const auto hand_over = [&] {
     for (; reported < jobs.size() && finished[reported]; ++reported)
-      if (run.in_order && outcomes[reported].ran) run.in_order(reported, outcomes[reported]);
+      if (run.in_order && (outcomes[reported].ran || outcomes[reported].up_to_date)) run.in_order(reported, outcomes[reported]);
   };
   const auto worker = [&] {
     for (std::size_t i; !stopping() && (i = next++) < jobs.size();) {
@@ -193,6 +239,11 @@ std::vector<BatchOutcome> run_batch(const std::vector<BatchJob>& jobs, const Con
 }
 
 std::string batch_summary_line(const BatchJob& job, const BatchOutcome& outcome) {
+  if (outcome.up_to_date) {
+    std::string line = job.input + ": up to date ->";
+    for (const OutputRequest& output : job.outputs) line += " " + output.path;
+    return line;
+  }
   if (!outcome.result.ok()) return "FAILED " + job.input;
   const ConvertResult::FramesSeen& seen = outcome.result.frames;
   std::ostringstream line;
@@ -203,27 +254,7 @@ std::string batch_summary_line(const BatchJob& job, const BatchOutcome& outcome)
 }
 
 std::string junit_report(const std::vector<BatchJob>& jobs, const std::vector<BatchOutcome>& outcomes) {
-  std::size_t ran = 0, failures = 0;
-  for (const BatchOutcome& o : outcomes) {
-    ran += o.ran;
-    failures += o.ran && !o.result.ok();
-  }
-  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuite name=\"fapc batch\" tests=\"" +
-                    std::to_string(ran) + "\" failures=\"" + std::to_string(failures) + "\">\n";
-  for (std::size_t i = 0; i < jobs.size() && i < outcomes.size(); ++i) {
-    const BatchOutcome& o = outcomes[i];
-    if (!o.ran) continue;  // stopped before it started: nothing to report
-    out += "  <testcase name=\"" + xml_escape(jobs[i].input, XmlPlace::attribute) + "\" time=\"" + std::to_string(o.seconds) + "\"";
-    if (o.result.ok()) {
-      out += "/>\n";
-      continue;
-    }
-    const Diagnostic& error = *o.result.error;
-    out += "><failure type=\"" + std::string(error_kind_name(error.kind)) + "\" message=\"" +
-           xml_escape(format_diagnostic(error), XmlPlace::attribute) + "\">" + xml_escape(batch_summary_line(jobs[i], o)) +
-           "</failure></testcase>\n";
-  }
-  return out + "</testsuite>\n";
+  return junit_from_report(batch_report_json(jobs, outcomes, false));
 }
 
 }  // namespace fapc::pipeline

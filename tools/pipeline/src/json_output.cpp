@@ -55,21 +55,22 @@ json verify_document(std::vector<json> files) {
 }
 
 json batch_report_json(const std::vector<BatchJob>& jobs, const std::vector<BatchOutcome>& outcomes,
-                       bool interrupted) {
+                       bool interrupted, const std::optional<Shard>& shard, std::size_t planned) {
   json list = json::array();
-  std::size_t ran = 0, failed = 0;
+  std::size_t ran = 0, failed = 0, up_to_date = 0;
   double seconds = 0;
   for (std::size_t i = 0; i < jobs.size() && i < outcomes.size(); ++i) {
     const BatchOutcome& o = outcomes[i];
     json job;
     job["input"] = jobs[i].input;
     job["ran"] = o.ran;
-    job["ok"] = o.ran && o.result.ok();
+    job["up_to_date"] = o.up_to_date;
+    job["ok"] = (o.ran && o.result.ok()) || o.up_to_date;
     job["seconds"] = o.seconds;
     json outputs = json::array();
     for (const OutputRequest& request : jobs[i].outputs) outputs.push_back(request.path);
     job["outputs"] = outputs;
-    job["written"] = o.result.written;
+    job["written"] = o.up_to_date ? json::array() : json(o.result.written);
     if (o.ran && o.result.ok()) {
       // result.frames, not result.loaded: streamed conversions and curve outputs hold no frames.
       const FramesSeen& seen = o.result.frames;
@@ -82,14 +83,17 @@ json batch_report_json(const std::vector<BatchJob>& jobs, const std::vector<Batc
     job["warnings"] = diagnostics_json(o.result.warnings);
     ran += o.ran;
     failed += o.ran && !o.result.ok();
+    up_to_date += o.up_to_date;
     seconds += o.seconds;
     list.push_back(std::move(job));
   }
   json out;
   out["schema_version"] = kJsonSchemaVersion;
+  out["shard"] = shard ? json{{"index", shard->index}, {"count", shard->count}} : json(nullptr);
+  out["planned"] = shard ? planned : jobs.size();
   out["jobs"] = std::move(list);
-  out["totals"] = {{"jobs", jobs.size()}, {"converted", ran - failed}, {"failed", failed},
-                   {"not_run", jobs.size() - ran}, {"interrupted", interrupted}, {"job_seconds", seconds}};
+  out["totals"] = {{"jobs", jobs.size()}, {"converted", ran - failed}, {"up_to_date", up_to_date}, {"failed", failed},
+                   {"not_run", jobs.size() - ran - up_to_date}, {"interrupted", interrupted}, {"job_seconds", seconds}};
   return out;
 }
 

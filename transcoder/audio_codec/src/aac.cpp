@@ -3,6 +3,7 @@
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavutil/channel_layout.h>
+#include <libavutil/dict.h>
 #include <libavutil/log.h>
 }
 
@@ -56,7 +57,7 @@ std::vector<std::uint8_t> aac_lc_mono_config(int sample_rate) {
   return out;
 }
 
-Result<AacStream> encode_aac(const AudioTrack& track, const std::string& where, int bit_rate) {
+Result<AacStream> encode_aac(const AudioTrack& track, const std::string& where, int bit_rate, AacCoder coder) {
   const Location at{where, 0, 0, -1};
   if (aac_frequency_index(track.sample_rate) < 0)
     return make_error(ErrorKind::unsupported, at,
@@ -79,7 +80,11 @@ Result<AacStream> encode_aac(const AudioTrack& track, const std::string& where, 
   c.context->time_base = AVRational{1, track.sample_rate};
   c.context->flags |= AV_CODEC_FLAG_GLOBAL_HEADER | AV_CODEC_FLAG_BITEXACT;
   c.context->thread_count = 1;
-  if (int e = avcodec_open2(c.context, aac, nullptr); e < 0) return failed("cannot open the AAC encoder", e);
+  AVDictionary* settings = nullptr;
+  av_dict_set(&settings, "aac_coder", coder == AacCoder::fast ? "fast" : "twoloop", 0);
+  const int opened = avcodec_open2(c.context, aac, &settings);
+  av_dict_free(&settings);
+  if (opened < 0) return failed("cannot open the AAC encoder", opened);
 
   AacStream out;
   out.sample_rate = track.sample_rate;

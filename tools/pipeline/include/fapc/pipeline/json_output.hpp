@@ -3,6 +3,7 @@
 // per document in docs/json/. Keys are snake_case; every figure is a field of its own.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/pipeline/batch.hpp"
+#include "fapc/pipeline/batch_shard.hpp"
 #include "fapc/pipeline/verify.hpp"
 
 namespace fapc::pipeline {
@@ -30,8 +32,10 @@ nlohmann::ordered_json error_document(const Diagnostic& d);
 nlohmann::ordered_json verify_file_json(const std::string& path, const VerifyResult& result, int exit_status);
 nlohmann::ordered_json verify_document(std::vector<nlohmann::ordered_json> files);
 
-// `batch --report-json`: {"schema_version", "jobs": [...], "totals": {...}}.
+// `batch --report-json`: {"schema_version", "shard", "planned", "jobs": [...], "totals": {...}}.
+// `planned`: the jobs of the whole batch, all shards together (without a shard, jobs.size()).
 nlohmann::ordered_json batch_report_json(const std::vector<BatchJob>& jobs, const std::vector<BatchOutcome>& outcomes,
-                                         bool interrupted);
+                                         bool interrupted, const std::optional<Shard>& shard = std::nullopt,
+                                         std::size_t planned = 0);
 
 }  // namespace fapc::pipeline
