@@ -1,7 +1,8 @@
 // Weights of a set of keys (ARKit shapes, action units) <-> FAP values, through a mapping table.
 // Forward, FAPs are the weighted sum of the keys' rows. The inverse, used by the writers, is the
 // bounded least-squares fit of the weights (each 0..1) to the FAPs the keys can move, every FAP's
-// error measured as a fraction of its legal range: it comes from the same table, so the two
+// error measured as a fraction of its legal range, with a tiny price on the total weight to choose
+// between equal fits: it comes from the same table, so the two
 // directions cannot disagree, and it is exact wherever the keys' rows are independent
 // (docs/bridges.md, "The inverse").
 #pragma once
@@ -27,8 +28,9 @@ class ShapeBasis {
   const std::vector<int>& faps_moved() const { return faps_moved_; }
 
   FapVector to_faps(const std::vector<double>& weights) const;
-  // Weights in 0..1 that best reproduce `faps` on faps_moved(). `start` (if its size fits) is where
-  // the search begins: the previous frame's weights make a track converge faster.
+  // Weights in 0..1 that best reproduce `faps` on faps_moved(), the least total weight among equal
+  // fits. `start` (if its size fits) is where the search begins; the writers start every frame
+  // from zero, since a start in a pair of shapes that undo each other would be kept.
   std::vector<double> from_faps(const FapVector& faps, const std::vector<double>& start = {}) const;
 
  private:
