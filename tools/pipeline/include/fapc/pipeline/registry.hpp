@@ -35,6 +35,9 @@ struct OutputFormat {
   bool uses_frames = true;
   std::string carries{};               // what a file of this kind holds, for `fapc formats`
   std::vector<std::string> options{};  // the command-line options that change what is written
+  // What this output cannot carry of the frames, as warnings (docs/bridges.md); computed for every
+  // output before any is written, so that --strict refuses before writing. Empty: nothing lost.
+  std::function<Diagnostics(const Loaded&, const std::string& path)> losses{};
 };
 
 class Registry {
