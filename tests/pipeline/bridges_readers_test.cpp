@@ -158,6 +158,10 @@ TEST(TrackerCsv, LimitsAreCheckedBeforeTheFramesAreMade) {
   EXPECT_EQ(long_take.error().kind, ErrorKind::limit_exceeded);
   EXPECT_EQ(long_take.error().where.line, 3);
   EXPECT_NE(long_take.error().message.find("--max-frames"), std::string::npos);
+  // A time too large for any frame number (the count is compared before it is an integer).
+  auto far = load_text(tmp, "c.csv", "timestamp, AU26_r\n0, 1\n1e308, 1\n", options);
+  ASSERT_FALSE(far.ok());
+  EXPECT_EQ(far.error().kind, ErrorKind::limit_exceeded);
   std::string wide = "timestamp";
   for (int i = 0; i < 5000; ++i) wide += ",c" + std::to_string(i);
   auto too_wide = load_text(tmp, "b.csv", wide + "\n");

@@ -27,12 +27,14 @@ Status Resampler::push(double time, const vocabulary::FapVector& values, const L
   }
   const double t = time - first_time_;
   // The frames whose time falls in (previous sample, this sample]; the first sample makes frame 0.
-  const std::int64_t last = static_cast<std::int64_t>(std::floor(t * fps_ + 1e-9));
-  if (last + 1 > limits_.max_frames) {
+  // Compared as a double first: a time of 1e308 s has no frame number an integer can hold.
+  const double frames = std::floor(t * fps_ + 1e-9) + 1;
+  if (!(frames <= static_cast<double>(limits_.max_frames))) {
     std::ostringstream what;
-    what << "the rows reach " << t << " s, " << last + 1 << " frames at " << fps_ << " fps";
+    what << "the rows reach " << t << " s, " << frames << " frames at " << fps_ << " fps";
     return limit_error(where, what.str(), Limit::frames, limits_);
   }
+  const auto last = static_cast<std::int64_t>(frames) - 1;
   for (; next_frame_ <= last; ++next_frame_) {
     const double at = static_cast<double>(next_frame_) / fps_;
     const double span = t - previous_time_;
