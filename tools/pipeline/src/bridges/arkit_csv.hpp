@@ -1,7 +1,7 @@
 // ARKit blendshape CSVs to FAPs through fapc's ARKit table: the Live Link Face app's takes
 // (Timecode, BlendShapeCount, the 52 shapes in PascalCase, head and eye angles) and the same 52
 // names in camelCase as MediaPipe's face landmarker gives them, `_neutral` included
-// (docs/bridges.md, "ARKit CSV").
+// (docs/bridges.md, "Inputs: OpenFace and ARKit CSVs").
 #pragma once
 
 #include <array>

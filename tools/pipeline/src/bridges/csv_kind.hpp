@@ -1,6 +1,6 @@
-// Which CSV a .csv input is, decided by its header line alone (docs/bridges.md, "Which CSV"):
-// OpenFace's, ARKit's, or fapc's own frames CSV (an output of `fapc plot` and `compile`, which is
-// not read back).
+// Which CSV a .csv input is, decided by its header line alone: OpenFace's, ARKit's, or fapc's own
+// frames CSV (an output of `fapc plot` and `compile`, which is not read back) (docs/bridges.md,
+// "Inputs: OpenFace and ARKit CSVs").
 #pragma once
 
 #include <string>

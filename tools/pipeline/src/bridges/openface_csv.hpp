@@ -1,6 +1,6 @@
 // OpenFace's FeatureExtraction CSV (2.0 and 1.x, and the column subsets other tools keep) to
 // FAPs: action unit intensities through fapc's AU table, head pose to FAPs 48-50, gaze to 23-26
-// (docs/bridges.md, "OpenFace CSV").
+// (docs/bridges.md, "Inputs: OpenFace and ARKit CSVs").
 #pragma once
 
 #include <string>
