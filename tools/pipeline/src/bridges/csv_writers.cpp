@@ -30,20 +30,27 @@ std::string timecode(std::int64_t frame, int fps) {
   return text;
 }
 
+// Calls row(k, values, weights) for every frame k of the face track: the values the face shows
+// and the basis's weights fitted to them, each frame on its own.
+template <class Row>
+void for_each_fitted_frame(const FapSequence& frames, const vocabulary::ShapeBasis& basis, Row row) {
+  const face::FaceTrack track(frames);
+  for (std::int64_t k = 0; k < track.frame_count(); ++k) {
+    const face::FapValues& values = track.at_frame(k);
+    row(k, values, basis.from_faps(values));
+  }
+}
+
 }  // namespace
 
 std::string write_arkit_csv(const FapSequence& frames) {
-  const face::FaceTrack track(frames);
-  const vocabulary::ShapeBasis& basis = arkit_basis();
   std::string out = "Timecode,BlendShapeCount";
   for (std::string_view name : vocabulary::arkit_shape_names()) out += "," + vocabulary::pascal_case(name);
   for (const ArkitAngle& angle : arkit_angle_columns()) out += "," + std::string(angle.name);
   out += '\n';
   const int fps = frames.fps > 0 ? frames.fps : 25;
-  std::vector<double> weights;
-  for (std::int64_t k = 0; k < track.frame_count(); ++k) {
-    const face::FapValues& values = track.at_frame(k);
-    weights = basis.from_faps(values);
+  for_each_fitted_frame(frames, arkit_basis(), [&](std::int64_t k, const face::FapValues& values,
+                                                   const std::vector<double>& weights) {
     out += timecode(k, fps);
     out += "," + std::to_string(vocabulary::kArkitShapeCount + arkit_angle_columns().size());
     for (double w : weights) out += ',', append_fixed(out, w, 6);
@@ -53,13 +60,11 @@ std::string write_arkit_csv(const FapSequence& frames) {
                    6);
     }
     out += '\n';
-  }
+  });
   return out;
 }
 
 std::string write_openface_csv(const FapSequence& frames) {
-  const face::FaceTrack track(frames);
-  const vocabulary::ShapeBasis& basis = openface_basis();
   // OpenFace 2.0's columns in its order, the subset fapc can fill, with its ", " separator.
   std::string out = "frame, face_id, timestamp, confidence, success, gaze_angle_x, gaze_angle_y, pose_Rx, pose_Ry, pose_Rz";
   for (int au : openface_intensity_units()) {
@@ -69,10 +74,8 @@ std::string write_openface_csv(const FapSequence& frames) {
   }
   out += '\n';
   const int fps = frames.fps > 0 ? frames.fps : 25;
-  std::vector<double> weights;
-  for (std::int64_t k = 0; k < track.frame_count(); ++k) {
-    const face::FapValues& v = track.at_frame(k);
-    weights = basis.from_faps(v);
+  for_each_fitted_frame(frames, openface_basis(), [&](std::int64_t k, const face::FapValues& v,
+                                                      const std::vector<double>& weights) {
     out += std::to_string(k + 1) + ", 0, ";  // OpenFace numbers frames from 1
     append_fixed(out, static_cast<double>(k) / fps, 3);
     out += ", 1, 1";  // fapc's frames are the face itself: full confidence, tracked
@@ -86,7 +89,7 @@ std::string write_openface_csv(const FapSequence& frames) {
       append_fixed(out, w * kFullIntensity, 2);
     }
     out += '\n';
-  }
+  });
   return out;
 }
 
