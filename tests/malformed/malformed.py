@@ -128,7 +128,7 @@ GOOD = {
 }
 EXT = {"fap": ".fap", "fapgz": ".fap.gz", "fba": ".fba", "mp4": ".mp4", "mimic": ".mimic",
        "fml": ".fml", "xmto": ".xmt", "xmta": ".xmt", "combine": ".combine", "profile": ".profile",
-       "pho": ".pho", "validate": ".xmt"}
+       "pho": ".pho", "validate": ".xmt", "csv": ".csv"}
 
 
 # Profiles and .pho files are not inputs of their own: a Mimic program or FML document uses them.
@@ -573,10 +573,40 @@ def batch_cases():
     ]
 
 
+def csv_cases():
+    """OpenFace and ARKit CSVs (docs/bridges.md): junk, numbers, sizes, and rows cut short."""
+    openface = "frame, timestamp, confidence, success, pose_Rx, AU26_r\n"
+    arkit = "Timecode,BlendShapeCount,JawOpen\n"
+    rng = random.Random(28)
+    cases = [
+        compile_case("csv.junk.empty", b""),
+        compile_case("csv.junk.nul-bytes", b"\0" * 4096),
+        compile_case("csv.junk.random", bytes(rng.randrange(256) for _ in range(4096))),
+        compile_case("csv.junk.long-line", b"7" * (1 << 20)),
+        compile_case("csv.junk.header-only", openface),
+        compile_case("csv.junk.wide-header", "timestamp," + ",".join("c%d" % i for i in range(100000)) + "\n"),
+        compile_case("csv.trunc.short-row", openface + "1, 0, 0.9, 1, 0.1, 2\n2, 0.04, 0.9\n"),
+        compile_case("csv.trunc.timecode", arkit + "10:00:00:00.000,3,0.5\n10:00:0\n"),
+        compile_case("csv.huge.day-long", openface + "1, 0, 0.9, 1, 0, 1\n2, 86400, 0.9, 1, 0, 1\n",
+                     extra=["--fps", "1000"]),
+        compile_case("csv.huge.timestamp-1e308", openface + "1, 0, 0.9, 1, 0, 1\n2, 1e308, 0.9, 1, 0, 1\n"),
+        compile_case("csv.wrong.time-goes-back", openface + "1, 5, 0.9, 1, 0, 1\n2, 4, 0.9, 1, 0, 1\n"),
+        compile_case("csv.diag.frames-csv", "frame,time_s,open_jaw\n0,0,100\n"),
+    ]
+    for label, number in [("nan", "nan"), ("inf", "inf"), ("huge", "1e999"), ("word", "x"), ("2^63", "9223372036854775808")]:
+        cases.append(compile_case("csv.numbers." + label, openface + "1, 0, 0.9, 1, 0, " + number + "\n",
+                                  exit=0 if label == "2^63" else 1,
+                                  diagnostic="warning" if label == "2^63" else "placed"))
+        cases.append(compile_case("csv.numbers.arkit-" + label, arkit + "10:00:00:00.000,3," + number + "\n",
+                                  exit=0 if label == "2^63" else 1,
+                                  diagnostic="warning" if label == "2^63" else "placed"))
+    return cases
+
+
 def all_cases():
     cases = (not_a_file_cases() + depth_cases() + cycle_cases() + huge_cases() + number_cases()
              + truncation_cases() + junk_cases() + wrong_result_cases() + diagnostic_cases()
-             + batch_cases())
+             + batch_cases() + csv_cases())
     names = [c.name for c in cases]
     duplicates = {n for n in names if names.count(n) > 1}
     if duplicates:

@@ -36,6 +36,15 @@ namespace {
 // Writes every output, the writers having been found already.
 void write_all(ConvertResult& result, const std::vector<const OutputFormat*>& writers,
                const std::vector<OutputRequest>& outputs, const ConvertOptions& options) {
+  // What the outputs lose is said (and refused under --strict) before anything is written.
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    if (!writers[i]->losses) continue;
+    for (Diagnostic& d : writers[i]->losses(result.loaded, outputs[i].path)) result.warnings.push_back(std::move(d));
+  }
+  if (options.strict && !result.warnings.empty()) {
+    result.error = strict_error(result.loaded.named(outputs.front().path), result.warnings.size());
+    return;
+  }
   // Progress counts the read (done before this) and each output written.
   const auto total = static_cast<std::int64_t>(outputs.size()) + 1;
   for (std::size_t i = 0; i < outputs.size(); ++i) {

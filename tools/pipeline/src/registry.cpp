@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "fapc/codec/did_you_mean.hpp"
+#include "formats/bridges.hpp"
 #include "formats/formats.hpp"
 #include "input_chain.hpp"
 
@@ -79,6 +80,19 @@ Registry built_in() {
   r.add(described(builtin::webm_output(), "a VP9 video of the face", {"size", "frame-rate"}));
   r.add(described(builtin::html_output(), "a page that plays the face in a browser", {"size", "frame-rate"}));
   r.add(described(builtin::wav_output(), "the voice (speech or a recording) as 16-bit PCM WAV", {"voice", "speech-rate"}));
+  r.add(described(builtin::tracker_csv_input(), "OpenFace or ARKit CSV, told by its header (docs/bridges.md)",
+                  {"fps", "max-frames"}));
+  r.add(described(builtin::openface_csv_input(), "OpenFace action units, pose and gaze (docs/bridges.md)",
+                  {"fps", "max-frames"}));
+  r.add(described(builtin::arkit_csv_input(), "ARKit blendshapes: Live Link Face or MediaPipe names",
+                  {"fps", "max-frames"}));
+  r.add(described(builtin::arkit_csv_output(),
+                  "ARKit blendshapes in Live Link Face's layout; loses FAPs no shape moves", {}));
+  r.add(described(builtin::openface_csv_output(),
+                  "OpenFace's 17 AU intensities, pose, gaze; loses FAPs no unit moves", {}));
+  r.add(described(builtin::viseme_json_output(),
+                  "FAP 1's visemes as OpenXR names and times; loses every other FAP", {}));
+  r.add(described(builtin::viseme_csv_output(), "the viseme track as CSV (start,end,viseme,mpeg4)", {}));
   return r;
 }
 

@@ -69,6 +69,9 @@ struct OutputFormat {
   std::function<std::unique_ptr<FrameWriter>(const std::string& path, const std::string& input,
                                              const ConvertOptions&, FrameSource& source)>
       frame_writer{};
+  // What this output cannot carry of the frames, as warnings (docs/bridges.md); computed for every
+  // output before any is written, so that --strict refuses before writing. Empty: nothing lost.
+  std::function<Diagnostics(const Loaded&, const std::string& path)> losses{};
 };
 
 class Registry {

@@ -1,0 +1,35 @@
+// The bridge outputs: ARKit CSV (.arkit.csv), OpenFace action units (.au.csv) and the viseme
+// track (.visemes.json, .visemes.csv); each says what it loses (bridges/losses.cpp).
+#include "bridges.hpp"
+#include "bridges/writers.hpp"
+
+namespace fapc::pipeline::builtin {
+
+namespace {
+
+OutputFormat bridge_output(std::string kind, std::string extension, std::string (*write)(const FapSequence&),
+                           std::string loss_format) {
+  OutputFormat format{std::move(kind), {std::move(extension)},
+                      [write](const Loaded& loaded, const std::string&, const ConvertOptions&) -> Result<std::string> {
+                        return write(loaded.frames);
+                      }};
+  format.losses = [loss_format](const Loaded& loaded, const std::string& path) {
+    return bridges::losses(loaded.frames, loss_format, path);
+  };
+  return format;
+}
+
+}  // namespace
+
+OutputFormat arkit_csv_output() { return bridge_output("arkit-csv", ".arkit.csv", bridges::write_arkit_csv, "arkit"); }
+OutputFormat openface_csv_output() {
+  return bridge_output("au-csv", ".au.csv", bridges::write_openface_csv, "openface");
+}
+OutputFormat viseme_json_output() {
+  return bridge_output("visemes", ".visemes.json", bridges::write_viseme_json, "visemes");
+}
+OutputFormat viseme_csv_output() {
+  return bridge_output("vis-csv", ".visemes.csv", bridges::write_viseme_csv, "visemes");
+}
+
+}  // namespace fapc::pipeline::builtin
