@@ -79,7 +79,7 @@ class BmlReader {
     if (root == nullptr) return make_error(Location{doc_.file(), 1, 1}, "an empty document");
     if (xml::local_name(root) != "bml")
       return doc_.error(root, "the root element is <" + std::string(xml::local_name(root)) + ">, not a BML <bml> block");
-    out_.dialect = "BML 1.0";
+    out_.dialect = dialect_of(root);
     Block block;
     if (!read_block(root, block)) return *error_;
     if (!schedule(block, 0)) return *error_;
@@ -97,6 +97,29 @@ class BmlReader {
   std::vector<ConstraintSource> sources_;
   bool warned_no_engine_ = false;
   std::int64_t counted_ = 0;
+
+  // The dialect (docs/bml.md, "Dialects"): BML 1.0 by its namespace; Greta/SEMAINE by its
+  // gretabml descriptions or the older mindmakers namespace; SmartBody by its lips, curves and
+  // recorded speech.
+  std::string dialect_of(const xmlNode* root) const {
+    const std::string_view ns = xml::namespace_uri(root);
+    if (ns == kBml10) return "BML 1.0";
+    bool greta = ns.find("mindmakers") != std::string_view::npos;
+    bool smartbody = false;
+    for (const xmlNode* child : doc_.children(root)) {
+      const std::string_view name = xml::local_name(child);
+      if (name == "lips" || name == "curves") smartbody = true;
+      for (const xmlNode* inner : doc_.children(child)) {
+        if (xml::local_name(inner) != "description") continue;
+        const std::string type = xml::attribute(inner, "type").value_or("");
+        if (type == "gretabml") greta = true;
+        if (type.starts_with("audio/")) smartbody = true;
+      }
+    }
+    if (smartbody) return "SmartBody";
+    if (greta) return "Greta/SEMAINE";
+    return "BML (no namespace)";
+  }
 
   bool fail(Diagnostic d) {
     if (!error_) error_ = std::move(d);
@@ -408,6 +431,14 @@ class BmlReader {
       const Behaviour& b = block.behaviours[i];
       if (!ids.emplace(b.id, i).second) {
         const Location& first = block.behaviours[ids[b.id]].where;
+        if (out_.dialect != "BML 1.0") {
+          // Greta's planners reuse ids; BML 1.0 forbids it. References name the first.
+          once_.report("duplicate id", with_code(make_warning(b.where, "a second behaviour with id '" + b.id + "' (the first is at line " +
+                                                                            std::to_string(first.line) + "): references name the first",
+                                                              doc_.line_text(b.where.line)),
+                                                 "bml.duplicate_id"));
+          continue;
+        }
         return fail(make_error(b.where, "a second behaviour with id '" + b.id + "' (the first is at line " +
                                             std::to_string(first.line) + ")",
                                doc_.line_text(b.where.line)));

@@ -364,8 +364,13 @@ class Solver {
         if (known[p]) t[p] = time_of(base + p);
       }
       if (!known[kStart]) {
+        // A start no constraint names is never before the block: the preparation is shortened.
         known[kStart] = true;
+        double first_named = std::numeric_limits<double>::infinity();
+        for (std::uint32_t p = 1; p < kStandardPoints; ++p)
+          if (known[p]) first_named = std::min(first_named, t[p]);
         t[kStart] = start_of(b);
+        if (!beh.rigid && t[kStart] < 0) t[kStart] = std::min(0.0, first_named);
       }
       std::uint32_t last = kStart;
       for (std::uint32_t p = 1; p < kStandardPoints; ++p) {
