@@ -65,6 +65,7 @@ struct Pending {
   SyncRef b;                     // the reference: t(a) = t(b) + b.offset (or >=)
   double a_offset = 0;           // a's own offset: t(a) + a_offset ... (constraints)
   bool reversed = false;         // at_least the other way round (before)
+  bool self = false;             // b is this behaviour's own start (Greta's times within a behaviour)
   int label = 0;
   const xmlNode* node = nullptr;
   std::string attribute;
@@ -238,6 +239,11 @@ class BmlReader {
       timing.own_label = label(node, "", b.id + " lasts " + format_seconds(b.speech->duration) + " as spoken");
     }
     const auto index = static_cast<std::uint32_t>(block.behaviours.size());
+    // Greta 0.x (SEMAINE) writes a behaviour's later points as times within it: a plain time
+    // earlier than a plain start is read from the start (docs/bml.md, "Dialects").
+    std::optional<double> plain_start;
+    if (out_.dialect != "BML 1.0")
+      if (const auto start = xml::attribute(node, "start")) plain_start = parse_seconds(*start);
     for (std::uint32_t p = 0; p < kStandardPoints; ++p) {
       const char* attribute = kPointNames[p];
       std::optional<std::string> value = xml::attribute(node, attribute);
@@ -253,6 +259,15 @@ class BmlReader {
       p_.behaviour = index;
       p_.point = p;
       p_.b = *ref;
+      if (p != kStart && plain_start && ref->absolute && ref->offset < *plain_start) {
+        p_.b.absolute = false;
+        p_.b.behaviour = b.id;
+        p_.b.sync = "start";
+        p_.self = true;
+        once_.report("relative time", with_code(doc_.warning(node, attribute, std::string(attribute) + " is earlier than start: read as "
+                                                                           "a time from the behaviour's start (Greta 0.x)"),
+                                                "bml.time_from_start"));
+      }
       p_.label = label(node, attribute, b.id + " " + attribute + "=\"" + std::string(xml::trim(*value)) + "\"");
       p_.node = node;
       p_.attribute = attribute;
@@ -463,7 +478,9 @@ class BmlReader {
         a_offset = mine.offset;
       }
       std::optional<PointRef> b;
-      if (!other.absolute) {
+      if (p.self) {
+        b = PointRef{p.behaviour, kStart};
+      } else if (!other.absolute) {
         b = point_of(block, ids, other, p);
         if (!b) return false;
       }
