@@ -50,22 +50,22 @@ const face::FacePose& neutral() {
 double dy(const face::FacePose& pose, P p) { return pose.at(p).y - neutral().at(p).y; }
 double dx(const face::FacePose& pose, P p) { return pose.at(p).x - neutral().at(p).x; }
 
+// A one-sided lexeme moves `moved` up (direction +1) or down (-1) and leaves its mirror `still`.
+void expect_one_side(const std::string& lexeme, P moved, P still, int direction) {
+  SCOPED_TRACE(lexeme);
+  const auto pose = pose_of(lexeme);
+  EXPECT_GT(direction * dy(pose, moved), kMoved);
+  EXPECT_NEAR(dy(pose, still), 0, 1e-9);
+}
+
 TEST(BmlLexemeFace, RaiseBrowsLiftsBothBrows) {
   const auto pose = pose_of("RAISE_BROWS");
   for (P p : {P::brow_l_inner, P::brow_r_inner, P::brow_l_outer, P::brow_r_outer}) EXPECT_GT(dy(pose, p), kMoved);
 }
 
-TEST(BmlLexemeFace, RaiseLeftBrowLiftsTheLeftOnly) {
-  const auto pose = pose_of("RAISE_LEFT_BROW");
-  EXPECT_GT(dy(pose, P::brow_l_mid), kMoved);
-  EXPECT_NEAR(dy(pose, P::brow_r_mid), 0, 1e-9);
-}
+TEST(BmlLexemeFace, RaiseLeftBrowLiftsTheLeftOnly) { expect_one_side("RAISE_LEFT_BROW", P::brow_l_mid, P::brow_r_mid, 1); }
 
-TEST(BmlLexemeFace, RaiseRightBrowLiftsTheRightOnly) {
-  const auto pose = pose_of("RAISE_RIGHT_BROW");
-  EXPECT_GT(dy(pose, P::brow_r_mid), kMoved);
-  EXPECT_NEAR(dy(pose, P::brow_l_mid), 0, 1e-9);
-}
+TEST(BmlLexemeFace, RaiseRightBrowLiftsTheRightOnly) { expect_one_side("RAISE_RIGHT_BROW", P::brow_r_mid, P::brow_l_mid, 1); }
 
 TEST(BmlLexemeFace, LowerBrowsBringsThemDownAndTogether) {
   const auto pose = pose_of("LOWER_BROWS");
@@ -75,17 +75,9 @@ TEST(BmlLexemeFace, LowerBrowsBringsThemDownAndTogether) {
   EXPECT_LT(dx(pose, P::brow_l_inner) - dx(pose, P::brow_r_inner), 0);
 }
 
-TEST(BmlLexemeFace, LowerLeftBrowLowersTheLeftOnly) {
-  const auto pose = pose_of("LOWER_LEFT_BROW");
-  EXPECT_LT(dy(pose, P::brow_l_inner), -kMoved);
-  EXPECT_NEAR(dy(pose, P::brow_r_inner), 0, 1e-9);
-}
+TEST(BmlLexemeFace, LowerLeftBrowLowersTheLeftOnly) { expect_one_side("LOWER_LEFT_BROW", P::brow_l_inner, P::brow_r_inner, -1); }
 
-TEST(BmlLexemeFace, LowerRightBrowLowersTheRightOnly) {
-  const auto pose = pose_of("LOWER_RIGHT_BROW");
-  EXPECT_LT(dy(pose, P::brow_r_inner), -kMoved);
-  EXPECT_NEAR(dy(pose, P::brow_l_inner), 0, 1e-9);
-}
+TEST(BmlLexemeFace, LowerRightBrowLowersTheRightOnly) { expect_one_side("LOWER_RIGHT_BROW", P::brow_r_inner, P::brow_l_inner, -1); }
 
 TEST(BmlLexemeFace, ObliqueBrowsRaiseTheInnerEndsAboveTheOuter) {
   const auto pose = pose_of("OBLIQUE_BROWS");
@@ -100,17 +92,9 @@ TEST(BmlLexemeFace, LowerMouthCornersPullsBothCornersDown) {
   EXPECT_LT(dy(pose, P::lip_r_corner_o), -kMoved);
 }
 
-TEST(BmlLexemeFace, LowerLeftMouthCornerPullsTheLeftDownOnly) {
-  const auto pose = pose_of("LOWER_LEFT_MOUTH_CORNER");
-  EXPECT_LT(dy(pose, P::lip_l_corner_o), -kMoved);
-  EXPECT_NEAR(dy(pose, P::lip_r_corner_o), 0, 1e-9);
-}
+TEST(BmlLexemeFace, LowerLeftMouthCornerPullsTheLeftDownOnly) { expect_one_side("LOWER_LEFT_MOUTH_CORNER", P::lip_l_corner_o, P::lip_r_corner_o, -1); }
 
-TEST(BmlLexemeFace, LowerRightMouthCornerPullsTheRightDownOnly) {
-  const auto pose = pose_of("LOWER_RIGHT_MOUTH_CORNER");
-  EXPECT_LT(dy(pose, P::lip_r_corner_o), -kMoved);
-  EXPECT_NEAR(dy(pose, P::lip_l_corner_o), 0, 1e-9);
-}
+TEST(BmlLexemeFace, LowerRightMouthCornerPullsTheRightDownOnly) { expect_one_side("LOWER_RIGHT_MOUTH_CORNER", P::lip_r_corner_o, P::lip_l_corner_o, -1); }
 
 TEST(BmlLexemeFace, RaiseMouthCornersLiftsBothCorners) {
   const auto pose = pose_of("RAISE_MOUTH_CORNERS");
@@ -118,17 +102,9 @@ TEST(BmlLexemeFace, RaiseMouthCornersLiftsBothCorners) {
   EXPECT_GT(dy(pose, P::lip_r_corner_o), kMoved);
 }
 
-TEST(BmlLexemeFace, RaiseLeftMouthCornerLiftsTheLeftOnly) {
-  const auto pose = pose_of("RAISE_LEFT_MOUTH_CORNER");
-  EXPECT_GT(dy(pose, P::lip_l_corner_o), kMoved);
-  EXPECT_NEAR(dy(pose, P::lip_r_corner_o), 0, 1e-9);
-}
+TEST(BmlLexemeFace, RaiseLeftMouthCornerLiftsTheLeftOnly) { expect_one_side("RAISE_LEFT_MOUTH_CORNER", P::lip_l_corner_o, P::lip_r_corner_o, 1); }
 
-TEST(BmlLexemeFace, RaiseRightMouthCornerLiftsTheRightOnly) {
-  const auto pose = pose_of("RAISE_RIGHT_MOUTH_CORNER");
-  EXPECT_GT(dy(pose, P::lip_r_corner_o), kMoved);
-  EXPECT_NEAR(dy(pose, P::lip_l_corner_o), 0, 1e-9);
-}
+TEST(BmlLexemeFace, RaiseRightMouthCornerLiftsTheRightOnly) { expect_one_side("RAISE_RIGHT_MOUTH_CORNER", P::lip_r_corner_o, P::lip_l_corner_o, 1); }
 
 TEST(BmlLexemeFace, OpenMouthDropsTheJawAndPartsTheLips) {
   const auto pose = pose_of("OPEN_MOUTH");
