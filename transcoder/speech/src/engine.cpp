@@ -28,6 +28,7 @@ std::mutex& engine_mutex() {
 struct Collect {
   std::vector<std::int16_t> samples;
   std::vector<std::pair<std::string, int>> phonemes;  // mnemonic, start in ms
+  std::vector<std::pair<int, int>> words;             // character position (from 1), start in ms
   std::size_t max_samples = 0;
   bool too_long = false;
 };
@@ -42,6 +43,8 @@ int on_samples(short* wav, int count, espeak_EVENT* events) {
       char name[9] = {};
       std::memcpy(name, e->id.string, 8);
       into->phonemes.emplace_back(name, e->audio_position);
+    } else if (e->type == espeakEVENT_WORD) {
+      into->words.emplace_back(e->text_position, e->audio_position);
     }
   }
   if (wav == nullptr || count <= 0) return 0;
@@ -138,6 +141,17 @@ Result<Utterance> speak(const SpeechRequest& request) {
       p.viseme = 0;
     }
     out.phonemes.push_back(std::move(p));
+  }
+  // eSpeak NG counts characters (UTF-8 sequences) from 1; callers want byte offsets.
+  std::size_t byte = 0;
+  int character = 1;
+  for (const auto& [position, ms] : collect.words) {
+    while (character < position && byte < request.text.size()) {
+      ++byte;
+      while (byte < request.text.size() && (static_cast<unsigned char>(request.text[byte]) & 0xC0) == 0x80) ++byte;
+      ++character;
+    }
+    out.words.push_back({byte, std::min(out.duration, ms / 1000.0)});
   }
   return out;
 }

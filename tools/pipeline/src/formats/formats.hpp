@@ -13,6 +13,8 @@ InputFormat mimic_input();
 InputFormat fml_input();
 InputFormat xmto_input();
 InputFormat combine_input();
+InputFormat bml_input();  // format_bml.cpp
+InputFormat xml_input();  // format_xml.cpp: by the root element
 
 OutputFormat fap_output();
 OutputFormat fba_output();

@@ -42,9 +42,17 @@ struct SpeechRequest {
   Location where;               // the element that asked, for errors and warnings
 };
 
+// Where one word of the request's text begins to be spoken (BML sync marks sit at words).
+struct SpokenWord {
+  std::size_t text_offset = 0;  // byte offset of the word in SpeechRequest::text
+  double begin = 0;             // seconds: the engine's time for the word
+  friend bool operator==(const SpokenWord&, const SpokenWord&) = default;
+};
+
 struct Utterance {
   AudioClip audio;                      // begin 0: the caller places it
   std::vector<SpokenPhoneme> phonemes;  // in time order, covering [0, duration)
+  std::vector<SpokenWord> words;        // in text order; empty when the engine gives no word events
   double duration = 0;
   Diagnostics warnings;                 // unknown phonemes and the like
 };

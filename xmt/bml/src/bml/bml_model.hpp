@@ -1,0 +1,78 @@
+// What the BML reader builds from a block before scheduling and lowering: its behaviours (what
+// each draws, with its default sync offsets for the solver) and the relations between their sync
+// points. lower_block() turns a solved block into clips.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bml/sync_solver.hpp"
+#include "fapc/codec/diagnostic.hpp"
+#include "fapc/transcoder/speech.hpp"
+#include "fapc/transcoder/timeline.hpp"
+
+namespace fapc::bml {
+
+enum class BehaviourKind : std::uint8_t {
+  face_lexeme,  // faceLexeme, faceShift lexeme=: a lexeme through its action units
+  face_facs,    // faceFacs: one action unit
+  gaze,         // gaze, gazeShift: the eyes (and head) turned by offsetAngle/offsetDirection
+  head,         // head: a lexeme (NOD, SHAKE, TILT...) repeated
+  head_direction,  // headDirectionShift: the head turned and held
+  speech,       // speech: visemes and the voice
+  wait,         // wait: time only
+  not_drawn,    // gesture, posture, locomotion, pointing, torso...: time only, reported once per kind
+};
+
+// What a speech says: its visemes and voice, and the time of each of its sync marks.
+struct SpokenText {
+  std::vector<VisemeSpan> visemes;
+  AudioClip audio;  // no samples when spoken by the letter table
+  double duration = 0;
+  std::vector<std::string> mark_ids;
+  std::vector<double> mark_times;  // seconds from the speech's start, per mark
+};
+
+struct Behaviour {
+  BehaviourKind kind = BehaviourKind::wait;
+  bool shift = false;  // faceShift, gazeShift, headDirectionShift: the new state holds afterwards
+  std::string id;
+  std::string element;  // the element's local name
+  Location where;
+  std::string lexeme;   // faceLexeme, head
+  double amount = 1;
+  int au = 0;           // faceFacs
+  char side = 'B';      // faceFacs: L, R or B(oth)
+  int repetition = 1;   // head
+  double offset_angle = 0;        // gaze, headDirectionShift: degrees
+  std::string offset_direction;   // RIGHT, LEFT, UP, DOWN, UPRIGHT, ...
+  std::string influence;          // gaze: EYES, HEAD, NECK, ...
+  std::unique_ptr<SpokenText> speech;
+};
+
+// One block: its behaviours (the solver's view beside them) and relations.
+struct Block {
+  std::string id;
+  std::string character;
+  enum class Composition : std::uint8_t { merge, append, replace } composition = Composition::merge;
+  Location where;
+  std::vector<Behaviour> behaviours;
+  std::vector<SolverBehaviour> timing;
+  std::vector<Relation> relations;
+};
+
+// Where a relation came from (Relation::label indexes these): the attribute or sync element, and
+// its text, for the errors that name chains.
+struct ConstraintSource {
+  Location where;
+  std::string text;  // `nod1 start="speech1:s1+1"`
+};
+
+// The clips of one solved block, at `origin` seconds (the block's start).
+void lower_block(const Block& block, const Solution& solution, double origin, const Coarticulation& rule, Timeline& out,
+                 Diagnostics& warnings);
+
+}  // namespace fapc::bml

@@ -1,0 +1,594 @@
+// The BML reader: walks a bml block, builds its behaviours and the relations between their sync
+// points (bml_model.hpp), solves them (sync_solver.hpp) and lowers the result (lower_block). What
+// it does not draw or read is reported, once per kind, never dropped silently.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <unordered_map>
+
+#include <libxml/tree.h>
+
+#include "bml/behaviour_defaults.hpp"
+#include "bml/bml_model.hpp"
+#include "bml/speak_text.hpp"
+#include "bml/sync_ref.hpp"
+#include "fapc/bml/bml.hpp"
+#include "fapc/codec/file_io.hpp"
+#include "fapc/xml/once_per_name.hpp"
+#include "fapc/xml/text.hpp"
+#include "fapc/xml/xml_document.hpp"
+
+namespace fapc::bml {
+namespace {
+
+constexpr std::string_view kBml10 = "http://www.bml-initiative.org/bml/bml-1.0";
+
+std::string format_seconds(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g s", v);
+  return buffer;
+}
+
+std::string upper(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return std::toupper(c); });
+  return out;
+}
+
+// The standard sync points by name; attackPeak is a face's ready.
+std::optional<std::uint32_t> standard_point(std::string_view name) {
+  static const std::map<std::string_view, std::uint32_t> kNames = {
+      {"start", kStart},         {"ready", kReady},   {"attackPeak", kReady}, {"strokeStart", kStrokeStart},
+      {"stroke", kStroke},       {"strokeEnd", kStrokeEnd}, {"relax", kRelax}, {"end", kEnd}};
+  const auto found = kNames.find(name);
+  if (found == kNames.end()) return std::nullopt;
+  return found->second;
+}
+
+const char* kPointNames[kStandardPoints] = {"start", "ready", "strokeStart", "stroke", "strokeEnd", "relax", "end"};
+
+// Behaviours fapc does not draw: their timing is kept (others may sync to them).
+bool is_not_drawn(std::string_view name) {
+  static const std::set<std::string_view> kNames = {"gesture", "posture", "postureShift", "locomotion", "pointing",
+                                                    "torso", "stance", "pose", "lips", "lip", "curves"};
+  return kNames.count(name) != 0;
+}
+
+// A relation waiting for every behaviour of the block to be known (references may point forward).
+struct Pending {
+  Relation::Kind kind = Relation::Kind::equal;
+  std::uint32_t behaviour = 0;  // the side the attribute belongs to (a), or for sync pairs
+  std::uint32_t point = 0;
+  std::optional<SyncRef> a_ref;  // when a is itself a reference (a constraint's sync)
+  SyncRef b;                     // the reference: t(a) = t(b) + b.offset (or >=)
+  double a_offset = 0;           // a's own offset: t(a) + a_offset ... (constraints)
+  bool reversed = false;         // at_least the other way round (before)
+  bool self = false;             // b is this behaviour's own start (Greta's times within a behaviour)
+  int label = 0;
+  const xmlNode* node = nullptr;
+  std::string attribute;
+};
+
+class BmlReader {
+ public:
+  BmlReader(const xml::XmlDocument& doc, const BmlOptions& options) : doc_(doc), options_(options), once_(out_.warnings) {}
+
+  Result<BmlDocument> run() {
+    const xmlNode* root = doc_.root();
+    if (root == nullptr) return make_error(Location{doc_.file(), 1, 1}, "an empty document");
+    if (xml::local_name(root) != "bml")
+      return doc_.error(root, "the root element is <" + std::string(xml::local_name(root)) + ">, not a BML <bml> block");
+    out_.dialect = dialect_of(root);
+    Block block;
+    if (!read_block(root, block)) return *error_;
+    if (!schedule(block, 0)) return *error_;
+    once_.finish();
+    for (const Diagnostic& w : doc_.warnings()) out_.warnings.push_back(w);
+    return std::move(out_);
+  }
+
+ private:
+  const xml::XmlDocument& doc_;
+  const BmlOptions& options_;
+  BmlDocument out_;
+  xmt::OncePerName once_;
+  std::optional<Diagnostic> error_;
+  std::vector<ConstraintSource> sources_;
+  bool warned_no_engine_ = false;
+  std::int64_t counted_ = 0;
+
+  // The dialect (docs/bml.md, "Dialects"): BML 1.0 by its namespace; Greta/SEMAINE by its
+  // gretabml descriptions or the older mindmakers namespace; SmartBody by its lips, curves and
+  // recorded speech.
+  std::string dialect_of(const xmlNode* root) const {
+    const std::string_view ns = xml::namespace_uri(root);
+    if (ns == kBml10) return "BML 1.0";
+    bool greta = ns.find("mindmakers") != std::string_view::npos;
+    bool smartbody = false;
+    for (const xmlNode* child : doc_.children(root)) {
+      const std::string_view name = xml::local_name(child);
+      if (name == "lips" || name == "curves") smartbody = true;
+      for (const xmlNode* inner : doc_.children(child)) {
+        if (xml::local_name(inner) != "description") continue;
+        const std::string type = xml::attribute(inner, "type").value_or("");
+        if (type == "gretabml") greta = true;
+        if (type.starts_with("audio/")) smartbody = true;
+      }
+    }
+    if (smartbody) return "SmartBody";
+    if (greta) return "Greta/SEMAINE";
+    return "BML (no namespace)";
+  }
+
+  bool fail(Diagnostic d) {
+    if (!error_) error_ = std::move(d);
+    return false;
+  }
+
+  int label(const xmlNode* node, std::string_view attribute, std::string text) {
+    sources_.push_back({attribute.empty() ? doc_.where(node) : doc_.where(node, attribute), std::move(text)});
+    return static_cast<int>(sources_.size() - 1);
+  }
+
+  bool count_one(const xmlNode* node) {
+    if (++counted_ <= options_.max_behaviours) return true;
+    Diagnostic d = doc_.error(node, "more than " + std::to_string(options_.max_behaviours) +
+                                        " behaviours and constraints (raise the limit with --max-runs)");
+    d.kind = ErrorKind::limit_exceeded;
+    return fail(std::move(d));
+  }
+
+  bool read_block(const xmlNode* root, Block& block) {
+    block.where = doc_.where(root);
+    block.id = xml::attribute(root, "id").value_or("");
+    block.character = xml::attribute(root, "characterId").value_or(xml::attribute(root, "character").value_or(""));
+    if (const auto composition = xml::attribute(root, "composition")) {
+      const std::string c = upper(xml::trim(*composition));
+      if (c == "MERGE") block.composition = Block::Composition::merge;
+      else if (c == "APPEND") block.composition = Block::Composition::append;
+      else if (c == "REPLACE") block.composition = Block::Composition::replace;
+      else return fail(doc_.error(root, "composition", "composition '" + *composition + "' is not MERGE, APPEND or REPLACE"));
+    }
+    out_.blocks.push_back(block.id);
+    out_.characters.push_back(block.character);
+    std::vector<Pending> pending;
+    std::vector<const xmlNode*> constraints;
+    for (const xmlNode* child : doc_.children(root)) {
+      const std::string_view name = xml::local_name(child);
+      if (name == "constraint" || name == "required") {
+        constraints.push_back(child);
+        continue;
+      }
+      if (!count_one(child)) return false;
+      if (!read_behaviour(child, block, pending)) return false;
+    }
+    for (const xmlNode* c : constraints)
+      if (!read_constraint(c, block, pending)) return false;
+    return resolve(block, pending);
+  }
+
+  // ---- behaviours -------------------------------------------------------------------------
+
+  bool read_behaviour(const xmlNode* node, Block& block, std::vector<Pending>& pending) {
+    const std::string_view name = xml::local_name(node);
+    Behaviour b;
+    b.element = std::string(name);
+    b.where = doc_.where(node);
+    b.id = xml::attribute(node, "id").value_or("");
+    b.amount = number_attribute(node, "amount", 1.0);
+    if (error_) return false;
+    const std::string_view ns = xml::namespace_uri(node);
+    const bool core = ns.empty() || ns == kBml10 || ns.find("mindmakers") != std::string_view::npos;
+    if (!core || is_not_drawn(name)) {
+      b.kind = BehaviourKind::not_drawn;
+      once_.report("not drawn " + b.element,
+                   with_code(doc_.warning(node, "<" + b.element + "> is not drawn by fapc (no body): its timing is kept"),
+                             "bml.not_drawn"));
+    } else if (name == "faceLexeme" || name == "faceShift" || name == "face") {
+      b.kind = BehaviourKind::face_lexeme;
+      b.shift = name == "faceShift";
+      b.lexeme = xml::attribute(node, "lexeme").value_or("");
+      if (b.lexeme.empty()) b.kind = BehaviourKind::not_drawn;
+    } else if (name == "faceFacs") {
+      b.kind = BehaviourKind::face_facs;
+      const auto au = xml::attribute(node, "au");
+      const auto n = au ? xml::decimal(xml::trim(*au)) : std::nullopt;
+      if (!n || *n != std::floor(*n) || *n < 1 || *n > 99)
+        return fail(doc_.error(node, "au", "faceFacs needs au, an action unit number from 1 to 99"));
+      b.au = static_cast<int>(*n);
+      const std::string side = upper(xml::trim(xml::attribute(node, "side").value_or("BOTH")));
+      if (side == "LEFT") b.side = 'L';
+      else if (side == "RIGHT") b.side = 'R';
+      else if (side == "BOTH") b.side = 'B';
+      else return fail(doc_.error(node, "side", "side '" + side + "' is not LEFT, RIGHT or BOTH"));
+    } else if (name == "gaze" || name == "gazeShift") {
+      b.kind = BehaviourKind::gaze;
+      b.shift = name == "gazeShift";
+      read_direction(node, b);
+      b.influence = upper(xml::trim(xml::attribute(node, "influence").value_or("EYES")));
+    } else if (name == "head") {
+      b.kind = BehaviourKind::head;
+      b.lexeme = upper(xml::trim(xml::attribute(node, "lexeme").value_or("")));
+      b.repetition = static_cast<int>(number_attribute(node, "repetition", 1.0));
+      if (b.repetition < 1 || b.repetition > 100)
+        return fail(doc_.error(node, "repetition", "repetition must be a whole number from 1 to 100"));
+    } else if (name == "headDirectionShift") {
+      b.kind = BehaviourKind::head_direction;
+      b.shift = true;
+      read_direction(node, b);
+    } else if (name == "speech") {
+      b.kind = BehaviourKind::speech;
+      if (!read_speech(node, b)) return false;
+    } else if (name == "wait") {
+      b.kind = BehaviourKind::wait;
+    } else {
+      b.kind = BehaviourKind::not_drawn;
+      once_.report("unknown " + b.element, with_code(doc_.warning(node, "<" + b.element +
+                                                                              "> is not a BML 1.0 behaviour: its timing is kept, nothing is drawn"),
+                                                     "bml.unknown_behaviour"));
+    }
+    if (error_) return false;
+    if (b.id.empty()) b.id = "#" + std::to_string(block.behaviours.size() + 1);
+    SolverBehaviour timing;
+    timing.defaults = default_offsets(b);
+    if (b.kind == BehaviourKind::speech) {
+      timing.rigid = true;
+      timing.marks = b.speech->mark_times;
+      timing.own_label = label(node, "", b.id + " lasts " + format_seconds(b.speech->duration) + " as spoken");
+    }
+    const auto index = static_cast<std::uint32_t>(block.behaviours.size());
+    // Greta 0.x (SEMAINE) writes a behaviour's later points as times within it: a plain time
+    // earlier than a plain start is read from the start (docs/bml.md, "Dialects").
+    std::optional<double> plain_start;
+    if (out_.dialect != "BML 1.0")
+      if (const auto start = xml::attribute(node, "start")) plain_start = parse_seconds(*start);
+    for (std::uint32_t p = 0; p < kStandardPoints; ++p) {
+      const char* attribute = kPointNames[p];
+      std::optional<std::string> value = xml::attribute(node, attribute);
+      if (!value && p == kReady) {
+        value = xml::attribute(node, "attackPeak");
+        if (value) attribute = "attackPeak";
+      }
+      if (!value) continue;
+      std::string why;
+      const auto ref = parse_sync_ref(*value, why);
+      if (!ref) return fail(doc_.error(node, attribute, why));
+      Pending p_;
+      p_.behaviour = index;
+      p_.point = p;
+      p_.b = *ref;
+      if (p != kStart && plain_start && ref->absolute && ref->offset < *plain_start) {
+        p_.b.absolute = false;
+        p_.b.behaviour = b.id;
+        p_.b.sync = "start";
+        p_.self = true;
+        once_.report("relative time", with_code(doc_.warning(node, attribute, std::string(attribute) + " is earlier than start: read as "
+                                                                           "a time from the behaviour's start (Greta 0.x)"),
+                                                "bml.time_from_start"));
+      }
+      p_.label = label(node, attribute, b.id + " " + attribute + "=\"" + std::string(xml::trim(*value)) + "\"");
+      p_.node = node;
+      p_.attribute = attribute;
+      pending.push_back(std::move(p_));
+    }
+    block.behaviours.push_back(std::move(b));
+    block.timing.push_back(std::move(timing));
+    return true;
+  }
+
+  static Diagnostic with_code(Diagnostic d, const char* code) {
+    d.code = code;
+    return d;
+  }
+
+  double number_attribute(const xmlNode* node, const char* name, double fallback) {
+    const auto text = xml::attribute(node, name);
+    if (!text) return fallback;
+    const auto n = xml::decimal(xml::trim(*text));
+    if (!n) {
+      fail(doc_.error(node, name, std::string(name) + " '" + *text + "' is not a number"));
+      return fallback;
+    }
+    return *n;
+  }
+
+  void read_direction(const xmlNode* node, Behaviour& b) {
+    b.offset_angle = number_attribute(node, "offsetAngle", 0.0);
+    b.offset_direction = upper(xml::trim(xml::attribute(node, "offsetDirection").value_or("RIGHT")));
+    if (xml::attribute(node, "target"))
+      once_.report("target", with_code(doc_.warning(node, "target", "gaze and head targets name objects of a world "
+                                                                    "fapc does not have: taken as straight ahead, "
+                                                                    "offsetAngle and offsetDirection turn from there"),
+                                       "bml.target_ahead"));
+  }
+
+  // <speech><text>words <sync id="s1"/> words</text></speech>, or the text and its tm marks
+  // right inside the speech (Greta).
+  bool read_speech(const xmlNode* node, Behaviour& b) {
+    const xmlNode* text_node = nullptr;
+    for (const xmlNode* child : doc_.children(node))
+      if (xml::local_name(child) == "text") text_node = child;
+    MarkedText marked;
+    collect_text(text_node != nullptr ? text_node : node, marked);
+    if (error_) return false;
+    Result<SpokenText> spoken = speak(marked, options_, b.where, out_.warnings, warned_no_engine_);
+    if (!spoken) return fail(spoken.error());
+    if (std::find(out_.languages.begin(), out_.languages.end(), options_.language) == out_.languages.end())
+      out_.languages.push_back(options_.language);
+    b.speech = std::make_unique<SpokenText>(std::move(*spoken));
+    return true;
+  }
+
+  void collect_text(const xmlNode* parent, MarkedText& marked) {
+    for (const xmlNode* n = parent->children; n != nullptr; n = n->next) {
+      if (n->type == XML_TEXT_NODE || n->type == XML_CDATA_SECTION_NODE) {
+        if (n->content == nullptr) continue;
+        const std::string_view words = xml::trim(reinterpret_cast<const char*>(n->content));
+        if (words.empty()) continue;
+        if (!marked.text.empty()) marked.text += ' ';
+        marked.text += words;
+        continue;
+      }
+      if (n->type != XML_ELEMENT_NODE) continue;
+      const std::string_view name = xml::local_name(n);
+      if (name == "sync" || name == "tm" || name == "mark") {
+        const auto id = xml::attribute(n, "id");
+        if (!id || xml::trim(*id).empty()) {
+          fail(doc_.error(n, "<" + std::string(name) + "> in speech needs an id"));
+          return;
+        }
+        marked.mark_ids.emplace_back(xml::trim(*id));
+        marked.mark_offsets.push_back(marked.text.empty() ? 0 : marked.text.size() + 1);
+      } else if (name != "description" && name != "text") {
+        once_.report("in speech " + std::string(name),
+                     with_code(doc_.warning(n, "<" + std::string(name) + "> in speech is not read (prosody marks): its text is not spoken"),
+                               "bml.speech_markup_skipped"));
+      }
+    }
+  }
+
+  // ---- constraints ------------------------------------------------------------------------
+
+  bool read_constraint(const xmlNode* node, Block& block, std::vector<Pending>& pending) {
+    for (const xmlNode* child : doc_.children(node)) {
+      const std::string_view name = xml::local_name(child);
+      if (name == "constraint") {
+        if (!read_constraint(child, block, pending)) return false;
+        continue;
+      }
+      if (!count_one(child)) return false;
+      if (name != "synchronize" && name != "before" && name != "after") {
+        once_.report("constraint " + std::string(name),
+                     with_code(doc_.warning(child, "<" + std::string(name) + "> is not a BML constraint (synchronize, before, after): skipped"),
+                               "bml.unknown_constraint"));
+        continue;
+      }
+      std::optional<SyncRef> anchor;
+      const xmlNode* anchor_node = child;
+      if (const auto ref = xml::attribute(child, "ref")) {
+        std::string why;
+        anchor = parse_sync_ref(*ref, why);
+        if (!anchor) return fail(doc_.error(child, "ref", why));
+      } else if (name != "synchronize") {
+        return fail(doc_.error(child, "<" + std::string(name) + "> needs ref, the sync point the others come " +
+                                          (name == "before" ? "before" : "after")));
+      }
+      for (const xmlNode* sync : doc_.children(child)) {
+        if (xml::local_name(sync) != "sync") continue;
+        const auto ref_text = xml::attribute(sync, "ref");
+        if (!ref_text) return fail(doc_.error(sync, "<sync> in a constraint needs ref"));
+        std::string why;
+        const auto ref = parse_sync_ref(*ref_text, why);
+        if (!ref) return fail(doc_.error(sync, "ref", why));
+        if (!anchor) {  // the first sync of a synchronize is the one the others equal
+          anchor = ref;
+          anchor_node = sync;
+          continue;
+        }
+        Pending p;
+        p.kind = name == "synchronize" ? Relation::Kind::equal : Relation::Kind::at_least;
+        p.a_ref = ref;
+        p.b = *anchor;
+        p.reversed = name == "before";
+        p.label = label(sync, "ref", std::string(name) + " " + std::string(xml::trim(*ref_text)) + " with " +
+                                          describe(*anchor));
+        p.node = sync;
+        p.attribute = "ref";
+        pending.push_back(std::move(p));
+      }
+      (void)anchor_node;
+    }
+    return true;
+  }
+
+  static std::string describe(const SyncRef& r) {
+    if (r.absolute) return format_seconds(r.offset);
+    std::string s = (r.block.empty() ? "" : r.block + ":") + r.behaviour + ":" + r.sync;
+    if (r.offset != 0) {
+      char buffer[32];
+      std::snprintf(buffer, sizeof buffer, "%+g", r.offset);
+      s += buffer;
+    }
+    return s;
+  }
+
+  // A reference to a point of this block: its behaviour and point, or an error at the reference.
+  std::optional<PointRef> point_of(const Block& block, const std::unordered_map<std::string, std::uint32_t>& ids,
+                                   const SyncRef& ref, const Pending& at) {
+    if (!ref.block.empty() && ref.block != block.id) {
+      fail(doc_.error(at.node, at.attribute, "'" + describe(ref) + "' names the block '" + ref.block +
+                                                 "'; this document's block is '" + block.id + "'"));
+      return std::nullopt;
+    }
+    const auto found = ids.find(ref.behaviour);
+    if (found == ids.end()) {
+      fail(doc_.error(at.node, at.attribute, "'" + describe(ref) + "': no behaviour '" + ref.behaviour + "' in block '" + block.id + "'"));
+      return std::nullopt;
+    }
+    const Behaviour& b = block.behaviours[found->second];
+    if (const auto p = standard_point(ref.sync)) return PointRef{found->second, *p};
+    if (b.speech) {
+      const auto& ids_of = b.speech->mark_ids;
+      const auto mark = std::find(ids_of.begin(), ids_of.end(), ref.sync);
+      if (mark != ids_of.end()) return PointRef{found->second, kStandardPoints + static_cast<std::uint32_t>(mark - ids_of.begin())};
+    }
+    fail(doc_.error(at.node, at.attribute, "'" + describe(ref) + "': " + b.element + " '" + b.id + "' has no sync point '" +
+                                               ref.sync + "' (start, ready, strokeStart, stroke, strokeEnd, relax, end" +
+                                               (b.speech ? ", or one of its sync marks)" : ")")));
+    return std::nullopt;
+  }
+
+  bool resolve(Block& block, const std::vector<Pending>& pending) {
+    std::unordered_map<std::string, std::uint32_t> ids;
+    for (std::uint32_t i = 0; i < block.behaviours.size(); ++i) {
+      const Behaviour& b = block.behaviours[i];
+      if (!ids.emplace(b.id, i).second) {
+        const Location& first = block.behaviours[ids[b.id]].where;
+        if (out_.dialect != "BML 1.0") {
+          // Greta's planners reuse ids; BML 1.0 forbids it. References name the first.
+          once_.report("duplicate id", with_code(make_warning(b.where, "a second behaviour with id '" + b.id + "' (the first is at line " +
+                                                                            std::to_string(first.line) + "): references name the first",
+                                                              doc_.line_text(b.where.line)),
+                                                 "bml.duplicate_id"));
+          continue;
+        }
+        return fail(make_error(b.where, "a second behaviour with id '" + b.id + "' (the first is at line " +
+                                            std::to_string(first.line) + ")",
+                               doc_.line_text(b.where.line)));
+      }
+    }
+    for (const Pending& p : pending) {
+      Relation r;
+      r.kind = p.kind;
+      r.label = p.label;
+      PointRef a{p.behaviour, p.point};
+      double a_offset = 0;
+      SyncRef other = p.b;
+      if (p.a_ref) {
+        SyncRef mine = *p.a_ref;
+        // <synchronize> may hold a plain time: the others are put at it.
+        if (mine.absolute && !other.absolute && p.kind == Relation::Kind::equal) std::swap(mine, other);
+        if (mine.absolute)
+          return fail(doc_.error(p.node, p.attribute, "this constraint compares two plain times: name a behaviour's sync point"));
+        const auto point = point_of(block, ids, mine, p);
+        if (!point) return false;
+        a = *point;
+        a_offset = mine.offset;
+      }
+      std::optional<PointRef> b;
+      if (p.self) {
+        b = PointRef{p.behaviour, kStart};
+      } else if (!other.absolute) {
+        b = point_of(block, ids, other, p);
+        if (!b) return false;
+      }
+      // t(a) + a_offset = t(b) + b.offset  ->  t(a) = t(b) + (b.offset - a_offset)
+      double offset = other.offset - a_offset;
+      if (p.reversed) {  // before: t(a) + a_offset <= t(b) + b.offset -> t(b) >= t(a) + (a_offset - b.offset)
+        if (!b) {
+          Diagnostic d = doc_.error(p.node, p.attribute, "before a plain time is not read: give the time as the sync point's own");
+          d.kind = ErrorKind::unsupported;
+          return fail(std::move(d));
+        }
+        r.a = *b;
+        r.b = a;
+        r.offset = -offset;
+      } else {
+        r.a = a;
+        r.b = b;
+        r.offset = offset;
+      }
+      block.relations.push_back(r);
+    }
+    return true;
+  }
+
+  // ---- scheduling -------------------------------------------------------------------------
+
+  bool schedule(const Block& block, double origin) {
+    const Solved solved = solve(block.timing, block.relations);
+    if (solved.error) return fail(solve_error(block, *solved.error));
+    const Solution& s = solved.solution;
+    for (std::uint32_t i = 0; i < block.behaviours.size(); ++i) {
+      const Behaviour& b = block.behaviours[i];
+      out_.behaviours.push_back({block.id, b.id, b.element, origin + s.points[i][kStart], origin + s.points[i][kEnd],
+                                 b.kind != BehaviourKind::not_drawn && b.kind != BehaviourKind::wait});
+    }
+    lower_block(block, s, origin, options_.coarticulation, out_.timeline, out_.warnings);
+    double end = origin;
+    for (const auto& points : s.points) end = std::max(end, origin + points[kEnd]);
+    out_.timeline.explicit_end = std::max(out_.timeline.explicit_end.value_or(0.0), end);
+    out_.timeline.end_source = block.where;
+    if (options_.frames.exceeded_by(end)) return fail(frame_budget_error(end, block.where, options_.frames));
+    return true;
+  }
+
+  std::string chain_text(const std::vector<int>& chain) const {
+    std::string out;
+    for (int l : chain) {
+      if (l < 0) continue;
+      const ConstraintSource& s = sources_[static_cast<std::size_t>(l)];
+      out += (out.empty() ? "" : ", then ") + s.text + " (line " + std::to_string(s.where.line) + ")";
+    }
+    return out;
+  }
+
+  Diagnostic at_label(int l, std::string message) const {
+    const ConstraintSource& s = sources_[static_cast<std::size_t>(std::max(0, l))];
+    return make_error(s.where, std::move(message), doc_.line_text(s.where.line));
+  }
+
+  Diagnostic solve_error(const Block& block, const SolveError& e) const {
+    const std::string what = e.label >= 0 ? sources_[static_cast<std::size_t>(e.label)].text : std::string("the timing");
+    const std::string chain = chain_text(e.chain);
+    switch (e.what) {
+      case SolveError::What::contradiction:
+        if (e.absolute)
+          return at_label(e.label, what + " cannot hold: it asks for " + format_seconds(e.time) + " from the block's start, but " +
+                                       chain + " already put that point at " + format_seconds(e.other_time));
+        return at_label(e.label, what + " cannot hold: it asks for its two points " + format_seconds(e.time) +
+                                     " apart, but " + chain + " already put them " + format_seconds(e.other_time) + " apart");
+      case SolveError::What::order: {
+        const Behaviour& b = block.behaviours[e.behaviour];
+        return at_label(e.label, what + " cannot hold: it puts " + b.id + ":" + kPointNames[e.point] + " at " +
+                                     format_seconds(e.time) + ", before " + b.id + ":" + kPointNames[e.other] + " at " +
+                                     format_seconds(e.other_time) + (chain.empty() ? "" : " (set by " + chain + ")"));
+      }
+      case SolveError::What::before_block: {
+        const Behaviour& b = block.behaviours[e.behaviour];
+        return at_label(e.label, what + " cannot hold: " + b.id + " would start at " + format_seconds(e.time) +
+                                     ", before its block" + (chain.empty() ? "" : " (" + chain + ")"));
+      }
+      case SolveError::What::unmet:
+        return at_label(e.label, what + " cannot hold: it needs " + format_seconds(e.time) + " or later, but the times fixed " +
+                                     (chain.empty() ? std::string("elsewhere") : "by " + chain) + " give " +
+                                     format_seconds(e.other_time));
+    }
+    return at_label(e.label, what + " cannot hold");
+  }
+};
+
+Result<BmlDocument> read_text(std::string_view text, const std::string& file_name, const BmlOptions& options) {
+  if (const Status depth = xml::check_element_depth(text, file_name); !depth) return depth.error();
+  // Only speech text is read; elsewhere white space is dropped.
+  const xml::BlankText blank_text{false, {"text", "speech"}};
+  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name, blank_text);
+  if (!doc) return doc.error();
+  return BmlReader(*doc, options).run();
+}
+
+}  // namespace
+
+Result<BmlDocument> read_bml(std::string_view text, const std::string& file_name, const BmlOptions& options) {
+  return read_text(text, file_name, options);
+}
+
+Result<BmlDocument> load_bml(const std::string& path, const BmlOptions& options) {
+  const auto source = SourceText::open(path);
+  if (!source) return source.error();
+  return read_text(source->bytes(), path, options);
+}
+
+}  // namespace fapc::bml

@@ -1,0 +1,59 @@
+#include "bml/speak_text.hpp"
+
+#include <algorithm>
+
+#include "fml/speech_visemes.hpp"
+
+namespace fapc::bml {
+namespace {
+
+// The onset of the first word that starts at or after `offset`: the first sounding phoneme from
+// the engine's word time on (the word event comes before a pause that precedes the word).
+double onset_after(const Utterance& spoken, std::size_t offset) {
+  const auto word = std::find_if(spoken.words.begin(), spoken.words.end(),
+                                 [&](const SpokenWord& w) { return w.text_offset >= offset; });
+  if (word == spoken.words.end()) return spoken.duration;
+  for (const SpokenPhoneme& p : spoken.phonemes)
+    if (p.begin + 1e-9 >= word->begin && !p.name.empty() && p.name[0] != '_') return p.begin;
+  return word->begin;
+}
+
+}  // namespace
+
+Result<SpokenText> speak(const MarkedText& text, const BmlOptions& options, const Location& where,
+                         Diagnostics& warnings, bool& warned) {
+  SpokenText out;
+  out.mark_ids = text.mark_ids;
+  if (!options.synthesize) {
+    if (!warned) {
+      warned = true;
+      warnings.push_back(make_warning(WarningCode{"bml.no_speech_engine"}, where,
+                                      "no speech engine in this build: speech text becomes visemes by the letter "
+                                      "table, silent, and sync marks fall in proportion to the text"));
+    }
+    std::string skipped;
+    xmt::Speech speech = xmt::visemes_from_text(text.text, options.words_per_minute * 12 / 175, skipped);
+    out.visemes = std::move(speech.visemes);
+    out.duration = speech.duration;
+    for (std::size_t offset : text.mark_offsets)
+      out.mark_times.push_back(text.text.empty() ? 0.0 : out.duration * double(offset) / double(text.text.size()));
+    return out;
+  }
+  SpeechRequest request;
+  request.text = text.text;
+  request.language = options.language;
+  request.voice = options.voice;
+  request.words_per_minute = options.words_per_minute;
+  request.max_seconds = options.max_speech_seconds;
+  request.where = where;
+  Result<Utterance> spoken = options.synthesize(request);
+  if (!spoken) return spoken.error();
+  for (Diagnostic& w : spoken->warnings) warnings.push_back(std::move(w));
+  out.visemes = viseme_spans(spoken->phonemes);
+  out.duration = spoken->duration;
+  for (std::size_t offset : text.mark_offsets) out.mark_times.push_back(onset_after(*spoken, offset));
+  out.audio = std::move(spoken->audio);
+  return out;
+}
+
+}  // namespace fapc::bml
