@@ -78,6 +78,8 @@ Registry built_in() {
   r.add(described(builtin::webm_output(), "a VP9 video of the face", {"size", "frame-rate"}));
   r.add(described(builtin::html_output(), "a page that plays the face in a browser", {"size", "frame-rate"}));
   r.add(described(builtin::wav_output(), "the voice (speech or a recording) as 16-bit PCM WAV", {"voice", "speech-rate"}));
+  r.add(described(builtin::glb_output(), "the 3D head with FAP morph targets and the animation, binary glTF 2.0", {}));
+  r.add(described(builtin::gltf_output(), "the same 3D head and animation as glTF 2.0 JSON", {}));
   return r;
 }
 
