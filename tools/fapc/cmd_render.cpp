@@ -20,13 +20,16 @@ int run_render(const std::vector<std::string>& argv) {
   if (picture.sheet && (picture.frame || picture.time))
     return usage_error("render", "--sheet picks its own frames; drop --frame/--time");
   const auto output = args.value("output");
-  if (!output) return usage_error("render", "missing -o OUT.png, OUT.webm or OUT.html");
+  if (!output) return usage_error("render", "missing -o OUT.png, OUT.webm, OUT.html, OUT.glb or OUT.gltf");
   const std::string to = output_kind(args, *output);
   if (!args.ok()) return usage_error("render", args.error());
   const pipeline::OutputFormat* format =
       to.empty() ? pipeline::formats().output_for(*output) : pipeline::formats().output_named(to);
-  if (!format || (format->kind != "png" && format->kind != "webm" && format->kind != "html"))
-    return usage_error("render", "the output must end in .png, .webm or .html: '" + *output + "'");
+  const auto face_kind = [](const std::string& kind) {
+    return kind == "png" || kind == "webm" || kind == "html" || kind == "glb" || kind == "gltf";
+  };
+  if (!format || !face_kind(format->kind))
+    return usage_error("render", "the output must end in .png, .webm, .html, .glb or .gltf: '" + *output + "'");
   std::string input = args.positionals().front();
   StandardInputCopy copy;
   if (const auto error = resolve_input(args, input, options, copy)) return usage_error("render", *error);
