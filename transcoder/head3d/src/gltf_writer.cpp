@@ -179,15 +179,20 @@ Result<std::string> head_gltf(const FapSequence& sequence, const GltfOptions& op
   const int normals = buffer.vec3(head.normals, 1, false);
   std::vector<int> target_accessors;
   for (const MorphTarget& t : targets) target_accessors.push_back(buffer.sparse_target(t, head.positions.size()));
-  tinygltf::Mesh mesh;
-  mesh.name = "head";
-  for (const Part& part : head.parts) {
+  // One primitive per part: the parts share their mesh's vertices (and its targets).
+  auto primitive = [&](int position_accessor, int normal_accessor, const Part& part) {
     tinygltf::Primitive prim;
-    prim.attributes["POSITION"] = positions;
-    prim.attributes["NORMAL"] = normals;
+    prim.attributes["POSITION"] = position_accessor;
+    prim.attributes["NORMAL"] = normal_accessor;
     prim.indices = buffer.indices(part.triangles);
     prim.material = material(part.material);
     prim.mode = TINYGLTF_MODE_TRIANGLES;
+    return prim;
+  };
+  tinygltf::Mesh mesh;
+  mesh.name = "head";
+  for (const Part& part : head.parts) {
+    tinygltf::Primitive prim = primitive(positions, normals, part);
     for (int a : target_accessors) prim.targets.push_back({{"POSITION", a}});
     mesh.primitives.push_back(prim);
   }
@@ -201,15 +206,7 @@ Result<std::string> head_gltf(const FapSequence& sequence, const GltfOptions& op
   eyeball.name = "eyeball";
   {
     const int p = buffer.vec3(eye.positions, kMetre, true), n = buffer.vec3(eye.normals, 1, false);
-    for (const Part& part : eye.parts) {
-      tinygltf::Primitive prim;
-      prim.attributes["POSITION"] = p;
-      prim.attributes["NORMAL"] = n;
-      prim.indices = buffer.indices(part.triangles);
-      prim.material = material(part.material);
-      prim.mode = TINYGLTF_MODE_TRIANGLES;
-      eyeball.primitives.push_back(prim);
-    }
+    for (const Part& part : eye.parts) eyeball.primitives.push_back(primitive(p, n, part));
   }
   model.meshes.push_back(eyeball);
 
