@@ -41,7 +41,7 @@ const std::vector<CommandSpec> kCommands = {
      "and frames; with --per-clip every clip's own curve too, labelled by its source line."},
     {"render", "INPUT -o {pictures}", "show any input as a face: a picture, a video or a preview page",
      "Draws the face the input animates (docs/render.md): one frame or a contact sheet as .png, a .webm "
-     "video, or an .html page that plays it."},
+     "video, or an .html page that plays it; or the 3D head and its animation as glTF (.glb, .gltf)."},
     {"validate", "FILE...", "check XML documents against the project's schemas",
      "The root element of each file picks the schema (FML, XMT-Omega, XMT-A...); problems go to standard "
      "error with line and column. Exit status 1 when a file has an error."},

@@ -95,6 +95,8 @@ Registry built_in() {
   r.add(described(builtin::viseme_json_output(),
                   "FAP 1's visemes as OpenXR names and times; loses every other FAP", {}));
   r.add(described(builtin::viseme_csv_output(), "the viseme track as CSV (start,end,viseme,mpeg4)", {}));
+  r.add(described(builtin::glb_output(), "the 3D head with FAP morph targets and the animation, binary glTF 2.0", {}));
+  r.add(described(builtin::gltf_output(), "the same 3D head and animation as glTF 2.0 JSON", {}));
   return r;
 }
 

@@ -140,7 +140,7 @@ EyePose pose_eye(const FapValues& v, P pupil, int yaw_fap, int pitch_fap, int th
 
 }  // namespace
 
-FacePose pose_face(const FapValues& values) {
+FapValues with_lip_pairs(const FapValues& values) {
   FapValues v = values;
   for (const auto& pair : kLipPairs) {
     double& inner = v[static_cast<std::size_t>(pair[0] - 1)];
@@ -148,6 +148,21 @@ FacePose pose_face(const FapValues& values) {
     if (inner == 0) inner = outer;
     else if (outer == 0) outer = inner;
   }
+  return v;
+}
+
+std::vector<PointMotion> point_motions(int fap) {
+  for (const Influence& in : influences())
+    if (in.fap == fap) {
+      std::vector<PointMotion> out;
+      for (const Follower& f : in.points) out.push_back({f.point, (in.mm_per_unit * f.weight) * in.direction});
+      return out;
+    }
+  return {};
+}
+
+FacePose pose_face(const FapValues& values) {
+  const FapValues v = with_lip_pairs(values);
 
   FacePose pose;
   for (int i = 0; i < kPointCount; ++i) pose.local[static_cast<std::size_t>(i)] = face_points()[static_cast<std::size_t>(i)].neutral;

@@ -30,5 +30,7 @@ OutputFormat png_output();   // the face (format_face.cpp)
 OutputFormat webm_output();
 OutputFormat html_output();
 OutputFormat wav_output();   // the voice (format_wav.cpp)
+OutputFormat glb_output();   // the 3D head (format_gltf.cpp)
+OutputFormat gltf_output();
 
 }  // namespace fapc::pipeline::builtin

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <vector>
 
 #include "fapc/face/face_model.hpp"
 #include "fapc/face/face_track.hpp"
@@ -44,5 +45,19 @@ struct FacePose {
 };
 
 FacePose pose_face(const FapValues& values);
+
+// Inner and outer lip FAPs that act on the same spot (4/51 ... 13/60): where a frame drives only
+// one of a pair, the other takes its value (docs/render.md, "lip pairs").
+FapValues with_lip_pairs(const FapValues& values);
+
+// Where translation FAP `fap` moves the face: its own feature point first, then the points that
+// follow it, each with its displacement per FAP unit in millimetres (direction x FAPU x the
+// follower's weight). Empty for FAPs that are not translations of a point (1, 2, rotations,
+// dilations, eyeball thrust). The 3D head (fapc::head3d) takes its morph targets from this.
+struct PointMotion {
+  P point;
+  Vec3 mm_per_unit;
+};
+std::vector<PointMotion> point_motions(int fap);
 
 }  // namespace fapc::face

@@ -1,0 +1,25 @@
+// The 3D head outputs: .glb (binary glTF 2.0) and .gltf (JSON with the buffer embedded), written
+// by fapc::head3d from the frames of any input (docs/render.md, "The 3D head").
+#include "fapc/head3d/gltf_writer.hpp"
+#include "formats.hpp"
+
+namespace fapc::pipeline::builtin {
+
+namespace {
+
+Result<std::string> write_gltf(const Loaded& loaded, const std::string& path, const ConvertOptions&, bool binary) {
+  head3d::GltfOptions options;
+  options.binary = binary;
+  return head3d::head_gltf(loaded.frames, options, path);
+}
+
+}  // namespace
+
+OutputFormat glb_output() {
+  return {"glb", {".glb"}, [](const Loaded& l, const std::string& p, const ConvertOptions& o) { return write_gltf(l, p, o, true); }};
+}
+OutputFormat gltf_output() {
+  return {"gltf", {".gltf"}, [](const Loaded& l, const std::string& p, const ConvertOptions& o) { return write_gltf(l, p, o, false); }};
+}
+
+}  // namespace fapc::pipeline::builtin
