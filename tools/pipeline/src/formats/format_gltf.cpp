@@ -13,13 +13,23 @@ Result<std::string> write_gltf(const Loaded& loaded, const std::string& path, co
   return head3d::head_gltf(loaded.frames, options, path);
 }
 
+// A picture of the face in the table's sense: what `fapc render` writes.
+OutputFormat head_output(OutputFormat format) {
+  format.picture = true;
+  return format;
+}
+
 }  // namespace
 
 OutputFormat glb_output() {
-  return {"glb", {".glb"}, [](const Loaded& l, const std::string& p, const ConvertOptions& o) { return write_gltf(l, p, o, true); }};
+  return head_output({"glb", {".glb"}, [](const Loaded& l, const std::string& p, const ConvertOptions& o) {
+                        return write_gltf(l, p, o, true);
+                      }});
 }
 OutputFormat gltf_output() {
-  return {"gltf", {".gltf"}, [](const Loaded& l, const std::string& p, const ConvertOptions& o) { return write_gltf(l, p, o, false); }};
+  return head_output({"gltf", {".gltf"}, [](const Loaded& l, const std::string& p, const ConvertOptions& o) {
+                        return write_gltf(l, p, o, false);
+                      }});
 }
 
 }  // namespace fapc::pipeline::builtin
