@@ -124,6 +124,9 @@ const std::vector<OptionSpec> kOptions = {
     {"max-decompressed-bytes", 0, "N", "refuse compressed inputs that inflate to more bytes (default 2^30)",
      FAPC_READERS},
     {"max-expansion", 0, "F", "refuse scripts that expand more than F times (default 100)", FAPC_READERS},
+    {"max-audio-samples", 0, "N", "refuse voice tracks of more samples (default 2^27)", FAPC_READERS},
+    {"max-speech-text", 0, "N", "refuse documents with more bytes of talk text (default 65536)", FAPC_READERS},
+    {"max-speech-seconds", 0, "S", "refuse documents with more seconds of speech (default 1800)", FAPC_READERS},
 };
 
 #undef FAPC_READERS

@@ -16,6 +16,7 @@
 #include "fapc/codec/include_policy.hpp"
 #include "fapc/codec/nesting_limit.hpp"
 #include "fapc/fml/fml.hpp"
+#include "fapc/transcoder/audio_mix.hpp"
 #include "fml/embedded_fml.hpp"
 #include "fml/fml_timing.hpp"
 #include "fml/fml_tree.hpp"
@@ -179,6 +180,7 @@ class FmlReader {
     // before the clips are made.
     std::vector<ScheduleNode>().swap(tree_.root.children);
     tree_.coarticulation = options_.coarticulation;
+    if (Status s = check_placed_voice(schedule); !s) return s.error();
     result_.timeline = lower_fml(tree_, schedule);
     once_.finish();
     return std::move(result_);
@@ -190,6 +192,8 @@ class FmlReader {
   const Profile* profile_ = nullptr;
   FmlDocument result_;  // before once_, which appends to its warnings
   OncePerName once_;
+  std::int64_t speech_text_bytes_ = 0;  // talk text handed to the engine so far
+  double speech_seconds_ = 0;           // speech it has made so far
   FmlTree tree_;
   std::optional<Diagnostic> error_;
   std::map<std::string, const xmlNode*> templates_;
@@ -770,9 +774,35 @@ class FmlReader {
                     : !model_voice_.empty()       ? model_voice_
                                                   : options_.voice;
     request.words_per_minute = options_.words_per_minute;
-    request.max_seconds = options_.max_speech_seconds;
     request.where = xml::attribute(node, "lang") ? doc_.where(node, "lang") : doc_.where(node);
+    // The document's speech budget, before the engine runs (docs/security.md): text bytes, then
+    // seconds as estimated from the text; the engine then stops at the seconds left.
+    const Limits& limits = options_.speech_limits;
+    speech_text_bytes_ += static_cast<std::int64_t>(text.size());
+    if (speech_text_bytes_ > limits.max_speech_text_bytes) {
+      fail(placed(limit_error(doc_.where(node), "the talk text of this document reaches " + std::to_string(speech_text_bytes_) + " bytes",
+                              Limit::speech_text, limits)));
+      return false;
+    }
+    const double left = limits.max_speech_seconds - speech_seconds_;
+    const double estimate = estimated_speech_seconds(text, request.words_per_minute);
+    if (estimate > left) {
+      fail(placed(limit_error(doc_.where(node), "the speech of this document would last at least " +
+                                                    seconds_text(speech_seconds_ + estimate) + " s",
+                              Limit::speech_seconds, limits)));
+      return false;
+    }
+    request.max_seconds = std::min(left, options_.max_speech_seconds);
     Result<Utterance> spoken = options_.synthesize(request);
+    if (!spoken && spoken.error().kind == ErrorKind::limit_exceeded) {
+      fail(placed(left <= options_.max_speech_seconds
+                      ? limit_error(doc_.where(node), "the speech of this document would last more than " + seconds_text(limits.max_speech_seconds) + " s",
+                                    Limit::speech_seconds, limits)
+                      : make_error(ErrorKind::limit_exceeded, doc_.where(node),
+                                   "the speech would last more than " + seconds_text(options_.max_speech_seconds) +
+                                       " s (the frame limit, --max-frames, at the frame rate)")));
+      return false;
+    }
     if (!spoken) {
       Diagnostic refused = spoken.error();
       refused.source_line = doc_.line_text(refused.where.line);
@@ -788,7 +818,35 @@ class FmlReader {
     talk.speech.visemes = viseme_spans(spoken->phonemes);
     talk.speech.duration = spoken->duration;
     talk.audio = std::move(spoken->audio);
+    speech_seconds_ += spoken->duration;
     return true;
+  }
+
+  // Every run of a spoken talk stores its own copy of the voice: their sum against the audio
+  // sample limit, before any is made (a talk repeated 10^5 times).
+  Status check_placed_voice(const Schedule& schedule) const {
+    double samples = 0;
+    for (const Occurrence& run : schedule.occurrences) {
+      const FmlLeaf& leaf = tree_.leaves[run.leaf_id];
+      if (leaf.kind != FmlLeaf::Kind::talk || run.end <= run.begin) continue;
+      samples += placed_samples(leaf.talk->audio, run.begin - run.curve_offset, run.begin, run.end);
+      if (samples > static_cast<double>(options_.speech_limits.max_audio_samples))
+        return placed(limit_error(leaf.where, "the voice of this talk, once per run, adds up to " +
+                                                  std::to_string(static_cast<std::int64_t>(samples)) + " samples",
+                                  Limit::audio_samples, options_.speech_limits));
+    }
+    return ok_status();
+  }
+
+  Diagnostic placed(Diagnostic d) const {
+    d.source_line = doc_.line_text(d.where.line);
+    return d;
+  }
+
+  static std::string seconds_text(double seconds) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.0f", seconds);
+    return text;
   }
 
   // The talk's `lang`, else the xml:lang in force there (on it or an ancestor), else the model's

@@ -39,7 +39,10 @@ std::vector<std::uint8_t> aac_lc_mono_config(int sample_rate);
 
 // Encodes the track at its own rate (which must have an AAC frequency index: 8000 to 96000 Hz
 // standard rates, else unsupported) at `bit_rate` bits per second. `where` names the output.
-Result<AacStream> encode_aac(const AudioTrack& track, const std::string& where, int bit_rate = 64000);
+// `length` > track.samples.size() continues the track with that many samples in all, the rest
+// silence that is never stored (the voice of a face that keeps moving after it).
+Result<AacStream> encode_aac(const AudioTrack& track, const std::string& where, int bit_rate = 64000,
+                             std::size_t length = 0);
 
 // Decodes the access units back to mono samples, the priming dropped and the result cut to
 // `stream.length` (decoders of lossy audio give close, not equal, samples). `where` names the file.
