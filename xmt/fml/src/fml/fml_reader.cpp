@@ -162,6 +162,11 @@ class FmlReader {
     }
     if (error_) return *error_;
     if (!story) return doc_.error(root, "fml has no story: nothing to animate");
+    // The whole story's talk text against the speech budget before any of it is spoken (a
+    // streamed story is checked talk by talk as it is read).
+    if (!story_read && options_.synthesize) {
+      if (Status s = check_story_speech(story); !s) return s.error();
+    }
     if (!story_read) read_story(story);
     if (error_) return *error_;
     // What follows needs no node: the tree's memory goes before the clips are made.
@@ -820,6 +825,35 @@ class FmlReader {
     talk.audio = std::move(spoken->audio);
     speech_seconds_ += spoken->duration;
     return true;
+  }
+
+  // The story's talk texts summed in document order, bytes and estimated seconds, against the
+  // document's speech budget; the error is at the talk that passes it (the talks themselves are
+  // checked again as they are spoken, with templates expanded).
+  Status check_story_speech(const xmlNode* story) const {
+    const Limits& limits = options_.speech_limits;
+    std::int64_t bytes = 0;
+    double seconds = 0;
+    std::vector<const xmlNode*> pending{story};  // depth is bounded by the reader's nesting limit
+    while (!pending.empty()) {
+      const xmlNode* node = pending.back();
+      pending.pop_back();
+      if (xml::local_name(node) == "talk" && !xml::attribute(node, "file")) {
+        const std::string text = trim(xml::text_content(node));
+        bytes += static_cast<std::int64_t>(text.size());
+        seconds += estimated_speech_seconds(text, options_.words_per_minute);
+        if (bytes > limits.max_speech_text_bytes)
+          return placed(limit_error(doc_.where(node), "the talk text of this document reaches " + std::to_string(bytes) + " bytes",
+                                    Limit::speech_text, limits));
+        if (seconds > limits.max_speech_seconds)
+          return placed(limit_error(doc_.where(node), "the speech of this document would last at least " + seconds_text(seconds) + " s",
+                                    Limit::speech_seconds, limits));
+        continue;
+      }
+      const std::vector<const xmlNode*> children = xml::element_children(node);
+      pending.insert(pending.end(), children.rbegin(), children.rend());
+    }
+    return ok_status();
   }
 
   // Every run of a spoken talk stores its own copy of the voice: their sum against the audio
