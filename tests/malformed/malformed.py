@@ -581,6 +581,27 @@ def wav(rate, samples, value=1000):
             + b"data" + struct.pack("<I", len(data)) + data)
 
 
+# An .mp4 with a voice that starts 1 s after the face (its audio edit list begins with an empty
+# edit): `fapc compile` of an FML talk with begin="1".
+VOICE_MP4 = "tests/fuzz/corpus/mp4_audio/voice-delayed.mp4"
+
+
+def mp4_audio_delay(duration):
+    """VOICE_MP4 with its audio's empty edit lasting `duration` ticks of the movie's timescale."""
+    def make():
+        data = bytearray(source_bytes(VOICE_MP4))
+        at = 0
+        while True:
+            at = data.find(b"elst", at + 1)
+            if at < 0:
+                raise SystemExit(VOICE_MP4 + " has no empty edit")
+            box = at - 4
+            if data[box + 8] == 0 and data[box + 20:box + 24] == b"\xff\xff\xff\xff":  # version 0, media_time -1
+                data[box + 16:box + 20] = duration.to_bytes(4, "big")
+                return bytes(data)
+    return make
+
+
 def speech_cases():
     """Issue 32: talk text that crashed the speech engine, MBROLA voices, speech and audio sized by
     the timeline (refused up front with their option, placed), and far-apart or repeated recordings."""
@@ -608,6 +629,9 @@ def speech_cases():
         compile_case("xmto.speech.audio-hours-apart",
                      xmto('<par><audio src="a.wav"/><audio src="a.wav" begin="40000s"/></par>'),
                      out="out/out.wav", extra=["--fps", "1"], files={"a.wav": lambda: wav(22050, 100)}),
+        # A day of silence before the voice, or the largest edit: a .wav from time 0 is refused up front.
+        compile_case("mp4.speech.edit-a-day", mp4_audio_delay(86400 * 1000), out="out/out.wav", diagnostic="named"),
+        compile_case("mp4.speech.edit-largest", mp4_audio_delay(0xFFFFFFFF), out="out/out.wav", diagnostic="named"),
         compile_case("xmto.speech.audio-repeat-1e5",
                      xmto('<audio src="a.wav" repeatCount="100000"/>'), out="out/out.fap",
                      files={"a.wav": lambda: wav(22050, 22050)}),

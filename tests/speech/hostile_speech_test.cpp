@@ -48,10 +48,16 @@ TEST(SpeakableText, NeutralisesTheShapesThatCrashTheEngine) {
   // Stacked suffixes: a word is broken every kMaxWordBytes bytes, never inside a character.
   const std::string shaped = speakable_text(repeated("s'", 100));
   std::size_t word = 0;
-  for (const char c : shaped) word = c == ' ' ? 0 : word + 1, EXPECT_LE(word, speech::kMaxWordBytes);
+  for (const char c : shaped) {
+    word = c == ' ' ? 0 : word + 1;
+    EXPECT_LE(word, speech::kMaxWordBytes);
+  }
   const std::string long_word = speakable_text(repeated("\xC3\xA9", 100));  // é, 2 bytes each
-  for (std::size_t i = 0; i < long_word.size(); ++i)
-    if (long_word[i] == ' ') EXPECT_EQ(static_cast<unsigned char>(long_word[i + 1]), 0xC3);
+  for (std::size_t i = 0; i < long_word.size(); ++i) {
+    if (long_word[i] == ' ') {
+      EXPECT_EQ(static_cast<unsigned char>(long_word[i + 1]), 0xC3);
+    }
+  }
   // Honest text is left as it was.
   EXPECT_EQ(speakable_text("Peter bought a map. Was it 3.5 km - or more?"), "Peter bought a map. Was it 3.5 km - or more?");
 }

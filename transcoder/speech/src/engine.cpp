@@ -77,6 +77,7 @@ void list_voices(Engine& e) {
     const bool mbrola = identifier.rfind("mb/", 0) == 0;
     std::set<std::string>& into = mbrola ? e.mbrola : e.own;
     into.insert(lower(identifier.substr(identifier.rfind('/') + 1)));
+    if (mbrola) continue;  // its languages ("en") are eSpeak NG's own voices' too
     // languages: a priority byte, then a NUL-terminated name, repeated; a 0 priority ends it.
     for (const char* p = (*v)->languages; p != nullptr && *p != 0; p += std::strlen(p + 1) + 2)
       into.insert(lower(p + 1));
