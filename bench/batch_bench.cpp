@@ -210,8 +210,8 @@ int per_node(const std::string& fapc, const fs::path& work, std::size_t files, s
   };
   for (const auto coder : {audio::AacCoder::twoloop, audio::AacCoder::fast}) {
     const double start = cpu_of_this_process();
-    Result<audio::AacStream> aac = audio::encode_aac(voice, "talk.mp4", 64000, coder);
-    for (int repeat = 1; aac && repeat < 5; ++repeat) aac = audio::encode_aac(voice, "talk.mp4", 64000, coder);
+    Result<audio::AacStream> aac = audio::encode_aac(voice, "talk.mp4", 64000, 0, coder);
+    for (int repeat = 1; aac && repeat < 5; ++repeat) aac = audio::encode_aac(voice, "talk.mp4", 64000, 0, coder);
     const double seconds = (cpu_of_this_process() - start) / 5;  // CPU seconds per file
     auto decoded = aac ? audio::decode_aac(*aac, "talk.mp4") : Result<std::vector<std::int16_t>>(aac.error());
     if (!decoded) {

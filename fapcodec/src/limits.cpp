@@ -10,6 +10,9 @@ const char* limit_option(Limit which) {
     case Limit::runs: return "--max-runs";
     case Limit::decompressed_bytes: return "--max-decompressed-bytes";
     case Limit::expansion: return "--max-expansion";
+    case Limit::audio_samples: return "--max-audio-samples";
+    case Limit::speech_text: return "--max-speech-text";
+    case Limit::speech_seconds: return "--max-speech-seconds";
   }
   return "";
 }
@@ -19,11 +22,14 @@ std::string limit_value(Limit which, const Limits& limits) {
     case Limit::frames: return std::to_string(limits.max_frames);
     case Limit::runs: return std::to_string(limits.max_runs);
     case Limit::decompressed_bytes: return std::to_string(limits.max_decompressed_bytes);
-    case Limit::expansion: {
+    case Limit::expansion:
+    case Limit::speech_seconds: {
       char text[32];
-      std::snprintf(text, sizeof text, "%g", limits.max_expansion);
+      std::snprintf(text, sizeof text, "%g", which == Limit::expansion ? limits.max_expansion : limits.max_speech_seconds);
       return text;
     }
+    case Limit::audio_samples: return std::to_string(limits.max_audio_samples);
+    case Limit::speech_text: return std::to_string(limits.max_speech_text_bytes);
   }
   return "";
 }
@@ -36,6 +42,9 @@ const char* unit(Limit which) {
     case Limit::runs: return " runs";
     case Limit::decompressed_bytes: return " bytes";
     case Limit::expansion: return " times the compressed size";
+    case Limit::audio_samples: return " audio samples";
+    case Limit::speech_text: return " bytes of speech text";
+    case Limit::speech_seconds: return " seconds of speech";
   }
   return "";
 }

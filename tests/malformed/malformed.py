@@ -31,6 +31,7 @@ import re
 import resource
 import shutil
 import signal
+import struct
 import subprocess
 import sys
 import tempfile
@@ -603,10 +604,82 @@ def csv_cases():
     return cases
 
 
+def wav(rate, samples, value=1000):
+    """A mono 16-bit PCM WAV file of `samples` equal samples at `rate` Hz."""
+    data = struct.pack("<h", value) * samples
+    return (b"RIFF" + struct.pack("<I", 36 + len(data)) + b"WAVEfmt " + struct.pack("<IHHIIHH", 16, 1, 1, rate, rate * 2, 2, 16)
+            + b"data" + struct.pack("<I", len(data)) + data)
+
+
+# An .mp4 with a voice that starts 1 s after the face (its audio edit list begins with an empty
+# edit): `fapc compile` of an FML talk with begin="1".
+VOICE_MP4 = "tests/fuzz/corpus/mp4_audio/voice-delayed.mp4"
+
+
+def mp4_audio_delay(duration):
+    """VOICE_MP4 with its audio's empty edit lasting `duration` ticks of the movie's timescale."""
+    def make():
+        data = bytearray(source_bytes(VOICE_MP4))
+        at = 0
+        while True:
+            at = data.find(b"elst", at + 1)
+            if at < 0:
+                raise SystemExit(VOICE_MP4 + " has no empty edit")
+            box = at - 4
+            if data[box + 8] == 0 and data[box + 20:box + 24] == b"\xff\xff\xff\xff":  # version 0, media_time -1
+                data[box + 16:box + 20] = duration.to_bytes(4, "big")
+                return bytes(data)
+    return make
+
+
+def speech_cases():
+    """Issue 32: talk text that crashed the speech engine, MBROLA voices, speech and audio sized by
+    the timeline (refused up front with their option, placed), and far-apart or repeated recordings."""
+    hindi = "---\u0932\u091a\u094d\u091b\u0947\u0926"
+    talks = "<seq>" + "<talk>Hello there</talk>" * 10000 + "</seq>"
+    def engine_silent(folder, stderr):
+        """An MBROLA voice made eSpeak NG start a program and print its own messages."""
+        for sign in ("mbrowrap", "mbrola voice file", "mbrola:"):
+            if sign in stderr:
+                return "the speech engine printed '" + sign + "' (it tried an MBROLA voice)"
+        return None
+    return [
+        compile_case("fml.speech.mbrola-voice", fml('<talk lang="mb-en1">Hello</talk>'), out="out/out.wav",
+                     check=engine_silent),
+        compile_case("fml.speech.mbrola-voice-upper", fml('<talk lang="MB-fr1">Bonjour</talk>'), out="out/out.wav",
+                     check=engine_silent),
+        compile_case("fml.speech.stacked-suffixes", fml("<talk>" + "s'" * 220 + "</talk>"), out="out/out.wav",
+                     exit=0, diagnostic="none", outputs=["out/out.wav"]),
+        compile_case("fml.speech.hyphens-before-devanagari", fml('<talk lang="hi">' + hindi + "</talk>"),
+                     out="out/out.wav", exit=0, diagnostic="none", outputs=["out/out.wav"]),
+        compile_case("fml.speech.hyphens-20000", fml("<talk>Now " + "-" * 20000 + " then</talk>"), out="out/out.wav",
+                     exit=0, diagnostic="none", outputs=["out/out.wav"]),
+        compile_case("fml.speech.text-1mb", fml("<talk>" + "Hello there. " * 80000 + "</talk>"), out="out/out.wav"),
+        compile_case("fml.speech.words-1e5", fml("<talk>" + "word " * 100000 + "</talk>"), out="out/out.wav"),
+        compile_case("fml.speech.talks-10000", fml(talks), out="out/out.wav"),
+        compile_case("fml.speech.begin-40000-wav", fml('<talk begin="40000">Hi</talk>'), out="out/out.wav",
+                     extra=["--fps", "1"], diagnostic="named"),
+        compile_case("fml.speech.repeat-talk-1e5", fml('<seq repeat="100000"><talk>Hello there</talk></seq>'),
+                     out="out/out.fap"),
+        compile_case("xmto.speech.rates-1hz-384khz",
+                     xmto('<par><audio src="slow.wav"/><audio src="fast.wav"/></par>'), out="out/out.wav",
+                     files={"slow.wav": lambda: wav(1, 1000), "fast.wav": lambda: wav(384000, 100)}),
+        compile_case("xmto.speech.audio-hours-apart",
+                     xmto('<par><audio src="a.wav"/><audio src="a.wav" begin="40000s"/></par>'),
+                     out="out/out.wav", extra=["--fps", "1"], files={"a.wav": lambda: wav(22050, 100)}),
+        # A day of silence before the voice, or the largest edit: a .wav from time 0 is refused up front.
+        compile_case("mp4.speech.edit-a-day", mp4_audio_delay(86400 * 1000), out="out/out.wav", diagnostic="named"),
+        compile_case("mp4.speech.edit-largest", mp4_audio_delay(0xFFFFFFFF), out="out/out.wav", diagnostic="named"),
+        compile_case("xmto.speech.audio-repeat-1e5",
+                     xmto('<audio src="a.wav" repeatCount="100000"/>'), out="out/out.fap",
+                     files={"a.wav": lambda: wav(22050, 22050)}),
+    ]
+
+
 def all_cases():
     cases = (not_a_file_cases() + depth_cases() + cycle_cases() + huge_cases() + number_cases()
              + truncation_cases() + junk_cases() + wrong_result_cases() + diagnostic_cases()
-             + batch_cases() + csv_cases())
+             + batch_cases() + csv_cases() + speech_cases())
     names = [c.name for c in cases]
     duplicates = {n for n in names if names.count(n) > 1}
     if duplicates:

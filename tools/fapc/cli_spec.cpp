@@ -138,6 +138,9 @@ const std::vector<OptionSpec> kOptions = {
      "SLURM_ARRAY_TASK_ID or JOB_COMPLETION_INDEX", "batch"},
     {"shards", 0, "N", "the shard count, for an index from SLURM_ARRAY_TASK_ID or JOB_COMPLETION_INDEX", "batch"},
     {"force", 0, "", "convert every input, also those a completion record says are up to date", "batch"},
+    {"max-audio-samples", 0, "N", "refuse voice tracks of more samples (default 2^27)", FAPC_READERS},
+    {"max-speech-text", 0, "N", "refuse documents with more bytes of talk text (default 65536)", FAPC_READERS},
+    {"max-speech-seconds", 0, "S", "refuse documents with more seconds of speech (default 1800)", FAPC_READERS},
 };
 
 #undef FAPC_READERS

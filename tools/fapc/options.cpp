@@ -22,6 +22,11 @@ ConvertOptions convert_options(Args& args) {
   if (const auto bytes = args.decimal("max-decompressed-bytes", 1, 1e15))
     options.limits.max_decompressed_bytes = static_cast<std::int64_t>(*bytes);
   if (const auto factor = args.decimal("max-expansion", 1, 1e9)) options.limits.max_expansion = *factor;
+  if (const auto samples = args.decimal("max-audio-samples", 1, 1e15))
+    options.limits.max_audio_samples = static_cast<std::int64_t>(*samples);
+  if (const auto bytes = args.decimal("max-speech-text", 1, 1e12))
+    options.limits.max_speech_text_bytes = static_cast<std::int64_t>(*bytes);
+  if (const auto seconds = args.decimal("max-speech-seconds", 1, 1e9)) options.limits.max_speech_seconds = *seconds;
   options.strict = args.flag("strict");
   options.verify = args.flag("verify");
   // Two-way choices: the option's value must be one of the two words.

@@ -6,19 +6,23 @@
 
 namespace fapc::pipeline {
 
-Result<std::optional<xmt::AudioTrackInput>> pack_audio_track(const AudioTrack& given, double face_seconds,
-                                                             const std::string& where) {
-  AudioTrack audio = given;
-  if (audio.sample_rate > 0 && !audio.samples.empty()) {
-    const auto face_end = static_cast<std::int64_t>(std::llround((face_seconds - audio.start) * audio.sample_rate));
-    if (face_end > static_cast<std::int64_t>(audio.samples.size())) audio.samples.resize(static_cast<std::size_t>(face_end), 0);
-  }
+Result<std::optional<xmt::AudioTrackInput>> pack_audio_track(const AudioTrack& audio, double face_seconds,
+                                                             const std::string& where, const Limits& limits) {
   if (audio.samples.empty() || audio.sample_rate <= 0) return std::optional<xmt::AudioTrackInput>{};
+  // The track lasts as long as the face: silence after the voice is coded, never stored.
+  std::size_t length = audio.samples.size();
+  const double face_end = std::round((face_seconds - audio.start) * audio.sample_rate);
+  if (face_end > static_cast<double>(limits.max_audio_samples))
+    return limit_error(Location{where, 0, 0, -1},
+                       "the voice track would run to the face's end, " + std::to_string(static_cast<std::int64_t>(face_end)) +
+                           " samples at " + std::to_string(audio.sample_rate) + " Hz",
+                       Limit::audio_samples, limits);
+  if (face_end > static_cast<double>(length)) length = static_cast<std::size_t>(std::llround(face_end));
   // Sound before the face's time 0 has nowhere to play: it is cut (the edit list skips it).
   const double rate = audio.sample_rate;
   const auto skip = audio.start < 0 ? static_cast<std::uint64_t>(std::llround(-audio.start * rate)) : 0;
-  if (skip >= audio.samples.size()) return std::optional<xmt::AudioTrackInput>{};
-  auto aac = audio::encode_aac(audio, where);
+  if (skip >= length) return std::optional<xmt::AudioTrackInput>{};
+  auto aac = audio::encode_aac(audio, where, 64000, length);
   if (!aac) return aac.error();
   xmt::AudioTrackInput track;
   track.decoder_specific_info = std::move(aac->audio_specific_config);
@@ -35,6 +39,8 @@ Result<std::optional<xmt::AudioTrackInput>> pack_audio_track(const AudioTrack& g
 Result<AudioTrack> unpack_audio_track(const xmt::AudioTrackInput& track, const std::string& where,
                                       const Limits& limits) {
   const Location at{where, 0, 0, -1};
+  if (static_cast<double>(track.length) > static_cast<double>(limits.max_audio_samples))
+    return limit_error(at, "the audio track holds " + std::to_string(track.length) + " samples", Limit::audio_samples, limits);
   if (static_cast<double>(track.length) * 2 > static_cast<double>(limits.max_decompressed_bytes))
     return limit_error(at, "the audio track decodes to " + std::to_string(track.length * 2) + " bytes",
                        Limit::decompressed_bytes, limits);

@@ -14,6 +14,7 @@ void set_speech(xmt::FmlOptions& fml, const ConvertOptions& options) {
   fml.words_per_minute = options.words_per_minute;
   // Speech may last as long as the frames may: the frame limit at the frame rate.
   fml.max_speech_seconds = static_cast<double>(options.limits.max_frames) / options.fps;
+  fml.speech_limits = options.limits;
 }
 
 }  // namespace fapc::pipeline

@@ -43,7 +43,7 @@ Result<FrameStream> stream_frames(const Timeline& timeline, const std::string& n
 }
 
 Result<std::optional<AudioTrack>> mixed_audio(const Timeline& timeline, const ConvertOptions& options) {
-  return mix_audio(timeline.audio, static_cast<double>(options.limits.max_frames) / options.fps);
+  return mix_audio(timeline.audio, static_cast<double>(options.limits.max_frames) / options.fps, options.limits);
 }
 
 namespace {

@@ -57,7 +57,8 @@ std::vector<std::uint8_t> aac_lc_mono_config(int sample_rate) {
   return out;
 }
 
-Result<AacStream> encode_aac(const AudioTrack& track, const std::string& where, int bit_rate, AacCoder coder) {
+Result<AacStream> encode_aac(const AudioTrack& track, const std::string& where, int bit_rate, std::size_t length,
+                             AacCoder coder) {
   const Location at{where, 0, 0, -1};
   if (aac_frequency_index(track.sample_rate) < 0)
     return make_error(ErrorKind::unsupported, at,
@@ -89,7 +90,7 @@ Result<AacStream> encode_aac(const AudioTrack& track, const std::string& where, 
   AacStream out;
   out.sample_rate = track.sample_rate;
   out.priming = static_cast<std::uint64_t>(std::max(0, c.context->initial_padding));
-  out.length = track.samples.size();
+  out.length = std::max(length, track.samples.size());
   out.audio_specific_config = aac_lc_mono_config(track.sample_rate);
   const std::vector<std::uint8_t> given(c.context->extradata, c.context->extradata + c.context->extradata_size);
   if (given != out.audio_specific_config)
@@ -118,7 +119,7 @@ Result<AacStream> encode_aac(const AudioTrack& track, const std::string& where, 
   };
   // Whole frames only; the last is padded with silence (the file's edit list cuts it off).
   const std::size_t n = track.samples.size();
-  for (std::size_t first = 0; first < n; first += static_cast<std::size_t>(frame_size)) {
+  for (std::size_t first = 0; first < out.length; first += static_cast<std::size_t>(frame_size)) {
     if (int e = av_frame_make_writable(c.frame); e < 0) return failed("cannot reuse an audio frame", e);
     auto* data = reinterpret_cast<float*>(c.frame->data[0]);
     for (int i = 0; i < frame_size; ++i) {

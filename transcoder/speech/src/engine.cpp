@@ -14,6 +14,7 @@
 #include <set>
 
 #include "fapc/speech/phoneme_visemes.hpp"
+#include "fapc/speech/speakable_text.hpp"
 
 namespace fapc::speech {
 namespace {
@@ -59,7 +60,36 @@ int on_samples(short* wav, int count, espeak_EVENT* events) {
 struct Engine {
   int sample_rate = 0;
   std::filesystem::path data;  // espeak-ng-data: voices/!v holds the variants
+  // The names of eSpeak NG's own voices (lower case): every language each lists, and the last
+  // part of its identifier ("gmw/en-GB-x-rp": "en-gb-x-rp"). MBROLA voices ("mb/mb-en1") are not
+  // among them: loading one makes eSpeak NG fork the first program called `mbrola` on the PATH,
+  // so a script would choose a program to run. Their names are kept apart to say so.
+  std::set<std::string> own;
+  std::set<std::string> mbrola;
 };
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+void list_voices(Engine& e) {
+  const espeak_VOICE** voices = espeak_ListVoices(nullptr);
+  for (const espeak_VOICE** v = voices; v != nullptr && *v != nullptr; ++v) {
+    const std::string identifier = (*v)->identifier != nullptr ? (*v)->identifier : "";
+    const bool mbrola = identifier.rfind("mb/", 0) == 0;
+    std::set<std::string>& into = mbrola ? e.mbrola : e.own;
+    into.insert(lower(identifier.substr(identifier.rfind('/') + 1)));
+    if (mbrola) continue;  // its languages ("en") are eSpeak NG's own voices' too
+    // languages: a priority byte, then a NUL-terminated name, repeated; a 0 priority ends it.
+    for (const char* p = (*v)->languages; p != nullptr && *p != 0; p += std::strlen(p + 1) + 2)
+      into.insert(lower(p + 1));
+  }
+  // espeak_ListVoices(NULL) leaves MBROLA voices out: their files are named mb-*.
+  for (const std::string& name : e.own)
+    if (name.rfind("mb-", 0) == 0) e.mbrola.insert(name);
+  for (const std::string& name : e.mbrola) e.own.erase(name);
+}
 
 // Initialised once, under the mutex; sample_rate 0 when eSpeak NG could not start.
 const Engine& started() {
@@ -72,6 +102,7 @@ const Engine& started() {
     espeak_Info(&path);
     if (path != nullptr) e.data = path;
     espeak_SetSynthCallback(on_samples);
+    if (e.sample_rate > 0) list_voices(e);
     return e;
   }();
   return engine;
@@ -94,7 +125,12 @@ Result<Utterance> speak(const SpeechRequest& request) {
     return make_error(ErrorKind::bad_input, request.where,
                       "unknown voice '" + request.voice + "' (voice variants of eSpeak NG: m1..m7, f1..f5, klatt, whisper, ...; `espeak-ng --voices=variant` lists them)");
   }
-  if (espeak_SetVoiceByName(request.language.c_str()) != EE_OK)
+  const std::string language = lower(request.language);
+  if (engine.mbrola.count(language) != 0 || language.rfind("mb-", 0) == 0)
+    return make_error(ErrorKind::bad_input, request.where,
+                      "'" + request.language + "' is an MBROLA voice: fapc speaks only with eSpeak NG's own voices "
+                      "(an MBROLA voice runs an outside program; `espeak-ng --voices` lists the others)");
+  if (engine.own.count(language) == 0 || espeak_SetVoiceByName(request.language.c_str()) != EE_OK)
     return make_error(ErrorKind::bad_input, request.where,
                       "unknown language '" + request.language + "' (`espeak-ng --voices` lists the languages)");
   if (!request.voice.empty()) {
@@ -107,18 +143,27 @@ Result<Utterance> speak(const SpeechRequest& request) {
     return make_error(ErrorKind::bad_input, request.where, "the speech rate " + std::to_string(rate) + " words per minute is outside 80 to 450");
   espeak_SetParameter(espeakRATE, rate, 0);
 
+  // The text in bounded, neutralised pieces (speakable_text.hpp), spoken one after the other:
+  // each piece's phonemes are moved by the audio before it.
   Collect collect;
   collect.max_samples = static_cast<std::size_t>(std::max(0.0, request.max_seconds) * engine.sample_rate);
-  collecting = &collect;
-  const espeak_ERROR status = espeak_Synth(request.text.c_str(), request.text.size() + 1, 0, POS_CHARACTER, 0,
-                                           espeakCHARS_UTF8, nullptr, nullptr);
-  collecting = nullptr;
+  espeak_ERROR status = EE_OK;
+  for (const std::string& piece : speakable_pieces(request.text)) {
+    const std::size_t first_phoneme = collect.phonemes.size();
+    const auto offset_ms = static_cast<int>(collect.samples.size() * 1000 / static_cast<std::size_t>(engine.sample_rate));
+    collecting = &collect;
+    status = espeak_Synth(piece.c_str(), piece.size() + 1, 0, POS_CHARACTER, 0, espeakCHARS_UTF8, nullptr, nullptr);
+    collecting = nullptr;
+    for (std::size_t i = first_phoneme; i < collect.phonemes.size(); ++i) collect.phonemes[i].second += offset_ms;
+    if (collect.too_long || status != EE_OK) break;
+  }
   if (collect.too_long) {
     return make_error(ErrorKind::limit_exceeded, request.where,
-                      "the speech would last more than " + std::to_string(request.max_seconds) +
-                          " s (the frame limit, --max-frames, at the frame rate)");
+                      "the speech would last more than " + std::to_string(request.max_seconds) + " s");
   }
-  if (status != EE_OK) return make_error(ErrorKind::io, request.where, "eSpeak NG failed to synthesise this text");
+  if (status != EE_OK)
+    return make_error(ErrorKind::io, request.where,
+                      "eSpeak NG failed to synthesise this text (error " + std::to_string(static_cast<int>(status)) + ")");
 
   Utterance out;
   out.audio.sample_rate = engine.sample_rate;

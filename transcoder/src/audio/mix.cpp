@@ -35,7 +35,17 @@ std::optional<AudioClip> placed_audio(const AudioClip& clip, double shift, doubl
   return out;
 }
 
-Result<std::optional<AudioTrack>> mix_audio(const std::vector<AudioClip>& clips, double max_seconds) {
+double placed_samples(const AudioClip& clip, double shift, double from, double to) {
+  if (clip.sample_rate <= 0 || clip.samples.empty()) return 0;
+  const double begin = clip.begin + shift;
+  const double rate = clip.sample_rate;
+  const auto count = static_cast<double>(clip.samples.size());
+  const double first = std::clamp(std::ceil((from - begin) * rate - 1e-6), 0.0, count);
+  const double last = std::clamp(std::ceil((to - begin) * rate - 1e-6), 0.0, count);
+  return std::max(0.0, last - first);
+}
+
+Result<std::optional<AudioTrack>> mix_audio(const std::vector<AudioClip>& clips, double max_seconds, const Limits& limits) {
   std::optional<AudioTrack> none;
   int rate = 0;
   double start = 0;
@@ -60,13 +70,28 @@ Result<std::optional<AudioTrack>> mix_audio(const std::vector<AudioClip>& clips,
                       "the audio would last " + std::to_string(end - start) + " s, more than the limit of " +
                           std::to_string(max_seconds) + " s (the frame limit, --max-frames, at the frame rate)");
   }
+  // Less 1e-6 like the cuts above: a clip of n samples moved to 1 s ends at 1 + n/rate, which
+  // times the rate can round to just over n and would add a silent sample.
+  const double samples = std::max(0.0, std::ceil((end - start) * rate - 1e-6));
+  if (samples > static_cast<double>(limits.max_audio_samples)) {
+    return limit_error(furthest->source,
+                       "the audio from " + std::to_string(start) + " s to " + std::to_string(end) + " s at " +
+                           std::to_string(rate) + " Hz spans " + std::to_string(static_cast<std::int64_t>(samples)) + " samples",
+                       Limit::audio_samples, limits);
+  }
   AudioTrack track;
   track.sample_rate = rate;
   track.start = start;
-  // Less 1e-6 like the cuts above: a clip of n samples moved to 1 s ends at 1 + n/rate, which
-  // times the rate can round to just over n and would add a silent sample.
-  const auto length = static_cast<std::size_t>(std::max(0.0, std::ceil((end - start) * rate - 1e-6)));
-  std::vector<double> sum(length, 0.0);
+  const auto length = static_cast<std::size_t>(samples);
+  track.samples.resize(length);
+  // Each clip's span of track samples; the clips are then summed one block at a time, those
+  // that overlap the block only, so the sum never takes more than a block.
+  struct Span {
+    const AudioClip* clip;
+    double step, offset;
+    std::size_t from, to;
+  };
+  std::vector<Span> spans;
   for (const AudioClip& clip : clips) {
     if (clip.sample_rate <= 0 || clip.samples.empty()) continue;
     const double step = static_cast<double>(clip.sample_rate) / rate;  // clip samples per track sample
@@ -74,11 +99,27 @@ Result<std::optional<AudioTrack>> mix_audio(const std::vector<AudioClip>& clips,
     const auto from = static_cast<std::size_t>(std::max(0.0, std::ceil(offset)));
     const double clip_length = static_cast<double>(clip.samples.size()) / step;
     const auto to = std::min(length, static_cast<std::size_t>(std::max(0.0, std::ceil(offset + clip_length))));
-    for (std::size_t n = from; n < to; ++n) sum[n] += sample_at(clip, (static_cast<double>(n) - offset) * step);
+    if (from < to) spans.push_back({&clip, step, offset, from, to});
   }
-  track.samples.resize(length);
-  for (std::size_t n = 0; n < length; ++n)
-    track.samples[n] = static_cast<std::int16_t>(std::clamp(std::lround(sum[n]), -32768L, 32767L));
+  std::stable_sort(spans.begin(), spans.end(), [](const Span& a, const Span& b) { return a.from < b.from; });
+  constexpr std::size_t kBlock = 1 << 16;
+  std::vector<double> sum;
+  std::vector<const Span*> active;
+  std::size_t next = 0;
+  for (std::size_t block = 0; block < length; block += kBlock) {
+    const std::size_t block_end = std::min(length, block + kBlock);
+    std::erase_if(active, [block](const Span* s) { return s->to <= block; });
+    for (; next < spans.size() && spans[next].from < block_end; ++next) active.push_back(&spans[next]);
+    if (active.empty()) continue;  // silence: the track is already zero
+    sum.assign(block_end - block, 0.0);
+    for (const Span* s : active) {
+      const std::size_t to = std::min(s->to, block_end);
+      for (std::size_t n = std::max(s->from, block); n < to; ++n)
+        sum[n - block] += sample_at(*s->clip, (static_cast<double>(n) - s->offset) * s->step);
+    }
+    for (std::size_t n = block; n < block_end; ++n)
+      track.samples[n] = static_cast<std::int16_t>(std::clamp(std::lround(sum[n - block]), -32768L, 32767L));
+  }
   return std::optional<AudioTrack>(std::move(track));
 }
 

@@ -28,13 +28,24 @@ struct Limits {
   // ... and at most this many times its compressed size once past kExpansionFloor: a 1 MB gzip
   // bomb would otherwise inflate to 1 GB (deflate reaches about 1000:1).
   double max_expansion = 100;
+  // Audio samples one mixed voice track may hold (docs/speech.md, "Audio on the timeline"): the
+  // span from its first sound to its last (or to the face's end, or from time 0 for a .wav) at
+  // the highest rate among its clips. 2^27 is 101 minutes at 22,050 Hz, 47 at 48 kHz; 256 MB of
+  // 16-bit samples.
+  std::int64_t max_audio_samples = std::int64_t{1} << 27;
+  // Bytes of talk text one document hands to the speech engine, all talks together (64 KiB is
+  // about an hour of honest text at 175 words per minute).
+  std::int64_t max_speech_text_bytes = std::int64_t{1} << 16;
+  // Seconds of speech one document may synthesise, all talks together: estimated from the text
+  // before synthesis, and counted during it. Synthesis costs some 0.004 s per second of speech.
+  double max_speech_seconds = 1800;
 };
 
 // Below this many inflated bytes the expansion factor is not checked (tiny, very regular files
 // compress far better than 100:1 and are harmless).
 inline constexpr std::int64_t kExpansionFloor = std::int64_t{1} << 20;
 
-enum class Limit { frames, runs, decompressed_bytes, expansion };
+enum class Limit { frames, runs, decompressed_bytes, expansion, audio_samples, speech_text, speech_seconds };
 
 // "--max-frames" ... : the option of `fapc compile` (and every command that reads inputs) that
 // raises the limit.

@@ -137,7 +137,7 @@ Result<std::string> write_mp4_file(const Loaded& loaded, const std::string& path
   if (!encoded) return encoded.error();
   std::optional<xmt::AudioTrackInput> voice;
   if (loaded.audio) {
-    auto packed = pack_audio_track(*loaded.audio, loaded.frames.duration_seconds(), loaded.named(path));
+    auto packed = pack_audio_track(*loaded.audio, loaded.frames.duration_seconds(), loaded.named(path), options.limits);
     if (!packed) return packed.error();
     voice = std::move(*packed);
   }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/codec/limits.hpp"
 #include "fapc/transcoder/audio.hpp"
 
 namespace fapc {
@@ -19,6 +20,15 @@ namespace fapc {
 // (a repeat, a run cut by its container). nullopt when nothing is left.
 std::optional<AudioClip> placed_audio(const AudioClip& clip, double shift, double from, double to);
 
-Result<std::optional<AudioTrack>> mix_audio(const std::vector<AudioClip>& clips, double max_seconds);
+// How many samples placed_audio(clip, shift, from, to) would copy: front ends sum it over every
+// run of a repeated talk or recording and check the sum against Limits::max_audio_samples
+// before placing any (a 10^5-fold repeatCount of a recording would otherwise copy it 10^5 times).
+double placed_samples(const AudioClip& clip, double shift, double from, double to);
+
+// A track of more than limits.max_audio_samples samples is refused the same way (a 1 Hz clip
+// mixed with a 384 kHz one, clips hours apart). The mix is summed block by block, so nothing but
+// the track itself is allocated in proportion to it.
+Result<std::optional<AudioTrack>> mix_audio(const std::vector<AudioClip>& clips, double max_seconds,
+                                            const Limits& limits = {});
 
 }  // namespace fapc

@@ -16,6 +16,7 @@
 #include "fapc/codec/include_policy.hpp"
 #include "fapc/codec/nesting_limit.hpp"
 #include "fapc/fml/fml.hpp"
+#include "fapc/transcoder/audio_mix.hpp"
 #include "fml/embedded_fml.hpp"
 #include "fml/fml_timing.hpp"
 #include "fml/fml_tree.hpp"
@@ -179,6 +180,7 @@ class FmlReader {
     // before the clips are made.
     std::vector<ScheduleNode>().swap(tree_.root.children);
     tree_.coarticulation = options_.coarticulation;
+    if (Status s = check_placed_voice(schedule); !s) return s.error();
     result_.timeline = lower_fml(tree_, schedule);
     once_.finish();
     return std::move(result_);
@@ -190,6 +192,8 @@ class FmlReader {
   const Profile* profile_ = nullptr;
   FmlDocument result_;  // before once_, which appends to its warnings
   OncePerName once_;
+  std::int64_t speech_text_bytes_ = 0;  // talk text handed to the engine so far
+  double speech_seconds_ = 0;           // speech it has made so far
   FmlTree tree_;
   std::optional<Diagnostic> error_;
   std::map<std::string, const xmlNode*> templates_;
@@ -770,9 +774,35 @@ class FmlReader {
                     : !model_voice_.empty()       ? model_voice_
                                                   : options_.voice;
     request.words_per_minute = options_.words_per_minute;
-    request.max_seconds = options_.max_speech_seconds;
     request.where = xml::attribute(node, "lang") ? doc_.where(node, "lang") : doc_.where(node);
+    // The document's speech budget, before the engine runs (docs/security.md): text bytes, then
+    // seconds as estimated from the text; the engine then stops at the seconds left.
+    const Limits& limits = options_.speech_limits;
+    speech_text_bytes_ += static_cast<std::int64_t>(text.size());
+    if (speech_text_bytes_ > limits.max_speech_text_bytes) {
+      fail(placed(limit_error(doc_.where(node), "the talk text of this document reaches " + std::to_string(speech_text_bytes_) + " bytes",
+                              Limit::speech_text, limits)));
+      return false;
+    }
+    const double left = limits.max_speech_seconds - speech_seconds_;
+    const double estimate = estimated_speech_seconds(text, request.words_per_minute);
+    if (estimate > left) {
+      fail(placed(limit_error(doc_.where(node), "the speech of this document would last at least " +
+                                                    seconds_text(speech_seconds_ + estimate) + " s",
+                              Limit::speech_seconds, limits)));
+      return false;
+    }
+    request.max_seconds = std::min(left, options_.max_speech_seconds);
     Result<Utterance> spoken = options_.synthesize(request);
+    if (!spoken && spoken.error().kind == ErrorKind::limit_exceeded) {
+      fail(placed(left <= options_.max_speech_seconds
+                      ? limit_error(doc_.where(node), "the speech of this document would last more than " + seconds_text(limits.max_speech_seconds) + " s",
+                                    Limit::speech_seconds, limits)
+                      : make_error(ErrorKind::limit_exceeded, doc_.where(node),
+                                   "the speech would last more than " + seconds_text(options_.max_speech_seconds) +
+                                       " s (the frame limit, --max-frames, at the frame rate)")));
+      return false;
+    }
     if (!spoken) {
       Diagnostic refused = spoken.error();
       refused.source_line = doc_.line_text(refused.where.line);
@@ -788,7 +818,35 @@ class FmlReader {
     talk.speech.visemes = viseme_spans(spoken->phonemes);
     talk.speech.duration = spoken->duration;
     talk.audio = std::move(spoken->audio);
+    speech_seconds_ += spoken->duration;
     return true;
+  }
+
+  // Every run of a spoken talk stores its own copy of the voice: their sum against the audio
+  // sample limit, before any is made (a talk repeated 10^5 times).
+  Status check_placed_voice(const Schedule& schedule) const {
+    double samples = 0;
+    for (const Occurrence& run : schedule.occurrences) {
+      const FmlLeaf& leaf = tree_.leaves[run.leaf_id];
+      if (leaf.kind != FmlLeaf::Kind::talk || run.end <= run.begin) continue;
+      samples += placed_samples(leaf.talk->audio, run.begin - run.curve_offset, run.begin, run.end);
+      if (samples > static_cast<double>(options_.speech_limits.max_audio_samples))
+        return placed(limit_error(leaf.where, "the voice of this talk, once per run, adds up to " +
+                                                  std::to_string(static_cast<std::int64_t>(samples)) + " samples",
+                                  Limit::audio_samples, options_.speech_limits));
+    }
+    return ok_status();
+  }
+
+  Diagnostic placed(Diagnostic d) const {
+    d.source_line = doc_.line_text(d.where.line);
+    return d;
+  }
+
+  static std::string seconds_text(double seconds) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.0f", seconds);
+    return text;
   }
 
   // The talk's `lang`, else the xml:lang in force there (on it or an ancestor), else the model's
@@ -893,8 +951,49 @@ class FmlReader {
 };
 
 // read_fml, told which parts of the text it may let go (see XmlDocument::stream).
+// The document's talk text against the speech budget before it is parsed, so that no talk is
+// spoken when the talks together pass it (a read streamed story is otherwise spoken talk by talk
+// as it is read: 10^4 short talks took 12 s before the last ones were refused). A lexical scan
+// of <talk ...>TEXT</talk> without file=, in document order: an estimate (it counts markup
+// inside a talk, and talks in comments), made exact by the checks as each talk is spoken.
+std::optional<Diagnostic> talk_text_over_budget(std::string_view text, const std::string& file, const FmlOptions& options) {
+  const Limits& limits = options.speech_limits;
+  std::int64_t bytes = 0;
+  double seconds = 0;
+  for (std::size_t at = text.find("<talk"); at != std::string_view::npos; at = text.find("<talk", at + 1)) {
+    const char after = at + 5 < text.size() ? text[at + 5] : '\0';
+    if (after != '>' && after != ' ' && after != '\t' && after != '\n' && after != '\r') continue;
+    const std::size_t open_end = text.find('>', at);
+    if (open_end == std::string_view::npos) break;
+    if (text[open_end - 1] == '/' || text.substr(at, open_end - at).find("file") != std::string_view::npos) continue;
+    const std::size_t close = text.find("</talk", open_end);
+    if (close == std::string_view::npos) break;
+    const std::string_view body = text.substr(open_end + 1, close - open_end - 1);
+    bytes += static_cast<std::int64_t>(body.size());
+    seconds += estimated_speech_seconds(body, options.words_per_minute);
+    const bool too_much_text = bytes > limits.max_speech_text_bytes;
+    if (too_much_text || seconds > limits.max_speech_seconds) {
+      const std::size_t line_start = text.rfind('\n', at);
+      const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n');
+      const Location where = Location::text(
+          file, static_cast<int>(line), static_cast<int>(at - (line_start == std::string_view::npos ? 0 : line_start + 1)) + 1);
+      char shown[32];
+      std::snprintf(shown, sizeof shown, "%.0f", seconds);
+      return too_much_text ? limit_error(where, "the talk text of this document reaches " + std::to_string(bytes) + " bytes",
+                                         Limit::speech_text, limits)
+                           : limit_error(where, std::string("the speech of this document would last at least ") + shown + " s",
+                                         Limit::speech_seconds, limits);
+    }
+    at = close;
+  }
+  return std::nullopt;
+}
+
 Result<FmlDocument> read_fml_text(std::string_view text, const std::string& file_name, const FmlOptions& options,
                                   const xml::XmlDocument::TextReleaser& release_text) {
+  if (options.synthesize) {
+    if (auto refused = talk_text_over_budget(text, file_name, options)) return *std::move(refused);
+  }
   // Only talk text is read (an FML move's, embedded or not); elsewhere white space is dropped.
   const xml::BlankText blank_text{false, {"talk"}};
   return xml::read_streamed_or_whole(text, file_name, blank_text, release_text,

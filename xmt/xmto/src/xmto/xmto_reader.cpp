@@ -9,6 +9,7 @@
 
 #include "fapc/codec/file_io.hpp"
 #include "fapc/xmto/xmto.hpp"
+#include "fapc/transcoder/audio_mix.hpp"
 #include "fml/embedded_fml.hpp"
 #include "fapc/xml/name_table.hpp"
 #include "fapc/xml/xml_document.hpp"
@@ -97,9 +98,29 @@ class DocumentReader {
     // Lowering needs the runs and the leaves, not the tree (the root's source aside): its nodes go
     // before the clips are made.
     std::vector<ScheduleNode>().swap(tree_.root.children);
+    if (Status s = check_placed_audio(schedule); !s) return s.error();
     result_.timeline = lower_to_timeline(tree_, schedule);
     once_.finish();
     return std::move(result_);
+  }
+
+  // Every run of an included animation or recording stores its own copy of its audio: their sum
+  // against the audio sample limit, before any is made (a 10^5-fold repeatCount of a recording).
+  Status check_placed_audio(const Schedule& schedule) const {
+    const Limits& limits = options_.fml.speech_limits;
+    double samples = 0;
+    for (const Occurrence& run : schedule.occurrences) {
+      const Leaf& leaf = tree_.leaves[run.leaf_id];
+      if (!leaf.included || run.end <= run.begin) continue;
+      for (const AudioClip& sound : leaf.included->audio) {
+        samples += placed_samples(sound, run.begin - run.curve_offset, run.begin, run.end);
+        if (samples > static_cast<double>(limits.max_audio_samples))
+          return limit_error(leaf.where, "the audio of this element, once per run, adds up to " +
+                                             std::to_string(static_cast<std::int64_t>(samples)) + " samples",
+                             Limit::audio_samples, limits);
+      }
+    }
+    return ok_status();
   }
 
  private:

@@ -45,8 +45,10 @@ enum class AacCoder { fast, twoloop };
 
 // Encodes the track at its own rate (which must have an AAC frequency index: 8000 to 96000 Hz
 // standard rates, else unsupported) at `bit_rate` bits per second. `where` names the output.
+// `length` > track.samples.size() continues the track with that many samples in all, the rest
+// silence that is never stored (the voice of a face that keeps moving after it).
 Result<AacStream> encode_aac(const AudioTrack& track, const std::string& where, int bit_rate = 64000,
-                             AacCoder coder = AacCoder::fast);
+                             std::size_t length = 0, AacCoder coder = AacCoder::fast);
 
 // Decodes the access units back to mono samples, the priming dropped and the result cut to
 // `stream.length` (decoders of lossy audio give close, not equal, samples). `where` names the file.

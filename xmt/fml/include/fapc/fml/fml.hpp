@@ -42,7 +42,11 @@ struct FmlOptions {
   std::string language = "en";
   std::string voice;
   double words_per_minute = 175;
-  double max_speech_seconds = 3600;  // per talk: longer is a limit_exceeded error
+  double max_speech_seconds = 3600;  // per talk (the frame limit at the frame rate): longer is refused
+  // The document's talk text and speech, all talks together (Limits::max_speech_text_bytes and
+  // max_speech_seconds, docs/security.md): checked before each talk is spoken, the seconds first
+  // as estimated from the text (estimated_speech_seconds), then as spoken.
+  Limits speech_limits;
   Coarticulation coarticulation;
   // Reads the phoneme file of `talk file=` (a path already resolved against the document's
   // folder); empty: read from disk.
