@@ -50,6 +50,10 @@ int run_batch(const std::vector<std::string>& argv) {
     if (jobs.error().where.file.empty()) return usage_error("batch", jobs.error().message);
     return report_outcome({}, jobs.error());
   }
+  // The reports' paths are refused before any job runs when they cannot take a report.
+  for (const char* report : {"report", "report-json"})
+    if (const auto path = args.value(report))
+      if (auto writable = check_output_path(*path); !writable) return report_outcome({}, writable.error());
   // A folder given to batch is the inputs' tree: their includes may read anywhere in it.
   for (const std::string& input : args.positionals())
     if (std::filesystem::is_directory(input)) options.includes.allowed_folders.push_back(input);
@@ -93,6 +97,14 @@ int run_batch(const std::vector<std::string>& argv) {
   }
   std::cout << converted << " converted, " << failed << " failed, " << outcomes.size() - converted - failed
             << " not run" << (interrupted ? " (interrupted)" : "") << '\n';
+  // A report's folder is made when missing: the output folder holding it is removed at the end
+  // of a batch whose every job failed (it was made for outputs none of which were written).
+  for (const char* report : {"report", "report-json"})
+    if (const auto path = args.value(report))
+      if (const auto folder = std::filesystem::path(*path).parent_path(); !folder.empty()) {
+        std::error_code ignored;  // a folder that cannot be made fails the report's write, which says why
+        std::filesystem::create_directories(folder, ignored);
+      }
   if (const auto report_path = args.value("report")) {
     if (auto written = write_file_atomic(*report_path, pipeline::junit_report(*jobs, outcomes)); !written)
       status = worse_status(status, report_outcome({}, written.error()));
