@@ -10,6 +10,9 @@ const char* limit_option(Limit which) {
     case Limit::runs: return "--max-runs";
     case Limit::decompressed_bytes: return "--max-decompressed-bytes";
     case Limit::expansion: return "--max-expansion";
+    case Limit::frame_pixels: return "--max-frame-pixels";
+    case Limit::sheet_pixels: return "--max-sheet-pixels";
+    case Limit::video_pixels: return "--max-video-pixels";
   }
   return "";
 }
@@ -24,6 +27,9 @@ std::string limit_value(Limit which, const Limits& limits) {
       std::snprintf(text, sizeof text, "%g", limits.max_expansion);
       return text;
     }
+    case Limit::frame_pixels: return std::to_string(limits.max_frame_pixels);
+    case Limit::sheet_pixels: return std::to_string(limits.max_sheet_pixels);
+    case Limit::video_pixels: return std::to_string(limits.max_video_pixels);
   }
   return "";
 }
@@ -36,6 +42,9 @@ const char* unit(Limit which) {
     case Limit::runs: return " runs";
     case Limit::decompressed_bytes: return " bytes";
     case Limit::expansion: return " times the compressed size";
+    case Limit::frame_pixels:
+    case Limit::sheet_pixels:
+    case Limit::video_pixels: return " pixels";
   }
   return "";
 }

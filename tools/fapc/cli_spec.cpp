@@ -124,6 +124,10 @@ const std::vector<OptionSpec> kOptions = {
     {"max-decompressed-bytes", 0, "N", "refuse compressed inputs that inflate to more bytes (default 2^30)",
      FAPC_READERS},
     {"max-expansion", 0, "F", "refuse scripts that expand more than F times (default 100)", FAPC_READERS},
+    {"max-frame-pixels", 0, "N", "refuse pictures of more pixels (.png, .webm, .html; default 2^22)", FAPC_CONVERTERS},
+    {"max-sheet-pixels", 0, "N", "refuse contact sheets of more pixels (default 2^27)", FAPC_CONVERTERS},
+    {"max-video-pixels", 0, "N", "refuse videos of more pixels in all, pictures x size (default 2^31)",
+     FAPC_CONVERTERS},
 };
 
 #undef FAPC_READERS
