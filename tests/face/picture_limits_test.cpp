@@ -40,7 +40,7 @@ TEST(PictureLimits, ASheetOfMorePixelsThanTheLimitIsRefusedBeforeItIsDrawn) {
   o.sheet = 4;  // 2 x 2 cells: 15360 x 15360
   o.limits.max_frame_pixels = std::int64_t{7680} * 7680;
   const auto start = std::chrono::steady_clock::now();
-  Result<Image> sheet = render_picture(FaceTrack(constant_sequence(3, 100, 10)), o, "sheet.png");
+  Result<Image> sheet = render_picture(FaceTrack(test::constant_sequence(3, 100, 10)), o, "sheet.png");
   EXPECT_LT(seconds_since(start), 1.0);
   ASSERT_FALSE(sheet);
   EXPECT_EQ(sheet.error().kind, ErrorKind::limit_exceeded);
@@ -51,7 +51,7 @@ TEST(PictureLimits, ASheetOfMorePixelsThanTheLimitIsRefusedBeforeItIsDrawn) {
 
 TEST(PictureLimits, AVideoTooLargeInAllIsRefusedBeforeAnyPictureIsEncoded) {
   // 10^5 frames at 25 fps, 640x480: 3.07e10 pixels, some minutes of encoding.
-  const FaceTrack track(constant_sequence(3, 100, 100000));
+  const FaceTrack track(test::constant_sequence(3, 100, 100000));
   const auto start = std::chrono::steady_clock::now();
   Result<std::string> webm = encode_webm(track, VideoOptions{640, 480, 0, {}, {}}, nullptr, "long.webm");
   EXPECT_LT(seconds_since(start), 1.0);
@@ -61,7 +61,7 @@ TEST(PictureLimits, AVideoTooLargeInAllIsRefusedBeforeAnyPictureIsEncoded) {
       << webm.error().message;
   EXPECT_NE(webm.error().message.find("(--max-video-pixels N raises it)"), std::string::npos) << webm.error().message;
   // So is a picture larger than the limit, whatever the length.
-  webm = encode_webm(FaceTrack(constant_sequence(3, 100, 2)), VideoOptions{7680, 4320, 0, {}, {}}, nullptr, "big.webm");
+  webm = encode_webm(FaceTrack(test::constant_sequence(3, 100, 2)), VideoOptions{7680, 4320, 0, {}, {}}, nullptr, "big.webm");
   ASSERT_FALSE(webm);
   EXPECT_NE(webm.error().message.find("(--max-frame-pixels N raises it)"), std::string::npos) << webm.error().message;
 }
@@ -74,7 +74,7 @@ TEST(PictureLimits, AVideoWithinTheLimitsIsEncodedAndReportsItsProgress) {
     last = done;
     total = all;
   };
-  Result<std::string> webm = encode_webm(FaceTrack(constant_sequence(3, 100, 10)), o, nullptr, "short.webm");
+  Result<std::string> webm = encode_webm(FaceTrack(test::constant_sequence(3, 100, 10)), o, nullptr, "short.webm");
   ASSERT_TRUE(webm) << webm.error().message;
   EXPECT_EQ(total, 10);
   EXPECT_EQ(last, 10);
