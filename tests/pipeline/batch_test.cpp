@@ -157,6 +157,7 @@ TEST(BatchRun, FoldersMadeForOutputsNoneWroteAreRemoved) {
 TEST(BatchRun, OnlyTheEmptyFoldersGo) {
   const test::TempFolder tmp;
   copy_example("fap/joy.fap", tmp / "in/a/joy.fap");
+  fs::create_directories(tmp / "in/b");
   ASSERT_TRUE(write_file_atomic(tmp / "in/b/bad.fap", "not a fap file"));
   auto jobs = pipeline::plan_batch({tmp / "in"}, tmp / "out", {"fap"});
   ASSERT_TRUE(jobs);
