@@ -156,7 +156,8 @@ std::vector<std::string_view> closest_fap_names(std::string_view name, std::size
 std::string unknown_fap_message(std::string_view name) {
   std::vector<std::string> best;
   for (const std::string_view n : closest_fap_names(name)) best.emplace_back(n);
-  return "unknown FAP name '" + std::string(name) + "'; did you mean " + or_list(best) + "?";
+  const std::string unknown = "unknown FAP name " + quoted_name(name);
+  return best.empty() ? unknown : unknown + "; did you mean " + or_list(best) + "?";
 }
 
 std::string_view viseme_name(int viseme) {

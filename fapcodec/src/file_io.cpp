@@ -11,6 +11,8 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <memory>
 #include <random>
 #include <system_error>
 #include <utility>
@@ -228,31 +230,114 @@ Result<SourceText> SourceText::open(const std::string& path, const Limits& limit
 
 namespace {
 
+std::string folder_of(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  if (slash == std::string::npos) return ".";
+  return slash == 0 ? "/" : path.substr(0, slash);
+}
+
 std::string temporary_path(const std::string& path) {
   const auto slash = path.find_last_of('/');
-  const std::string folder = slash == std::string::npos ? "." : path.substr(0, slash);
-  return folder + "/.fapc-tmp-" + temporary_name() + "-" +
+  return folder_of(path) + "/.fapc-tmp-" + temporary_name() + "-" +
          (slash == std::string::npos ? path : path.substr(slash + 1));
+}
+
+// A file without a name in `folder` (O_TMPFILE; a named file removed at once where the file
+// system has no unnamed ones), open for reading and writing, or -1.
+int open_unnamed(const std::string& folder) {
+  int fd = -1;
+#ifdef O_TMPFILE
+  fd = ::open(folder.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
+#endif
+  if (fd < 0) {
+    const std::string temp = folder + "/.fapc-tmp-" + temporary_name();
+    fd = ::open(temp.c_str(), O_CREAT | O_EXCL | O_RDWR | O_CLOEXEC | O_NOFOLLOW, 0600);
+    if (fd >= 0) ::unlink(temp.c_str());
+  }
+  return fd;
+}
+
+// Where an output bound for a device or a FIFO waits until it is whole: the temporary folder
+// ($TMPDIR), not the device's folder (/dev is no place for files).
+std::string scratch_folder_for(const std::string& output) {
+  auto target = output_target(output);
+  if (!target || target->way == OutputTarget::Way::replace) return folder_of(output);
+  std::error_code ignored;
+  const std::string temp = std::filesystem::temp_directory_path(ignored).string();
+  return temp.empty() ? "/tmp" : temp;
+}
+
+Status write_whole(int fd, std::string_view bytes, const std::string& path) {
+  while (!bytes.empty()) {
+    const ssize_t put = ::write(fd, bytes.data(), bytes.size());
+    if (put < 0 && errno == EINTR) continue;
+    if (put <= 0) return io_error(path, "cannot write output");
+    bytes.remove_prefix(static_cast<std::size_t>(put));
+  }
+  return ok_status();
+}
+
+// Opens a device or FIFO output for writing: never created, never truncated (neither means
+// anything there), and checked again on the open descriptor in case the name changed since it
+// was looked at. Opening a FIFO waits for its reader, as the shell's `>` does.
+Result<int> open_stream(const std::string& path, const std::string& file) {
+  Descriptor out(::open(file.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC));
+  if (out.get() < 0) return io_error(path, "cannot open output");
+  struct stat info {};
+  if (::fstat(out.get(), &info) != 0) return io_error(path, "cannot open output");
+  if (!S_ISCHR(info.st_mode) && !S_ISFIFO(info.st_mode))
+    return make_error(ErrorKind::io, Location{path, 0, 0, -1}, "is no longer a character device or a FIFO; nothing written");
+  return out.release();
+}
+
+// Before the rename: the name must still hold a regular file, or nothing (it may have been
+// replaced by something else while the output was made).
+Status still_replaceable(const std::string& path, const std::string& file) {
+  struct stat info {};
+  if (::lstat(file.c_str(), &info) == 0 && !S_ISREG(info.st_mode))
+    return make_error(ErrorKind::io, Location{path, 0, 0, -1}, "is no longer a regular file; nothing written");
+  return ok_status();
 }
 
 }  // namespace
 
 Result<AtomicFile> AtomicFile::create(const std::string& path) {
-  std::string temp = temporary_path(path);
-  std::FILE* file = std::fopen(temp.c_str(), "wbe");
-  if (!file) return io_error(path, "cannot create output");
-  return AtomicFile(path, std::move(temp), file);
+  auto target = output_target(path);
+  if (!target) return target.error();
+  if (target->way == OutputTarget::Way::stream) {
+    const int fd = open_unnamed(scratch_folder_for(path));
+    std::FILE* file = fd < 0 ? nullptr : ::fdopen(fd, "w+");
+    if (!file) {
+      if (fd >= 0) ::close(fd);
+      return io_error(path, "cannot create output");
+    }
+    return AtomicFile(path, std::move(*target), std::string(), file);
+  }
+  std::string temp = temporary_path(target->file);
+  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
+  if (fd < 0) return io_error(path, "cannot create output");
+  // A file replaced keeps its permissions: a private output stays private.
+  struct stat existing {};
+  if (::stat(target->file.c_str(), &existing) == 0 && S_ISREG(existing.st_mode))
+    ::fchmod(fd, existing.st_mode & 0777);
+  std::FILE* file = ::fdopen(fd, "wb");
+  if (!file) {
+    ::close(fd);
+    std::remove(temp.c_str());
+    return io_error(path, "cannot create output");
+  }
+  return AtomicFile(path, std::move(*target), std::move(temp), file);
 }
 
 AtomicFile::AtomicFile(AtomicFile&& other) noexcept
-    : path_(std::move(other.path_)), temp_(std::move(other.temp_)), file_(other.file_) {
+    : path_(std::move(other.path_)), target_(std::move(other.target_)), temp_(std::move(other.temp_)), file_(other.file_) {
   other.file_ = nullptr;
 }
 
 AtomicFile::~AtomicFile() {
   if (!file_) return;
   std::fclose(file_);
-  std::remove(temp_.c_str());
+  if (!temp_.empty()) std::remove(temp_.c_str());
 }
 
 Status AtomicFile::write(std::string_view bytes) {
@@ -263,6 +348,7 @@ Status AtomicFile::write(std::string_view bytes) {
 
 Status AtomicFile::commit() {
   if (!file_) return io_error(path_, "cannot write output");
+  if (target_.way == OutputTarget::Way::stream) return commit_to_stream();
   const bool flushed = std::fflush(file_) == 0 && !std::ferror(file_);
   const bool closed = std::fclose(file_) == 0;
   file_ = nullptr;
@@ -271,11 +357,36 @@ Status AtomicFile::commit() {
     std::remove(temp_.c_str());
     return error;
   }
-  if (std::rename(temp_.c_str(), path_.c_str()) != 0) {
+  if (auto replaceable = still_replaceable(path_, target_.file); !replaceable) {
+    std::remove(temp_.c_str());
+    return replaceable;
+  }
+  if (std::rename(temp_.c_str(), target_.file.c_str()) != 0) {
     const Diagnostic error = io_error(path_, "cannot replace output");
     std::remove(temp_.c_str());
     return error;
   }
+  return ok_status();
+}
+
+// The whole output, from its scratch file to the device or FIFO, now that nothing can fail
+// before it is complete.
+Status AtomicFile::commit_to_stream() {
+  std::FILE* scratch = std::exchange(file_, nullptr);
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> closing(scratch, &std::fclose);
+  if (std::fflush(scratch) != 0 || std::ferror(scratch) || std::fseek(scratch, 0, SEEK_SET) != 0)
+    return io_error(path_, "cannot write output");
+  auto opened = open_stream(path_, target_.file);
+  if (!opened) return opened.error();
+  const Descriptor out(*opened);
+  std::string buffer(std::size_t{1} << 20, '\0');
+  for (;;) {
+    const std::size_t got = std::fread(buffer.data(), 1, buffer.size(), scratch);
+    if (got > 0)
+      if (auto written = write_whole(out.get(), {buffer.data(), got}, path_); !written) return written;
+    if (got < buffer.size()) break;
+  }
+  if (std::ferror(scratch)) return io_error(path_, "cannot write output");
   return ok_status();
 }
 
@@ -285,6 +396,15 @@ Status write_file_atomic(const std::string& path, std::string_view bytes) {
     data = gzip(bytes);
     bytes = data;
   }
+  // A device or FIFO takes the bytes, already whole, directly.
+  auto target = output_target(path);
+  if (!target) return target.error();
+  if (target->way == OutputTarget::Way::stream) {
+    auto opened = open_stream(path, target->file);
+    if (!opened) return opened.error();
+    const Descriptor out(*opened);
+    return write_whole(out.get(), bytes, path);
+  }
   auto file = AtomicFile::create(path);
   if (!file) return file.error();
   if (auto written = file->write(bytes); !written) return written;
@@ -292,17 +412,7 @@ Status write_file_atomic(const std::string& path, std::string_view bytes) {
 }
 
 Result<ScratchFile> ScratchFile::create(const std::string& output) {
-  const auto slash = output.find_last_of('/');
-  const std::string folder = slash == std::string::npos ? "." : output.substr(0, slash);
-  int fd = -1;
-#ifdef O_TMPFILE
-  fd = ::open(folder.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
-#endif
-  if (fd < 0) {  // no unnamed files here: a named one, unlinked at once
-    const std::string temp = temporary_path(output);
-    fd = ::open(temp.c_str(), O_CREAT | O_EXCL | O_RDWR | O_CLOEXEC, 0600);
-    if (fd >= 0) ::unlink(temp.c_str());
-  }
+  const int fd = open_unnamed(scratch_folder_for(output));
   if (fd < 0) return io_error(output, "cannot create output");
   std::FILE* file = ::fdopen(fd, "w+");
   if (!file) {

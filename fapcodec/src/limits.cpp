@@ -13,6 +13,9 @@ const char* limit_option(Limit which) {
     case Limit::audio_samples: return "--max-audio-samples";
     case Limit::speech_text: return "--max-speech-text";
     case Limit::speech_seconds: return "--max-speech-seconds";
+    case Limit::frame_pixels: return "--max-frame-pixels";
+    case Limit::sheet_pixels: return "--max-sheet-pixels";
+    case Limit::video_pixels: return "--max-video-pixels";
   }
   return "";
 }
@@ -30,6 +33,9 @@ std::string limit_value(Limit which, const Limits& limits) {
     }
     case Limit::audio_samples: return std::to_string(limits.max_audio_samples);
     case Limit::speech_text: return std::to_string(limits.max_speech_text_bytes);
+    case Limit::frame_pixels: return std::to_string(limits.max_frame_pixels);
+    case Limit::sheet_pixels: return std::to_string(limits.max_sheet_pixels);
+    case Limit::video_pixels: return std::to_string(limits.max_video_pixels);
   }
   return "";
 }
@@ -45,6 +51,9 @@ const char* unit(Limit which) {
     case Limit::audio_samples: return " audio samples";
     case Limit::speech_text: return " bytes of speech text";
     case Limit::speech_seconds: return " seconds of speech";
+    case Limit::frame_pixels:
+    case Limit::sheet_pixels:
+    case Limit::video_pixels: return " pixels";
   }
   return "";
 }

@@ -39,5 +39,20 @@ TEST(DidYouMean, FapNamesUseTheSameRanking) {
   EXPECT_EQ(unknown_fap_message("opn_jaw").rfind("unknown FAP name 'opn_jaw'; did you mean open_jaw, ", 0), 0u);
 }
 
+// A name of a million letters costs no more than a short one: only candidates within the search's
+// distance of its length are compared (it took 3 s, and printed the whole name, before).
+TEST(DidYouMean, ALongNameIsSearchedAndQuotedWithinBounds) {
+  EXPECT_EQ(bounded_edit_distance("kitten", "sitting", 3), 3u);
+  EXPECT_EQ(bounded_edit_distance("kitten", "sitting", 2), 3u);  // past the bound: bound + 1
+  EXPECT_EQ(bounded_edit_distance("a", "abcdefgh", 2), 3u);
+  EXPECT_EQ(bounded_edit_distance("complie", "compile", 5), 2u);
+  const std::string name(1000000, 'q');
+  EXPECT_TRUE(closest_names(name, {"open_jaw", "raise_b_midlip"}).empty());
+  EXPECT_EQ(did_you_mean(name, {"open_jaw"}), "");
+  EXPECT_EQ(quoted_name(name), "'" + std::string(64, 'q') + "...' (1000000 characters)");
+  EXPECT_EQ(quoted_name("jw"), "'jw'");
+  EXPECT_EQ(unknown_fap_message(name), "unknown FAP name '" + std::string(64, 'q') + "...' (1000000 characters)");
+}
+
 }  // namespace
 }  // namespace fapc

@@ -673,6 +673,28 @@ def speech_cases():
         compile_case("xmto.speech.audio-repeat-1e5",
                      xmto('<audio src="a.wav" repeatCount="100000"/>'), out="out/out.fap",
                      files={"a.wav": lambda: wav(22050, 22050)}),
+def output_cases():
+    """Issue 32: outputs that are not files (an output is replaced only if it is a regular file),
+    a batch whose every job fails (no folder left), and a name of a million letters (the "did you
+    mean" search and the quoted name stay bounded)."""
+    def no_out_folder(folder, stderr):
+        return "the batch left its output folder" if os.path.exists(os.path.join(folder, "made")) else None
+
+    def still_folder(folder, stderr):
+        return None if os.path.isdir(os.path.join(folder, "folder")) else "the folder named as output is gone"
+    long_name = "q" * 1000000
+    return [
+        Case("output.notfile.directory", {"in.mimic": GOOD["mimic"], "folder": DIR},
+             ["compile", "in.mimic", "-o", "folder", "--to", "fap"], diagnostic="named", check=still_folder),
+        Case("output.notfile.directory-webm", {"in.mimic": GOOD["mimic"], "folder": DIR},
+             ["render", "in.mimic", "-o", "folder", "--to", "webm"], diagnostic="named", check=still_folder),
+        Case("output.notfile.plot-directory", {"in.mimic": GOOD["mimic"], "folder": DIR},
+             ["plot", "in.mimic", "-o", "folder", "--to", "svg"], diagnostic="named", check=still_folder),
+        Case("batch.notfile.every-job-fails", {"in/a.mimic": GOOD["mimic"], "in/b.fap": GOOD["fap"]},
+             ["batch", "in", "-o", "made", "--to", "wav", "--keep-going"], diagnostic="named",
+             check=no_out_folder),
+        compile_case("mimic.huge.unknown-name-1e6", mimic(long_name + " <hold=1,value=0.1>;")),
+        compile_case("mimic.huge.unknown-parameter-1e6", mimic("jaw <" + long_name + "=1>;")),
     ]
 
 
@@ -680,6 +702,8 @@ def all_cases():
     cases = (not_a_file_cases() + depth_cases() + cycle_cases() + huge_cases() + number_cases()
              + truncation_cases() + junk_cases() + wrong_result_cases() + diagnostic_cases()
              + batch_cases() + csv_cases() + speech_cases())
+             + batch_cases())
+    cases += output_cases()
     names = [c.name for c in cases]
     duplicates = {n for n in names if names.count(n) > 1}
     if duplicates:

@@ -132,5 +132,41 @@ TEST(BatchRun, AStopSetBeforehandRunsNothing) {
   for (const auto& outcome : pipeline::run_batch(*jobs, {}, run)) EXPECT_FALSE(outcome.ran);
 }
 
+// `--to wav` over inputs without a voice fails every job: the output folders the batch made for
+// them go again (a failed batch leaves nothing, as a failed compile does); a folder that was
+// there before stays.
+TEST(BatchRun, FoldersMadeForOutputsNoneWroteAreRemoved) {
+  const test::TempFolder tmp;
+  copy_example("fap/joy.fap", tmp / "in/a/joy.fap");
+  copy_example("fap/anger.fap", tmp / "in/b/c/anger.fap");
+  auto jobs = pipeline::plan_batch({tmp / "in"}, tmp / "out", {"wav"});
+  ASSERT_TRUE(jobs) << jobs.error().message;
+  pipeline::BatchRunOptions run;
+  run.keep_going = true;
+  for (const auto& outcome : pipeline::run_batch(*jobs, {}, run)) EXPECT_FALSE(outcome.result.ok());
+  EXPECT_FALSE(fs::exists(tmp / "out"));
+  fs::create_directories(tmp / "kept");
+  jobs = pipeline::plan_batch({tmp / "in"}, tmp / "kept", {"wav"});
+  ASSERT_TRUE(jobs);
+  pipeline::run_batch(*jobs, {}, run);
+  EXPECT_TRUE(fs::is_directory(tmp / "kept"));
+  EXPECT_TRUE(fs::is_empty(tmp / "kept"));
+}
+
+// When some jobs succeed, only the folders of the failed ones go.
+TEST(BatchRun, OnlyTheEmptyFoldersGo) {
+  const test::TempFolder tmp;
+  copy_example("fap/joy.fap", tmp / "in/a/joy.fap");
+  fs::create_directories(tmp / "in/b");
+  ASSERT_TRUE(write_file_atomic(tmp / "in/b/bad.fap", "not a fap file"));
+  auto jobs = pipeline::plan_batch({tmp / "in"}, tmp / "out", {"fap"});
+  ASSERT_TRUE(jobs);
+  pipeline::BatchRunOptions run;
+  run.keep_going = true;
+  pipeline::run_batch(*jobs, {}, run);
+  EXPECT_TRUE(fs::exists(tmp / "out/a/joy.fap"));
+  EXPECT_FALSE(fs::exists(tmp / "out/b"));
+}
+
 }  // namespace
 }  // namespace fapc

@@ -141,6 +141,10 @@ const std::vector<OptionSpec> kOptions = {
     {"max-audio-samples", 0, "N", "refuse voice tracks of more samples (default 2^27)", FAPC_READERS},
     {"max-speech-text", 0, "N", "refuse documents with more bytes of talk text (default 65536)", FAPC_READERS},
     {"max-speech-seconds", 0, "S", "refuse documents with more seconds of speech (default 1800)", FAPC_READERS},
+    {"max-frame-pixels", 0, "N", "refuse pictures of more pixels (.png, .webm, .html; default 2^22)", FAPC_CONVERTERS},
+    {"max-sheet-pixels", 0, "N", "refuse contact sheets of more pixels (default 2^27)", FAPC_CONVERTERS},
+    {"max-video-pixels", 0, "N", "refuse videos of more pixels in all, pictures x size (default 2^31)",
+     FAPC_CONVERTERS},
 };
 
 #undef FAPC_READERS

@@ -135,6 +135,10 @@ int run_batch(const std::vector<std::string>& argv) {
     listed = std::move(*paths);
     if (inputs.empty()) inputs.push_back(".");
   }
+  // The reports' paths are refused before any job runs when they cannot take a report.
+  for (const char* report : {"report", "report-json"})
+    if (const auto path = args.value(report))
+      if (auto writable = check_output_path(*path); !writable) return report_outcome({}, writable.error());
   if (inputs.empty()) return usage_error("batch", "expected at least one INPUT");
   auto shard = chosen_shard(args);
   if (!shard) return usage_error("batch", shard.error().message);
@@ -204,6 +208,14 @@ int run_batch(const std::vector<std::string>& argv) {
       status = worse_status(status, exit_status(o.result.error->kind));
     }
   }
+  // A report's folder is made when missing: the output folder holding it is removed at the end
+  // of a batch whose every job failed (it was made for outputs none of which were written).
+  for (const char* report : {"report", "report-json"})
+    if (const auto path = args.value(report))
+      if (const auto folder = std::filesystem::path(*path).parent_path(); !folder.empty()) {
+        std::error_code ignored;  // a folder that cannot be made fails the report's write, which says why
+        std::filesystem::create_directories(folder, ignored);
+      }
   std::cout << converted << " converted, " << failed << " failed, " << outcomes.size() - converted - failed - up_to_date
             << " not run";
   if (up_to_date) std::cout << ", " << up_to_date << " up to date";

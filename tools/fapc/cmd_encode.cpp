@@ -19,6 +19,8 @@ int run_encode(const std::vector<std::string>& argv) {
   if (args.positionals().size() != 1) return usage_error("encode", "expected one input file");
   const auto output = args.value("output");
   if (!output) return usage_error("encode", "missing -o OUT.fba");
+  // An output that cannot be written is refused before the work (it is checked again when written).
+  if (auto writable = check_output_path(*output); !writable) return report_outcome({}, writable.error());
   std::string input = args.positionals().front();
   StandardInputCopy copy;
   if (const auto error = resolve_input(args, input, options, copy)) return usage_error("encode", *error);

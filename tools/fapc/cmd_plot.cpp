@@ -29,6 +29,8 @@ int run_plot(const std::vector<std::string>& argv) {
   pipeline::PlotKind kind{};
   if (!pipeline::plot_kind_for(to.empty() ? *output : "x." + to, kind))
     return usage_error("plot", "the output must be .svg, .png, .pdf or .csv: '" + (to.empty() ? *output : to) + "'");
+  // An output that cannot be written is refused before the work (it is checked again when written).
+  if (auto writable = check_output_path(*output); !writable) return report_outcome({}, writable.error());
   std::string input = args.positionals().front();
   StandardInputCopy copy;
   if (const auto error = resolve_input(args, input, options, copy)) return usage_error("plot", *error);

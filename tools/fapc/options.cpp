@@ -27,6 +27,13 @@ ConvertOptions convert_options(Args& args) {
   if (const auto bytes = args.decimal("max-speech-text", 1, 1e12))
     options.limits.max_speech_text_bytes = static_cast<std::int64_t>(*bytes);
   if (const auto seconds = args.decimal("max-speech-seconds", 1, 1e9)) options.limits.max_speech_seconds = *seconds;
+  // Pictures (docs/security.md): pixels per picture, per contact sheet, per video in all.
+  const auto pixels = [&args](const char* name, std::int64_t& into) {
+    if (const auto value = args.decimal(name, 1, 1e15)) into = static_cast<std::int64_t>(*value);
+  };
+  pixels("max-frame-pixels", options.limits.max_frame_pixels);
+  pixels("max-sheet-pixels", options.limits.max_sheet_pixels);
+  pixels("max-video-pixels", options.limits.max_video_pixels);
   options.strict = args.flag("strict");
   options.verify = args.flag("verify");
   // Two-way choices: the option's value must be one of the two words.

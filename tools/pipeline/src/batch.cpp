@@ -156,8 +156,43 @@ Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs,
 
 namespace {
 
+// The folders a batch made for its outputs, so that those left empty (every job writing there
+// failed) can be removed at the end: a failed batch leaves nothing behind, as a failed compile
+// does. Removed only once every job is done, so no job finds its folder gone.
+class MadeFolders {
+ public:
+  // Makes `folder` and its missing parents, remembering which were missing.
+  void make(const fs::path& folder, std::error_code& ec) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<fs::path> missing;
+    for (fs::path at = folder; !at.empty() && !fs::exists(at, ec); at = at.parent_path()) {
+      missing.push_back(at);
+      if (at == at.parent_path()) break;
+    }
+    ec.clear();
+    fs::create_directories(folder, ec);
+    if (!ec) made_.insert(made_.end(), missing.begin(), missing.end());
+  }
+  // Removes the folders made that are empty, the deepest first (a folder holding only empty
+  // folders made here is empty once they are gone). A folder with anything in it stays.
+  void remove_empty() {
+    std::sort(made_.begin(), made_.end(), [](const fs::path& a, const fs::path& b) {
+      return std::distance(a.begin(), a.end()) > std::distance(b.begin(), b.end());
+    });
+    for (const fs::path& folder : made_) {
+      std::error_code ec;
+      if (fs::is_empty(folder, ec) && !ec) fs::remove(folder, ec);
+    }
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<fs::path> made_;
+};
+
 // One job, whatever happens inside: an exception becomes the job's error.
-BatchOutcome run_job(const BatchJob& job, const ConvertOptions& options, const BatchRunOptions& run) {
+BatchOutcome run_job(const BatchJob& job, const ConvertOptions& options, const BatchRunOptions& run,
+                     MadeFolders& folders) {
   BatchOutcome outcome;
   const auto start = std::chrono::steady_clock::now();
   const auto finish = [&] {
@@ -176,7 +211,7 @@ BatchOutcome run_job(const BatchJob& job, const ConvertOptions& options, const B
     for (const OutputRequest& output : job.outputs) {
       std::error_code ec;
       const fs::path folder = fs::path(output.path).parent_path();
-      if (!folder.empty()) fs::create_directories(folder, ec);
+      if (!folder.empty()) folders.make(folder, ec);
       if (ec) {
         outcome.result.error = make_error(ErrorKind::io, Location{folder.string(), 0, 0, -1},
                                           "cannot create the folder: " + ec.message());
@@ -207,6 +242,7 @@ std::vector<BatchOutcome> run_batch(const std::vector<BatchJob>& jobs, const Con
   std::atomic<bool> failed_stop{false};
   std::mutex report;  // held only to hand finished jobs to the callbacks, never while converting
   std::size_t reported = 0, done = 0;
+  MadeFolders folders;
   const auto stopping = [&] { return failed_stop.load() || (run.stop && run.stop->load()); };
   // Hands every job finished in input order since the last call to in_order. Under `report`.
   const auto hand_over = [&] {
@@ -215,7 +251,7 @@ std::vector<BatchOutcome> run_batch(const std::vector<BatchJob>& jobs, const Con
   };
   const auto worker = [&] {
     for (std::size_t i; !stopping() && (i = next++) < jobs.size();) {
-      BatchOutcome outcome = run_job(jobs[i], options, run);
+      BatchOutcome outcome = run_job(jobs[i], options, run, folders);
       if (!outcome.result.ok() && !run.keep_going) failed_stop = true;
       const std::lock_guard<std::mutex> lock(report);
       outcomes[i] = std::move(outcome);
@@ -232,6 +268,7 @@ std::vector<BatchOutcome> run_batch(const std::vector<BatchJob>& jobs, const Con
   for (std::size_t t = 1; t < count; ++t) threads.emplace_back(worker);
   worker();  // this thread is one of the pool
   for (std::thread& t : threads) t.join();
+  folders.remove_empty();
   // Jobs stopped before starting leave gaps: what ran after a gap is handed over now, in order.
   for (std::size_t i = 0; i < jobs.size(); ++i) finished[i] = 1;
   hand_over();

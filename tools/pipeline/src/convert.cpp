@@ -67,12 +67,14 @@ void write_all(ConvertResult& result, const std::vector<const OutputFormat*>& wr
   if (options.progress) options.progress("done", total, total);
 }
 
-// Every writer, or the first unknown kind: a typo in -o should not cost a long compile.
+// Every writer, or the first unknown kind or output that cannot be written (a directory, a
+// block device): a typo in -o should not cost a long compile.
 std::optional<Diagnostic> find_writers(const std::vector<OutputRequest>& outputs,
                                        std::vector<const OutputFormat*>& writers) {
   for (const OutputRequest& request : outputs) {
     auto writer = writer_for(request);
     if (!writer) return writer.error();
+    if (auto writable = check_output_path(request.path); !writable) return writable.error();
     writers.push_back(*writer);
   }
   return std::nullopt;

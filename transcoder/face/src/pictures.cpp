@@ -32,6 +32,10 @@ Status check_picture_options(const PictureOptions& o, const std::string& where) 
                       "--size " + std::to_string(o.width) + "x" + std::to_string(o.height) +
                           ": each side must be " + std::to_string(kMinSide) + " to " +
                           std::to_string(kMaxSide) + " pixels");
+  const std::string size = std::to_string(o.width) + "x" + std::to_string(o.height);
+  if (std::int64_t{o.width} * o.height > o.limits.max_frame_pixels)
+    return limit_error(at, "--size " + size + " is " + std::to_string(std::int64_t{o.width} * o.height) + " pixels a picture",
+                       Limit::frame_pixels, o.limits);
   if (o.frame && o.time) return make_error(ErrorKind::usage, at, "give --frame or --time, not both");
   if (o.sheet && (o.frame || o.time))
     return make_error(ErrorKind::usage, at, "--sheet picks its own frames; drop --frame/--time");
@@ -49,6 +53,10 @@ Status check_picture_options(const PictureOptions& o, const std::string& where) 
                         "a contact sheet of " + std::to_string(*o.sheet) + " cells at --size " +
                             std::to_string(o.width) + "x" + std::to_string(o.height) +
                             " would pass 16384 pixels on a side; use a smaller --size");
+    const std::int64_t pixels = std::int64_t{columns} * o.width * rows * o.height;
+    if (pixels > o.limits.max_sheet_pixels)
+      return limit_error(at, "a contact sheet of " + std::to_string(*o.sheet) + " cells at --size " + size + " is " +
+                                 std::to_string(pixels) + " pixels", Limit::sheet_pixels, o.limits);
   }
   return ok_status();
 }

@@ -224,8 +224,8 @@ class Parser {
       if (!name) return name.error();
       const std::optional<ParamName> id = param_name(name->text);
       if (!id) {
-        return error_at(*name, "unknown parameter '" + name->str() +
-                                   "' (expected left, right, in, hold, out, value, connect, "
+        return error_at(*name, "unknown parameter " + quoted_name(name->text) +
+                                   " (expected left, right, in, hold, out, value, connect, "
                                    "duration, freq, period, min, max, linear, sin, log, exp, "
                                    "average, add or overwrite)");
       }

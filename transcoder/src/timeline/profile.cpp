@@ -121,7 +121,7 @@ std::string unknown_parameter_message(std::string_view name, const Profile& prof
     if (fap.number > 2) candidates.emplace_back(fap.name);
   }
   const std::vector<std::string> best = closest_names(name, candidates, 3);
-  std::string message = "unknown animation parameter '" + std::string(name) + "'";
+  std::string message = "unknown animation parameter " + quoted_name(name);
   for (std::size_t i = 0; i < best.size(); ++i) message += (i == 0 ? "; did you mean " : ", ") + best[i];
   return message + (best.empty() ? "" : "?");
 }

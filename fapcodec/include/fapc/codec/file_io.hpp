@@ -10,6 +10,7 @@
 
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/limits.hpp"
+#include "fapc/codec/output_target.hpp"
 
 namespace fapc {
 
@@ -67,13 +68,16 @@ bool is_gzip(std::string_view bytes);
 Result<std::string> gunzip(std::string_view bytes, const std::string& file, const Limits& limits = {});
 std::string gzip(std::string_view bytes);
 
-// Writes to a temporary file in the target's folder, then renames it over the target.
-// A path ending in ".gz" is compressed first.
+// Writes to a temporary file in the target's folder, then renames it over the target; a
+// character device or a FIFO is written directly (output_target.hpp says which, and what is
+// refused). A path ending in ".gz" is compressed first.
 Status write_file_atomic(const std::string& path, std::string_view bytes);
 
 // The same, in pieces, for outputs too long to hold: the bytes go to a temporary file in the
 // target's folder, which commit() renames over the target. Until then the target is untouched,
 // and a file never committed is removed (an error found late still leaves nothing). No gzip.
+// A device or FIFO target gets the bytes from an unnamed file in the temporary folder when
+// commit() is called, so that it too sees a whole output or nothing.
 class AtomicFile {
  public:
   static Result<AtomicFile> create(const std::string& path);
@@ -87,12 +91,16 @@ class AtomicFile {
   Status commit();
 
  private:
-  AtomicFile(std::string path, std::string temp, std::FILE* file) : path_(std::move(path)), temp_(std::move(temp)), file_(file) {}
-  std::string path_, temp_;
+  AtomicFile(std::string path, OutputTarget target, std::string temp, std::FILE* file)
+      : path_(std::move(path)), target_(std::move(target)), temp_(std::move(temp)), file_(file) {}
+  Status commit_to_stream();
+  std::string path_;
+  OutputTarget target_;
+  std::string temp_;           // the file renamed over the target; empty for a device or FIFO
   std::FILE* file_ = nullptr;  // null once committed or moved from
 };
 
-// An unnamed file beside an output, to write and read back: the body of an output whose
+// An unnamed file beside an output (in the temporary folder for a device or FIFO), to write and read back: the body of an output whose
 // beginning is known only at the end (a .fap header gives the frame count). It never has a name
 // (O_TMPFILE; a named file removed at once where the file system has no unnamed ones), so nothing
 // is left behind whatever happens. Errors name the output.

@@ -39,13 +39,27 @@ struct Limits {
   // Seconds of speech one document may synthesise, all talks together: estimated from the text
   // before synthesis, and counted during it. Synthesis costs some 0.004 s per second of speech.
   double max_speech_seconds = 1800;
+  // Pixels of one picture (--size) of a .png, .webm or .html output: the VP9 encoder's buffers
+  // grow with it (some 100 bytes a pixel: 7680x4320 took 3.6 GB). 2^22 is 2560x1600 or 2048x2048.
+  std::int64_t max_frame_pixels = std::int64_t{1} << 22;
+  // Pixels of a .png contact sheet (--sheet N cells of --size each), held whole at 4 bytes a
+  // pixel while drawn and coded: 2^27 is 512 MB, and lets the largest sheet at the default size
+  // through (400 cells of 640x480 are 12800x9600).
+  std::int64_t max_sheet_pixels = std::int64_t{1} << 27;
+  // Pixels a .webm or .html video encodes in all (pictures x pixels of each), estimated from the
+  // animation's duration and the picture rate before any picture is drawn: the video's time
+  // (docs/security.md, "Resource limits").
+  std::int64_t max_video_pixels = std::int64_t{2} << 30;
 };
 
 // Below this many inflated bytes the expansion factor is not checked (tiny, very regular files
 // compress far better than 100:1 and are harmless).
 inline constexpr std::int64_t kExpansionFloor = std::int64_t{1} << 20;
 
-enum class Limit { frames, runs, decompressed_bytes, expansion, audio_samples, speech_text, speech_seconds };
+enum class Limit {
+  frames, runs, decompressed_bytes, expansion, audio_samples, speech_text, speech_seconds,
+  frame_pixels, sheet_pixels, video_pixels
+};
 
 // "--max-frames" ... : the option of `fapc compile` (and every command that reads inputs) that
 // raises the limit.

@@ -11,13 +11,18 @@ namespace fapc::pipeline::builtin {
 
 namespace {
 
-face::PictureOptions picture_options(const ConvertOptions& options) {
+face::PictureOptions picture_options(const ConvertOptions& options, const std::string& path) {
   const PictureSettings& p = options.picture;
-  return face::PictureOptions{p.width, p.height, p.frame, p.time, p.sheet, p.frame_rate, p.points};
+  face::PictureOptions picture{p.width, p.height, p.frame, p.time, p.sheet, p.frame_rate, p.points, options.limits, {}};
+  if (options.progress)
+    picture.progress = [&options, path](std::int64_t done, std::int64_t total) {
+      options.progress("encoding " + path, done, total);
+    };
+  return picture;
 }
 
 Result<std::string> write_png(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
-  return face::face_png(loaded.frames, picture_options(options), path);
+  return face::face_png(loaded.frames, picture_options(options, path), path);
 }
 
 // The voice beside the face, as the video writer takes it; none when the input has none.
@@ -34,12 +39,12 @@ std::optional<face::AudioInput> voice_of(const Loaded& loaded) {
 
 Result<std::string> write_webm(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
   const auto voice = voice_of(loaded);
-  return face::face_webm(loaded.frames, picture_options(options), voice ? &*voice : nullptr, path);
+  return face::face_webm(loaded.frames, picture_options(options, path), voice ? &*voice : nullptr, path);
 }
 
 Result<std::string> write_html(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
   const auto voice = voice_of(loaded);
-  return face::face_html(loaded.frames, picture_options(options), voice ? &*voice : nullptr,
+  return face::face_html(loaded.frames, picture_options(options, path), voice ? &*voice : nullptr,
                          std::filesystem::path(path).stem().string(), path);
 }
 

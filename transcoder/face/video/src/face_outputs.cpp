@@ -7,7 +7,7 @@ namespace fapc::face {
 namespace {
 
 VideoOptions video_options(const PictureOptions& options) {
-  return VideoOptions{options.width, options.height, options.frame_rate};
+  return VideoOptions{options.width, options.height, options.frame_rate, options.limits, options.progress};
 }
 
 }  // namespace

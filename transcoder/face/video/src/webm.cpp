@@ -92,6 +92,18 @@ Result<std::string> encode_webm(const FaceTrack& track, const VideoOptions& opti
                       "the animation lasts " + std::to_string(track.duration_seconds()) +
                           " s; a video is limited to " + std::to_string(int(kMaxVideoSeconds)) + " s");
   const std::int64_t frames = video_frame_count(track, rate);
+  // The cost, from the duration and the rate, before any picture is drawn.
+  const std::int64_t picture_pixels = std::int64_t{options.width} * options.height;
+  if (picture_pixels > options.limits.max_frame_pixels)
+    return limit_error(at, "--size " + std::to_string(options.width) + "x" + std::to_string(options.height) + " is " +
+                               std::to_string(picture_pixels) + " pixels a picture",
+                       Limit::frame_pixels, options.limits);
+  if (frames > options.limits.max_video_pixels / picture_pixels)
+    return limit_error(at, "the video would be " + std::to_string(frames) + " pictures of " +
+                               std::to_string(options.width) + "x" + std::to_string(options.height) + " (" +
+                               std::to_string(track.duration_seconds()) + " s at " + std::to_string(rate) +
+                               " per second), " + std::to_string(frames * picture_pixels) + " pixels",
+                       Limit::video_pixels, options.limits);
   auto failed = [&](const std::string& what, int code) {
     return make_error(ErrorKind::io, at, what + ": " + av_message(code));
   };
@@ -193,6 +205,7 @@ Result<std::string> encode_webm(const FaceTrack& track, const VideoOptions& opti
     if (int e = avcodec_send_frame(out.codec, out.frame); e < 0) return failed("VP9 encoding failed", e);
     if (int e = drain(); e < 0) return failed("VP9 encoding failed", e);
     if (int e = write_voice(double(j + 1) / rate); e < 0) return failed("cannot write the Opus audio", e);
+    if (options.progress) options.progress(j + 1, frames);
   }
   if (int e = avcodec_send_frame(out.codec, nullptr); e < 0) return failed("VP9 encoding failed", e);
   if (int e = drain(); e < 0) return failed("VP9 encoding failed", e);

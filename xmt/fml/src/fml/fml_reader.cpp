@@ -680,7 +680,8 @@ class FmlReader {
     if (!info) {
       std::string closest;
       for (const std::string_view n : closest_fap_names(trim(type))) closest += (closest.empty() ? "" : ", ") + std::string(n);
-      fail(doc_.error(node, "type", "'" + type + "' is not a FAP number (3-68) or name; did you mean " + closest + "?"));
+      fail(doc_.error(node, "type", quoted_name(type) + " is not a FAP number (3-68) or name" +
+                                        (closest.empty() ? std::string() : "; did you mean " + closest + "?")));
       return std::nullopt;
     }
     if (info->number < 3) {

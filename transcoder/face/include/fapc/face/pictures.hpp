@@ -2,10 +2,12 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/codec/limits.hpp"
 #include "fapc/face/face_track.hpp"
 #include "fapc/face/image.hpp"
 
@@ -19,12 +21,15 @@ struct PictureOptions {
   std::optional<int> sheet;           // --sheet N: N frames in a grid
   int frame_rate = 0;                 // video outputs: pictures per second (0: the input's rate)
   bool points = false;                // --points: mark and number the feature points
+  Limits limits;                      // pixels per picture and per sheet (docs/security.md)
+  // Video outputs: told of the pictures encoded so far and how many there are; may be empty.
+  std::function<void(std::int64_t done, std::int64_t total)> progress;
 };
 
 inline constexpr int kMaxSheetFrames = 400;
 
 // Checks sizes and counts (usage errors for what the options cannot mean, limit errors past the
-// named limits); `where` names the output in errors.
+// named limits: pixels of a picture, of a sheet); `where` names the output in errors.
 Status check_picture_options(const PictureOptions& options, const std::string& where);
 
 // The frame `--frame`/`--time` picks (frame 0 when neither is given), or a contact sheet when

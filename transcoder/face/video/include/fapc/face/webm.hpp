@@ -1,10 +1,12 @@
 // The face as a video: VP9 in WebM, written through libavcodec/libavformat into memory.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/codec/limits.hpp"
 #include "fapc/face/face_track.hpp"
 
 namespace fapc::face {
@@ -21,6 +23,9 @@ struct VideoOptions {
   int width = 640;
   int height = 480;
   int frame_rate = 0;  // pictures per second; 0: the sequence's own rate
+  Limits limits;       // pixels a picture, pixels in all (docs/security.md)
+  // Told of the pictures encoded so far, and how many there are (a progress bar); may be empty.
+  std::function<void(std::int64_t done, std::int64_t total)> progress;
 };
 
 inline constexpr double kMaxVideoSeconds = 4 * 3600.0;
