@@ -673,6 +673,9 @@ def speech_cases():
         compile_case("xmto.speech.audio-repeat-1e5",
                      xmto('<audio src="a.wav" repeatCount="100000"/>'), out="out/out.fap",
                      files={"a.wav": lambda: wav(22050, 22050)}),
+    ]
+
+
 def output_cases():
     """Issue 32: outputs that are not files (an output is replaced only if it is a regular file),
     a batch whose every job fails (no folder left), and a name of a million letters (the "did you
@@ -702,7 +705,6 @@ def all_cases():
     cases = (not_a_file_cases() + depth_cases() + cycle_cases() + huge_cases() + number_cases()
              + truncation_cases() + junk_cases() + wrong_result_cases() + diagnostic_cases()
              + batch_cases() + csv_cases() + speech_cases())
-             + batch_cases())
     cases += output_cases()
     names = [c.name for c in cases]
     duplicates = {n for n in names if names.count(n) > 1}
