@@ -60,7 +60,7 @@ int main() {
               frames / render_cpu, frames / render_cpu / 25, checksum);
   start = std::chrono::steady_clock::now();
   cpu_start = cpu_seconds();
-  const auto webm = fapc::face::encode_webm(track, {640, 480, 0}, nullptr, "bench.webm");
+  const auto webm = fapc::face::encode_webm(track, fapc::face::VideoOptions{}, nullptr, "bench.webm");
   const double webm_seconds = seconds_since(start);
   const double webm_cpu = cpu_seconds() - cpu_start;
   if (!webm) {

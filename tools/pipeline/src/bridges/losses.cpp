@@ -23,9 +23,9 @@ Diagnostic lost(const std::string& output, const char* code, const std::string& 
 
 }  // namespace
 
-Diagnostics losses(const FapSequence& frames, const std::string& format, const std::string& output) {
+Diagnostics losses(const FapSequence& frames, Carrier carrier, const std::string& output) {
   Diagnostics out;
-  if (format == "visemes") {
+  if (carrier == Carrier::visemes) {
     bool any_viseme = false;
     std::bitset<kFapCount> others;
     for (const FapFrame& frame : frames.frames) {
@@ -46,12 +46,12 @@ Diagnostics losses(const FapSequence& frames, const std::string& format, const s
     }
     return out;
   }
-  const std::bitset<kFapCount> carried = format == "arkit" ? carried_by_arkit_csv() : carried_by_openface_csv();
+  const bool arkit = carrier == Carrier::arkit;
+  const std::bitset<kFapCount> carried = arkit ? carried_by_arkit_csv() : carried_by_openface_csv();
   std::vector<int> faps;
   for (int fap : face::FaceTrack(frames).moving_faps())
     if (!carried.test(static_cast<std::size_t>(fap - 1))) faps.push_back(fap);
   if (!faps.empty()) {
-    const bool arkit = format == "arkit";
     out.push_back(lost(output, arkit ? "arkit_csv.faps_lost" : "openface_csv.faps_lost",
                        std::string(arkit ? "ARKit's shapes" : "OpenFace's 17 action units") +
                            " cannot carry FAPs " + fap_list(faps) + "; they are lost"));

@@ -24,8 +24,10 @@ std::vector<VisemeSpan> viseme_spans(const FapSequence& frames);
 std::string write_viseme_json(const FapSequence& frames);
 std::string write_viseme_csv(const FapSequence& frames);
 
-// What each format cannot carry of these frames, as warnings at `output` (empty when nothing is
-// lost). `format` is "arkit", "openface" or "visemes".
-Diagnostics losses(const FapSequence& frames, const std::string& format, const std::string& output);
+// The FAP sets the bridge outputs can carry: ARKit's shapes, OpenFace's action units, FAP 1 alone.
+enum class Carrier { arkit, openface, visemes };
+
+// What `carrier` cannot carry of these frames, as warnings at `output` (empty when nothing is lost).
+Diagnostics losses(const FapSequence& frames, Carrier carrier, const std::string& output);
 
 }  // namespace fapc::pipeline::bridges

@@ -54,6 +54,10 @@ Result<Loaded> load_bml(const std::string& path, const ConvertOptions& options) 
 
 }  // namespace
 
-InputFormat bml_input() { return {"bml", {".bml"}, load_bml}; }
+InputFormat bml_input() {
+  InputFormat format{"bml", {".bml"}, load_bml};
+  format.timeline = true;
+  return format;
+}
 
 }  // namespace fapc::pipeline::builtin

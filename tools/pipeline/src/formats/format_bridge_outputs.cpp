@@ -8,28 +8,28 @@ namespace fapc::pipeline::builtin {
 namespace {
 
 OutputFormat bridge_output(std::string kind, std::string extension, std::string (*write)(const FapSequence&),
-                           std::string loss_format) {
+                           bridges::Carrier carrier) {
   OutputFormat format{std::move(kind), {std::move(extension)},
                       [write](const Loaded& loaded, const std::string&, const ConvertOptions&) -> Result<std::string> {
                         return write(loaded.frames);
                       }};
-  format.losses = [loss_format](const Loaded& loaded, const std::string& path) {
-    return bridges::losses(loaded.frames, loss_format, path);
+  format.losses = [carrier](const Loaded& loaded, const std::string& path) {
+    return bridges::losses(loaded.frames, carrier, path);
   };
   return format;
 }
 
 }  // namespace
 
-OutputFormat arkit_csv_output() { return bridge_output("arkit-csv", ".arkit.csv", bridges::write_arkit_csv, "arkit"); }
+OutputFormat arkit_csv_output() { return bridge_output("arkit-csv", ".arkit.csv", bridges::write_arkit_csv, bridges::Carrier::arkit); }
 OutputFormat openface_csv_output() {
-  return bridge_output("au-csv", ".au.csv", bridges::write_openface_csv, "openface");
+  return bridge_output("au-csv", ".au.csv", bridges::write_openface_csv, bridges::Carrier::openface);
 }
 OutputFormat viseme_json_output() {
-  return bridge_output("visemes", ".visemes.json", bridges::write_viseme_json, "visemes");
+  return bridge_output("visemes", ".visemes.json", bridges::write_viseme_json, bridges::Carrier::visemes);
 }
 OutputFormat viseme_csv_output() {
-  return bridge_output("vis-csv", ".visemes.csv", bridges::write_viseme_csv, "visemes");
+  return bridge_output("vis-csv", ".visemes.csv", bridges::write_viseme_csv, bridges::Carrier::visemes);
 }
 
 }  // namespace fapc::pipeline::builtin

@@ -43,6 +43,11 @@ Result<Loaded> load_xml(const std::string& path, const ConvertOptions& options) 
 
 }  // namespace
 
-InputFormat xml_input() { return {"xml", {".xml"}, load_xml}; }
+// Every reader an .xml goes to (BML, FML, XMT-Omega) lowers a script to a timeline.
+InputFormat xml_input() {
+  InputFormat format{"xml", {".xml"}, load_xml};
+  format.timeline = true;
+  return format;
+}
 
 }  // namespace fapc::pipeline::builtin
