@@ -47,7 +47,7 @@ struct FacePose {
 FacePose pose_face(const FapValues& values);
 
 // Inner and outer lip FAPs that act on the same spot (4/51 ... 13/60): where a frame drives only
-// one of a pair, the other takes its value (docs/render.md, "lip pairs").
+// one of a pair, the other takes its value (docs/render.md, "How FAPs move it").
 FapValues with_lip_pairs(const FapValues& values);
 
 // Where translation FAP `fap` moves the face: its own feature point first, then the points that

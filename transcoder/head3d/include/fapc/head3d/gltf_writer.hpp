@@ -1,6 +1,6 @@
 // The .glb / .gltf output: fapc's 3D head with its morph targets, and one animation of the
 // sequence (a weights channel and the head's and eyes' rotation channels, one keyframe per frame
-// of the input's grid, linear between them). Written with tinygltf (docs/render.md, "glTF").
+// of the input's grid, linear between them). Written with tinygltf (docs/render.md, "The animation").
 #pragma once
 
 #include <string>
