@@ -110,7 +110,12 @@ std::string cairo_pdf(const Figure& figure) {
   std::string out;
   // Points: the figure's pixels at 72 per inch, a 960-pixel figure 33.9 cm wide (scaled in the paper).
   cairo_surface_t* surface = cairo_pdf_surface_create_for_stream(append, &out, size.width, size.height);
-  if (cairo_surface_status(surface) == CAIRO_STATUS_SUCCESS) paint(surface, figure, 1);
+  if (cairo_surface_status(surface) == CAIRO_STATUS_SUCCESS) {
+    // No creation date: the same figure makes the same bytes (cairo stamps the clock otherwise,
+    // and two writes a second apart differed).
+    cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATE_DATE, "");
+    paint(surface, figure, 1);
+  }
   cairo_surface_finish(surface);
   if (cairo_surface_status(surface) != CAIRO_STATUS_SUCCESS) out.clear();
   cairo_surface_destroy(surface);
