@@ -12,6 +12,7 @@
 
 #include "fapc/pipeline/registry.hpp"
 #include "fapc/speech/engine.hpp"
+#include "support/voiced_segments.hpp"
 
 namespace fapc {
 namespace {
@@ -21,26 +22,11 @@ namespace fs = std::filesystem;
 constexpr int kFps = 25;
 constexpr double kFrame = 1.0 / kFps;
 
-// Onsets of the voiced stretches: 10 ms windows above 1/30 of the loudest one's RMS, joined across
-// gaps shorter than min_pause.
+// Onsets of the voiced stretches (support/voiced_segments.hpp), joined across gaps shorter than
+// min_pause.
 std::vector<double> voiced_onsets(const AudioTrack& track, double min_pause) {
-  const std::size_t window = static_cast<std::size_t>(track.sample_rate / 100);
-  std::vector<double> rms;
-  for (std::size_t at = 0; at + window <= track.samples.size(); at += window) {
-    double sum = 0;
-    for (std::size_t i = at; i < at + window; ++i) sum += double(track.samples[i]) * track.samples[i];
-    rms.push_back(std::sqrt(sum / double(window)));
-  }
-  double loudest = 0;
-  for (double r : rms) loudest = std::max(loudest, r);
   std::vector<double> onsets;
-  double last_end = -1;
-  for (std::size_t w = 0; w < rms.size(); ++w) {
-    if (rms[w] < loudest / 30) continue;
-    const double t = track.start + double(w) * 0.01;
-    if (last_end < 0 || t - last_end >= min_pause) onsets.push_back(t);
-    last_end = t + 0.01;
-  }
+  for (const test::Segment& segment : test::voiced_segments(track, min_pause)) onsets.push_back(segment.begin);
   return onsets;
 }
 
