@@ -394,9 +394,12 @@ class Evaluator {
       out.state = op(*a.state, *b.state);
       return out;
     }
-    const Animation x = a.state ? broadcast(*a.state, b.animation) : a.animation;
-    const Animation y = b.state ? broadcast(*b.state, a.animation) : b.animation;
-    out.animation = op(x, y);
+    // Only a state is turned into frames; an animation operand is used where it is (a chain of
+    // thousands of '+' would otherwise copy both operands at every step).
+    Animation x_store, y_store;
+    if (a.state) x_store = broadcast(*a.state, b.animation);
+    if (b.state) y_store = broadcast(*b.state, a.animation);
+    out.animation = op(a.state ? x_store : a.animation, b.state ? y_store : b.animation);
     return out;
   }
 

@@ -174,7 +174,7 @@ class Compiler final : public MainSink {
     if (!pending_ || pending_->rank > Rank::main_size) {
       // main's size as run() counted it before building (expanded_size(main)): past the run
       // limit, the error points where overflowing(main) would.
-      const double size = expanded_size(action, depth);
+      const double size = expanded_size(action);
       if (main_size_ + size > run_limit()) {
         hold(too_many_actions(overflowing(action, run_limit() - main_size_)), Rank::main_size);
       }
@@ -253,7 +253,6 @@ class Compiler final : public MainSink {
   std::size_t actions_built_ = 0;
   std::map<std::string, double, std::less<>> sizes_;  // per macro: its body's expanded_size()
   std::set<std::string, std::less<>> sizing_;         // macros being sized (recursion)
-  bool sizing_cut_ = false;                           // a count stopped at the depth limit
   // While lowering: each clip's target name, and the clips that end with `connect`.
   std::vector<std::uint32_t> clip_names_;
   struct Connecting {
@@ -297,30 +296,55 @@ class Compiler final : public MainSink {
     return refused;
   }
 
-  // How many times build() runs for `action` (groups, macro uses, atomic actions), macros
-  // memoised: a chain of forty macros that each use the one before twice costs forty steps, not 2^40.
-  // Deeper than build() goes (kMaxNestingDepth) the count stops, as build() will refuse the
-  // program there: a chain of 5000 macros must not take the stack 10,000 calls deep.
-  double expanded_size(const Action& action, int depth = 0) {
-    if (depth >= kMaxNestingDepth) {
-      sizing_cut_ = true;
-      return 1;
-    }
+  // How many times build() runs for `action` (groups, macro uses, atomic actions), each macro's
+  // body counted once and remembered: a chain of forty macros that each use the one before twice
+  // costs forty steps, not 2^40. Full counts, also past the depth limit (build() refuses those
+  // programs itself); a use of a macro being counted is a recursion and counts 1 (build() says so).
+  double expanded_size(const Action& action) {
     if (action.kind != Action::Kind::named) {
       double n = 1;
-      for (const Action& child : action.children) n += expanded_size(child, depth + 1);
+      for (const Action& child : action.children) n += expanded_size(child);
       return n;
     }
     const auto macro = macros_.find(action.name);
-    if (macro == macros_.end() || macro->second->expression) return 1;
-    if (const auto known = sizes_.find(action.name); known != sizes_.end()) return 1 + known->second;
-    if (!sizing_.insert(action.name).second) return 1;  // a macro that uses itself: build() says so
-    const bool cut_before = std::exchange(sizing_cut_, false);
-    const double body = expanded_size(macro->second->group, depth + 1);
-    sizing_.erase(action.name);
-    if (!sizing_cut_) sizes_[action.name] = body;  // a cut count is not the macro's size
-    sizing_cut_ = sizing_cut_ || cut_before;
-    return 1 + body;
+    if (macro == macros_.end() || macro->second->expression || sizing_.contains(action.name)) return 1;
+    const auto known = sizes_.find(action.name);
+    return 1 + (known != sizes_.end() ? known->second : size_macros_from(action.name));
+  }
+
+  // Counts the body of macro `name` and of every macro under it, deepest first, on a stack of our
+  // own instead of recursion: a chain of 5000 macros must neither take the call stack 5000 deep
+  // nor be walked again from each of its links (that took seconds).
+  double size_macros_from(const std::string& name) {
+    std::vector<std::pair<std::string, bool>> todo{{name, false}};  // (macro, its uses pushed)
+    while (!todo.empty()) {
+      auto& [macro, uses_pushed] = todo.back();
+      const Action& body = macros_.find(macro)->second->group;
+      if (sizes_.contains(macro)) {
+        todo.pop_back();
+      } else if (!uses_pushed) {
+        uses_pushed = true;
+        sizing_.insert(macro);
+        push_uncounted_uses(body, todo);
+      } else {
+        // Every macro the body uses is counted now, or being counted (a recursion).
+        const double size = expanded_size(body);
+        sizes_.emplace(macro, size);
+        sizing_.erase(macro);
+        todo.pop_back();
+      }
+    }
+    return sizes_.find(name)->second;
+  }
+
+  void push_uncounted_uses(const Action& action, std::vector<std::pair<std::string, bool>>& todo) {
+    if (action.kind != Action::Kind::named) {
+      for (const Action& child : action.children) push_uncounted_uses(child, todo);
+      return;
+    }
+    const auto macro = macros_.find(action.name);
+    if (macro == macros_.end() || macro->second->expression) return;
+    if (!sizes_.contains(action.name) && !sizing_.contains(action.name)) todo.emplace_back(action.name, false);
   }
 
   // The action inside `action` where the count passes `budget`: where the error points.
