@@ -56,6 +56,18 @@ TEST(BmlReader, SynchronizeConstraintJoinsPoints) {
   EXPECT_NEAR(behaviour(d, "f1").start, 1 + 0.9 - 0.5, 1e-9);
 }
 
+TEST(BmlReader, ABehaviourThatLastsNoTimeIsSaidAndNotDrawn) {
+  // Found by fuzzing: start and end on one mark made clips that end where they begin.
+  const BmlDocument d = read_ok(R"(<faceLexeme id="f" lexeme="RAISE_BROWS" start="1" end="1"/>
+<head id="h" lexeme="NOD" start="2" end="h:start"/>
+<faceLexeme id="g" lexeme="RAISE_BROWS" start="1" end="2"/>)");
+  for (const Clip& c : d.timeline.clips) EXPECT_LT(c.begin, c.end) << std::string(c.target);
+  EXPECT_FALSE(d.timeline.clips.empty());  // g is drawn
+  int said = 0;
+  for (const Diagnostic& w : d.warnings) said += w.code == "bml.no_duration" ? 1 : 0;
+  EXPECT_EQ(said, 2);
+}
+
 TEST(BmlReader, SelfReferenceSetsTheLength) {
   // testhead_selftimed.xml
   const BmlDocument d = read_ok(R"(<head id="shake1" start="0" end="shake1:start+1" lexeme="SHAKE"/>)");

@@ -58,8 +58,14 @@ TEST(SpeakableText, NeutralisesTheShapesThatCrashTheEngine) {
       EXPECT_EQ(static_cast<unsigned char>(long_word[i + 1]), 0xC3);
     }
   }
-  // Honest text is left as it was.
+  // Unassigned code points (U+058B, U+058C), surrogates, overlong forms and stray bytes become spaces.
+  EXPECT_EQ(speakable_text("a\xD6\x8C\xD8\x8C b"), "a \xD8\x8C b");
+  EXPECT_EQ(speakable_text("x\xD6\x8By"), "x y");
+  EXPECT_EQ(speakable_text("x\xED\xA0\x80y\xC0\xAFz\xFFw\x80v"), "x y z w v");
+  // Honest text is left as it was, in any script.
   EXPECT_EQ(speakable_text("Peter bought a map. Was it 3.5 km - or more?"), "Peter bought a map. Was it 3.5 km - or more?");
+  EXPECT_EQ(speakable_text("\xD5\xA2\xD5\xA1\xD6\x80\xD6\x87 \xD9\x85\xD8\xB1\xD8\xAD\xD8\xA8\xD8\xA7\xD8\x8C \xF0\x9F\x98\x80"),
+            "\xD5\xA2\xD5\xA1\xD6\x80\xD6\x87 \xD9\x85\xD8\xB1\xD8\xAD\xD8\xA8\xD8\xA7\xD8\x8C \xF0\x9F\x98\x80");
 }
 
 TEST(SpeakableText, PiecesAreBoundedAndEndAtSentences) {
@@ -88,6 +94,10 @@ TEST(SpeechEngine, TextThatCrashedTheEngineIsSpoken) {
       {"en", repeated("s'", 220)},
       {"hi", "---\xE0\xA4\xB2\xE0\xA4\x9A\xE0\xA5\x8D\xE0\xA4\x9B\xE0\xA5\x87\xE0\xA4\xA6"},
       {"en", repeated("-", 20000)},
+      // An unassigned Armenian code point before Arabic punctuation: a use after free inside the
+      // engine (its language switch frees the dictionary it reads next; found by fuzzing).
+      {"en", "\xD6\x8C\xD8\x8C"},
+      {"en", "a-'s's'ss\xD6\x8B\xD8\x9B-b"},
   };
   for (const auto& [language, text] : texts) {
     SpeechRequest request;

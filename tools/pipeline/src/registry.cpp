@@ -107,6 +107,13 @@ const OutputFormat* Registry::output_for(const std::string& path) const { return
 const InputFormat* Registry::input_named(const std::string& kind) const { return by_kind(inputs_, kind); }
 const OutputFormat* Registry::output_named(const std::string& kind) const { return by_kind(outputs_, kind); }
 
+const InputFormat* Registry::input_for_xml_root(const std::string& root) const {
+  for (const InputFormat& f : inputs_) {
+    if (std::find(f.xml_roots.begin(), f.xml_roots.end(), root) != f.xml_roots.end()) return &f;
+  }
+  return nullptr;
+}
+
 const Registry& formats() {
   static const Registry registry = built_in();  // initialised once, thread-safe (C++11 statics)
   return registry;

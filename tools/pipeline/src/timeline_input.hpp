@@ -37,4 +37,17 @@ Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
                                     const Profile& profile, const ConvertOptions& options,
                                     Diagnostics warnings, nlohmann::ordered_json facts = nlohmann::ordered_json::object());
 
+// A script row's loader: `read(profile)` gives a document with `timeline` and `warnings`, and
+// `facts_of(document)` what `fapc info` tells of it (made only when asked).
+template <class Read, class FactsOf>
+Result<Loaded> load_script(const std::string& path, const ConvertOptions& options, Read&& read, FactsOf&& facts_of) {
+  Result<Profile> profile = profile_for(options);
+  if (!profile) return profile.error();
+  auto document = read(*profile);
+  if (!document) return document.error();
+  auto facts = options.facts ? facts_of(*document) : nlohmann::ordered_json::object();
+  return loaded_from_timeline(std::move(document->timeline), path, *profile, options, std::move(document->warnings),
+                              std::move(facts));
+}
+
 }  // namespace fapc::pipeline

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <clocale>
+#include <cwctype>
 
 namespace fapc::speech {
 namespace {
@@ -11,6 +13,26 @@ bool continuation(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x8
 bool ascii_punctuation(char c) {
   const auto u = static_cast<unsigned char>(c);
   return u > 0x20 && u < 0x7F && !std::isalnum(u);
+}
+
+// The length of the UTF-8 character at s[i] when it is one Unicode assigns (a printable or space
+// character of C.UTF-8's classification, which follows Unicode), else 0: a malformed sequence, an
+// unassigned code point, a surrogate or a noncharacter.
+std::size_t assigned_character(std::string_view s, std::size_t i) {
+  static const locale_t utf8 = newlocale(LC_CTYPE_MASK, "C.UTF-8", locale_t{});
+  const auto lead = static_cast<unsigned char>(s[i]);
+  const std::size_t length = lead >= 0xF0 ? 4 : lead >= 0xE0 ? 3 : lead >= 0xC0 ? 2 : 0;
+  if (length == 0 || lead > 0xF4 || i + length > s.size()) return 0;
+  char32_t code = lead & (0x7F >> length);
+  for (std::size_t k = 1; k < length; ++k) {
+    if (!continuation(s[i + k])) return 0;
+    code = (code << 6) | (static_cast<unsigned char>(s[i + k]) & 0x3F);
+  }
+  const char32_t shortest[] = {0, 0, 0x80, 0x800, 0x10000};
+  if (code < shortest[length] || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) return 0;
+  // Without the C.UTF-8 locale (it is built into glibc since 2.35) every well-formed one passes.
+  if (utf8 != locale_t{} && !iswprint_l(static_cast<wint_t>(code), utf8) && !iswspace_l(static_cast<wint_t>(code), utf8)) return 0;
+  return length;
 }
 
 // The largest cut <= limit that does not split a UTF-8 character of `s` (from `at`).
@@ -29,6 +51,22 @@ std::string speakable_text(std::string_view text) {
   for (std::size_t i = 0; i < text.size(); ++i) {
     char c = text[i];
     if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) c = ' ';
+    if (static_cast<unsigned char>(c) >= 0x80) {
+      const std::size_t length = assigned_character(text, i);
+      if (length == 0) {
+        c = ' ';  // and the rest of a malformed or unassigned character with it
+        while (i + 1 < text.size() && continuation(text[i + 1])) ++i;
+      } else {
+        if (word + length > kMaxWordBytes) {
+          out.push_back(' ');
+          word = 0;
+        }
+        out.append(text.substr(i, length));
+        word += length;
+        i += length - 1;
+        continue;
+      }
+    }
     if (space(c)) {
       if (!out.empty() && out.back() != ' ') out.push_back(' ');
       word = 0;

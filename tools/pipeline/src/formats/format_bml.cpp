@@ -43,13 +43,8 @@ nlohmann::ordered_json facts_of(const bml::BmlDocument& document) {
 }
 
 Result<Loaded> load_bml(const std::string& path, const ConvertOptions& options) {
-  Result<Profile> profile = profile_for(options);
-  if (!profile) return profile.error();
-  Result<bml::BmlDocument> document = bml::load_bml(path, bml_options(options));
-  if (!document) return document.error();
-  auto facts = options.facts ? facts_of(*document) : nlohmann::ordered_json::object();
-  return loaded_from_timeline(std::move(document->timeline), path, *profile, options, std::move(document->warnings),
-                              std::move(facts));
+  return load_script(path, options, [&](const Profile&) { return bml::load_bml(path, bml_options(options)); },
+                     facts_of);
 }
 
 }  // namespace
@@ -57,6 +52,7 @@ Result<Loaded> load_bml(const std::string& path, const ConvertOptions& options) 
 InputFormat bml_input() {
   InputFormat format{"bml", {".bml"}, load_bml};
   format.timeline = true;
+  format.xml_roots = {"bml"};
   return format;
 }
 

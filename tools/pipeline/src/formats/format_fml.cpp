@@ -37,13 +37,8 @@ nlohmann::ordered_json facts_of(const xmt::FmlDocument& document) {
 }
 
 Result<Loaded> load_fml(const std::string& path, const ConvertOptions& options) {
-  Result<Profile> profile = profile_for(options);
-  if (!profile) return profile.error();
-  Result<xmt::FmlDocument> document = read_document(path, options, *profile);
-  if (!document) return document.error();
-  auto facts = options.facts ? facts_of(*document) : nlohmann::ordered_json::object();
-  return loaded_from_timeline(std::move(document->timeline), path, *profile, options, std::move(document->warnings),
-                              std::move(facts));
+  return load_script(path, options, [&](const Profile& profile) { return read_document(path, options, profile); },
+                     facts_of);
 }
 
 }  // namespace
@@ -51,6 +46,7 @@ Result<Loaded> load_fml(const std::string& path, const ConvertOptions& options) 
 InputFormat fml_input() {
   InputFormat format{"fml", {".fml"}, load_fml};
   format.timeline = true;
+  format.xml_roots = {"fml"};
   return format;
 }
 

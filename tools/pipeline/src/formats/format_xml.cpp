@@ -1,7 +1,6 @@
-// .xml as an input: most BML, FML-APML and APML documents are named .xml, so the root element and
-// its namespace say which reader takes the document (docs/bml.md, "Inputs named .xml"). BML, FML
-// and XMT-Omega are read by their readers; FML-APML and APML are named and refused (fapc does not
-// read them); any other root is refused naming it.
+// .xml as an input: most BML, FML-APML and APML documents are named .xml, so the root element says
+// which reader takes the document (docs/bml.md, "Inputs named .xml"): the row whose xml_roots name
+// it. Any other root is refused naming it and the roots fapc reads.
 #include "fapc/codec/file_io.hpp"
 #include "formats.hpp"
 #include "formats/xml_root.hpp"
@@ -10,8 +9,15 @@ namespace fapc::pipeline::builtin {
 
 namespace {
 
+// The roots the table's rows take, for the error about any other: "bml, fml, xmt-o".
+std::string roots_read() {
+  std::string out;
+  for (const InputFormat& f : formats().inputs())
+    for (const std::string& root : f.xml_roots) out += (out.empty() ? "" : ", ") + root;
+  return out;
+}
+
 Result<Loaded> load_xml(const std::string& path, const ConvertOptions& options) {
-  std::string language;
   XmlRoot root;
   {
     const auto source = SourceText::open(path, options.limits);
@@ -19,21 +25,13 @@ Result<Loaded> load_xml(const std::string& path, const ConvertOptions& options) 
     Result<XmlRoot> found = find_xml_root(source->bytes(), path);
     if (!found) return found.error();
     root = std::move(*found);
-    language = xml_language(root);
   }
-  if (language == "fml-apml" || language == "apml") {
-    return make_error(ErrorKind::unsupported, root.where,
-                      std::string("an ") + (language == "apml" ? "APML" : "FML-APML") +
-                          " document (root <" + root.name + ">): Greta's intentions, which fapc does not read; "
-                          "BML, FML and XMT-Omega documents named .xml are read");
-  }
-  if (language.empty()) {
+  const InputFormat* reader = formats().input_for_xml_root(lower_case(root.name));
+  if (reader == nullptr) {
     return make_error(ErrorKind::unsupported, root.where,
                       "an XML document whose root <" + root.name + ">" + (root.ns.empty() ? "" : " (namespace " + root.ns + ")") +
-                          " is none fapc reads (bml, fml, XMT-O; FML-APML and APML are recognised but not read)");
+                          " is none fapc reads (roots read: " + roots_read() + ")");
   }
-  const InputFormat* reader = formats().input_named(language);
-  if (reader == nullptr) return make_error(ErrorKind::unsupported, root.where, "no reader for " + language);
   Result<Loaded> loaded = reader->load(path, options);
   if (loaded && options.facts) {
     loaded->facts["recognised_by"] = "root <" + root.name + ">" + (root.ns.empty() ? "" : " in " + root.ns);
@@ -43,7 +41,7 @@ Result<Loaded> load_xml(const std::string& path, const ConvertOptions& options) 
 
 }  // namespace
 
-// Every reader an .xml goes to (BML, FML, XMT-Omega) lowers a script to a timeline.
+// Every reader an .xml goes to (the rows with xml_roots) lowers a script to a timeline.
 InputFormat xml_input() {
   InputFormat format{"xml", {".xml"}, load_xml};
   format.timeline = true;

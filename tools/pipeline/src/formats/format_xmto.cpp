@@ -76,13 +76,8 @@ nlohmann::ordered_json facts_of(const xmt::XmtoDocument& document) {
 }
 
 Result<Loaded> load_xmto(const std::string& path, const ConvertOptions& options) {
-  Result<Profile> profile = profile_for(options);
-  if (!profile) return profile.error();
-  Result<xmt::XmtoDocument> document = read_document(path, options, *profile);
-  if (!document) return document.error();
-  auto facts = options.facts ? facts_of(*document) : nlohmann::ordered_json::object();
-  return loaded_from_timeline(std::move(document->timeline), path, *profile, options, std::move(document->warnings),
-                              std::move(facts));
+  return load_script(path, options, [&](const Profile& profile) { return read_document(path, options, profile); },
+                     facts_of);
 }
 
 }  // namespace
@@ -90,6 +85,7 @@ Result<Loaded> load_xmto(const std::string& path, const ConvertOptions& options)
 InputFormat xmto_input() {
   InputFormat format{"xmt", {".xmt"}, load_xmto};
   format.timeline = true;
+  format.xml_roots = {"xmt-o"};
   return format;
 }
 

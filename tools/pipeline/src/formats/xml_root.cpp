@@ -79,15 +79,9 @@ Result<XmlRoot> find_xml_root(std::string_view text, const std::string& file_nam
   return root;
 }
 
-std::string xml_language(const XmlRoot& root) {
-  std::string name = root.name;
+std::string lower_case(std::string name) {
   std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (name == "bml") return "bml";
-  if (name == "fml-apml") return "fml-apml";
-  if (name == "apml") return "apml";
-  if (name == "fml") return "fml";
-  if (name == "xmt-o") return "xmto";
-  return {};
+  return name;
 }
 
 }  // namespace fapc::pipeline

@@ -20,7 +20,7 @@ struct XmlRoot {
 // An error (at its byte) when the text has no start tag after a well-formed prolog.
 Result<XmlRoot> find_xml_root(std::string_view text, const std::string& file_name);
 
-// The languages fapc recognises by their root: "bml", "fml", "xmto", "fml-apml", "apml", or empty.
-std::string xml_language(const XmlRoot& root);
+// `name` in lower case (ASCII), as rows name their roots: <BML> is <bml>.
+std::string lower_case(std::string name);
 
 }  // namespace fapc::pipeline

@@ -131,6 +131,14 @@ void lower_block(const Block& block, const Solution& solution, double origin, co
   for (std::size_t i = 0; i < block.behaviours.size(); ++i) {
     const Behaviour& b = block.behaviours[i];
     const auto& t = solution.points[i];
+    const bool drawn = b.kind != BehaviourKind::wait && b.kind != BehaviourKind::not_drawn && b.kind != BehaviourKind::speech;
+    if (drawn && !(t[kEnd] > t[kStart])) {
+      // start = end is a consistent schedule (two sync points joined) but moves nothing: said,
+      // not drawn, so that every clip of the timeline lasts some time.
+      warnings.push_back(make_warning(WarningCode{"bml.no_duration"}, b.where,
+                                      "<" + b.element + " id=\"" + b.id + "\"> starts and ends at the same moment: it moves nothing"));
+      continue;
+    }
     switch (b.kind) {
       case BehaviourKind::face_lexeme:
       case BehaviourKind::face_facs:

@@ -41,6 +41,9 @@ struct InputFormat {
   // An FBA stream, bare or in a container: `fapc decode` reads it, and `verify` checks with this
   // that it re-encodes to the same bytes; null for every other input (encoded, then checked).
   std::function<VerifyResult(const std::string& path, const Limits&)> verify_stream{};
+  // The root elements (lower case) of the XML documents this reader takes when they are named .xml
+  // (docs/bml.md, "Inputs named .xml"): the .xml row hands a document to the row naming its root.
+  std::vector<std::string> xml_roots{};
 };
 
 struct OutputFormat {
@@ -84,6 +87,8 @@ class Registry {
   const OutputFormat* output_for(const std::string& path) const;
   const InputFormat* input_named(const std::string& kind) const;
   const OutputFormat* output_named(const std::string& kind) const;
+  // The reader of .xml documents whose root element is `root` (lower case); null if none.
+  const InputFormat* input_for_xml_root(const std::string& root) const;
 
   const std::vector<InputFormat>& inputs() const { return inputs_; }
   const std::vector<OutputFormat>& outputs() const { return outputs_; }

@@ -25,7 +25,10 @@ inline constexpr std::size_t kMaxPieceBytes = 1000;
 // The text with its hostile shapes neutralised: runs of one punctuation character (other than
 // '.') become one ("---" before a Devanagari word makes the Hindi voice read before the start of
 // its phoneme list and crash), runs of '.' are cut to three, control characters become spaces,
-// and words longer than kMaxWordBytes are broken.
+// and words longer than kMaxWordBytes are broken. Characters Unicode does not assign (and bytes
+// that are not UTF-8) become spaces: an unassigned Armenian code point before Arabic punctuation
+// (U+058C U+060C) makes the engine switch languages and read a dictionary it has just freed.
+
 std::string speakable_text(std::string_view text);
 
 // speakable_text(text) cut into pieces of at most kMaxPieceBytes, none empty or blank.

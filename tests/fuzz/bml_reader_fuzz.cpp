@@ -1,0 +1,17 @@
+// libFuzzer target: the BML reader (constraint solving, sync references, lowering through the
+// vocabulary) must never crash or hang, must place every error it reports (file:line:col), and
+// whatever it accepts must be a sane timeline. Speech is timed by the letter table (no engine):
+// the engine has a target of its own (speech).
+#include <cstdint>
+#include <string_view>
+
+#include "fapc/bml/bml.hpp"
+#include "timeline_checks.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  fapc::bml::BmlOptions options;
+  options.max_behaviours = 4096;  // the limit is tested by bml_tests; here it keeps inputs quick
+  options.max_speech_seconds = 60;
+  return fapc::fuzz::check_timeline_read(fapc::bml::read_bml(text, "fuzz.xml", options));
+}
