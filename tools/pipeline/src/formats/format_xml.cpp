@@ -1,7 +1,7 @@
 // .xml as an input: most BML, FML-APML and APML documents are named .xml, so the root element and
-// its namespace say which reader takes the document (docs/bml.md, "Inputs named .xml"). BML, FML
-// and XMT-Omega are read by their readers; FML-APML and APML are named and refused (fapc does not
-// read them); any other root is refused naming it.
+// its namespace say which reader takes the document (docs/bml.md, "Inputs named .xml"). BML, FML,
+// XMT-Omega, FML-APML and APML are read by their readers (the last two: docs/intentions.md); any
+// other root is refused naming it.
 #include "fapc/codec/file_io.hpp"
 #include "formats.hpp"
 #include "formats/xml_root.hpp"
@@ -21,16 +21,10 @@ Result<Loaded> load_xml(const std::string& path, const ConvertOptions& options) 
     root = std::move(*found);
     language = xml_language(root);
   }
-  if (language == "fml-apml" || language == "apml") {
-    return make_error(ErrorKind::unsupported, root.where,
-                      std::string("an ") + (language == "apml" ? "APML" : "FML-APML") +
-                          " document (root <" + root.name + ">): Greta's intentions, which fapc does not read; "
-                          "BML, FML and XMT-Omega documents named .xml are read");
-  }
   if (language.empty()) {
     return make_error(ErrorKind::unsupported, root.where,
                       "an XML document whose root <" + root.name + ">" + (root.ns.empty() ? "" : " (namespace " + root.ns + ")") +
-                          " is none fapc reads (bml, fml, XMT-O; FML-APML and APML are recognised but not read)");
+                          " is none fapc reads (bml, fml, XMT-O, fml-apml, apml)");
   }
   const InputFormat* reader = formats().input_named(language);
   if (reader == nullptr) return make_error(ErrorKind::unsupported, root.where, "no reader for " + language);

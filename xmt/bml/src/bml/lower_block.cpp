@@ -126,31 +126,33 @@ void lower_speech(const Behaviour& b, const std::array<double, kStandardPoints>&
 
 }  // namespace
 
+void lower_behaviour(const Behaviour& b, const std::array<double, kStandardPoints>& t, double origin,
+                     const Coarticulation& rule, Timeline& out, Diagnostics& warnings) {
+  switch (b.kind) {
+    case BehaviourKind::face_lexeme:
+    case BehaviourKind::face_facs:
+      lower_face(b, t, origin, out, warnings);
+      break;
+    case BehaviourKind::head:
+      lower_head(b, t, origin, out, warnings);
+      break;
+    case BehaviourKind::gaze:
+    case BehaviourKind::head_direction:
+      lower_direction(b, t, origin, out);
+      break;
+    case BehaviourKind::speech:
+      lower_speech(b, t, origin, rule, out);
+      break;
+    case BehaviourKind::wait:
+    case BehaviourKind::not_drawn:
+      break;
+  }
+}
+
 void lower_block(const Block& block, const Solution& solution, double origin, const Coarticulation& rule, Timeline& out,
                  Diagnostics& warnings) {
-  for (std::size_t i = 0; i < block.behaviours.size(); ++i) {
-    const Behaviour& b = block.behaviours[i];
-    const auto& t = solution.points[i];
-    switch (b.kind) {
-      case BehaviourKind::face_lexeme:
-      case BehaviourKind::face_facs:
-        lower_face(b, t, origin, out, warnings);
-        break;
-      case BehaviourKind::head:
-        lower_head(b, t, origin, out, warnings);
-        break;
-      case BehaviourKind::gaze:
-      case BehaviourKind::head_direction:
-        lower_direction(b, t, origin, out);
-        break;
-      case BehaviourKind::speech:
-        lower_speech(b, t, origin, rule, out);
-        break;
-      case BehaviourKind::wait:
-      case BehaviourKind::not_drawn:
-        break;
-    }
-  }
+  for (std::size_t i = 0; i < block.behaviours.size(); ++i)
+    lower_behaviour(block.behaviours[i], solution.points[i], origin, rule, out, warnings);
 }
 
 }  // namespace fapc::bml
