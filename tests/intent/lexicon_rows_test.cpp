@@ -1,6 +1,7 @@
 // Each row of fapc's behaviour lexicon (data/intentions.tsv) shows in the frames during its span:
 // an FML-APML intention of the row's type and value, on a span of 1 s to 3 s, is compiled with a
-// lexicon holding that row alone (--lexicon), and the FAP the row should move is read at the
+// lexicon holding that row alone (--lexicon: it replaces fapc's rows of that intention and value),
+// and the FAP the row should move is read at the
 // row's peak. Which FAP, and which way, is worked out here from the vocabulary tables
 // independently of the lowering: the unit's (or the lexeme's units') largest FAP and its sign,
 // the head rotation a head lexeme names, the eye or head rotation of a direction.

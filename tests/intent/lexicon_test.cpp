@@ -42,6 +42,19 @@ TEST(BehaviourLexicon, ValuesMatchWithoutCaseThenStarThenAffectAsEmotion) {
   EXPECT_EQ(lexicon->rows[0].unit, 12);
 }
 
+TEST(BehaviourLexicon, AUserLexiconExtendsFapcsOwnAndReplacesWhatItNames) {
+  auto mine = parse("emotion\tjoy\tlexeme\tRAISE_MOUTH_CORNERS\t1\t0\t0.2\t0.8\t1\ta plain smile\n"
+                    "wink\t*\tau\tL46\t1\t0\t0.2\t0.8\t1\tone eye\n");
+  ASSERT_TRUE(mine) << mine.error().message;
+  mine->base = &bundled_behaviour_lexicon();
+  ASSERT_EQ(mine->rows_for("emotion", "joy").size(), 1u);
+  EXPECT_EQ(mine->rows_for("emotion", "joy")[0]->name, "RAISE_MOUTH_CORNERS");
+  EXPECT_EQ(mine->rows_for("wink", "left").size(), 1u);
+  EXPECT_EQ(mine->rows_for("emotion", "anger"), bundled_behaviour_lexicon().rows_for("emotion", "anger"));
+  EXPECT_FALSE(mine->rows_for("emotion", "anger").empty());
+  EXPECT_TRUE(mine->knows("performative"));
+}
+
 TEST(BehaviourLexicon, OneSidedUnitsAndRepeatedHeadLexemes) {
   const auto lexicon = parse("a\tb\tau\tL12\t1\t0\t0.2\t0.8\t1\tleft corner\n"
                              "a\tb\thead\tNOD*3\t1\t0\t0.2\t0.8\t1\tthree nods\n");

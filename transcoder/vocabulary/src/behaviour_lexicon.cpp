@@ -120,23 +120,34 @@ Status check_name(const std::string& file, const TsvLine& line, const TsvCell& c
 
 }  // namespace
 
-std::vector<const LexiconRow*> BehaviourLexicon::rows_for(std::string_view intention, std::string_view value) const {
+namespace {
+
+// The rows of one lexicon alone: the value's, else the intention's "*" rows.
+std::vector<const LexiconRow*> own_rows(const std::vector<LexiconRow>& rows, std::string_view intention,
+                                        std::string_view value) {
   std::vector<const LexiconRow*> exact, any;
   for (const LexiconRow& row : rows) {
     if (!same_word(row.intention, intention)) continue;
     if (same_word(row.value, value)) exact.push_back(&row);
     else if (row.value == "*") any.push_back(&row);
   }
-  if (!exact.empty()) return exact;
-  if (!any.empty()) return any;
-  if (same_word(intention, "affect")) return rows_for("emotion", value);
-  return {};
+  return exact.empty() ? any : exact;
+}
+
+}  // namespace
+
+std::vector<const LexiconRow*> BehaviourLexicon::rows_for(std::string_view intention, std::string_view value) const {
+  std::vector<const LexiconRow*> found = own_rows(rows, intention, value);
+  if (found.empty() && same_word(intention, "affect")) found = own_rows(rows, "emotion", value);
+  if (found.empty() && base != nullptr) found = base->rows_for(intention, value);
+  return found;
 }
 
 bool BehaviourLexicon::knows(std::string_view intention) const {
   for (const LexiconRow& row : rows)
     if (same_word(row.intention, intention)) return true;
-  return same_word(intention, "affect") && knows("emotion");
+  if (same_word(intention, "affect") && knows("emotion")) return true;
+  return base != nullptr && base->knows(intention);
 }
 
 Result<BehaviourLexicon> parse_behaviour_lexicon(std::string_view text, const std::string& file) {

@@ -38,6 +38,7 @@ Result<Loaded> load_with(Reader read, const std::string& path, const ConvertOpti
     Result<vocabulary::BehaviourLexicon> parsed = vocabulary::parse_behaviour_lexicon(source->bytes(), *options.lexicon);
     if (!parsed) return parsed.error();
     user_lexicon = std::move(*parsed);
+    user_lexicon.base = &vocabulary::bundled_behaviour_lexicon();  // what the file does not name
     intent_options.lexicon = &user_lexicon;
   }
   Result<intent::IntentDocument> document = read(path, intent_options);

@@ -43,9 +43,12 @@ struct LexiconRow {
 struct BehaviourLexicon {
   std::string source;  // "intentions.tsv" for the bundled one, else the user's path
   std::vector<LexiconRow> rows;
+  // A user's lexicon extends fapc's: what it does not name is looked up in `base` (null: alone).
+  const BehaviourLexicon* base = nullptr;
 
   // The rows of an intention's value (compared without case), else of its "*" rows; an `affect`
-  // without rows of its own is read as an `emotion`. Empty: the intention is unknown.
+  // without rows of its own is read as an `emotion`; then the same in `base`. Empty: the
+  // intention is unknown.
   std::vector<const LexiconRow*> rows_for(std::string_view intention, std::string_view value) const;
   // Whether any row names the intention (with any value).
   bool knows(std::string_view intention) const;
