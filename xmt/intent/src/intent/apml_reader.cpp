@@ -187,17 +187,21 @@ class ApmlReader {
     }
     auto time_of = [&](const Anchor& a) { return begins[a.segment] + spoken[a.segment].mark_times[a.mark]; };
     double end = clock;
+    Location end_where = where;
     for (PendingIntention& p : pending_) {
       p.intention.start = time_of(p.from);
       p.intention.end = p.point ? p.intention.start + kPointSpanSeconds : std::max(time_of(p.to), p.intention.start);
       if (p.intention.end <= p.intention.start) p.intention.end = p.intention.start + kPointSpanSeconds;
       realize(p.intention, lexicon_, options_.bml.coarticulation, out_.timeline, once_, out_.warnings);
-      end = std::max(end, p.intention.end);
+      if (p.intention.end > end) {
+        end = p.intention.end;
+        end_where = p.intention.where;
+      }
       out_.intentions.push_back(p.intention);
     }
     out_.timeline.explicit_end = end;
-    out_.timeline.end_source = where;
-    if (options_.bml.frames.exceeded_by(end)) return frame_budget_error(end, where, options_.bml.frames);
+    out_.timeline.end_source = end_where;
+    if (options_.bml.frames.exceeded_by(end)) return frame_budget_error(end, end_where, options_.bml.frames);
     once_.finish();
     for (const Diagnostic& w : doc_.warnings()) out_.warnings.push_back(w);
     return std::move(out_);

@@ -3,6 +3,7 @@
 // end are times or references to the speech's marks, the bml part's behaviours or other
 // intentions, and drawn through the behaviour lexicon.
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <cstdio>
 
@@ -15,6 +16,8 @@
 
 namespace fapc::intent {
 namespace {
+
+constexpr double kMaxSeconds = 1e7;
 
 // An intention waiting for its span: its element, and whether its times are being resolved (a
 // reference cycle is found when one is met again while it is).
@@ -65,14 +68,19 @@ class FmlApmlReader {
     for (Pending& p : pending_)
       if (Status placed = place(p); !placed) return placed.error();
     double end = out_.timeline.explicit_end.value_or(0.0);
+    Location end_where = out_.timeline.explicit_end ? out_.timeline.end_source : doc_.where(root);
     const Coarticulation& rule = options_.bml.coarticulation;
     for (Pending& p : pending_) {
       realize(p.intention, lexicon_, rule, out_.timeline, once_, out_.warnings);
-      end = std::max(end, p.intention.end);
+      if (p.intention.end > end) {
+        end = p.intention.end;
+        end_where = p.intention.where;
+      }
       out_.intentions.push_back(p.intention);
     }
     out_.timeline.explicit_end = end;
-    if (options_.bml.frames.exceeded_by(end)) return frame_budget_error(end, Location{doc_.file(), 1, 1}, options_.bml.frames);
+    out_.timeline.end_source = end_where;
+    if (options_.bml.frames.exceeded_by(end)) return frame_budget_error(end, end_where, options_.bml.frames);
     once_.finish();
     for (const Diagnostic& w : doc_.warnings()) out_.warnings.push_back(w);
     return std::move(out_);
@@ -101,7 +109,10 @@ class FmlApmlReader {
     if (!block) return block.error();
     for (Clip& clip : block->timeline.clips) out_.timeline.clips.push_back(std::move(clip));
     for (AudioClip& audio : block->timeline.audio) out_.timeline.audio.push_back(std::move(audio));
-    out_.timeline.explicit_end = std::max(out_.timeline.explicit_end.value_or(0.0), block->timeline.explicit_end.value_or(0.0));
+    if (block->timeline.explicit_end.value_or(0.0) >= out_.timeline.explicit_end.value_or(0.0)) {
+      out_.timeline.explicit_end = block->timeline.explicit_end.value_or(0.0);
+      out_.timeline.end_source = block->timeline.end_source;
+    }
     for (Diagnostic& w : block->warnings) out_.warnings.push_back(std::move(w));
     for (const std::string& l : block->languages)
       if (std::find(out_.languages.begin(), out_.languages.end(), l) == out_.languages.end()) out_.languages.push_back(l);
@@ -145,6 +156,10 @@ class FmlApmlReader {
     std::string why;
     const auto ref = bml::parse_sync_ref(text, why);
     if (!ref) return doc_.error(p.node, attribute, why);
+    // Beyond any animation fapc makes (--duration's bound): refused before it becomes a span whose
+    // fractions a double cannot tell apart.
+    if (std::abs(ref->offset) > kMaxSeconds)
+      return doc_.error(p.node, attribute, std::string(attribute) + " '" + text + "' is beyond 10^7 seconds");
     if (ref->absolute) {
       if (ref->offset < 0) return doc_.error(p.node, attribute, std::string(attribute) + " '" + text + "' is before the document's start");
       return ref->offset;
