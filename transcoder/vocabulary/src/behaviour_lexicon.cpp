@@ -19,14 +19,6 @@ bool same_word(std::string_view a, std::string_view b) {
          });
 }
 
-std::optional<double> number_in(std::string_view text) {
-  double value = 0;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (ec != std::errc{} || ptr != end || !std::isfinite(value)) return std::nullopt;
-  return value;
-}
-
 // The faceLexeme names of bml_lexemes.tsv (its first column), which the BML reader draws.
 std::vector<std::string> face_lexemes() {
   std::vector<std::string> out;
@@ -172,7 +164,7 @@ Result<BehaviourLexicon> parse_behaviour_lexicon(std::string_view text, const st
     if (!behaviour) return behaviour.error();
     row.behaviour = *behaviour;
     if (Status name = check_name(file, line, cells[3], row); !name) return name.error();
-    const auto amount = number_in(cells[4].text);
+    const auto amount = finite_number(cells[4].text);
     if (!amount) return cell_error(file, line, cells[4], "'" + std::string(cells[4].text) + "' is not a number");
     const double limit = row.behaviour == LexiconBehaviour::gaze || row.behaviour == LexiconBehaviour::head_turn ? 60 : 2;
     if (std::abs(*amount) > limit)
@@ -183,7 +175,7 @@ Result<BehaviourLexicon> parse_behaviour_lexicon(std::string_view text, const st
     double previous = 0;
     for (int f = 0; f < 4; ++f) {
       const TsvCell& cell = cells[5 + static_cast<std::size_t>(f)];
-      const auto fraction = number_in(cell.text);
+      const auto fraction = finite_number(cell.text);
       if (!fraction || *fraction < 0 || *fraction > 1)
         return cell_error(file, line, cell, "'" + std::string(cell.text) + "' is not a fraction of the span (0 to 1)");
       if (*fraction < previous)

@@ -8,9 +8,8 @@
 
 #include "bml/bml_model.hpp"
 #include "bml/speak_text.hpp"
-#include "fapc/codec/file_io.hpp"
-#include "fapc/intent/intent.hpp"
 #include "fapc/xml/text.hpp"
+#include "intent/document_reader.hpp"
 #include "intent/realize.hpp"
 
 namespace fapc::intent {
@@ -37,48 +36,27 @@ struct Segment {
 // Attributes that name intentions of their own, on any element.
 constexpr const char* kIntentionAttributes[] = {"affect", "belief-relation", "deictic", "certainty", "adjectival"};
 
-class ApmlReader {
+class ApmlReader : public DocumentReader {
  public:
-  ApmlReader(const xml::XmlDocument& doc, const IntentOptions& options)
-      : doc_(doc),
-        options_(options),
-        lexicon_(options.lexicon != nullptr ? *options.lexicon : vocabulary::bundled_behaviour_lexicon()),
-        once_(out_.warnings) {}
+  ApmlReader(const xml::XmlDocument& doc, const IntentOptions& options) : DocumentReader(doc, options, "APML") {}
 
   Result<IntentDocument> run() {
-    const xmlNode* root = doc_.root();
-    if (root == nullptr) return make_error(Location{doc_.file(), 1, 1}, "an empty document");
-    if (xml::local_name(root) != "apml")
-      return doc_.error(root, "the root element is <" + std::string(xml::local_name(root)) + ">, not <apml>");
-    out_.language = "APML";
+    Result<const xmlNode*> root = root_named("apml");
+    if (!root) return root.error();
     segments_.emplace_back();
-    if (Status walked = walk(root); !walked) return walked.error();
-    return finish(root);
+    if (Status walked = walk(*root); !walked) return walked.error();
+    return finish(*root);
   }
 
  private:
-  const xml::XmlDocument& doc_;
-  const IntentOptions& options_;
-  const vocabulary::BehaviourLexicon& lexicon_;
-  IntentDocument out_;
-  xmt::OncePerName once_;
   std::vector<Segment> segments_;
   std::vector<PendingIntention> pending_;
-  std::int64_t counted_ = 0;
 
   Anchor mark_here() {
     bml::MarkedText& t = segments_.back().text;
     t.mark_ids.push_back(std::to_string(t.mark_ids.size()));
     t.mark_offsets.push_back(t.text.empty() ? 0 : t.text.size() + 1);
     return {segments_.size() - 1, t.mark_ids.size() - 1};
-  }
-
-  Status count(const xmlNode* node) {
-    if (++counted_ <= options_.bml.max_behaviours) return ok_status();
-    Diagnostic d = doc_.error(node, "more than " + std::to_string(options_.bml.max_behaviours) +
-                                        " elements (raise the limit with --max-runs)");
-    d.kind = ErrorKind::limit_exceeded;
-    return d;
   }
 
   Status walk(const xmlNode* parent) {
@@ -93,7 +71,7 @@ class ApmlReader {
         continue;
       }
       if (n->type != XML_ELEMENT_NODE) continue;
-      if (Status counted = count(n); !counted) return counted;
+      if (Status counted = count(n, "elements"); !counted) return counted;
       const std::string name(xml::local_name(n));
       if (name == "pause") {
         if (Status paused = pause(n); !paused) return paused;
@@ -186,46 +164,29 @@ class ApmlReader {
       spoken.push_back(std::move(*said));
     }
     auto time_of = [&](const Anchor& a) { return begins[a.segment] + spoken[a.segment].mark_times[a.mark]; };
-    double end = clock;
-    Location end_where = where;
+    std::vector<Intention> intentions;
+    intentions.reserve(pending_.size());
     for (PendingIntention& p : pending_) {
-      p.intention.start = time_of(p.from);
-      p.intention.end = p.point ? p.intention.start + kPointSpanSeconds : std::max(time_of(p.to), p.intention.start);
-      if (p.intention.end <= p.intention.start) p.intention.end = p.intention.start + kPointSpanSeconds;
-      realize(p.intention, lexicon_, options_.bml.coarticulation, out_.timeline, once_, out_.warnings);
-      if (p.intention.end > end) {
-        end = p.intention.end;
-        end_where = p.intention.where;
-      }
-      out_.intentions.push_back(p.intention);
+      Intention& i = intentions.emplace_back(std::move(p.intention));
+      i.start = time_of(p.from);
+      i.end = p.point ? i.start + kPointSpanSeconds : std::max(time_of(p.to), i.start);
+      if (i.end <= i.start) i.end = i.start + kPointSpanSeconds;
     }
-    out_.timeline.explicit_end = end;
-    out_.timeline.end_source = end_where;
-    if (options_.bml.frames.exceeded_by(end)) return frame_budget_error(end, end_where, options_.bml.frames);
-    once_.finish();
-    for (const Diagnostic& w : doc_.warnings()) out_.warnings.push_back(w);
-    return std::move(out_);
+    return draw_and_finish(std::move(intentions), clock, where);
   }
 };
 
-Result<IntentDocument> read_text(std::string_view text, const std::string& file_name, const IntentOptions& options) {
-  if (const Status depth = xml::check_element_depth(text, file_name); !depth) return depth.error();
-  // The text is read everywhere: APML's words are the content of its elements.
-  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name);
-  if (!doc) return doc.error();
-  return ApmlReader(*doc, options).run();
-}
+// The text is read everywhere: APML's words are the content of its elements.
+const xml::BlankText kBlankText{};
 
 }  // namespace
 
 Result<IntentDocument> read_apml(std::string_view text, const std::string& file_name, const IntentOptions& options) {
-  return read_text(text, file_name, options);
+  return read_document<ApmlReader>(text, file_name, options, kBlankText);
 }
 
 Result<IntentDocument> load_apml(const std::string& path, const IntentOptions& options) {
-  const auto source = SourceText::open(path);
-  if (!source) return source.error();
-  return read_text(source->bytes(), path, options);
+  return load_document<ApmlReader>(path, options, kBlankText);
 }
 
 }  // namespace fapc::intent

@@ -4,14 +4,13 @@
 // intentions, and drawn through the behaviour lexicon.
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <cstdio>
+#include <map>
 
 #include "bml/block_reader.hpp"
 #include "bml/sync_ref.hpp"
-#include "fapc/codec/file_io.hpp"
-#include "fapc/intent/intent.hpp"
 #include "fapc/xml/text.hpp"
+#include "intent/document_reader.hpp"
 #include "intent/realize.hpp"
 
 namespace fapc::intent {
@@ -27,22 +26,15 @@ struct Pending {
   enum class State : std::uint8_t { open, resolving, done } state = State::open;
 };
 
-class FmlApmlReader {
+class FmlApmlReader : public DocumentReader {
  public:
-  FmlApmlReader(const xml::XmlDocument& doc, const IntentOptions& options)
-      : doc_(doc),
-        options_(options),
-        lexicon_(options.lexicon != nullptr ? *options.lexicon : vocabulary::bundled_behaviour_lexicon()),
-        once_(out_.warnings) {}
+  FmlApmlReader(const xml::XmlDocument& doc, const IntentOptions& options) : DocumentReader(doc, options, "FML-APML") {}
 
   Result<IntentDocument> run() {
-    const xmlNode* root = doc_.root();
-    if (root == nullptr) return make_error(Location{doc_.file(), 1, 1}, "an empty document");
-    if (xml::local_name(root) != "fml-apml")
-      return doc_.error(root, "the root element is <" + std::string(xml::local_name(root)) + ">, not <fml-apml>");
-    out_.language = "FML-APML";
+    Result<const xmlNode*> root = root_named("fml-apml");
+    if (!root) return root.error();
     std::vector<const xmlNode*> fml_parts;
-    for (const xmlNode* part : doc_.children(root)) {
+    for (const xmlNode* part : doc_.children(*root)) {
       const std::string_view name = xml::local_name(part);
       if (name == "bml") {
         if (Status read = read_bml_part(part); !read) return read.error();
@@ -54,55 +46,28 @@ class FmlApmlReader {
                                "intent.unknown_part"));
       }
     }
-    std::int64_t count = 0;
     for (const xmlNode* fml : fml_parts)
       for (const xmlNode* node : doc_.children(fml)) {
-        if (++count > options_.bml.max_behaviours) {
-          Diagnostic d = doc_.error(node, "more than " + std::to_string(options_.bml.max_behaviours) +
-                                              " intentions (raise the limit with --max-runs)");
-          d.kind = ErrorKind::limit_exceeded;
-          return d;
-        }
+        if (Status counted = count(node, "intentions"); !counted) return counted.error();
         if (Status added = add(node); !added) return added.error();
       }
     for (Pending& p : pending_)
       if (Status placed = place(p); !placed) return placed.error();
-    double end = out_.timeline.explicit_end.value_or(0.0);
-    Location end_where = out_.timeline.explicit_end ? out_.timeline.end_source : doc_.where(root);
-    const Coarticulation& rule = options_.bml.coarticulation;
-    for (Pending& p : pending_) {
-      realize(p.intention, lexicon_, rule, out_.timeline, once_, out_.warnings);
-      if (p.intention.end > end) {
-        end = p.intention.end;
-        end_where = p.intention.where;
-      }
-      out_.intentions.push_back(p.intention);
-    }
-    out_.timeline.explicit_end = end;
-    out_.timeline.end_source = end_where;
-    if (options_.bml.frames.exceeded_by(end)) return frame_budget_error(end, end_where, options_.bml.frames);
-    once_.finish();
-    for (const Diagnostic& w : doc_.warnings()) out_.warnings.push_back(w);
-    return std::move(out_);
+    std::vector<Intention> intentions;
+    intentions.reserve(pending_.size());
+    for (Pending& p : pending_) intentions.push_back(std::move(p.intention));
+    const bool spoken = out_.timeline.explicit_end.has_value();
+    return draw_and_finish(std::move(intentions), out_.timeline.explicit_end.value_or(0.0),
+                           spoken ? out_.timeline.end_source : doc_.where(*root));
   }
 
  private:
-  const xml::XmlDocument& doc_;
-  const IntentOptions& options_;
-  const vocabulary::BehaviourLexicon& lexicon_;
-  IntentDocument out_;
-  xmt::OncePerName once_;
   std::vector<Pending> pending_;
   std::map<std::string, std::size_t> intention_ids_;
   // The bml part's speech marks (speech id, mark id) and behaviours (id) with their times.
   std::map<std::pair<std::string, std::string>, double> marks_;
   std::vector<bml::ScheduledMark> mark_order_;  // in document order, for messages
   std::map<std::string, std::pair<double, double>> behaviours_;
-
-  static Diagnostic with_code(Diagnostic d, const char* code) {
-    d.code = code;
-    return d;
-  }
 
   Status read_bml_part(const xmlNode* part) {
     Result<bml::BmlDocument> block = bml::read_bml_block(doc_, part, options_.bml);
@@ -228,24 +193,17 @@ class FmlApmlReader {
   }
 };
 
-Result<IntentDocument> read_text(std::string_view text, const std::string& file_name, const IntentOptions& options) {
-  if (const Status depth = xml::check_element_depth(text, file_name); !depth) return depth.error();
-  const xml::BlankText blank_text{false, {"text", "speech"}};
-  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name, blank_text);
-  if (!doc) return doc.error();
-  return FmlApmlReader(*doc, options).run();
-}
+// Only speech text is read; elsewhere white space is dropped (as the BML reader reads).
+const xml::BlankText kBlankText{false, {"text", "speech"}};
 
 }  // namespace
 
 Result<IntentDocument> read_fml_apml(std::string_view text, const std::string& file_name, const IntentOptions& options) {
-  return read_text(text, file_name, options);
+  return read_document<FmlApmlReader>(text, file_name, options, kBlankText);
 }
 
 Result<IntentDocument> load_fml_apml(const std::string& path, const IntentOptions& options) {
-  const auto source = SourceText::open(path);
-  if (!source) return source.error();
-  return read_text(source->bytes(), path, options);
+  return load_document<FmlApmlReader>(path, options, kBlankText);
 }
 
 }  // namespace fapc::intent
