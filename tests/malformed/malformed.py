@@ -701,11 +701,48 @@ def output_cases():
     ]
 
 
+def intent_cases():
+    """FML-APML and APML (docs/intentions.md), both named .xml and read by their root element."""
+    def fml_apml(fml, bml=""):
+        return "<fml-apml><bml>" + bml + "</bml><fml>\n" + fml + "\n</fml></fml-apml>\n"
+
+    def case(name, text, args=(), **kw):
+        files = {"in.xml": text}
+        files.update(kw.pop("files", {}))
+        return Case(name, files, ["compile", "in.xml", "-o", "out/out.fap"] + list(args), **kw)
+
+    header = "intention\tvalue\tbehaviour\tname\tamount\tstart\tready\trelax\tend\treason\n"
+    beats = "".join('<beat id="b{}" type="x" start="0"/>'.format(i) for i in range(101))
+    return [
+        case("fmlapml.depth.nested-20000", "<fml-apml><fml>" + "<e>" * 20000 + "</e>" * 20000 + "</fml></fml-apml>"),
+        case("apml.depth.nested-20000", "<apml>" + "<emphasis>" * 20000 + "a" + "</emphasis>" * 20000 + "</apml>"),
+        case("fmlapml.cycle.references", fml_apml('<a id="a" start="b:start"/><b id="b" start="a:end"/>')),
+        case("fmlapml.huge.time-1e300", fml_apml('<emotion id="e" type="joy" start="1e300" end="1e300"/>')),
+        case("fmlapml.huge.time-day-long", fml_apml('<emotion id="e" type="joy" start="0" end="86400"/>'),
+             ["--fps", "1000"]),
+        case("fmlapml.huge.intentions-past-max-runs", fml_apml(beats), ["--max-runs", "100"]),
+        case("apml.huge.pause-1e9", '<apml>a <pause sec="1e9"/> b</apml>'),
+        case("fmlapml.numbers.importance-nan", fml_apml('<emotion id="e" type="joy" start="0" importance="nan"/>')),
+        case("fmlapml.numbers.start-inf", fml_apml('<emotion id="e" type="joy" start="inf"/>')),
+        case("apml.numbers.intensity-1e308", '<apml><theme affect="joy" intensity="1e308">a</theme></apml>'),
+        case("fmlapml.trunc.half", fml_apml('<emotion id="e" type="joy" start="0" end="1"/>')[:40]),
+        case("fmlapml.wrong.unknown-intention-kept", fml_apml('<mystery id="m" type="x" start="0" end="2"/>'),
+             exit=0, diagnostic="warning", outputs=["out/out.fap"]),
+        case("fmlapml.wrong.mark-that-is-not", fml_apml('<emotion id="e" type="joy" start="s1:tm9"/>',
+                                                        '<speech id="s1"><tm id="tm1"/>Hi.</speech>')),
+        case("fmlapml.notfile.lexicon-directory", fml_apml('<emotion id="e" type="joy" start="0"/>'),
+             ["--lexicon", "lexicon"], files={"lexicon": DIR}, diagnostic="named"),
+        case("fmlapml.junk.lexicon-nul", fml_apml('<emotion id="e" type="joy" start="0"/>'),
+             ["--lexicon", "l.tsv"], files={"l.tsv": header + "emotion\tjoy\tau\t1\x002\t1\t0\t0.2\t0.8\t1\tr\n"}),
+    ]
+
+
 def all_cases():
     cases = (not_a_file_cases() + depth_cases() + cycle_cases() + huge_cases() + number_cases()
              + truncation_cases() + junk_cases() + wrong_result_cases() + diagnostic_cases()
              + batch_cases() + csv_cases() + speech_cases())
     cases += output_cases()
+    cases += intent_cases()
     names = [c.name for c in cases]
     duplicates = {n for n in names if names.count(n) > 1}
     if duplicates:

@@ -13,6 +13,7 @@ ConvertOptions convert_options(Args& args) {
   options.quant = args.integer("quant", 1, 0, 31);
   options.intra_period = args.integer("intra-period", 0, 0, 1 << 20);
   options.profile = args.value("profile");
+  options.lexicon = args.value("lexicon");
   options.duration = args.decimal("duration", 0, 1e7);
   if (const auto rate = args.decimal("speech-rate", 80, 450)) options.words_per_minute = *rate;  // words per minute
   if (const auto voice = args.value("voice")) options.voice = *voice;

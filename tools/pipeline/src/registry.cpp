@@ -63,7 +63,18 @@ Registry built_in() {
   r.add(described(builtin::combine_input(), "an Algebra of Expressions over other inputs (docs/algebra.md)",
                   kScriptOptions));
   r.add(described(builtin::bml_input(), "a BML document: behaviours placed by their sync constraints, speech", kScriptOptions));
-  r.add(described(builtin::xml_input(), "an .xml document read by its root: BML, FML or XMT-Omega", kScriptOptions));
+  r.add(described(builtin::xml_input(), "an .xml document read by its root: BML, FML, XMT-Omega, FML-APML or APML", kScriptOptions));
+  r.add(described(builtin::fml_apml_input(), "Greta's FML-APML: intentions on a speech's marks, through the lexicon",
+                  [] {
+                    auto options = kScriptOptions;
+                    options.insert(options.end(), {"lexicon", "voice", "speech-rate"});
+                    return options;
+                  }()));
+  r.add(described(builtin::apml_input(), "APML: intentions marked up over spoken text, through the lexicon", [] {
+                    auto options = kScriptOptions;
+                    options.insert(options.end(), {"lexicon", "voice", "speech-rate"});
+                    return options;
+                  }()));
   r.add(described(builtin::fap_output(), "frames of FAP values as text (.fap.gz compressed)", {"fap-flavour"}));
   r.add(described(builtin::fba_output(), "a raw MPEG-4 FBA elementary stream",
                   {"quant", "intra-period", "ranges", "masks", "verify"}));

@@ -27,14 +27,6 @@ std::string_view opposite(std::string_view positive) {
   return {};
 }
 
-std::optional<double> parse_number(std::string_view text) {
-  double value = 0;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (ec != std::errc{} || ptr != end || !std::isfinite(value)) return std::nullopt;
-  return value;
-}
-
 std::vector<std::string> arkit_candidates() {
   std::vector<std::string> names;
   for (std::string_view name : arkit_shape_names()) names.emplace_back(name);
@@ -79,7 +71,7 @@ Status check_motion(const std::string& file, const TsvLine& line, MappingRow& ro
                            : unknown_fap_message(fap_cell.text));
   }
   row.fap = info->number;
-  const std::optional<double> amount = parse_number(amount_cell.text);
+  const std::optional<double> amount = finite_number(amount_cell.text);
   if (!amount || *amount == 0) {
     return cell_error(file, line, amount_cell, "'" + std::string(amount_cell.text) + "' is not a non-zero number");
   }

@@ -1,6 +1,8 @@
 #include "tsv_lines.hpp"
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 
 namespace fapc::vocabulary {
 
@@ -48,6 +50,14 @@ Result<std::vector<TsvLine>> split_tsv(std::string_view text, const std::string&
     if (found == std::string_view::npos) break;
   }
   return lines;
+}
+
+std::optional<double> finite_number(std::string_view text) {
+  double value = 0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (ec != std::errc{} || ptr != end || !std::isfinite(value)) return std::nullopt;
+  return value;
 }
 
 Diagnostic cell_error(const std::string& file, const TsvLine& line, const TsvCell& cell, std::string message) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,6 +26,9 @@ struct TsvLine {
 // Every non-comment line; an error when there are more than `max_lines` (counted before any is
 // stored) or when a line has a carriage return inside it.
 Result<std::vector<TsvLine>> split_tsv(std::string_view text, const std::string& file, std::size_t max_lines);
+
+// A finite decimal number filling the whole cell, or nothing.
+std::optional<double> finite_number(std::string_view text);
 
 // An error at a cell of a line.
 Diagnostic cell_error(const std::string& file, const TsvLine& line, const TsvCell& cell, std::string message);

@@ -2,12 +2,11 @@
 // --speech-rate); --max-runs bounds the behaviours.
 #include "fapc/bml/bml.hpp"
 #include "formats.hpp"
+#include "formats/bml_options.hpp"
 #include "speech_options.hpp"
 #include "timeline_input.hpp"
 
 namespace fapc::pipeline::builtin {
-
-namespace {
 
 bml::BmlOptions bml_options(const ConvertOptions& options) {
   // The speech settings are the FML reader's: one place reads --voice and --speech-rate.
@@ -24,6 +23,8 @@ bml::BmlOptions bml_options(const ConvertOptions& options) {
   out.frames = frame_budget_for(options);
   return out;
 }
+
+namespace {
 
 nlohmann::ordered_json facts_of(const bml::BmlDocument& document) {
   nlohmann::ordered_json out;

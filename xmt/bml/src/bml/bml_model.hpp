@@ -71,6 +71,12 @@ struct ConstraintSource {
   std::string text;  // `nod1 start="speech1:s1+1"`
 };
 
+// The clips of one behaviour at its solved points (seconds from `origin`): the one lowering of
+// behaviours to FAPs, called for every behaviour of a block and for every behaviour the intentions
+// of FML-APML and APML become (fapc::intent, docs/intentions.md).
+void lower_behaviour(const Behaviour& b, const std::array<double, kStandardPoints>& t, double origin,
+                     const Coarticulation& rule, Timeline& out, Diagnostics& warnings);
+
 // The clips of one solved block, at `origin` seconds (the block's start).
 void lower_block(const Block& block, const Solution& solution, double origin, const Coarticulation& rule, Timeline& out,
                  Diagnostics& warnings);

@@ -11,6 +11,7 @@
 #include <libxml/tree.h>
 
 #include "bml/behaviour_defaults.hpp"
+#include "bml/block_reader.hpp"
 #include "bml/bml_model.hpp"
 #include "bml/speak_text.hpp"
 #include "bml/sync_ref.hpp"
@@ -75,8 +76,9 @@ class BmlReader {
  public:
   BmlReader(const xml::XmlDocument& doc, const BmlOptions& options) : doc_(doc), options_(options), once_(out_.warnings) {}
 
-  Result<BmlDocument> run() {
-    const xmlNode* root = doc_.root();
+  // `root`: the document's root, or a bml element inside another language's document (FML-APML's
+  // bml part), whose parser warnings that document's reader reports itself.
+  Result<BmlDocument> run(const xmlNode* root, bool whole_document) {
     if (root == nullptr) return make_error(Location{doc_.file(), 1, 1}, "an empty document");
     if (xml::local_name(root) != "bml")
       return doc_.error(root, "the root element is <" + std::string(xml::local_name(root)) + ">, not a BML <bml> block");
@@ -85,7 +87,8 @@ class BmlReader {
     if (!read_block(root, block)) return *error_;
     if (!schedule(block, 0)) return *error_;
     once_.finish();
-    for (const Diagnostic& w : doc_.warnings()) out_.warnings.push_back(w);
+    if (whole_document)
+      for (const Diagnostic& w : doc_.warnings()) out_.warnings.push_back(w);
     return std::move(out_);
   }
 
@@ -515,6 +518,9 @@ class BmlReader {
       const Behaviour& b = block.behaviours[i];
       out_.behaviours.push_back({block.id, b.id, b.element, origin + s.points[i][kStart], origin + s.points[i][kEnd],
                                  b.kind != BehaviourKind::not_drawn && b.kind != BehaviourKind::wait});
+      if (b.speech)
+        for (std::size_t m = 0; m < b.speech->mark_ids.size(); ++m)
+          out_.marks.push_back({b.id, b.speech->mark_ids[m], origin + s.marks[i][m]});
     }
     lower_block(block, s, origin, options_.coarticulation, out_.timeline, out_.warnings);
     double end = origin;
@@ -576,10 +582,14 @@ Result<BmlDocument> read_text(std::string_view text, const std::string& file_nam
   const xml::BlankText blank_text{false, {"text", "speech"}};
   Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name, blank_text);
   if (!doc) return doc.error();
-  return BmlReader(*doc, options).run();
+  return BmlReader(*doc, options).run(doc->root(), true);
 }
 
 }  // namespace
+
+Result<BmlDocument> read_bml_block(const xml::XmlDocument& doc, const xmlNode* block, const BmlOptions& options) {
+  return BmlReader(doc, options).run(block, false);
+}
 
 Result<BmlDocument> read_bml(std::string_view text, const std::string& file_name, const BmlOptions& options) {
   return read_text(text, file_name, options);

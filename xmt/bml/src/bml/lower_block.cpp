@@ -126,39 +126,41 @@ void lower_speech(const Behaviour& b, const std::array<double, kStandardPoints>&
 
 }  // namespace
 
+void lower_behaviour(const Behaviour& b, const std::array<double, kStandardPoints>& t, double origin,
+                     const Coarticulation& rule, Timeline& out, Diagnostics& warnings) {
+  const bool drawn = b.kind != BehaviourKind::wait && b.kind != BehaviourKind::not_drawn && b.kind != BehaviourKind::speech;
+  if (drawn && !(t[kEnd] > t[kStart])) {
+    // start = end is a consistent schedule (two sync points joined) but moves nothing: said, not
+    // drawn, so that every clip of the timeline lasts some time.
+    warnings.push_back(make_warning(WarningCode{"bml.no_duration"}, b.where,
+                                    "<" + b.element + " id=\"" + b.id + "\"> starts and ends at the same moment: it moves nothing"));
+    return;
+  }
+  switch (b.kind) {
+    case BehaviourKind::face_lexeme:
+    case BehaviourKind::face_facs:
+      lower_face(b, t, origin, out, warnings);
+      break;
+    case BehaviourKind::head:
+      lower_head(b, t, origin, out, warnings);
+      break;
+    case BehaviourKind::gaze:
+    case BehaviourKind::head_direction:
+      lower_direction(b, t, origin, out);
+      break;
+    case BehaviourKind::speech:
+      lower_speech(b, t, origin, rule, out);
+      break;
+    case BehaviourKind::wait:
+    case BehaviourKind::not_drawn:
+      break;
+  }
+}
+
 void lower_block(const Block& block, const Solution& solution, double origin, const Coarticulation& rule, Timeline& out,
                  Diagnostics& warnings) {
-  for (std::size_t i = 0; i < block.behaviours.size(); ++i) {
-    const Behaviour& b = block.behaviours[i];
-    const auto& t = solution.points[i];
-    const bool drawn = b.kind != BehaviourKind::wait && b.kind != BehaviourKind::not_drawn && b.kind != BehaviourKind::speech;
-    if (drawn && !(t[kEnd] > t[kStart])) {
-      // start = end is a consistent schedule (two sync points joined) but moves nothing: said,
-      // not drawn, so that every clip of the timeline lasts some time.
-      warnings.push_back(make_warning(WarningCode{"bml.no_duration"}, b.where,
-                                      "<" + b.element + " id=\"" + b.id + "\"> starts and ends at the same moment: it moves nothing"));
-      continue;
-    }
-    switch (b.kind) {
-      case BehaviourKind::face_lexeme:
-      case BehaviourKind::face_facs:
-        lower_face(b, t, origin, out, warnings);
-        break;
-      case BehaviourKind::head:
-        lower_head(b, t, origin, out, warnings);
-        break;
-      case BehaviourKind::gaze:
-      case BehaviourKind::head_direction:
-        lower_direction(b, t, origin, out);
-        break;
-      case BehaviourKind::speech:
-        lower_speech(b, t, origin, rule, out);
-        break;
-      case BehaviourKind::wait:
-      case BehaviourKind::not_drawn:
-        break;
-    }
-  }
+  for (std::size_t i = 0; i < block.behaviours.size(); ++i)
+    lower_behaviour(block.behaviours[i], solution.points[i], origin, rule, out, warnings);
 }
 
 }  // namespace fapc::bml

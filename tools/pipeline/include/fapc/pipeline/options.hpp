@@ -37,6 +37,7 @@ struct ConvertOptions {
   ProgressFn progress;  // empty: nobody is told
   PictureSettings picture;                    // the face outputs
   std::optional<std::string> profile;         // a profile file; empty: the default profile
+  std::optional<std::string> lexicon;         // a behaviour lexicon (--lexicon); empty: fapc's own
   std::optional<double> duration;             // the end of timelines that give none
   std::map<std::string, std::string> events;  // FML events, NAME -> VALUE
   // FML talk text (docs/speech.md): the speaking rate in words per minute (--speech-rate, 80 to

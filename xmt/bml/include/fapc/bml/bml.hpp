@@ -44,12 +44,21 @@ struct ScheduledBehaviour {
   bool drawn = true;  // false: kept for its timing only (gesture, posture, ...)
 };
 
+// A speech's sync mark as placed (the onset of the word after it), for readers that anchor
+// their own spans to marks (FML-APML's intentions, docs/intentions.md).
+struct ScheduledMark {
+  std::string behaviour;  // the speech's id
+  std::string id;
+  double time = 0;  // seconds from the document's start
+};
+
 struct BmlDocument {
   Timeline timeline;
   std::string dialect;                      // "BML 1.0", ...
   std::vector<std::string> blocks;          // block ids in order
   std::vector<std::string> characters;      // characterId of each block ("" when none)
   std::vector<ScheduledBehaviour> behaviours;
+  std::vector<ScheduledMark> marks;
   std::vector<std::string> languages;       // the languages speech was spoken in
   Diagnostics warnings;
 };
