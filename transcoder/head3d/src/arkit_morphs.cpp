@@ -10,15 +10,6 @@ namespace fapc::head3d {
 
 namespace {
 
-const vocabulary::ShapeBasis& basis() {
-  static const vocabulary::ShapeBasis shapes = [] {
-    std::vector<std::string> keys;
-    for (std::string_view name : vocabulary::arkit_shape_names()) keys.emplace_back(name);
-    return vocabulary::ShapeBasis(vocabulary::arkit_table(), std::move(keys));
-  }();
-  return shapes;
-}
-
 // The FAP's morph target, or none for the FAPs that are rotations (eyeballs, head) or move no point.
 const MorphTarget* fap_target(int fap) {
   for (const MorphTarget& t : morph_targets())
@@ -58,7 +49,7 @@ const std::vector<MorphTarget>& arkit_targets() {
 std::vector<double> arkit_weights(const HeadFrame& frame) {
   vocabulary::FapVector faps{};
   for (std::size_t i = 0; i < faps.size(); ++i) faps[i] = frame.faps[i];
-  return basis().from_faps(faps);
+  return vocabulary::arkit_shape_basis().from_faps(faps);
 }
 
 }  // namespace fapc::head3d
