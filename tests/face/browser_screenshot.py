@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
 """Open a page in headless Chromium, wait until it says it is ready, and save a screenshot.
 
-usage: browser_screenshot.py CHROMIUM URL OUT.png X Y WIDTH HEIGHT
+usage: browser_screenshot.py CHROMIUM URL OUT.png X Y WIDTH HEIGHT [EXPRESSION]
 
 Talks to Chromium over --remote-debugging-pipe (the DevTools protocol as NUL-separated JSON on
 file descriptors 3 and 4), so it needs nothing beyond Python's standard library and Debian's
 chromium: no network, no WebSocket client. The page is ready when its title starts with "ready"
 (the fapc preview page sets it once the video has seeked). Prints one JSON line: the page's
-title and the body's data-* attributes (the preview page's cursor time and position).
+title and the body's data-* attributes (the preview page's cursor time and position), and the
+value of EXPRESSION (JavaScript, evaluated in the page once it is ready) when one is given.
 """
 import base64
 import fcntl
@@ -121,6 +122,8 @@ def main():
                                                        "height": height, "scale": 1}}, deadline)
         with open(out, "wb") as f:
             f.write(base64.b64decode(shot["data"]))
+        if len(sys.argv) > 8:
+            state["value"] = browser.evaluate(sys.argv[8], deadline)
         print(json.dumps(state))
     finally:
         browser.close()

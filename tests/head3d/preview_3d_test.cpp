@@ -218,5 +218,35 @@ TEST(Preview3d, OpeningTheJawChangesTheMouthWhereTheReferenceSaysAndNothingElse)
   EXPECT_EQ(share_near(seen_change, drawn_head, 2), 1.0);
 }
 
+// Mimic Figure 3 in the page's 3D view: at 10 s three.js holds the head turned and the left eye
+// 0.8 closed, the same rotations and weights as the tests' own importer reads from the .glb.
+TEST(Preview3d, Figure3TurnsTheHeadAndClosesTheEyeWhereTheProgramSays) {
+  const std::string dir = test::binary_dir() + "/head3d-page";
+  std::filesystem::create_directories(dir);
+  const std::string page = dir + "/figure3.html", glb = dir + "/figure3.glb";
+  ASSERT_EQ(test::run_fapc("render corpus/examples/mimic/figure3.mimic -o " + page + " --view 3d --size 160x120").exit_status,
+            0);
+  ASSERT_EQ(test::run_fapc("compile corpus/examples/mimic/figure3.mimic -o " + glb).exit_status, 0);
+  const test::CommandRun shot = test::run_shell("python3 " + test::source_dir() +
+                                                "/tests/face/browser_screenshot.py chromium 'file://" + page +
+                                                "#t=10.02' " + dir + "/figure3.png 0 0 160 120 'fapcHead3d.pose()'");
+  ASSERT_EQ(shot.exit_status, 0) << shot.err << shot.out;
+  const auto seen = nlohmann::json::parse(shot.out)["value"];
+  const test::CommandRun read = test::run_shell("python3 " + test::source_dir() + "/tests/head3d/gltf_pose.py " + glb +
+                                                " --time 10");
+  ASSERT_EQ(read.exit_status, 0) << read.err;
+  const auto file = nlohmann::json::parse(read.out);
+  for (const std::string node : {"head", "eye_l", "eye_r"}) {
+    double dot = 0;  // q and -q are the same rotation
+    for (int i = 0; i < 4; ++i) dot += seen[node][i].get<double>() * file["rotations"][node][i].get<double>();
+    EXPECT_NEAR(std::abs(dot), 1.0, 1e-5) << node;
+  }
+  EXPECT_LT(std::abs(seen["head"][3].get<double>()), 0.99);  // turned
+  EXPECT_NEAR(seen["weights"]["close_t_l_eyelid"].get<double>(), 0.8, 1e-3);  // 0.8 closed (819 / 1024)
+  ASSERT_EQ(seen["weights"].size(), file["weights"].size());
+  for (const auto& [name, weight] : file["weights"].items())
+    EXPECT_NEAR(seen["weights"][name].get<double>(), weight.get<double>(), 1e-5) << name;
+}
+
 }  // namespace
 }  // namespace fapc::head3d

@@ -29,7 +29,7 @@ window.fapcHead3d = (function () {
   scene.add(sun);
   const fov = 24;
   const camera = new THREE.PerspectiveCamera(fov, canvas.width / canvas.height, 0.01, 10);
-  const state = {ready: false, time: 0, action: null, mixer: null, blends: [], weights: null, draws: 0};
+  const state = {ready: false, time: 0, action: null, mixer: null, blends: [], weights: null, draws: 0, scene: null, mesh: null};
   function blend() {
     for (const b of state.blends) {
       const out = b.position.array;
@@ -62,6 +62,7 @@ window.fapcHead3d = (function () {
   const loaded = new Promise((resolve, reject) => new THREE.GLTFLoader().parse(bytes.buffer, '', resolve, reject))
     .then(gltf => {
       scene.add(gltf.scene);
+      state.scene = gltf.scene;
       const shared = new Map();
       gltf.scene.traverse(o => {
         if (!o.isMesh) return;
@@ -71,6 +72,7 @@ window.fapcHead3d = (function () {
         o.material.morphTargets = false;  // blended above instead
         o.material.needsUpdate = true;
         state.weights = o.morphTargetInfluences;
+        state.mesh = o;
         const position = o.geometry.attributes.position;
         if (!shared.has(position))
           shared.set(position, {position: position, base: position.array.slice(), morphs: morphs.map(m => m.array)});
@@ -103,7 +105,14 @@ window.fapcHead3d = (function () {
       show(state.time);
     })
     .catch(e => { document.body.dataset.head3dError = String(e); throw e; });
-  return {loaded: loaded, show: show, draws: () => state.draws};
+  // What is shown, for tests: the nodes' rotations (x, y, z, w) and the weights by target name.
+  function pose() {
+    const rotation = name => state.scene.getObjectByName(name).quaternion.toArray();
+    const weights = {};
+    for (const name in state.mesh.morphTargetDictionary) weights[name] = state.weights[state.mesh.morphTargetDictionary[name]];
+    return {head: rotation('head'), eye_l: rotation('eye_l'), eye_r: rotation('eye_r'), weights: weights};
+  }
+  return {loaded: loaded, show: show, draws: () => state.draws, pose: pose};
 })();
 )JS";
 
