@@ -24,3 +24,15 @@ function(fapc_write_if_different out text)
   execute_process(COMMAND ${CMAKE_COMMAND} -E copy_if_different ${out}.tmp ${out})
   file(REMOVE ${out}.tmp)
 endfunction()
+
+# At configure time: adds to TARGET the C++ file OUT, written by the script SCRIPT (run as
+# cmake -DOUT=OUT -DVAR=FILES -P SCRIPT) from the files that follow, and rewritten when one of them
+# or a script changes. VERBATIM keeps the ';' of a list of several files away from the shell.
+function(fapc_embed_files target out script var comment)
+  add_custom_command(OUTPUT ${out}
+    COMMAND ${CMAKE_COMMAND} -DOUT=${out} "-D${var}=${ARGN}" -P ${script}
+    DEPENDS ${ARGN} ${script} ${PROJECT_SOURCE_DIR}/cmake/EmbedText.cmake
+    COMMENT "${comment}"
+    VERBATIM)
+  target_sources(${target} PRIVATE ${out})
+endfunction()

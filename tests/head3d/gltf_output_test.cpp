@@ -5,13 +5,16 @@
 // puts them for the same frame.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/face/face_pose.hpp"
 #include "fapc/face/face_track.hpp"
+#include "fapc/head3d/arkit_morphs.hpp"
 #include "fapc/head3d/head_mesh.hpp"
 #include "fapc/head3d/head_morphs.hpp"
 #include "support/test_support.hpp"
@@ -125,6 +128,92 @@ TEST(GltfOutput, WeightsAreTheFramesValuesOver1024) {
     if (paired[static_cast<std::size_t>(target.fap - 1)] != 0) ++checked;
   }
   EXPECT_GT(checked, 10);
+}
+
+// --morphs arkit: 52 targets named as ARKit's blendshapes, each the sum of its FAPs' targets at the
+// amounts of the vocabulary's table (read here from the .tsv itself), valid for the Khronos
+// validator, and the program's eye closing still closes the lids.
+TEST(GltfOutput, ArkitMorphsValidateAndFollowTheVocabularyTable) {
+  const std::string glb = out_dir() + "/f3-arkit.glb", fap = out_dir() + "/f3-arkit.fap";
+  ASSERT_EQ(test::run_fapc("compile corpus/examples/mimic/figure3.mimic -o " + glb + " --morphs arkit").exit_status, 0);
+  ASSERT_EQ(test::run_fapc("compile corpus/examples/mimic/figure3.mimic -o " + fap).exit_status, 0);
+  const nlohmann::json report = validate(glb);
+  EXPECT_EQ(report["errors"], 0) << report.dump();
+  EXPECT_EQ(report["warnings"], 0) << report.dump();
+  EXPECT_EQ(report["hasMorphTargets"], true);
+
+  const auto read = read_fap_text(test::read_text(fap), fap);
+  ASSERT_TRUE(static_cast<bool>(read));
+  const face::FaceTrack track(read->sequence);
+  const std::vector<int> lids = {vertex_of(P::lid_t_l), vertex_of(P::lid_b_l)};
+  for (const double t : {0.0, 10.0, 12.0}) {
+    const nlohmann::json pose = importer_pose(glb, t, lids);
+    EXPECT_EQ(pose["weights"].size(), 52u);
+    for (const char* name : {"eyeBlinkLeft", "jawOpen", "mouthSmileLeft", "browInnerUp", "tongueOut"})
+      EXPECT_TRUE(pose["weights"].contains(name)) << name;
+    // The left lid's opening (figure3 closes that eye to 0.8 at 10 s) within 0.5 mm of the 2D face's.
+    const face::FacePose face_pose = face::pose_face(track.at_time(t));
+    EXPECT_NEAR(distance(world(pose, lids[0]), world(pose, lids[1])),
+                distance(face_pose.at(P::lid_t_l), face_pose.at(P::lid_b_l)), 0.5) << t;
+  }
+
+  // jawOpen is open_jaw's target times its amount / 1024 (its one row of the table).
+  const std::string table = test::read_text(test::source_dir() + "/transcoder/vocabulary/data/arkit_faps.tsv");
+  const std::size_t at = table.find("\njawOpen\topen_jaw\t");
+  ASSERT_NE(at, std::string::npos);
+  std::istringstream row(table.substr(at + 1));
+  std::string shape, fap_name, direction;
+  double amount = 0;
+  row >> shape >> fap_name >> direction >> amount;
+  const auto named = [](const std::vector<MorphTarget>& targets, const std::string& name) -> const MorphTarget* {
+    for (const MorphTarget& t : targets)
+      if (t.name == name) return &t;
+    return nullptr;
+  };
+  const MorphTarget* jaw = named(morph_targets(), fap_name);
+  const MorphTarget* jaw_open = named(arkit_targets(), shape);
+  ASSERT_TRUE(jaw && jaw_open);
+  ASSERT_EQ(jaw_open->vertices, jaw->vertices);
+  for (std::size_t i = 0; i < jaw->vertices.size(); ++i)
+    EXPECT_LT(distance(jaw_open->displacements[i], (amount / 1024) * jaw->displacements[i]), 1e-9);
+}
+
+// Blender's own glTF importer (Debian's blender, background mode) reads f3.glb and f3-arkit.glb:
+// the head, the eyes, every target as a shape key in order, and at 0, 10 and 12 s the same
+// rotations and weights as the tests' importer. Skipped where Blender is not installed.
+TEST(GltfOutput, BlenderImportsTheHeadItsShapeKeysAndTheAnimation) {
+  if (test::run_shell("command -v blender").exit_status != 0) GTEST_SKIP() << "Blender is not installed";
+  for (const bool arkit : {false, true}) {
+    const std::string glb = out_dir() + (arkit ? "/f3-blender-arkit.glb" : "/f3-blender.glb");
+    ASSERT_EQ(test::run_fapc("compile corpus/examples/mimic/figure3.mimic -o " + glb + (arkit ? " --morphs arkit" : ""))
+                  .exit_status,
+              0);
+    const test::CommandRun run = test::run_shell("blender -b --factory-startup --python-exit-code 1 --python " +
+                                                 test::source_dir() + "/tests/head3d/blender_import.py -- " + glb +
+                                                 " 0 10 12");
+    ASSERT_EQ(run.exit_status, 0) << run.err;
+    const std::size_t at = run.out.find("BLENDER-IMPORT ");
+    ASSERT_NE(at, std::string::npos) << run.out;
+    const auto blender = nlohmann::json::parse(run.out.substr(at + 15, run.out.find('\n', at) - at - 15));
+    for (const char* name : {"head", "eye_l", "eye_r"})
+      EXPECT_NE(std::find(blender["objects"].begin(), blender["objects"].end(), name), blender["objects"].end()) << name;
+    // Blender keeps a vertex per primitive that uses it: at least the mesh's own.
+    EXPECT_GE(blender["vertices"].get<std::size_t>(), head_mesh().positions.size());
+    std::vector<std::string> names;
+    for (const MorphTarget& t : arkit ? arkit_targets() : morph_targets()) names.push_back(t.name);
+    EXPECT_EQ(blender["shape_keys"].get<std::vector<std::string>>(), names);
+    for (const auto& pose : blender["poses"]) {
+      const double t = pose["time"];
+      const nlohmann::json ours = importer_pose(glb, t, {});
+      for (const std::string node : {"head", "eye_l", "eye_r"}) {
+        double dot = 0;  // q and -q are the same rotation
+        for (int i = 0; i < 4; ++i) dot += pose["rotations"][node][i].get<double>() * ours["rotations"][node][i].get<double>();
+        EXPECT_NEAR(std::abs(dot), 1.0, 1e-5) << node << " at " << t;
+      }
+      for (const std::string& name : names)
+        EXPECT_NEAR(pose["weights"][name].get<double>(), ours["weights"][name].get<double>(), 1e-4) << name << " at " << t;
+    }
+  }
 }
 
 }  // namespace

@@ -68,6 +68,7 @@ const std::map<std::pair<std::string, std::string>, int> kOtherMeanings = {
     {{"fapc/cmd_batch.cpp", "fap"}, 1},        // --to's documented default (docs/cli.md)
     {{"fapc/cmd_decode.cpp", "fap"}, 1},       // decode writes .fap text unless --to says otherwise
     {{"fapc/cmd_plot.cpp", "svg"}, 1},         // plot -o - writes SVG unless --to says otherwise
+    {{"fapc/options.cpp", "arkit"}, 1},        // --morphs arkit: the 3D head's targets named by ARKit shape
 };
 
 bool is_table_file(const std::string& relative) {

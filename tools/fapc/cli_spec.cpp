@@ -111,6 +111,10 @@ const std::vector<OptionSpec> kOptions = {
     {"time", 0, "T", "the time (seconds) of the frame a .png shows", FAPC_CONVERTERS},
     {"sheet", 0, "N", "a .png contact sheet of N frames", FAPC_CONVERTERS},
     {"points", 0, "", "mark and number the feature points on a .png", FAPC_CONVERTERS},
+    {"view", 0, "2d|3d|both", "what a .html page shows: the 2D face, the 3D head or both (default 2d)",
+     FAPC_CONVERTERS, false, VC::words, "2d 3d both"},
+    {"morphs", 0, "faps|arkit", "the morph targets of .glb/.gltf outputs: one per FAP or ARKit's 52 shapes",
+     FAPC_CONVERTERS, false, VC::words, "faps arkit"},
     // One subcommand each.
     {"per-clip", 0, "", "draw every clip's own curve under the blended one", "plot"},
     {"faps", 0, "LIST", "the FAPs or groups to draw (lips,jaw,3-18,open_jaw)", "plot"},

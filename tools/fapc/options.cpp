@@ -49,6 +49,7 @@ ConvertOptions convert_options(Args& args) {
     return true;
   };
   if (!choose("ranges", "fit", "max", options.ranges) || !choose("masks", "fit", "keep", options.masks)) return options;
+  if (!choose("morphs", "faps", "arkit", options.picture.morphs)) return options;
   if (const auto size = args.value("size")) {
     int w = 0, h = 0;
     char x = 0, rest = 0;
@@ -64,6 +65,13 @@ ConvertOptions convert_options(Args& args) {
   if (args.value("frame")) options.picture.frame = args.integer("frame", 0, 0, 1 << 30);
   options.picture.time = args.decimal("time", 0, 1e7);
   options.picture.points = args.flag("points");
+  if (const auto view = args.value("view")) {
+    if (*view != "2d" && *view != "3d" && *view != "both") {
+      args.fail("--view takes 2d, 3d or both, not '" + *view + "'");
+      return options;
+    }
+    options.picture.view = *view;
+  }
   if (args.value("sheet")) options.picture.sheet = args.integer("sheet", 12, 1, 400);
   // Folders whose files includes may read besides the input's own (docs/security.md).
   for (const std::string& folder : args.values("allow-include")) options.includes.allowed_folders.push_back(folder);

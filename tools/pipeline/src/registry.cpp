@@ -91,7 +91,7 @@ Registry built_in() {
   r.add(described(builtin::png_output(), "a picture of the face: one frame or a contact sheet",
                   {"size", "frame", "time", "sheet", "points"}));
   r.add(described(builtin::webm_output(), "a VP9 video of the face", {"size", "frame-rate"}));
-  r.add(described(builtin::html_output(), "a page that plays the face in a browser", {"size", "frame-rate"}));
+  r.add(described(builtin::html_output(), "a page that plays the face in a browser", {"size", "frame-rate", "view"}));
   r.add(described(builtin::wav_output(), "the voice (speech or a recording) as 16-bit PCM WAV", {"voice", "speech-rate"}));
   r.add(described(builtin::tracker_csv_input(), "OpenFace or ARKit CSV, told by its header (docs/bridges.md)",
                   {"fps", "max-frames"}));
@@ -106,8 +106,8 @@ Registry built_in() {
   r.add(described(builtin::viseme_json_output(),
                   "FAP 1's visemes as OpenXR names and times; loses every other FAP", {}));
   r.add(described(builtin::viseme_csv_output(), "the viseme track as CSV (start,end,viseme,mpeg4)", {}));
-  r.add(described(builtin::glb_output(), "the 3D head with FAP morph targets and the animation, binary glTF 2.0", {}));
-  r.add(described(builtin::gltf_output(), "the same 3D head and animation as glTF 2.0 JSON", {}));
+  r.add(described(builtin::glb_output(), "the 3D head with FAP morph targets and the animation, binary glTF 2.0", {"morphs"}));
+  r.add(described(builtin::gltf_output(), "the same 3D head and animation as glTF 2.0 JSON", {"morphs"}));
   return r;
 }
 

@@ -5,6 +5,7 @@
 
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/codec/xml_escape.hpp"
+#include "preview_page_3d.hpp"
 
 namespace fapc::face {
 
@@ -27,6 +28,10 @@ const play = document.getElementById('play');
 const clock = document.getElementById('clock');
 const table = document.getElementById('values');
 const ctx = plot.getContext('2d');
+// The 3D view, when the page has one: it draws each frame the cursor shows, and the page says it
+// is ready only once its head is loaded.
+const head3d = window.fapcHead3d || null;
+const whenLoaded = f => (head3d ? head3d.loaded : Promise.resolve()).then(f);
 const margin = data.plotMargin, W = plot.width, H = plot.height;
 const duration = data.frames / data.rate;
 // Each curve is scaled to its own largest |value|, so small FAPs keep their shape beside head
@@ -53,6 +58,7 @@ function show(t) {
   ctx.putImageData(background, 0, 0);
   const x = xOf(shown);
   ctx.strokeStyle = '#000'; ctx.lineWidth = 1; ctx.beginPath(); ctx.moveTo(x + 0.5, 0); ctx.lineTo(x + 0.5, H); ctx.stroke();
+  if (head3d) head3d.show(shown);
   clock.textContent = shown.toFixed(2) + ' s  (frame ' + k + ')';
   scrub.value = shown;
   table.innerHTML = data.faps.map((f, i) => '<tr><td style="color:' + colours[i % colours.length] + '">' + f.number + '</td><td>' + f.name + '</td><td>' + f.values[k] + '</td></tr>').join('');
@@ -67,14 +73,16 @@ scrub.oninput = () => { video.currentTime = parseFloat(scrub.value) + 0.5 / data
 // 'seeked' comes when the frame is decoded, before it is on screen: the page says it is ready two
 // animation frames later, once the browser has painted (a screenshot taken at once showed the old
 // frame under load; requestVideoFrameCallback never fires for a paused seek in headless Chromium).
-video.addEventListener('seeked', () => {
+video.addEventListener('seeked', () => whenLoaded(() => {
   show(video.currentTime);
   requestAnimationFrame(() => requestAnimationFrame(() => { document.title = 'ready ' + video.currentTime; }));
-});
+}));
 const wanted = /#t=([0-9.]+)/.exec(location.hash);
-video.addEventListener('loadeddata', () => {
-  if (wanted) { video.currentTime = parseFloat(wanted[1]); } else { show(0); document.title = 'ready 0'; }
-});
+function start() {
+  if (wanted) { video.currentTime = parseFloat(wanted[1]); } else { whenLoaded(() => { show(0); document.title = 'ready 0'; }); }
+}
+// The video may have its first frame before this script runs (the 3D view's scripts come first).
+if (video.readyState >= 2) { start(); } else { video.addEventListener('loadeddata', start); }
 show(wanted ? parseFloat(wanted[1]) : 0);
 )JS";
 
@@ -121,20 +129,24 @@ std::string preview_page(const FaceTrack& track, std::string_view webm, const Pr
   }
   const std::string title = xml_escape(o.title.empty() ? "fapc preview" : o.title);
   std::string page;
-  page.reserve(webm.size() * 4 / 3 + faps.size() + 8192);
+  page.reserve((webm.size() + o.head_glb.size()) * 4 / 3 + faps.size() + 8192);
   page += "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + title + "</title>\n";
   page += "<meta name=\"generator\" content=\"fapc render\">\n<style>\n"
           "body{margin:0;font:14px sans-serif;background:#f4f5f7}\n"
-          "#face{display:block;position:absolute;left:0;top:0}\n"
+          "#face{display:" + std::string(o.view == PreviewView::three_d ? "none" : "block") +
+          ";position:absolute;left:0;top:0}\n#head3d{position:absolute;top:0;left:" + std::to_string(head3d_left(o)) +
+          "px}\n"
           "#panel{position:absolute;left:0;top:" + std::to_string(o.height) + "px;padding:8px}\n"
-          "#side{position:absolute;left:" + std::to_string(o.width + 8) + "px;top:0;max-height:" +
+          "#side{position:absolute;left:" + std::to_string(o.width + head3d_left(o) + 8) + "px;top:0;max-height:" +
           std::to_string(o.height) + "px;overflow:auto}\n"
           "#scrub{width:" + std::to_string(kPlotWidth - 2 * kPlotMargin) + "px;margin-left:" +
           std::to_string(kPlotMargin - 8) + "px}\ntd{padding:0 6px}\n</style></head>\n<body>\n";
   page += "<video id=\"face\" width=\"" + std::to_string(o.width) + "\" height=\"" + std::to_string(o.height) +
           (o.sound ? "\"" : "\" muted") + " playsinline preload=\"auto\" src=\"data:video/webm;base64,";
   page += base64(webm);
-  page += "\"></video>\n<div id=\"side\"><b>" + title + "</b><table id=\"values\"></table></div>\n";
+  page += "\"></video>\n";
+  if (o.view != PreviewView::two_d) page += head3d_view(o);
+  page += "<div id=\"side\"><b>" + title + "</b><table id=\"values\"></table></div>\n";
   page += "<div id=\"panel\"><button id=\"play\">play</button> <span id=\"clock\"></span><br>\n";
   char range[200];
   std::snprintf(range, sizeof range, "<input id=\"scrub\" type=\"range\" min=\"0\" max=\"%.6g\" step=\"%.6g\" value=\"0\"><br>\n",

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "fapc/face/face_model.hpp"
+#include "fapc/head3d/arkit_morphs.hpp"
 #include "fapc/head3d/head_mesh.hpp"
 #include "fapc/head3d/head_morphs.hpp"
 
@@ -149,7 +150,8 @@ std::vector<double> metres(Vec3 v) { return {v.x * kMetre, v.y * kMetre, v.z * k
 Result<std::string> head_gltf(const FapSequence& sequence, const GltfOptions& options, const std::string& where) {
   const HeadMesh& head = head_mesh();
   const EyeballMesh& eye = eyeball_mesh();
-  const std::vector<MorphTarget>& targets = morph_targets();
+  const bool arkit = options.names == MorphNames::arkit;
+  const std::vector<MorphTarget>& targets = arkit ? arkit_targets() : morph_targets();
   // The glb's BIN chunk and every glTF byte length are 32-bit: 4 GiB at most. Each frame takes
   // one float per target and three quaternions.
   const std::int64_t frames = sequence.frames.empty() ? 0 : sequence.frames.back().number + 1;
@@ -234,7 +236,7 @@ Result<std::string> head_gltf(const FapSequence& sequence, const GltfOptions& op
   const int fps = sequence.fps > 0 ? sequence.fps : 25;
   for_each_head_frame(sequence, [&](const HeadFrame& f) {
     times.push_back(static_cast<float>(static_cast<double>(times.size()) / fps));
-    for (double w : f.weights) weights.push_back(static_cast<float>(w));
+    for (double w : arkit ? arkit_weights(f) : f.weights) weights.push_back(static_cast<float>(w));
     add_quaternion(head_rotation, f.head);
     add_quaternion(eye_rotation[0], f.eyes[0]);
     add_quaternion(eye_rotation[1], f.eyes[1]);

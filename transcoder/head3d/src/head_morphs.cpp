@@ -128,6 +128,7 @@ HeadFrame frame_of(const FapValues& held, const VisemeFields& viseme, bool has_v
     }
     f.weights.push_back(w);
   }
+  f.faps = paired;
   const double au = face::fapus().unit(Fapu::au);
   f.head = about(1, value(held, 49) * au) * about(0, value(held, 48) * au) * about(2, value(held, 50) * au);
   f.eyes[0] = about(1, value(held, 23) * au) * about(0, value(held, 25) * au);

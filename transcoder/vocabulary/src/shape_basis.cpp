@@ -4,6 +4,8 @@
 #include <cmath>
 #include <set>
 
+#include "fapc/vocabulary/arkit_shapes.hpp"
+
 namespace fapc::vocabulary {
 namespace {
 
@@ -79,6 +81,15 @@ std::vector<double> ShapeBasis::from_faps(const FapVector& faps, const std::vect
     if (largest_move < kSettled) break;
   }
   return weights;
+}
+
+const ShapeBasis& arkit_shape_basis() {
+  static const ShapeBasis basis = [] {
+    std::vector<std::string> keys;
+    for (std::string_view name : arkit_shape_names()) keys.emplace_back(name);
+    return ShapeBasis(arkit_table(), std::move(keys));
+  }();
+  return basis;
 }
 
 }  // namespace fapc::vocabulary

@@ -14,14 +14,7 @@ std::bitset<kFapCount> with_angles(const vocabulary::ShapeBasis& basis) {
 
 }  // namespace
 
-const vocabulary::ShapeBasis& arkit_basis() {
-  static const vocabulary::ShapeBasis basis = [] {
-    std::vector<std::string> keys;
-    for (std::string_view name : vocabulary::arkit_shape_names()) keys.emplace_back(name);
-    return vocabulary::ShapeBasis(vocabulary::arkit_table(), std::move(keys));
-  }();
-  return basis;
-}
+const vocabulary::ShapeBasis& arkit_basis() { return vocabulary::arkit_shape_basis(); }
 
 const std::vector<int>& openface_intensity_units() {
   static const std::vector<int> units = {1, 2, 4, 5, 6, 7, 9, 10, 12, 14, 15, 17, 20, 23, 25, 26, 45};

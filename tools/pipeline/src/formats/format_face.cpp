@@ -2,9 +2,11 @@
 // page), drawn by fapc::face from the frames of any input (docs/render.md).
 #include <filesystem>
 #include <optional>
+#include <utility>
 
 #include "fapc/face/pictures.hpp"
 #include "fapc/face/webm.hpp"
+#include "fapc/head3d/gltf_writer.hpp"
 #include "formats.hpp"
 
 namespace fapc::pipeline::builtin {
@@ -42,10 +44,22 @@ Result<std::string> write_webm(const Loaded& loaded, const std::string& path, co
   return face::face_webm(loaded.frames, picture_options(options, path), voice ? &*voice : nullptr, path);
 }
 
+// The page, with the 3D head's .glb (named by FAP: the page plays it, no avatar reads it) when
+// --view asks for the 3D view.
 Result<std::string> write_html(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
   const auto voice = voice_of(loaded);
+  const std::string& v = options.picture.view;
+  const face::PreviewView view = v == "3d" ? face::PreviewView::three_d
+                                 : v == "both" ? face::PreviewView::both
+                                               : face::PreviewView::two_d;
+  std::string glb;
+  if (view != face::PreviewView::two_d) {
+    Result<std::string> head = head3d::head_gltf(loaded.frames, head3d::GltfOptions{}, path);
+    if (!head) return head.error();
+    glb = std::move(*head);
+  }
   return face::face_html(loaded.frames, picture_options(options, path), voice ? &*voice : nullptr,
-                         std::filesystem::path(path).stem().string(), path);
+                         std::filesystem::path(path).stem().string(), path, view, std::move(glb));
 }
 
 // A picture of the face, and with the video and the page the voice when the input has one.

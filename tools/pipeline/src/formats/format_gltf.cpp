@@ -7,9 +7,11 @@ namespace fapc::pipeline::builtin {
 
 namespace {
 
-Result<std::string> write_gltf(const Loaded& loaded, const std::string& path, const ConvertOptions&, bool binary) {
+Result<std::string> write_gltf(const Loaded& loaded, const std::string& path, const ConvertOptions& convert,
+                               bool binary) {
   head3d::GltfOptions options;
   options.binary = binary;
+  options.names = convert.picture.morphs == "arkit" ? head3d::MorphNames::arkit : head3d::MorphNames::faps;
   return head3d::head_gltf(loaded.frames, options, path);
 }
 

@@ -23,6 +23,8 @@ struct PictureSettings {
   std::optional<double> time;         // .png: the frame at this time
   std::optional<int> sheet;           // .png: a contact sheet of N frames
   bool points = false;                // .png: the feature points marked and numbered
+  std::string view = "2d";            // .html: 2d | 3d | both (the 3D head, docs/render.md)
+  std::string morphs = "faps";        // .glb/.gltf: the targets named faps | arkit
 };
 
 // How far a long job is: `done` of `total` steps of `stage` ("writing x.webm"). Called on the

@@ -13,6 +13,7 @@ namespace fapc::head3d {
 // How the morph targets are named in mesh.extras.targetNames.
 enum class MorphNames {
   faps,   // by the FAP's standard name ("open_jaw"), "viseme_PP", "expression_joy"
+  arkit,  // ARKit's 52 blendshapes, "jawOpen" (arkit_morphs.hpp)
 };
 
 struct GltfOptions {

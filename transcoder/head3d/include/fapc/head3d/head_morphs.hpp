@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "fapc/codec/fap_sequence.hpp"
+#include "fapc/face/face_track.hpp"
 #include "fapc/head3d/head_mesh.hpp"
 
 namespace fapc::head3d {
@@ -39,6 +40,9 @@ struct HeadFrame {
   std::vector<double> weights;  // one per morph target
   Quaternion head;              // about 7.1: R = Ry(yaw) Rx(pitch) Rz(roll), FAPs 49, 48, 50
   Quaternion eyes[2];           // left, right, about each eyeball's centre: Ry(yaw) Rx(pitch)
+  // The face's FAP values at this frame: the low-level values plus the viseme's and expression's
+  // displacement sets, lip pairs applied (what the weights above add up to), rotations as held.
+  face::FapValues faps{};
 };
 
 // The frames of a sequence on its grid (frame 0 .. last number), in order, every FAP held from

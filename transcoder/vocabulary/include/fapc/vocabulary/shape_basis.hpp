@@ -45,4 +45,8 @@ class ShapeBasis {
   FapVector inverse_scale_squared_{};        // 1 / legal_max^2 per FAP
 };
 
+// ARKit's 52 shapes, in arkit_shape_names()'s order, over the bundled arkit_faps.tsv; built once.
+// The ARKit CSV writer and the 3D head's ARKit targets fit their weights with it.
+const ShapeBasis& arkit_shape_basis();
+
 }  // namespace fapc::vocabulary

@@ -42,6 +42,7 @@ Result<std::string> encode_webm(const FaceTrack& track, const VideoOptions& opti
 }  // namespace fapc::face
 
 #include "fapc/face/pictures.hpp"
+#include "fapc/face/preview_page.hpp"
 
 namespace fapc::face {
 
@@ -50,7 +51,10 @@ namespace fapc::face {
 // `audio`, when given, plays beside the face (and unmutes the page's video).
 Result<std::string> face_webm(const FapSequence& sequence, const PictureOptions& options,
                               const AudioInput* audio, const std::string& where);
+// `view` and `head_glb` as in PreviewOptions: the 3D view plays that .glb (made by the caller,
+// fapc::head3d, from the same sequence).
 Result<std::string> face_html(const FapSequence& sequence, const PictureOptions& options,
-                              const AudioInput* audio, const std::string& title, const std::string& where);
+                              const AudioInput* audio, const std::string& title, const std::string& where,
+                              PreviewView view = PreviewView::two_d, std::string head_glb = {});
 
 }  // namespace fapc::face
