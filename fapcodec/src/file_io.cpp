@@ -76,14 +76,20 @@ Result<int> open_input(const std::string& path, struct stat& info) {
 // and among processes (the process id, and a random number drawn once per process in case ids
 // are reused: building a std::random_device for every output cost 5 % of a batch). Safe to call
 // from several threads.
-std::string temporary_name() {
+// "<pid>-<seed>-": the seed tells this process from an earlier one that had the same pid.
+std::string process_part() {
   static const std::uint32_t process_seed = std::random_device{}();
+  return std::to_string(::getpid()) + "-" + std::to_string(process_seed) + "-";
+}
+
+std::string temporary_name() {
   static std::atomic<std::uint64_t> counter{0};
-  return std::to_string(::getpid()) + "-" + std::to_string(process_seed) + "-" +
-         std::to_string(counter.fetch_add(1, std::memory_order_relaxed));
+  return process_part() + std::to_string(counter.fetch_add(1, std::memory_order_relaxed));
 }
 
 }  // namespace
+
+std::string own_temporary_prefix() { return ".fapc-tmp-" + process_part(); }
 
 bool is_gzip(std::string_view bytes) {
   return bytes.size() >= 2 && static_cast<unsigned char>(bytes[0]) == 0x1f &&

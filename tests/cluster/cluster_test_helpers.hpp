@@ -5,7 +5,6 @@
 
 #include <filesystem>
 #include <map>
-#include <regex>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -29,30 +28,16 @@ inline std::map<std::string, std::string> outputs_under(const std::string& folde
   return out;
 }
 
-// Whether the output `relative` (under an output folder of a batch over corpus/examples) comes
-// from talk: an .fml or .xmt beside it in the examples with a <talk> (or <fml:talk>) element.
-inline bool spoken(const std::string& relative) {
-  for (const char* extension : {".fml", ".xmt"}) {
-    const std::string input =
-        corpus_dir() + "/examples/" + std::filesystem::path(relative).replace_extension(extension).string();
-    if (std::filesystem::is_regular_file(input) && std::regex_search(read_text(input), std::regex("<([A-Za-z]+:)?talk[ >]")))
-      return true;
-  }
-  return false;
-}
-
-// The differences between two batches' outputs over corpus/examples: files missing on one side,
-// and bytes that differ. Talk is compared by presence only: eSpeak NG carries state from one
-// utterance to the next within a process (the same text said twice in a row comes out a sample
-// or two longer or shorter), so a talk's voice and mouth depend on what its process said before,
-// in one batch as in a shard (docs/cluster.md, "Speech").
+// The differences between two batches' outputs: files missing on one side, and bytes that differ.
+// Talk included: each utterance is spoken from the same engine state, whatever its process said
+// before (docs/cluster.md, "Speech").
 inline std::string output_differences(const std::string& a, const std::string& b) {
   const auto left = outputs_under(a), right = outputs_under(b);
   std::string out;
   for (const auto& [path, bytes] : left) {
     const auto other = right.find(path);
     if (other == right.end()) out += "only in " + a + ": " + path + "\n";
-    else if (other->second != bytes && !spoken(path)) out += "differs: " + path + "\n";
+    else if (other->second != bytes) out += "differs: " + path + "\n";
   }
   for (const auto& [path, bytes] : right)
     if (!left.count(path)) out += "only in " + b + ": " + path + "\n";

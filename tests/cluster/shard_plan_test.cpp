@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "cluster_test_helpers.hpp"
+#include "fapc/codec/file_io.hpp"
 #include "fapc/pipeline/batch_merge.hpp"
 #include "fapc/pipeline/batch_resume.hpp"
 #include "fapc/pipeline/batch_shard.hpp"
@@ -165,11 +166,16 @@ TEST(CompletionRecords, PrepareRemovesOnlyThisJobsLeftovers) {
   std::ofstream(tmp / "out/.fapc-tmp-123-456-0-in.fba") << "half";
   std::ofstream(tmp / "out/.fapc-tmp-124-457-0-other.fba") << "half";
   std::ofstream(tmp / "out/.fapc-tmp-x-in.fba") << "not a name fapc makes";
+  // This process's own, which another of its threads may be writing while the sweep walks the
+  // folder (it was removed under it, and that job failed "cannot replace output").
+  const std::string writing = tmp / ("out/" + own_temporary_prefix() + "7-in.fba");
+  std::ofstream(writing) << "being written";
   const pipeline::CompletionRecords records(tmp / "out", "", {job});
   records.prepare(job);
   EXPECT_FALSE(std::filesystem::exists(tmp / "out/.fapc-tmp-123-456-0-in.fba"));
   EXPECT_TRUE(std::filesystem::exists(tmp / "out/.fapc-tmp-124-457-0-other.fba"));
   EXPECT_TRUE(std::filesystem::exists(tmp / "out/.fapc-tmp-x-in.fba"));
+  EXPECT_TRUE(std::filesystem::exists(writing));
 }
 
 // A shard's report as `fapc batch --report-json` writes it, reduced to what the merge reads.

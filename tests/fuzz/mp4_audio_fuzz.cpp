@@ -29,7 +29,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   stream.frames = track->samples;
   stream.priming = track->media_start;
   stream.length = track->length;
+  stream.config_offset = track->config_offset;
+  stream.frame_offsets = track->sample_offsets;
   auto samples = fapc::audio::decode_aac(stream, "fuzz.mp4");
   if (samples.ok() && samples->size() != track->length) std::abort();
+  // The decoder's errors name the configuration or the access unit (issue 32).
+  if (!samples.ok() && samples.error().where.byte_offset < 0) std::abort();
   return 0;
 }

@@ -632,6 +632,80 @@ def mp4_audio_delay(duration):
     return make
 
 
+def mp4_boxes(data, start=0, end=None):
+    """The boxes of data[start:end] as (type, offset, size) (32-bit sizes only, as fapc writes)."""
+    end = len(data) if end is None else end
+    at = start
+    while at + 8 <= end:
+        size = int.from_bytes(data[at:at + 4], "big")
+        if size < 8:
+            return
+        yield data[at + 4:at + 8].decode("latin-1"), at, size
+        at += size
+
+
+def mp4_audio_box(data, wanted):
+    """The offset of box `wanted` inside VOICE_MP4's sound track (the trak whose hdlr says soun)."""
+    containers = {"moov", "trak", "mdia", "minf", "stbl"}
+    def walk(start, end, in_sound):
+        for kind, at, size in mp4_boxes(data, start, end):
+            if kind == "trak":
+                in_sound = b"soun" in data[at:at + size]
+            if kind == wanted and in_sound:
+                return at
+            if kind in containers:
+                found = walk(at + 8, at + size, in_sound)
+                if found is not None:
+                    return found
+        return None
+    return walk(0, len(data), False)
+
+
+def mp4_audio_damaged(part):
+    """VOICE_MP4 with its sound's AudioSpecificConfig made an unknown audio object type
+    ("config"), or its first access unit made noise ("unit")."""
+    def make():
+        data = bytearray(source_bytes(VOICE_MP4))
+        if part == "config":
+            at = data.find(bytes([0x13, 0x88, 0x56, 0xE5, 0x00]), mp4_audio_box(data, "esds"))
+            data[at:at + 2] = bytes([0xF8, 0x08])  # object type 31 + escape: 63, which no decoder has
+        else:
+            stco = mp4_audio_box(data, "stco")
+            first = int.from_bytes(data[stco + 16:stco + 20], "big")
+            stsz = mp4_audio_box(data, "stsz")
+            size = int.from_bytes(data[stsz + 20:stsz + 24], "big")
+            data[first:first + size] = bytes([0xFF]) * size
+        return bytes(data)
+    return make
+
+
+def engine_message_caught(folder, stderr):
+    """eSpeak NG's own message comes as fapc's warning at the talk, never as its own line."""
+    for line in stderr.splitlines():
+        if "Full dictionary is not installed" in line and not re.match(r"^in\.fml:\d+:\d+: warning: ", line):
+            return "the speech engine printed its own message: " + line
+    if "Full dictionary is not installed" not in stderr:
+        return "no warning carries the speech engine's message"
+    return None
+
+
+def speech_placed_cases():
+    """Issue 32: audio errors at the <audio> element or the MP4 box or access unit that caused
+    them, and the speech engine's own messages as placed warnings."""
+    slow = {"slow.wav": lambda: wav(1, 4)}
+    return [
+        compile_case("xmto.speech.audio-1hz-to-mp4", xmto("<par>\n" + ANIMATE + '\n<audio src="slow.wav"/>\n</par>'),
+                     out="out/out.mp4", files=slow),
+        compile_case("xmto.speech.audio-1hz-to-xmta", xmto("<par>\n" + ANIMATE + '\n<audio src="slow.wav"/>\n</par>'),
+                     out="out/out.xmt", extra=["--to", "xmt"], files=slow),
+        compile_case("mp4.speech.aac-config-unknown", mp4_audio_damaged("config"), out="out/out.wav"),
+        compile_case("mp4.speech.aac-unit-noise", mp4_audio_damaged("unit"), out="out/out.wav"),
+        compile_case("fml.speech.engine-message", fml('<talk lang="be">\u041f\u0440\u044b\u0432\u0456\u0442\u0430\u043d\u043d\u0435</talk>'),
+                     out="out/out.wav", exit=0, diagnostic="warning", outputs=["out/out.wav"],
+                     check=engine_message_caught),
+    ]
+
+
 def speech_cases():
     """Issue 32: talk text that crashed the speech engine, MBROLA voices, speech and audio sized by
     the timeline (refused up front with their option, placed), and far-apart or repeated recordings."""
@@ -743,6 +817,7 @@ def all_cases():
              + batch_cases() + csv_cases() + speech_cases())
     cases += output_cases()
     cases += intent_cases()
+    cases += speech_placed_cases()
     names = [c.name for c in cases]
     duplicates = {n for n in names if names.count(n) > 1}
     if duplicates:

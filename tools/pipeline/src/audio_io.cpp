@@ -51,6 +51,8 @@ Result<AudioTrack> unpack_audio_track(const xmt::AudioTrackInput& track, const s
   stream.frames = track.samples;
   stream.priming = track.media_start;
   stream.length = track.length;
+  stream.config_offset = track.config_offset;
+  stream.frame_offsets = track.sample_offsets;
   auto samples = audio::decode_aac(stream, where);
   if (!samples) return samples.error();
   AudioTrack out;

@@ -104,13 +104,17 @@ void CompletionRecords::sweep(const std::string& folder) const {
   }
   const auto names = ours_.find(folder);
   if (names == ours_.end()) return;
+  const std::string own_prefix = own_temporary_prefix();
   std::error_code ec;
   for (fs::directory_iterator it(folder.empty() ? "." : folder, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();
     const std::string target = temporary_target(name);
     // Only this process's jobs' targets: another shard writing into the same folder keeps its own.
+    // Nor this process's own temporary files: another thread may be writing one (a job started
+    // while this sweep still walks the folder), and a killed run's have another prefix.
     std::error_code entry_ec;
-    if (!target.empty() && names->second.count(target) && it->is_regular_file(entry_ec)) fs::remove(it->path(), entry_ec);
+    if (!target.empty() && names->second.count(target) && !name.starts_with(own_prefix) && it->is_regular_file(entry_ec))
+      fs::remove(it->path(), entry_ec);
   }
 }
 

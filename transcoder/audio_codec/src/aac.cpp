@@ -61,7 +61,7 @@ Result<AacStream> encode_aac(const AudioTrack& track, const std::string& where, 
                              AacCoder coder) {
   const Location at{where, 0, 0, -1};
   if (aac_frequency_index(track.sample_rate) < 0)
-    return make_error(ErrorKind::unsupported, at,
+    return make_error(ErrorKind::unsupported, track.source.file.empty() ? at : track.source,
                       "audio at " + std::to_string(track.sample_rate) +
                           " Hz: AAC takes 7350, 8000, 11025, 12000, 16000, 22050, 24000, 32000, 44100, "
                           "48000, 64000, 88200 or 96000 Hz");
@@ -139,8 +139,14 @@ Result<AacStream> encode_aac(const AudioTrack& track, const std::string& where, 
 
 Result<std::vector<std::int16_t>> decode_aac(const AacStream& stream, const std::string& where) {
   const Location at{where, 0, 0, -1};
-  auto failed = [&](const std::string& what, int code) {
-    return make_error(ErrorKind::bad_input, at, what + ": " + av_message(code));
+  const Location config_at = stream.config_offset >= 0 ? Location::binary(where, stream.config_offset) : at;
+  // Access unit i (from 0), or the last one for an error at the stream's end.
+  auto unit_at = [&](std::size_t i) {
+    if (stream.frame_offsets.empty()) return at;
+    return Location::binary(where, static_cast<std::int64_t>(stream.frame_offsets[std::min(i, stream.frame_offsets.size() - 1)]));
+  };
+  auto failed_at = [](const Location& place, const std::string& what, int code) {
+    return make_error(ErrorKind::bad_input, place, what + ": " + av_message(code));
   };
   av_log_set_level(AV_LOG_QUIET);
   const AVCodec* aac = avcodec_find_decoder(AV_CODEC_ID_AAC);
@@ -155,7 +161,7 @@ Result<std::vector<std::int16_t>> decode_aac(const AacStream& stream, const std:
   c.context->extradata_size = static_cast<int>(stream.audio_specific_config.size());
   c.context->thread_count = 1;
   if (int e = avcodec_open2(c.context, aac, nullptr); e < 0)
-    return failed("cannot open the AAC decoder for this configuration", e);
+    return failed_at(config_at, "cannot open the AAC decoder for this configuration", e);
   c.frame = av_frame_alloc();
   c.packet = av_packet_alloc();
 
@@ -184,19 +190,20 @@ Result<std::vector<std::int16_t>> decode_aac(const AacStream& stream, const std:
   for (std::size_t i = 0; i < stream.frames.size() && samples.size() < want; ++i) {
     const auto& frame = stream.frames[i];
     if (int e = av_new_packet(c.packet, static_cast<int>(frame.size())); e < 0)
-      return failed("cannot allocate an AAC packet", e);
+      return failed_at(unit_at(i), "cannot allocate an AAC packet", e);
     std::copy(frame.begin(), frame.end(), c.packet->data);
     const int e = avcodec_send_packet(c.context, c.packet);
     av_packet_unref(c.packet);
-    if (e < 0) return failed("AAC access unit " + std::to_string(i + 1) + " does not decode", e);
-    if (int t = take(); t < 0) return failed("AAC access unit " + std::to_string(i + 1) + " does not decode", t);
+    if (e < 0) return failed_at(unit_at(i), "AAC access unit " + std::to_string(i + 1) + " does not decode", e);
+    if (int t = take(); t < 0) return failed_at(unit_at(i), "AAC access unit " + std::to_string(i + 1) + " does not decode", t);
   }
+  const std::size_t last = stream.frames.empty() ? 0 : stream.frames.size() - 1;
   if (samples.size() < want) {
     avcodec_send_packet(c.context, nullptr);
-    if (int t = take(); t < 0) return failed("the AAC stream's end does not decode", t);
+    if (int t = take(); t < 0) return failed_at(unit_at(last), "the AAC stream's end does not decode", t);
   }
   if (samples.size() < want)
-    return make_error(ErrorKind::truncated, at,
+    return make_error(ErrorKind::truncated, unit_at(last),
                       "the AAC track decodes to " + std::to_string(samples.size()) + " samples; its edit list says " +
                           std::to_string(want));
   return samples;

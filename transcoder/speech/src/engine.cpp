@@ -1,6 +1,9 @@
 // eSpeak NG in synchronous mode: espeak_Synth calls back with blocks of samples and the events
 // of those samples, phoneme events included (espeakINITIALIZE_PHONEME_EVENTS). eSpeak NG keeps
-// its voice, rate and callback in globals, so one mutex covers every use of it.
+// its voice, rate, callback and synthesis state in globals, so one mutex covers every use of it,
+// and this process only ever initialises it and lists its voices: each utterance is spoken in a
+// child process forked from it (forked_call.hpp), so every utterance starts from the same state
+// whatever was said before, in this process or another (docs/speech.md, "Every utterance alike").
 #include "fapc/speech/engine.hpp"
 
 #ifdef FAPC_HAVE_ESPEAK
@@ -8,13 +11,17 @@
 #include <espeak-ng/speak_lib.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <mutex>
 #include <set>
 
+#include "engine_messages.hpp"
+#include "engine_output.hpp"
 #include "fapc/speech/phoneme_visemes.hpp"
 #include "fapc/speech/speakable_text.hpp"
+#include "forked_call.hpp"
 
 namespace fapc::speech {
 namespace {
@@ -24,14 +31,11 @@ std::mutex& engine_mutex() {
   return m;
 }
 
-// What one espeak_Synth call collects. The callback reaches it through `collecting`, set while
-// the mutex is held (a block of samples may come with no event, so user_data cannot be relied on).
+// What the child's espeak_Synth calls collect into, reached through `collecting` (a block of
+// samples may come with no event, so user_data cannot be relied on).
 struct Collect {
-  std::vector<std::int16_t> samples;
-  std::vector<std::pair<std::string, int>> phonemes;  // mnemonic, start in ms
-  std::vector<std::pair<int, int>> words;             // character position (from 1), start in ms
+  EngineOutput output;
   std::size_t max_samples = 0;
-  bool too_long = false;
 };
 
 Collect* collecting = nullptr;
@@ -43,17 +47,18 @@ int on_samples(short* wav, int count, espeak_EVENT* events) {
     if (e->type == espeakEVENT_PHONEME) {
       char name[9] = {};
       std::memcpy(name, e->id.string, 8);
-      into->phonemes.emplace_back(name, e->audio_position);
+      into->output.phonemes.emplace_back(name, e->audio_position);
     } else if (e->type == espeakEVENT_WORD) {
-      into->words.emplace_back(e->text_position, e->audio_position);
+      into->output.words.emplace_back(e->text_position, e->audio_position);
     }
   }
   if (wav == nullptr || count <= 0) return 0;
-  if (into->samples.size() + static_cast<std::size_t>(count) > into->max_samples) {
-    into->too_long = true;
+  std::vector<std::int16_t>& samples = into->output.samples;
+  if (samples.size() + static_cast<std::size_t>(count) > into->max_samples) {
+    into->output.stop = EngineOutput::Stop::too_long;
     return 1;  // stop the synthesis
   }
-  into->samples.insert(into->samples.end(), wav, wav + count);
+  samples.insert(samples.end(), wav, wav + count);
   return 0;
 }
 
@@ -113,6 +118,53 @@ bool plain_name(const std::string& s) {
          std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_'; });
 }
 
+// The synthesis itself, run in the child (speak() checked the names and the rate). srand: the
+// breathy and Klatt voices draw noise from rand(), whose state the child would otherwise take
+// from whatever this process did with it.
+void spoken_in_this_process(const SpeechRequest& request, int rate, EngineOutput& into) {
+  std::srand(1);
+  if (espeak_SetVoiceByName(request.language.c_str()) != EE_OK) {
+    into.stop = EngineOutput::Stop::language_refused;
+    return;
+  }
+  if (!request.voice.empty() && espeak_SetVoiceByName((request.language + "+" + request.voice).c_str()) != EE_OK) {
+    into.stop = EngineOutput::Stop::voice_refused;
+    return;
+  }
+  espeak_SetParameter(espeakRATE, rate, 0);
+  // The text in bounded, neutralised pieces (speakable_text.hpp), spoken one after the other:
+  // each piece's phonemes are moved by the audio before it.
+  const int sample_rate = started().sample_rate;
+  for (const std::string& piece : speakable_pieces(request.text)) {
+    const std::size_t first_phoneme = into.phonemes.size();
+    const auto offset_ms = static_cast<int>(into.samples.size() * 1000 / static_cast<std::size_t>(sample_rate));
+    const espeak_ERROR status = espeak_Synth(piece.c_str(), piece.size() + 1, 0, POS_CHARACTER, 0, espeakCHARS_UTF8, nullptr, nullptr);
+    for (std::size_t i = first_phoneme; i < into.phonemes.size(); ++i) into.phonemes[i].second += offset_ms;
+    if (into.stop != EngineOutput::Stop::spoken) return;
+    if (status != EE_OK) {
+      into.stop = EngineOutput::Stop::synth_failed;
+      into.synth_status = static_cast<std::int32_t>(status);
+      return;
+    }
+  }
+}
+
+// How a child that did not finish ended, for an error: "crashed (signal 11)".
+std::string failure(const ForkedOutcome& forked) {
+  switch (forked.end) {
+    case ForkedOutcome::End::failed:
+      return forked.detail > 0 ? "crashed (signal " + std::to_string(forked.detail) + ")"
+                               : "stopped (exit status " + std::to_string(-forked.detail) + ")";
+    case ForkedOutcome::End::too_large:
+      return "answered more than was asked for";
+    case ForkedOutcome::End::could_not_start:
+      return std::string("could not start a process (") + std::strerror(forked.detail) + ")";
+    case ForkedOutcome::End::finished:
+      break;
+  }
+  return "failed";
+}
+
 Result<Utterance> speak(const SpeechRequest& request) {
   const std::lock_guard lock(engine_mutex());
   const Engine& engine = started();
@@ -130,54 +182,62 @@ Result<Utterance> speak(const SpeechRequest& request) {
     return make_error(ErrorKind::bad_input, request.where,
                       "'" + request.language + "' is an MBROLA voice: fapc speaks only with eSpeak NG's own voices "
                       "(an MBROLA voice runs an outside program; `espeak-ng --voices` lists the others)");
-  if (engine.own.count(language) == 0 || espeak_SetVoiceByName(request.language.c_str()) != EE_OK)
+  if (engine.own.count(language) == 0)
     return make_error(ErrorKind::bad_input, request.where,
                       "unknown language '" + request.language + "' (`espeak-ng --voices` lists the languages)");
-  if (!request.voice.empty()) {
-    const std::string name = request.language + "+" + request.voice;
-    if (espeak_SetVoiceByName(name.c_str()) != EE_OK)
-      return make_error(ErrorKind::bad_input, request.where, "eSpeak NG refused the voice '" + name + "'");
-  }
   const int rate = static_cast<int>(request.words_per_minute + 0.5);
   if (rate < espeakRATE_MINIMUM || rate > espeakRATE_MAXIMUM)
     return make_error(ErrorKind::bad_input, request.where, "the speech rate " + std::to_string(rate) + " words per minute is outside 80 to 450");
-  espeak_SetParameter(espeakRATE, rate, 0);
 
-  // The text in bounded, neutralised pieces (speakable_text.hpp), spoken one after the other:
-  // each piece's phonemes are moved by the audio before it.
-  Collect collect;
-  collect.max_samples = static_cast<std::size_t>(std::max(0.0, request.max_seconds) * engine.sample_rate);
-  espeak_ERROR status = EE_OK;
-  for (const std::string& piece : speakable_pieces(request.text)) {
-    const std::size_t first_phoneme = collect.phonemes.size();
-    const auto offset_ms = static_cast<int>(collect.samples.size() * 1000 / static_cast<std::size_t>(engine.sample_rate));
-    collecting = &collect;
-    status = espeak_Synth(piece.c_str(), piece.size() + 1, 0, POS_CHARACTER, 0, espeakCHARS_UTF8, nullptr, nullptr);
-    collecting = nullptr;
-    for (std::size_t i = first_phoneme; i < collect.phonemes.size(); ++i) collect.phonemes[i].second += offset_ms;
-    if (collect.too_long || status != EE_OK) break;
+  const auto max_samples = static_cast<std::size_t>(std::max(0.0, request.max_seconds) * engine.sample_rate);
+  const ForkedOutcome forked = call_in_child(
+      [&] {
+        Collect collect;
+        collect.max_samples = max_samples;
+        collecting = &collect;
+        spoken_in_this_process(request, rate, collect.output);
+        return encode(collect.output);
+      },
+      // The samples, and a generous bound on the events (a few per character of text).
+      max_samples * sizeof(std::int16_t) + 64 * request.text.size() + 4096, kMaxEngineMessageBytes);
+  if (forked.end != ForkedOutcome::End::finished)
+    return make_error(ErrorKind::io, request.where, "the speech engine (eSpeak NG) " + failure(forked) + " on this text");
+  std::optional<EngineOutput> collected = decode_engine_output(forked.output);
+  if (!collected)
+    return make_error(ErrorKind::io, request.where, "the speech engine (eSpeak NG) sent back a malformed result");
+  switch (collected->stop) {
+    case EngineOutput::Stop::spoken:
+      break;
+    case EngineOutput::Stop::language_refused:
+      return make_error(ErrorKind::bad_input, request.where,
+                        "unknown language '" + request.language + "' (`espeak-ng --voices` lists the languages)");
+    case EngineOutput::Stop::voice_refused:
+      return make_error(ErrorKind::bad_input, request.where,
+                        "eSpeak NG refused the voice '" + request.language + "+" + request.voice + "'");
+    case EngineOutput::Stop::too_long:
+      return make_error(ErrorKind::limit_exceeded, request.where,
+                        "the speech would last more than " + std::to_string(request.max_seconds) + " s");
+    case EngineOutput::Stop::synth_failed:
+      return make_error(ErrorKind::io, request.where,
+                        "eSpeak NG failed to synthesise this text (error " + std::to_string(collected->synth_status) + ")");
   }
-  if (collect.too_long) {
-    return make_error(ErrorKind::limit_exceeded, request.where,
-                      "the speech would last more than " + std::to_string(request.max_seconds) + " s");
-  }
-  if (status != EE_OK)
-    return make_error(ErrorKind::io, request.where,
-                      "eSpeak NG failed to synthesise this text (error " + std::to_string(static_cast<int>(status)) + ")");
+  EngineOutput& spoken = *collected;
 
   Utterance out;
+  out.warnings = engine_message_warnings(forked.messages, forked.messages_dropped, request.where);
   out.audio.sample_rate = engine.sample_rate;
-  out.audio.samples = std::move(collect.samples);
+  out.audio.samples = std::move(spoken.samples);
   out.audio.source = request.where;
   out.duration = static_cast<double>(out.audio.samples.size()) / engine.sample_rate;
   std::set<std::string> unknown;
-  for (std::size_t i = 0; i < collect.phonemes.size(); ++i) {
-    const auto& [name, ms] = collect.phonemes[i];
+  const auto& phonemes = spoken.phonemes;
+  for (std::size_t i = 0; i < phonemes.size(); ++i) {
+    const auto& [name, ms] = phonemes[i];
     if (name.empty() || name[0] == '(') continue;  // a language switch mark, not a sound
     SpokenPhoneme p;
     p.name = name;
     p.begin = std::min(out.duration, ms / 1000.0);
-    p.end = i + 1 < collect.phonemes.size() ? std::min(out.duration, collect.phonemes[i + 1].second / 1000.0) : out.duration;
+    p.end = i + 1 < phonemes.size() ? std::min(out.duration, phonemes[i + 1].second / 1000.0) : out.duration;
     p.viseme = viseme_of_espeak_phoneme(request.language, name);
     if (p.viseme < 0) {
       if (unknown.insert(name).second)
@@ -190,7 +250,7 @@ Result<Utterance> speak(const SpeechRequest& request) {
   // eSpeak NG counts characters (UTF-8 sequences) from 1; callers want byte offsets.
   std::size_t byte = 0;
   int character = 1;
-  for (const auto& [position, ms] : collect.words) {
+  for (const auto& [position, ms] : spoken.words) {
     while (character < position && byte < request.text.size()) {
       ++byte;
       while (byte < request.text.size() && (static_cast<unsigned char>(request.text[byte]) & 0xC0) == 0x80) ++byte;

@@ -51,12 +51,16 @@ Result<std::optional<AudioTrack>> mix_audio(const std::vector<AudioClip>& clips,
   double start = 0;
   double end = 0;
   const AudioClip* furthest = nullptr;
+  const AudioClip* fastest = nullptr;
   bool first = true;
   for (const AudioClip& clip : clips) {
     if (clip.sample_rate <= 0 || clip.samples.empty()) continue;
     const double clip_end = clip.begin + static_cast<double>(clip.samples.size()) / clip.sample_rate;
     if (clip_end <= 0) continue;
-    rate = std::max(rate, clip.sample_rate);
+    if (clip.sample_rate > rate) {
+      rate = clip.sample_rate;
+      fastest = &clip;
+    }
     start = first ? std::max(0.0, clip.begin) : std::min(start, std::max(0.0, clip.begin));
     if (first || clip_end > end) {
       end = clip_end;
@@ -82,6 +86,7 @@ Result<std::optional<AudioTrack>> mix_audio(const std::vector<AudioClip>& clips,
   AudioTrack track;
   track.sample_rate = rate;
   track.start = start;
+  track.source = fastest->source;
   const auto length = static_cast<std::size_t>(samples);
   track.samples.resize(length);
   // Each clip's span of track samples; the clips are then summed one block at a time, those

@@ -104,6 +104,8 @@ Result<AudioTrackInput> read_audio_track(const Mp4File& mp4, const Mp4Track& t) 
   out.sample_rate = t.timescale;
   out.channels = audio_channel_configuration(out.decoder_specific_info);
   out.samples_per_unit = t.samples.front().duration;
+  out.config_offset = static_cast<std::int64_t>(t.es_offset);
+  out.sample_offsets.reserve(t.samples.size());
   std::uint64_t media = 0;
   for (std::size_t i = 0; i < t.samples.size(); ++i) {
     const Mp4Sample& s = t.samples[i];
@@ -113,6 +115,7 @@ Result<AudioTrackInput> read_audio_track(const Mp4File& mp4, const Mp4Track& t) 
                                            std::to_string(s.duration) + " ticks, the first " +
                                            std::to_string(out.samples_per_unit));
     out.samples.push_back(mp4.sample_bytes(s));
+    out.sample_offsets.push_back(s.offset);
     media += s.duration;
   }
   // Without an edit list the whole media plays from time 0.

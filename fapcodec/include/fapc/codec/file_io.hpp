@@ -73,6 +73,10 @@ std::string gzip(std::string_view bytes);
 // refused). A path ending in ".gz" is compressed first.
 Status write_file_atomic(const std::string& path, std::string_view bytes);
 
+// The start of the names this process gives its temporary outputs (".fapc-tmp-<pid>-<seed>-"):
+// a sweep of leftovers from killed runs must pass over these, which other threads may be writing.
+std::string own_temporary_prefix();
+
 // The same, in pieces, for outputs too long to hold: the bytes go to a temporary file in the
 // target's folder, which commit() renames over the target. Until then the target is untouched,
 // and a file never committed is removed (an error found late still leaves nothing). No gzip.

@@ -28,7 +28,8 @@ Result<std::string> write_fba_scene(const Loaded& loaded, const std::string& pat
   if (loaded.audio && !loaded.audio->samples.empty()) {
     auto config = audio::aac_lc_mono_config(loaded.audio->sample_rate);
     if (config.empty())
-      return make_error(ErrorKind::unsupported, Location{loaded.named(path), 0, 0, -1},
+      return make_error(ErrorKind::unsupported,
+                        loaded.audio->source.file.empty() ? Location{loaded.named(path), 0, 0, -1} : loaded.audio->source,
                         "audio at " + std::to_string(loaded.audio->sample_rate) + " Hz has no AAC sampling frequency index");
     voice = xmt::XmtaAudio{std::move(config), static_cast<std::uint32_t>(loaded.audio->sample_rate), voice_source};
   }

@@ -32,9 +32,15 @@ struct AudioTrack {
   int sample_rate = 0;
   double start = 0;
   std::vector<std::int16_t> samples;
+  // Where errors about the whole track point: the clip that set its rate (the first at the
+  // highest rate); empty when the track was not mixed from clips (an .mp4's voice). Not part of
+  // the sound: == leaves it out.
+  Location source;
 
   double duration() const { return sample_rate > 0 ? double(samples.size()) / sample_rate : 0; }
-  friend bool operator==(const AudioTrack&, const AudioTrack&) = default;
+  friend bool operator==(const AudioTrack& a, const AudioTrack& b) {
+    return a.sample_rate == b.sample_rate && a.start == b.start && a.samples == b.samples;
+  }
 };
 
 }  // namespace fapc

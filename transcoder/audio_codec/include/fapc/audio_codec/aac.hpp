@@ -21,6 +21,10 @@ struct AacStream {
   // The encoder's delay: decoded output begins with this many samples that are not the input.
   std::uint64_t priming = 0;
   std::uint64_t length = 0;  // samples of the input, after the priming
+  // Where a stream read from a file came from (decode_aac's errors name these byte offsets): its
+  // configuration and each access unit. -1 or empty: errors name the whole file.
+  std::int64_t config_offset = -1;
+  std::vector<std::uint64_t> frame_offsets;
 };
 
 // AAC-LC sampling frequency indexes (ISO/IEC 14496-3's samplingFrequencyIndex), or -1 for a rate
@@ -44,14 +48,16 @@ std::vector<std::uint8_t> aac_lc_mono_config(int sample_rate);
 enum class AacCoder { fast, twoloop };
 
 // Encodes the track at its own rate (which must have an AAC frequency index: 8000 to 96000 Hz
-// standard rates, else unsupported) at `bit_rate` bits per second. `where` names the output.
+// standard rates, else unsupported, placed at the track's source when it has one: the clip that
+// set the rate) at `bit_rate` bits per second. `where` names the output.
 // `length` > track.samples.size() continues the track with that many samples in all, the rest
 // silence that is never stored (the voice of a face that keeps moving after it).
 Result<AacStream> encode_aac(const AudioTrack& track, const std::string& where, int bit_rate = 64000,
                              std::size_t length = 0, AacCoder coder = AacCoder::fast);
 
 // Decodes the access units back to mono samples, the priming dropped and the result cut to
-// `stream.length` (decoders of lossy audio give close, not equal, samples). `where` names the file.
+// `stream.length` (decoders of lossy audio give close, not equal, samples). `where` names the file;
+// errors carry the byte offset of the configuration or access unit at fault when the stream has them.
 Result<std::vector<std::int16_t>> decode_aac(const AacStream& stream, const std::string& where);
 
 }  // namespace fapc::audio

@@ -18,9 +18,12 @@ bool available();
 std::string engine_name();
 
 // A synthesizer that speaks with eSpeak NG; an empty function when !available(). Calls from any
-// thread are serialised (eSpeak NG keeps global state). Errors, at request.where: an unknown
-// language or voice variant, a rate outside 80..450 words per minute, speech longer than
-// request.max_seconds (limit_exceeded), an engine failure.
+// thread are serialised (eSpeak NG keeps global state), and each is spoken in a child process
+// forked for it, so the same request gives the same samples whatever was spoken before
+// (docs/speech.md, "Every utterance alike"). The engine's own messages come back as warnings
+// (code speech.engine_message), never printed. Errors, at request.where: an unknown language or
+// voice variant, a rate outside 80..450 words per minute, speech longer than request.max_seconds
+// (limit_exceeded), an engine failure or crash.
 Synthesizer engine();
 
 }  // namespace fapc::speech

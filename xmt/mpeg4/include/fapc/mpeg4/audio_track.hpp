@@ -28,7 +28,16 @@ struct AudioTrackInput {
   // edit of that length comes first. (Sound that starts before the face is cut at the face's
   // start by raising media_start.)
   std::uint32_t delay_ms = 0;
-  friend bool operator==(const AudioTrackInput&, const AudioTrackInput&) = default;
+  // Where a track read from a file came from, for errors found later (the AAC decoder's): the
+  // file offset of its ES_Descriptor and of each access unit. Empty (-1) for a track made, not
+  // read. Not part of the sound: == leaves them out.
+  std::int64_t config_offset = -1;
+  std::vector<std::uint64_t> sample_offsets;
+  friend bool operator==(const AudioTrackInput& a, const AudioTrackInput& b) {
+    return a.decoder_specific_info == b.decoder_specific_info && a.sample_rate == b.sample_rate &&
+           a.channels == b.channels && a.samples == b.samples && a.samples_per_unit == b.samples_per_unit &&
+           a.media_start == b.media_start && a.length == b.length && a.delay_ms == b.delay_ms;
+  }
 };
 
 // What the writer relies on: a configuration, at least one access unit, a positive rate, the
