@@ -64,6 +64,11 @@ Registry built_in() {
                   kScriptOptions));
   r.add(described(builtin::bml_input(), "a BML document: behaviours placed by their sync constraints, speech", kScriptOptions));
   r.add(described(builtin::xml_input(), "an .xml document read by its root: BML, FML or XMT-Omega", kScriptOptions));
+  r.add(described(builtin::smil_input(), "an Xface SMIL-Agent script: speech with marks, affects, eye and head actions", [] {
+                    auto options = kScriptOptions;
+                    options.insert(options.end(), {"speech-rate"});
+                    return options;
+                  }()));
   r.add(described(builtin::fap_output(), "frames of FAP values as text (.fap.gz compressed)", {"fap-flavour"}));
   r.add(described(builtin::fba_output(), "a raw MPEG-4 FBA elementary stream",
                   {"quant", "intra-period", "ranges", "masks", "verify"}));

@@ -15,6 +15,7 @@ InputFormat xmto_input();
 InputFormat combine_input();
 InputFormat bml_input();  // format_bml.cpp
 InputFormat xml_input();  // format_xml.cpp: by the root element
+InputFormat smil_input();  // format_smil.cpp: Xface SMIL-Agent
 
 OutputFormat fap_output();
 OutputFormat fba_output();

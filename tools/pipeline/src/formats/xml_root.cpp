@@ -87,6 +87,7 @@ std::string xml_language(const XmlRoot& root) {
   if (name == "apml") return "apml";
   if (name == "fml") return "fml";
   if (name == "xmt-o") return "xmto";
+  if (name == "par" || name == "seq") return "smil";  // Xface SMIL-Agent scripts have no root of their own
   return {};
 }
 
