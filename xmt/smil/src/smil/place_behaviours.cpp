@@ -1,6 +1,7 @@
-// Scheduled SMIL-Agent runs to one BML block (docs/smil.md, "Timing"): speeches where the
-// scheduler put them, anchored affects and actions at their speech's marks, every display fitted
-// to its span with the onset and offset BML gives it by default (bml/behaviour_defaults.hpp).
+// Scheduled SMIL-Agent runs to one BML block (docs/smil.md, "Spans anchored to a speech"):
+// speeches where the scheduler put them, anchored affects and actions at their speech's marks,
+// every display fitted to its span with the onset and offset BML gives it by default
+// (bml/behaviour_defaults.hpp).
 #include <algorithm>
 
 #include "bml/behaviour_defaults.hpp"
