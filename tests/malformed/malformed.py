@@ -701,11 +701,65 @@ def output_cases():
     ]
 
 
+# Xface SMIL-Agent scripts (docs/smil.md).
+EXT["smil"] = ".smil"
+SMIL_SPEECH = '<speech id="s">Hello <mark id="m"/>there</speech>'
+
+
+def smil_cases():
+    """SMIL-Agent scripts: deep nesting, repeats and lengths past the limits, numbers out of range,
+    recordings that are not files or lie outside the allowed folders, junk and cut texts."""
+    with_marks = source_bytes("corpus/smil/copperdong__Xface/Faps/withMarks.smil")
+    cases = [
+        compile_case("smil.depth.par-100000", "<par>" * 100000 + "</par>" * 100000),
+        compile_case("smil.depth.seq-5000", "<seq>" * 5000 + '<action dur="1s"/>' + "</seq>" * 5000),
+        compile_case("smil.huge.repeat-1e9", '<seq repeat="1000000000"><action dur="1s"/></seq>'),
+        compile_case("smil.huge.repeat-nested-1e5",
+                     '<seq repeat="100000"><seq repeat="100000"><action action-type="blink"/></seq></seq>'),
+        compile_case("smil.huge.dur-1e8", '<seq><action dur="100000000s"/></seq>'),
+        compile_case("smil.huge.speech-text-1mb", "<seq><speech>" + "Hello there. " * 80000 + "</speech></seq>"),
+        compile_case("smil.huge.speeches-10000", "<seq>" + "<speech>Hello there</speech>" * 10000 + "</seq>"),
+        compile_case("smil.huge.anchored-to-repeated-speech",
+                     '<par><seq repeat="100000">' + SMIL_SPEECH + '</seq>'
+                     + '<speech-animation affect="Sad" content-id="s" content-begin="m"/></par>', out="out/out.wav"),
+        compile_case("smil.huge.recording-repeat-1e5", '<seq repeat="100000"><speech file="a.wav"/></seq>',
+                     files={"a.wav": lambda: wav(22050, 22050)}),
+        compile_case("smil.wrong.marks-reversed",
+                     '<par><speech id="s"><mark id="a"/>One two <mark id="b"/>three</speech>'
+                     '<speech-animation affect="Sad" content-id="s" content-begin="b" content-end="a"/></par>'),
+        compile_case("smil.wrong.unknown-affect-kept", '<par><speech-animation affect="Bored" dur="2s"/></par>',
+                     exit=0, diagnostic="warning", outputs=["out/out.fap"]),
+        compile_case("smil.notfile.recording-directory", '<seq><speech file="d.wav"/></seq>', files={"d.wav": DIR}),
+        compile_case("smil.notfile.recording-fifo", '<seq><speech file="f.wav"/></seq>', files={"f.wav": FIFO}),
+        compile_case("smil.notfile.recording-missing", '<seq><speech file="none.wav"/></seq>'),
+        compile_case("smil.notfile.recording-outside", '<seq><speech file="../../outside.wav"/></seq>'),
+        compile_case("smil.notfile.recording-not-wav", '<seq><speech file="in.smil"/></seq>'),
+        compile_case("smil.junk.empty", ""),
+        compile_case("smil.junk.nul-bytes", b"<seq>\0\0\0</seq>"),
+        compile_case("smil.junk.random", lambda: bytes(random.Random(29).randrange(256) for _ in range(4096))),
+        compile_case("smil.trunc.with-marks-half", with_marks[:len(with_marks) // 2]),
+    ]
+    for label, number in [("1e308", "1e308"), ("minus-1e308", "-1e308"), ("nan", "nan"), ("inf", "inf")]:
+        cases += [
+            compile_case("smil.numbers.dur-" + label, '<seq><action dur="' + number + '"/></seq>'),
+            compile_case("smil.numbers.begin-" + label, '<seq><action begin="' + number + '" dur="1"/></seq>'),
+            compile_case("smil.numbers.intensity-" + label, '<seq><action intensity="' + number + '"/></seq>'),
+            compile_case("smil.numbers.repeat-" + label, '<seq repeat="' + number + '"><action/></seq>'),
+            compile_case("smil.numbers.pointing-" + label,
+                         '<seq><action action-type="pointing" channel="alice-head"><parameter>' + number
+                         + '</parameter><parameter>0</parameter><parameter>1</parameter></action></seq>',
+                         exit=(0, 1), on_success="warning" if label in ("nan", "inf") else "none",
+                         diagnostic="placed"),
+        ]
+    return cases
+
+
 def all_cases():
     cases = (not_a_file_cases() + depth_cases() + cycle_cases() + huge_cases() + number_cases()
              + truncation_cases() + junk_cases() + wrong_result_cases() + diagnostic_cases()
              + batch_cases() + csv_cases() + speech_cases())
     cases += output_cases()
+    cases += smil_cases()
     names = [c.name for c in cases]
     duplicates = {n for n in names if names.count(n) > 1}
     if duplicates:

@@ -144,6 +144,8 @@ TEST(SmilReader, LimitsAreCheckedBeforeTheWork) {
   few.max_runs = 3;
   expect_error("<seq><seq/><seq/><seq/><seq/></seq>", 1, 18, "--max-runs", few);
   expect_error("<seq repeat=\"1000000000\"/>", 1, 6, "--max-runs");
+  // Repeats of repeats are counted before the scheduler makes any run.
+  expect_error("<seq repeat=\"100000\"><seq repeat=\"100000\"><action/></seq></seq>", 1, 1, "too many runs");
   SmilOptions short_text;
   short_text.speech_limits.max_speech_text_bytes = 10;
   expect_error("<seq><speech>short</speech>\n<speech>this is longer</speech></seq>", 2, 1, "bytes", short_text);

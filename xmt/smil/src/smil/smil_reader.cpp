@@ -27,6 +27,8 @@ using Kind = ScheduleNode::Kind;
 // The length of an unanchored affect or action without dur or end (an FML move's), and of a blink.
 constexpr double kDisplaySeconds = 1.0;
 constexpr double kBlinkSeconds = 0.3;
+// The time an indefinite repeat is taken to fill when nothing ends it, to bound its runs (FML's).
+constexpr double kUnendedSeconds = 1e6;
 
 std::string lower(std::string_view s) {
   std::string out(s);
@@ -73,6 +75,7 @@ class SmilReader {
       if (leaf.kind == SmilLeaf::Kind::speech && !leaf.spoken)
         if (Status s = speak(leaf); !s) return s.error();
     set_speech_durations(*tree);
+    if (Status s = check_runs(*tree); !s) return s.error();
     ScheduleOptions schedule_options;
     schedule_options.max_runs = options_.max_runs;
     auto scheduled = schedule_tree(*tree, schedule_options);
@@ -503,6 +506,17 @@ class SmilReader {
     }
     const SmilLeaf& leaf = leaves_[node.leaf_id];
     if (leaf.kind == SmilLeaf::Kind::speech && !leaf.duration) node.timing.duration = leaf.spoken->duration;
+  }
+
+  // The runs the tree would make against --max-runs, before the scheduler makes them (an
+  // indefinite repeat is taken to fill kUnendedSeconds when nothing ends it).
+  Status check_runs(const ScheduleNode& tree) const {
+    double shortest = 0;
+    const double total = xmt::estimated_runs(tree, kUnendedSeconds, shortest, [](std::size_t) { return 1.0; });
+    if (total <= static_cast<double>(options_.max_runs)) return ok_status();
+    Limits limits;
+    limits.max_runs = options_.max_runs;
+    return with_line(limit_error(tree.source, "the script repeats to too many runs", Limit::runs, limits));
   }
 
   // Every run of a speech places its own copy of the voice: their sum against the sample limit.
