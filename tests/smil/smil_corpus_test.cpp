@@ -59,5 +59,26 @@ TEST(SmilCorpus, EveryScriptCompilesToFapOrIsRefusedAtItsDefect) {
   fs::remove_all(out);
 }
 
+// An Xface script named .xml is read by its root (par or seq) as SMIL-Agent, to the same frames.
+TEST(SmilCorpus, AScriptNamedXmlIsReadByItsRoot) {
+  const std::string script = test::corpus_dir() + "/smil/copperdong__Xface/Faps/actionOnlySeq.smil";
+  const fs::path copy = fs::temp_directory_path() / ("fapc-smil-root-" + std::to_string(::getpid()) + ".xml");
+  fs::copy_file(script, copy, fs::copy_options::overwrite_existing);
+  pipeline::ConvertOptions options;
+  options.facts = true;
+  Result<pipeline::Loaded> as_xml = pipeline::load(copy.string(), options);
+  Result<pipeline::Loaded> as_smil = pipeline::load(script, options);
+  fs::remove(copy);
+  ASSERT_TRUE(as_xml) << format_diagnostic(as_xml.error());
+  ASSERT_TRUE(as_smil) << format_diagnostic(as_smil.error());
+  EXPECT_EQ(as_xml->facts["format"], "SMIL-Agent");
+  EXPECT_EQ(as_xml->facts["recognised_by"], "root <seq>");
+  ASSERT_EQ(as_xml->frames.frames.size(), as_smil->frames.frames.size());
+  for (std::size_t i = 0; i < as_xml->frames.frames.size(); ++i)
+    for (int fap = 1; fap <= kFapCount; ++fap)
+      ASSERT_EQ(as_xml->frames.frames[i].has(fap) ? as_xml->frames.frames[i].value(fap) : 0,
+                as_smil->frames.frames[i].has(fap) ? as_smil->frames.frames[i].value(fap) : 0);
+}
+
 }  // namespace
 }  // namespace fapc

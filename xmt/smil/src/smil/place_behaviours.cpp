@@ -20,6 +20,8 @@ Points fitted(const bml::Behaviour& b, double start, double end) {
   const double length = end - start;
   double onset = defaults[bml::kReady];
   double offset = b.shift ? 0 : defaults[bml::kEnd] - defaults[bml::kRelax];
+  // A head turn is a shift in BML (it has no return); one that does not freeze returns as it came.
+  if (!b.shift && offset == 0) offset = onset;
   if (onset + offset > length && onset + offset > 0) {
     const double scale = length / (onset + offset);
     onset *= scale;
