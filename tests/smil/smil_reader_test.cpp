@@ -110,7 +110,7 @@ TEST(SmilReader, PointingLooksAtThePoint) {
 TEST(SmilReader, SystemLanguageChoosesTheVoice) {
   if (!speech::available()) GTEST_SKIP() << "built without the speech engine";
   SmilOptions options;
-  options.synthesize = speech::engine();
+  options.speech.synthesize = speech::engine();
   const auto doc = read(R"(<seq><par system-language="italian"><speech>Buongiorno a tutti.</speech></par>
 <speech system-language="en">Good morning.</speech></seq>)", options);
   ASSERT_TRUE(doc) << format_diagnostic(doc.error());

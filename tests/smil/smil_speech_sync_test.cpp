@@ -9,17 +9,12 @@
 #include <filesystem>
 #include <fstream>
 
-#include "fapc/pipeline/registry.hpp"
-#include "fapc/speech/engine.hpp"
-#include "support/voiced_segments.hpp"
+#include "support/sync_to_word.hpp"
 
 namespace fapc {
 namespace {
 
 namespace fs = std::filesystem;
-
-constexpr int kFps = 25;
-constexpr double kFrame = 1.0 / kFps;
 
 std::string write_smil(const std::string& body) {
   const fs::path dir = fs::temp_directory_path() / ("fapc-smil-sync-" + std::to_string(::getpid()));
@@ -29,26 +24,8 @@ std::string write_smil(const std::string& body) {
   return path.string();
 }
 
-// The time of the frame before the first where FAP `fap` is away from 0.
-double first_move(const FapSequence& frames, int fap) {
-  for (const FapFrame& f : frames.frames)
-    if (f.has(fap) && f.value(fap) != 0) return double(f.number - 1) / frames.fps;
-  return -1;
-}
-
 void expect_synced(const std::string& body, int fap, std::size_t stretch) {
-  if (!speech::available()) GTEST_SKIP() << "built without the speech engine";
-  pipeline::ConvertOptions options;
-  options.fps = kFps;
-  Result<pipeline::Loaded> loaded = pipeline::load(write_smil(body), options);
-  ASSERT_TRUE(loaded) << format_diagnostic(loaded.error());
-  ASSERT_TRUE(loaded->audio);
-  std::vector<double> onsets;
-  for (const test::Segment& segment : test::voiced_segments(*loaded->audio, 0.1)) onsets.push_back(segment.begin);
-  ASSERT_GT(onsets.size(), stretch) << "the marked word should follow a pause";
-  const double moved = first_move(loaded->frames, fap);
-  std::printf("word onset %.3f s, behaviour starts %.3f s\n", onsets[stretch], moved);
-  EXPECT_NEAR(moved, onsets[stretch], kFrame + 0.01);
+  test::expect_moves_with_word(write_smil(body), fap, stretch);
 }
 
 TEST(SmilSpeechSync, AnAffectAnchoredToAMarkStartsWithTheMarkedWord) {

@@ -9,22 +9,6 @@ namespace fapc::pipeline::builtin {
 
 namespace {
 
-bml::BmlOptions bml_options(const ConvertOptions& options) {
-  // The speech settings are the FML reader's: one place reads --voice and --speech-rate.
-  xmt::FmlOptions speech;
-  set_speech(speech, options);
-  bml::BmlOptions out;
-  out.synthesize = std::move(speech.synthesize);
-  out.language = speech.language;
-  out.voice = speech.voice;
-  out.words_per_minute = speech.words_per_minute;
-  out.max_speech_seconds = speech.max_speech_seconds;
-  out.coarticulation = speech.coarticulation;
-  out.max_behaviours = options.limits.max_runs;
-  out.frames = frame_budget_for(options);
-  return out;
-}
-
 nlohmann::ordered_json facts_of(const bml::BmlDocument& document) {
   nlohmann::ordered_json out;
   out["format"] = "BML";

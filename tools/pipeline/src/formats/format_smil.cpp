@@ -10,19 +10,10 @@ namespace fapc::pipeline::builtin {
 namespace {
 
 smil::SmilOptions smil_options(const ConvertOptions& options) {
-  // The speech settings are the FML reader's: one place reads --voice and --speech-rate.
-  xmt::FmlOptions speech;
-  set_speech(speech, options);
   smil::SmilOptions out;
-  out.synthesize = std::move(speech.synthesize);
-  out.language = speech.language;
-  out.voice = speech.voice;
-  out.words_per_minute = speech.words_per_minute;
-  out.max_speech_seconds = speech.max_speech_seconds;
-  out.speech_limits = speech.speech_limits;
-  out.coarticulation = speech.coarticulation;
+  out.speech = bml_options(options);
+  out.speech_limits = options.limits;
   out.max_runs = options.limits.max_runs;
-  out.frames = frame_budget_for(options);
   out.includes = options.includes;
   return out;
 }

@@ -17,17 +17,6 @@ std::string lower(std::string_view s) {
   return out;
 }
 
-std::vector<std::string_view> split(std::string_view line, char by) {
-  std::vector<std::string_view> out;
-  std::size_t from = 0;
-  for (std::size_t at = 0; at <= line.size(); ++at)
-    if (at == line.size() || line[at] == by) {
-      out.push_back(line.substr(from, at - from));
-      from = at + 1;
-    }
-  return out;
-}
-
 bml::Behaviour behaviour_at(const Location& where, bool shift) {
   bml::Behaviour b;
   b.where = where;
@@ -55,14 +44,7 @@ constexpr double kTurnDegrees = 30;
 const std::vector<AffectRow>& affect_rows() {
   static const std::vector<AffectRow> rows = [] {
     std::vector<AffectRow> out;
-    bool header = true;
-    for (std::string_view line : split(vocabulary::bundled_table_text("smil_affects.tsv"), '\n')) {
-      if (line.empty() || line[0] == '#') continue;
-      if (header) {
-        header = false;
-        continue;
-      }
-      const auto cells = split(line, '\t');
+    for (const std::vector<std::string_view>& cells : vocabulary::bundled_table_cells("smil_affects.tsv")) {
       if (cells.size() != 4) continue;
       AffectRow row{std::string(cells[0]), std::string(cells[1]), 1, std::string(cells[3])};
       std::from_chars(cells[2].data(), cells[2].data() + cells[2].size(), row.amount);

@@ -67,7 +67,7 @@ class SmilReader {
     const std::string_view name = xml::local_name(root);
     if (name != "par" && name != "seq")
       return doc_.error(root, "the root element is <" + std::string(name) + ">, not a SMIL-Agent par or seq");
-    std::optional<ScheduleNode> tree = element(root, Context{options_.language});
+    std::optional<ScheduleNode> tree = element(root, Context{options_.speech.language});
     if (error_) return *error_;
     if (Status s = resolve_anchors(); !s) return s.error();
     if (Status s = check_speech_budget(); !s) return s.error();
@@ -88,9 +88,9 @@ class SmilReader {
     if (Status s = check_voice(schedule); !s) return s.error();
     Result<PlacedScript> placed = place_behaviours(leaves_, schedule, options_.max_runs, out_.behaviours);
     if (!placed) return with_line(placed.error());
-    if (options_.frames.exceeded_by(placed->end))
-      return frame_budget_error(placed->end, placed->end_source, options_.frames);
-    bml::lower_block(placed->block, placed->solution, 0, options_.coarticulation, out_.timeline, out_.warnings);
+    if (options_.speech.frames.exceeded_by(placed->end))
+      return frame_budget_error(placed->end, placed->end_source, options_.speech.frames);
+    bml::lower_block(placed->block, placed->solution, 0, options_.speech.coarticulation, out_.timeline, out_.warnings);
     out_.timeline.explicit_end = placed->end;
     out_.timeline.end_source = placed->end_source;
     once_.finish();
@@ -467,7 +467,7 @@ class SmilReader {
     for (const SmilLeaf& leaf : leaves_) {
       if (leaf.kind != SmilLeaf::Kind::speech || leaf.spoken) continue;
       bytes += static_cast<std::int64_t>(leaf.text.text.size());
-      seconds += estimated_speech_seconds(leaf.text.text, options_.words_per_minute);
+      seconds += estimated_speech_seconds(leaf.text.text, options_.speech.words_per_minute);
       if (bytes > limits.max_speech_text_bytes)
         return with_line(limit_error(leaf.where, "the speech text of this script reaches " + std::to_string(bytes) + " bytes",
                                      Limit::speech_text, limits));
@@ -482,15 +482,12 @@ class SmilReader {
   }
 
   Status speak(SmilLeaf& leaf) {
-    bml::BmlOptions options;
-    options.synthesize = options_.synthesize;
+    bml::BmlOptions options = options_.speech;
     options.language = leaf.language;
-    options.voice = options_.voice;
-    options.words_per_minute = options_.words_per_minute;
-    options.max_speech_seconds = std::min(options_.max_speech_seconds, options_.speech_limits.max_speech_seconds);
+    options.max_speech_seconds = std::min(options.max_speech_seconds, options_.speech_limits.max_speech_seconds);
     Result<bml::SpokenText> spoken = bml::speak(leaf.text, options, leaf.where, out_.warnings, warned_no_engine_);
     if (!spoken) return with_line(spoken.error());
-    if (options_.synthesize && std::find(out_.languages.begin(), out_.languages.end(), leaf.language) == out_.languages.end())
+    if (options_.speech.synthesize && std::find(out_.languages.begin(), out_.languages.end(), leaf.language) == out_.languages.end())
       out_.languages.push_back(leaf.language);
     spoken->audio.source = leaf.where;
     leaf.spoken = std::make_unique<bml::SpokenText>(std::move(*spoken));

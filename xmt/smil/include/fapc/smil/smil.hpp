@@ -10,11 +10,10 @@
 #include <string_view>
 #include <vector>
 
+#include "fapc/bml/bml.hpp"
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/include_policy.hpp"
 #include "fapc/codec/limits.hpp"
-#include "fapc/transcoder/frame_budget.hpp"
-#include "fapc/transcoder/speech.hpp"
 #include "fapc/transcoder/timeline.hpp"
 
 namespace fapc::smil {
@@ -22,21 +21,14 @@ namespace fapc::smil {
 struct SmilOptions {
   // The most elements, and runs after repeats, a script may have: Limits::max_runs (--max-runs).
   std::int64_t max_runs = Limits{}.max_runs;
-  // The frames the script will be rendered at: a script too long for them is refused once it is
-  // scheduled (fps 0: unchecked).
-  FrameBudget frames;
-  // speech text: spoken by `synthesize` (fapc::speech::engine()); without one, the FML reader's
-  // letter table at words_per_minute, silent, with a warning. `language` is the default where no
-  // system-language is in force.
-  Synthesizer synthesize;
-  std::string language = "en";
-  std::string voice;
-  double words_per_minute = 175;
-  double max_speech_seconds = 3600;
+  // How speech is spoken and the frames the script will be rendered at, as for BML: the engine
+  // (without one, the FML reader's letter table, silent, with a warning), the language where no
+  // system-language is in force, the voice, rate, longest speech and coarticulation; a script
+  // too long for `frames` is refused once scheduled. (max_behaviours is not read: max_runs is.)
+  bml::BmlOptions speech;
   // The script's speech text and seconds, all speeches together (docs/security.md), checked
   // before any is spoken; the audio samples of `file=` recordings.
   Limits speech_limits;
-  Coarticulation coarticulation;
   // Which files `speech file=` may name (docs/security.md); by default the script's folder tree.
   IncludePolicy includes;
 };
