@@ -97,6 +97,13 @@ TEST(SmilReader, UnknownAffectsAndActionsWarnAndKeepTheirSpan) {
     }
 }
 
+TEST(SmilReader, TextOutsideSpeechIsReportedNotDropped) {
+  const auto doc = read("<seq>stray words<action action-type=\"blink\">more</action></seq>");
+  ASSERT_TRUE(doc) << format_diagnostic(doc.error());
+  EXPECT_GE(doc->warnings.size(), 2u);
+  for (const Diagnostic& w : doc->warnings) EXPECT_EQ(w.where.line, 1);
+}
+
 TEST(SmilReader, PointingLooksAtThePoint) {
   const auto doc = read(R"(<par><action channel="alice-head" action-type="pointing" dur="1s">
 <parameter>1</parameter><parameter>0</parameter><parameter>1</parameter></action></par>)");

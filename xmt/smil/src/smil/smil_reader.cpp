@@ -176,6 +176,7 @@ class SmilReader {
     std::optional<ScheduleNode> placed;
     if (name == "par" || name == "seq") {
       check_attributes(node, {});
+      xmt::report_stray_text(doc_, node, once_);
       placed = ScheduleNode::group(name == "par" ? Kind::parallel : Kind::sequence, xmt::group_timing(*timing), doc_.where(node));
       for (const xmlNode* child : doc_.children(node)) {
         if (std::optional<ScheduleNode> inner = element(child, context)) placed->children.push_back(std::move(*inner));
@@ -330,6 +331,7 @@ class SmilReader {
   std::optional<ScheduleNode> display(const xmlNode* node, const xmt::FmlTiming& timing) {
     const bool action = xml::local_name(node) == "action";
     check_attributes(node, kAnchored);
+    xmt::report_stray_text(doc_, node, once_);
     SmilLeaf leaf;
     leaf.kind = action ? SmilLeaf::Kind::action : SmilLeaf::Kind::affect;
     leaf.where = doc_.where(node);
