@@ -198,7 +198,9 @@ int per_node(const std::string& fapc, const fs::path& work, std::size_t files, s
     std::cerr << "batch_bench: " << clip.error().message << "\n";
     return 1;
   }
-  const AudioTrack voice{clip->sample_rate, 0, clip->samples};
+  AudioTrack voice;
+  voice.sample_rate = clip->sample_rate;
+  voice.samples = clip->samples;
   std::printf("AAC of the voice (%.1f s at %d Hz), each coder 5 times:\n", voice.duration(), voice.sample_rate);
   double per_file[2] = {0, 0};
   int status = 0;

@@ -68,6 +68,14 @@ TEST(BmlReader, ABehaviourThatLastsNoTimeIsSaidAndNotDrawn) {
   EXPECT_EQ(said, 2);
 }
 
+TEST(BmlReader, RepetitionIsAWholeNumberFromOneToAHundred) {
+  // 2.7e120 once went through an int conversion first (undefined; found by fuzzing).
+  for (const char* bad : {"2666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666", "0", "1.5", "101"}) {
+    const Diagnostic e = read_error(std::string(R"(<head id="n" lexeme="NOD" repetition=")") + bad + "\"/>");
+    EXPECT_NE(e.message.find("repetition must be a whole number from 1 to 100"), std::string::npos) << bad << ": " << e.message;
+  }
+}
+
 TEST(BmlReader, SelfReferenceSetsTheLength) {
   // testhead_selftimed.xml
   const BmlDocument d = read_ok(R"(<head id="shake1" start="0" end="shake1:start+1" lexeme="SHAKE"/>)");

@@ -632,33 +632,15 @@ def mp4_audio_delay(duration):
     return make
 
 
-def mp4_boxes(data, start=0, end=None):
-    """The boxes of data[start:end] as (type, offset, size) (32-bit sizes only, as fapc writes)."""
-    end = len(data) if end is None else end
-    at = start
-    while at + 8 <= end:
-        size = int.from_bytes(data[at:at + 4], "big")
-        if size < 8:
-            return
-        yield data[at + 4:at + 8].decode("latin-1"), at, size
-        at += size
-
-
 def mp4_audio_box(data, wanted):
     """The offset of box `wanted` inside VOICE_MP4's sound track (the trak whose hdlr says soun)."""
-    containers = {"moov", "trak", "mdia", "minf", "stbl"}
-    def walk(start, end, in_sound):
-        for kind, at, size in mp4_boxes(data, start, end):
-            if kind == "trak":
-                in_sound = b"soun" in data[at:at + size]
-            if kind == wanted and in_sound:
-                return at
-            if kind in containers:
-                found = walk(at + 8, at + size, in_sound)
-                if found is not None:
-                    return found
-        return None
-    return walk(0, len(data), False)
+    sound_end = -1
+    for at, size, kind in mp4_boxes(data):
+        if kind == "trak":
+            sound_end = at + size if b"soun" in data[at:at + size] else -1
+        elif kind == wanted and at < sound_end:
+            return at
+    return None
 
 
 def mp4_audio_damaged(part):
@@ -667,7 +649,7 @@ def mp4_audio_damaged(part):
     def make():
         data = bytearray(source_bytes(VOICE_MP4))
         if part == "config":
-            at = data.find(bytes([0x13, 0x88, 0x56, 0xE5, 0x00]), mp4_audio_box(data, "esds"))
+            at = data.find(bytes([0x13, 0x88, 0x56, 0xE5, 0x00]), mp4_audio_box(data, "stsd"))
             data[at:at + 2] = bytes([0xF8, 0x08])  # object type 31 + escape: 63, which no decoder has
         else:
             stco = mp4_audio_box(data, "stco")
@@ -811,6 +793,59 @@ def intent_cases():
     ]
 
 
+# Xface SMIL-Agent scripts (docs/smil.md).
+EXT["smil"] = ".smil"
+SMIL_SPEECH = '<speech id="s">Hello <mark id="m"/>there</speech>'
+
+
+def smil_cases():
+    """SMIL-Agent scripts: deep nesting, repeats and lengths past the limits, numbers out of range,
+    recordings that are not files or lie outside the allowed folders, junk and cut texts."""
+    with_marks = source_bytes("corpus/smil/copperdong__Xface/Faps/withMarks.smil")
+    cases = [
+        compile_case("smil.depth.par-100000", "<par>" * 100000 + "</par>" * 100000),
+        compile_case("smil.depth.seq-5000", "<seq>" * 5000 + '<action dur="1s"/>' + "</seq>" * 5000),
+        compile_case("smil.huge.repeat-1e9", '<seq repeat="1000000000"><action dur="1s"/></seq>'),
+        compile_case("smil.huge.repeat-nested-1e5",
+                     '<seq repeat="100000"><seq repeat="100000"><action action-type="blink"/></seq></seq>'),
+        compile_case("smil.huge.dur-1e8", '<seq><action dur="100000000s"/></seq>'),
+        compile_case("smil.huge.speech-text-1mb", "<seq><speech>" + "Hello there. " * 80000 + "</speech></seq>"),
+        compile_case("smil.huge.speeches-10000", "<seq>" + "<speech>Hello there</speech>" * 10000 + "</seq>"),
+        compile_case("smil.huge.anchored-to-repeated-speech",
+                     '<par><seq repeat="100000">' + SMIL_SPEECH + '</seq>'
+                     + '<speech-animation affect="Sad" content-id="s" content-begin="m"/></par>', out="out/out.wav"),
+        compile_case("smil.huge.recording-repeat-1e5", '<seq repeat="100000"><speech file="a.wav"/></seq>',
+                     files={"a.wav": lambda: wav(22050, 22050)}),
+        compile_case("smil.wrong.marks-reversed",
+                     '<par><speech id="s"><mark id="a"/>One two <mark id="b"/>three</speech>'
+                     '<speech-animation affect="Sad" content-id="s" content-begin="b" content-end="a"/></par>'),
+        compile_case("smil.wrong.unknown-affect-kept", '<par><speech-animation affect="Bored" dur="2s"/></par>',
+                     exit=0, diagnostic="warning", outputs=["out/out.fap"]),
+        compile_case("smil.notfile.recording-directory", '<seq><speech file="d.wav"/></seq>', files={"d.wav": DIR}),
+        compile_case("smil.notfile.recording-fifo", '<seq><speech file="f.wav"/></seq>', files={"f.wav": FIFO}),
+        compile_case("smil.notfile.recording-missing", '<seq><speech file="none.wav"/></seq>'),
+        compile_case("smil.notfile.recording-outside", '<seq><speech file="../../outside.wav"/></seq>'),
+        compile_case("smil.notfile.recording-not-wav", '<seq><speech file="in.smil"/></seq>'),
+        compile_case("smil.junk.empty", ""),
+        compile_case("smil.junk.nul-bytes", b"<seq>\0\0\0</seq>"),
+        compile_case("smil.junk.random", lambda: bytes(random.Random(29).randrange(256) for _ in range(4096))),
+        compile_case("smil.trunc.with-marks-half", with_marks[:len(with_marks) // 2]),
+    ]
+    for label, number in [("1e308", "1e308"), ("minus-1e308", "-1e308"), ("nan", "nan"), ("inf", "inf")]:
+        cases += [
+            compile_case("smil.numbers.dur-" + label, '<seq><action dur="' + number + '"/></seq>'),
+            compile_case("smil.numbers.begin-" + label, '<seq><action begin="' + number + '" dur="1"/></seq>'),
+            compile_case("smil.numbers.intensity-" + label, '<seq><action intensity="' + number + '"/></seq>'),
+            compile_case("smil.numbers.repeat-" + label, '<seq repeat="' + number + '"><action/></seq>'),
+            compile_case("smil.numbers.pointing-" + label,
+                         '<seq><action action-type="pointing" channel="alice-head"><parameter>' + number
+                         + '</parameter><parameter>0</parameter><parameter>1</parameter></action></seq>',
+                         exit=(0, 1), on_success="warning" if label in ("nan", "inf") else "none",
+                         diagnostic="placed"),
+        ]
+    return cases
+
+
 def all_cases():
     cases = (not_a_file_cases() + depth_cases() + cycle_cases() + huge_cases() + number_cases()
              + truncation_cases() + junk_cases() + wrong_result_cases() + diagnostic_cases()
@@ -818,6 +853,9 @@ def all_cases():
     cases += output_cases()
     cases += intent_cases()
     cases += speech_placed_cases()
+
+
+    cases += smil_cases()
     names = [c.name for c in cases]
     duplicates = {n for n in names if names.count(n) > 1}
     if duplicates:

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "fapc/codec/fap_sequence.hpp"
 #include "fapc/transcoder/audio.hpp"
 
 namespace fapc::test {
@@ -39,6 +40,21 @@ inline std::vector<Segment> voiced_segments(const AudioTrack& track, double min_
     }
   }
   return out;
+}
+
+// The onsets of the voiced stretches, joined across gaps shorter than min_pause.
+inline std::vector<double> voiced_onsets(const AudioTrack& track, double min_pause) {
+  std::vector<double> onsets;
+  for (const Segment& segment : voiced_segments(track, min_pause)) onsets.push_back(segment.begin);
+  return onsets;
+}
+
+// The time of the frame before the first where FAP `fap` is away from 0 (a behaviour that moves
+// it starts between that frame and the next), or -1 when it never moves.
+inline double first_move(const FapSequence& frames, int fap) {
+  for (const FapFrame& f : frames.frames)
+    if (f.has(fap) && f.value(fap) != 0) return double(f.number - 1) / frames.fps;
+  return -1;
 }
 
 }  // namespace fapc::test

@@ -143,7 +143,7 @@ TEST(FmlRejects, NeighbouringFormatsAreNamedNotMisread) {
       {"fml-apml-bml.xml", "this is Greta FML-APML, not FML"},
       {"apml-Neutral.xml", "this is APML (Greta's Affective Presentation Markup Language), not FML"},
       {"bml-BML_example2.xml", "this is BML (Behavior Markup Language), not FML"},
-      {"smil-simpleEnglish.smil", "this is an Xface SMIL-Agent script, not FML"},
+      {"smil-simpleEnglish.smil", "this is an Xface SMIL-Agent script (read it as .smil), not FML"},
       {"other-erl_example.xml", "this is Greta ERL (expression library), not FML"},
       {"other-score.xml", "this is a Greta score, not FML"},
   };

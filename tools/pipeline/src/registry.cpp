@@ -63,7 +63,8 @@ Registry built_in() {
   r.add(described(builtin::combine_input(), "an Algebra of Expressions over other inputs (docs/algebra.md)",
                   kScriptOptions));
   r.add(described(builtin::bml_input(), "a BML document: behaviours placed by their sync constraints, speech", kScriptOptions));
-  r.add(described(builtin::xml_input(), "an .xml document read by its root: BML, FML, XMT-Omega, FML-APML or APML", kScriptOptions));
+  r.add(described(builtin::xml_input(), "an .xml document read by its root: BML, FML, XMT-Omega, FML-APML, APML or SMIL-Agent",
+                  kScriptOptions));
   r.add(described(builtin::fml_apml_input(), "Greta's FML-APML: intentions on a speech's marks, through the lexicon",
                   [] {
                     auto options = kScriptOptions;
@@ -73,6 +74,11 @@ Registry built_in() {
   r.add(described(builtin::apml_input(), "APML: intentions marked up over spoken text, through the lexicon", [] {
                     auto options = kScriptOptions;
                     options.insert(options.end(), {"lexicon", "voice", "speech-rate"});
+                    return options;
+                  }()));
+  r.add(described(builtin::smil_input(), "an Xface SMIL-Agent script: speech with marks, affects, eye and head actions", [] {
+                    auto options = kScriptOptions;
+                    options.insert(options.end(), {"speech-rate"});
                     return options;
                   }()));
   r.add(described(builtin::fap_output(), "frames of FAP values as text (.fap.gz compressed)", {"fap-flavour"}));

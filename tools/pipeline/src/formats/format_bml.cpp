@@ -2,27 +2,10 @@
 // --speech-rate); --max-runs bounds the behaviours.
 #include "fapc/bml/bml.hpp"
 #include "formats.hpp"
-#include "formats/bml_options.hpp"
 #include "speech_options.hpp"
 #include "timeline_input.hpp"
 
 namespace fapc::pipeline::builtin {
-
-bml::BmlOptions bml_options(const ConvertOptions& options) {
-  // The speech settings are the FML reader's: one place reads --voice and --speech-rate.
-  xmt::FmlOptions speech;
-  set_speech(speech, options);
-  bml::BmlOptions out;
-  out.synthesize = std::move(speech.synthesize);
-  out.language = speech.language;
-  out.voice = speech.voice;
-  out.words_per_minute = speech.words_per_minute;
-  out.max_speech_seconds = speech.max_speech_seconds;
-  out.coarticulation = speech.coarticulation;
-  out.max_behaviours = options.limits.max_runs;
-  out.frames = frame_budget_for(options);
-  return out;
-}
 
 namespace {
 

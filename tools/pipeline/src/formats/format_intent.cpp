@@ -6,7 +6,7 @@
 #include "fapc/codec/file_io.hpp"
 #include "fapc/intent/intent.hpp"
 #include "formats.hpp"
-#include "formats/bml_options.hpp"
+#include "speech_options.hpp"
 #include "timeline_input.hpp"
 
 namespace fapc::pipeline::builtin {

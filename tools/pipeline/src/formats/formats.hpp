@@ -17,6 +17,7 @@ InputFormat bml_input();  // format_bml.cpp
 InputFormat xml_input();  // format_xml.cpp: by the root element
 InputFormat fml_apml_input();  // format_intent.cpp
 InputFormat apml_input();      // format_intent.cpp
+InputFormat smil_input();  // format_smil.cpp: Xface SMIL-Agent
 
 OutputFormat fap_output();
 OutputFormat fba_output();

@@ -214,9 +214,11 @@ class BmlReader {
     } else if (name == "head") {
       b.kind = BehaviourKind::head;
       b.lexeme = upper(xml::trim(xml::attribute(node, "lexeme").value_or("")));
-      b.repetition = static_cast<int>(number_attribute(node, "repetition", 1.0));
-      if (b.repetition < 1 || b.repetition > 100)
+      // Checked as a double: a huge value converted to int first is undefined (found by fuzzing).
+      const double repetition = number_attribute(node, "repetition", 1.0);
+      if (!(repetition >= 1 && repetition <= 100) || repetition != std::floor(repetition))
         return fail(doc_.error(node, "repetition", "repetition must be a whole number from 1 to 100"));
+      b.repetition = static_cast<int>(repetition);
     } else if (name == "headDirectionShift") {
       b.kind = BehaviourKind::head_direction;
       b.shift = true;

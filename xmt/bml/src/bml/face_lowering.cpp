@@ -16,31 +16,13 @@ struct LexemeRow {
   double weight = 1;
 };
 
-std::vector<std::string_view> split(std::string_view line, char by) {
-  std::vector<std::string_view> out;
-  std::size_t from = 0;
-  for (std::size_t at = 0; at <= line.size(); ++at)
-    if (at == line.size() || line[at] == by) {
-      out.push_back(line.substr(from, at - from));
-      from = at + 1;
-    }
-  return out;
-}
-
 // The bundled table, read once. It is fapc's own file, checked by tests/bml/bml_vocabulary_test.cpp
 // (every row well formed, every unit in au_faps.tsv), so a malformed row here is a build defect and
 // is skipped rather than reported to users.
 const std::vector<LexemeRow>& lexeme_rows() {
   static const std::vector<LexemeRow> rows = [] {
     std::vector<LexemeRow> out;
-    bool header = true;
-    for (std::string_view line : split(vocabulary::bundled_table_text("bml_lexemes.tsv"), '\n')) {
-      if (line.empty() || line[0] == '#') continue;
-      if (header) {
-        header = false;
-        continue;
-      }
-      const auto cells = split(line, '\t');
+    for (const std::vector<std::string_view>& cells : vocabulary::bundled_table_cells("bml_lexemes.tsv")) {
       if (cells.size() != 5 || cells[2].size() != 1) continue;
       LexemeRow row;
       row.lexeme = std::string(cells[0]);

@@ -889,42 +889,19 @@ class FmlReader {
 
   // ---- scheduling ----------------------------------------------------------------------------
 
-  // Runs the tree would make (repeats of repeats, indefinite ones over --duration) against
-  // max_runs, before the scheduler makes them. `shortest` is a lower bound of a node's active
-  // length, so that available / (one iteration) bounds an indefinite repeat's iterations. It
-  // counts the children's begin offsets, takes an end as given and is 0 for an indefinite
-  // repeat (an ancestor or a sibling's end may cut it anywhere). A lower bound of 0 means one
-  // iteration: its length is 0 (not repeated) or the whole limit. (An earlier estimate floored
-  // iterations at 1 ms and ignored offsets and ends: <seq repeat="indefinite"><par
-  // end="0.000001">... scheduled millions of runs; tests/fuzz/corpus/fml_reader/runs-*.fml.)
-  double runs(const ScheduleNode& node, double available, double& shortest) const {
-    const Timing& t = node.timing;
-    double own = 0;
-    double children_runs = 0;
-    if (node.kind == Kind::leaf) {
-      own = t.duration.value_or(0);
-      const FmlLeaf& leaf = tree_.leaves[node.leaf_id];
-      children_runs = leaf.kind == FmlLeaf::Kind::talk ? std::max<double>(1, static_cast<double>(leaf.talk->speech.visemes.size()))
-                      : leaf.kind == FmlLeaf::Kind::normal ? std::max<double>(1, static_cast<double>(expressions_.size()))
-                                                           : 1;
-    } else {
-      const double inner = t.duration.value_or(available);
-      for (const ScheduleNode& child : node.children) {
-        double child_shortest = 0;
-        children_runs += runs(child, inner, child_shortest);
-        const double reach = child.timing.offset + child_shortest;
-        own = node.kind == Kind::sequence ? own + reach : std::max(own, reach);
-      }
-      if (t.duration) own = *t.duration;
-    }
-    const double repeats = !t.repeat_indefinite ? std::max(t.repeat, 1.0) : own > 0 ? available / own : 1.0;
-    shortest = t.end ? std::max(0.0, *t.end - t.offset) : t.repeat_indefinite ? 0 : own * t.repeat;
-    return children_runs * std::max(repeats, 1.0);
+  // Runs the tree would make, against max_runs, before the scheduler makes them (estimated_runs,
+  // fml_timing.hpp): a talk makes a run per viseme, a "normal" one per expression placed.
+  double leaf_runs(std::size_t leaf_id) const {
+    const FmlLeaf& leaf = tree_.leaves[leaf_id];
+    return leaf.kind == FmlLeaf::Kind::talk ? std::max<double>(1, static_cast<double>(leaf.talk->speech.visemes.size()))
+           : leaf.kind == FmlLeaf::Kind::normal ? std::max<double>(1, static_cast<double>(expressions_.size()))
+                                                : 1;
   }
 
   Status check_runs() const {
     double shortest = 0;
-    const double total = runs(tree_.root, options_.duration.value_or(kUnendedSeconds), shortest);
+    const double total = estimated_runs(tree_.root, options_.duration.value_or(kUnendedSeconds), shortest,
+                                        [this](std::size_t leaf_id) { return leaf_runs(leaf_id); });
     if (total <= static_cast<double>(options_.max_runs)) return ok_status();
     return limit_at(make_error(tree_.root.source, ""), "the story repeats to too many runs");
   }

@@ -1,5 +1,7 @@
 #include "fml/fml_timing.hpp"
 
+#include <algorithm>
+
 #include "fapc/xml/clock_value.hpp"
 
 namespace fapc::xmt {
@@ -45,6 +47,29 @@ Timing move_timing(const FmlTiming& timing, double intrinsic) {
   out.offset = timing.begin.value_or(0);
   out.duration = timing.end ? *timing.end - out.offset : timing.duration.value_or(intrinsic);
   return out;
+}
+
+double estimated_runs(const ScheduleNode& node, double available, double& shortest,
+                      const std::function<double(std::size_t leaf_id)>& leaf_runs) {
+  const Timing& t = node.timing;
+  double own = 0;
+  double children_runs = 0;
+  if (node.kind == ScheduleNode::Kind::leaf) {
+    own = t.duration.value_or(0);
+    children_runs = leaf_runs(node.leaf_id);
+  } else {
+    const double inner = t.duration.value_or(available);
+    for (const ScheduleNode& child : node.children) {
+      double child_shortest = 0;
+      children_runs += estimated_runs(child, inner, child_shortest, leaf_runs);
+      const double reach = child.timing.offset + child_shortest;
+      own = node.kind == ScheduleNode::Kind::sequence ? own + reach : std::max(own, reach);
+    }
+    if (t.duration) own = *t.duration;
+  }
+  const double repeats = !t.repeat_indefinite ? std::max(t.repeat, 1.0) : own > 0 ? available / own : 1.0;
+  shortest = t.end ? std::max(0.0, *t.end - t.offset) : t.repeat_indefinite ? 0 : own * t.repeat;
+  return children_runs * std::max(repeats, 1.0);
 }
 
 }  // namespace fapc::xmt

@@ -10,7 +10,7 @@ std::string other_format_name(const xml::XmlDocument& doc, const xmlNode* root) 
   if (name == "fml-apml") return "Greta FML-APML";
   if (name == "apml") return "APML (Greta's Affective Presentation Markup Language)";
   if (name == "bml") return "BML (Behavior Markup Language)";
-  if (name == "par" || name == "seq" || name == "smil") return "an Xface SMIL-Agent script";
+  if (name == "par" || name == "seq" || name == "smil") return "an Xface SMIL-Agent script (read it as .smil)";
   if (name == "erl") return "Greta ERL (expression library)";
   if (name == "score") return "a Greta score";
   if (name == "XMT-O") return "XMT-Omega (read it as .xmt)";

@@ -59,4 +59,8 @@ const MappingTable& arkit_table();
 // such file is bundled.
 std::string_view bundled_table_text(std::string_view name);
 
+// The data rows of a bundled table (header, comments and empty lines dropped), each split at its
+// tabs: for tables of fapc's own whose rows are checked by their tests, not by a parser.
+std::vector<std::vector<std::string_view>> bundled_table_cells(std::string_view name);
+
 }  // namespace fapc::vocabulary
