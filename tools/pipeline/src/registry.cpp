@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <initializer_list>
 
 #include "fapc/codec/did_you_mean.hpp"
 #include "formats/bridges.hpp"
@@ -46,6 +47,13 @@ Format described(Format format, std::string carries, std::vector<std::string> op
 const std::vector<std::string> kScriptOptions = {"fps", "profile", "duration", "allow-include", "max-runs",
                                                  "max-expansion", "max-frames"};
 
+// A script reader's options: those of every script, then its own.
+std::vector<std::string> script_options(std::initializer_list<std::string> own) {
+  std::vector<std::string> options = kScriptOptions;
+  options.insert(options.end(), own);
+  return options;
+}
+
 Registry built_in() {
   Registry r;
   r.add(described(builtin::fap_input(), "frames of FAP values as text (every known flavour; gzip too)",
@@ -54,11 +62,8 @@ Registry built_in() {
                   {"max-frames", "max-decompressed-bytes"}));
   r.add(described(builtin::mp4_input(), "an MPEG-4 file's FBA track", {"max-frames"}));
   r.add(described(builtin::mimic_input(), "a Mimic script: timed actions on animation parameters", kScriptOptions));
-  r.add(described(builtin::fml_input(), "an FML document: events, excl/par/seq/repeat, talk text", [] {
-                    auto options = kScriptOptions;
-                    options.insert(options.end(), {"event", "speech-rate"});
-                    return options;
-                  }()));
+  r.add(described(builtin::fml_input(), "an FML document: events, excl/par/seq/repeat, talk text",
+                  script_options({"event", "speech-rate"})));
   r.add(described(builtin::xmto_input(), "an XMT-Omega document animating FAPs (XMT-A is an output)", kScriptOptions));
   r.add(described(builtin::combine_input(), "an Algebra of Expressions over other inputs (docs/algebra.md)",
                   kScriptOptions));
@@ -66,21 +71,11 @@ Registry built_in() {
   r.add(described(builtin::xml_input(), "an .xml document read by its root: BML, FML, XMT-Omega, FML-APML, APML or SMIL-Agent",
                   kScriptOptions));
   r.add(described(builtin::fml_apml_input(), "Greta's FML-APML: intentions on a speech's marks, through the lexicon",
-                  [] {
-                    auto options = kScriptOptions;
-                    options.insert(options.end(), {"lexicon", "voice", "speech-rate"});
-                    return options;
-                  }()));
-  r.add(described(builtin::apml_input(), "APML: intentions marked up over spoken text, through the lexicon", [] {
-                    auto options = kScriptOptions;
-                    options.insert(options.end(), {"lexicon", "voice", "speech-rate"});
-                    return options;
-                  }()));
-  r.add(described(builtin::smil_input(), "an Xface SMIL-Agent script: speech with marks, affects, eye and head actions", [] {
-                    auto options = kScriptOptions;
-                    options.insert(options.end(), {"speech-rate"});
-                    return options;
-                  }()));
+                  script_options({"lexicon", "voice", "speech-rate"})));
+  r.add(described(builtin::apml_input(), "APML: intentions marked up over spoken text, through the lexicon",
+                  script_options({"lexicon", "voice", "speech-rate"})));
+  r.add(described(builtin::smil_input(), "an Xface SMIL-Agent script: speech with marks, affects, eye and head actions",
+                  script_options({"speech-rate"})));
   r.add(described(builtin::fap_output(), "frames of FAP values as text (.fap.gz compressed)", {"fap-flavour"}));
   r.add(described(builtin::fba_output(), "a raw MPEG-4 FBA elementary stream",
                   {"quant", "intra-period", "ranges", "masks", "verify"}));

@@ -48,6 +48,15 @@ std::string speakable_text(std::string_view text) {
   std::string out;
   out.reserve(text.size());
   std::size_t word = 0;  // bytes of the word being written
+  // A piece of a word (one character), broken off to a new word past kMaxWordBytes.
+  const auto append = [&](std::string_view piece) {
+    if (word + piece.size() > kMaxWordBytes) {
+      out.push_back(' ');
+      word = 0;
+    }
+    out.append(piece);
+    word += piece.size();
+  };
   for (std::size_t i = 0; i < text.size(); ++i) {
     char c = text[i];
     if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) c = ' ';
@@ -57,12 +66,7 @@ std::string speakable_text(std::string_view text) {
         c = ' ';  // and the rest of a malformed or unassigned character with it
         while (i + 1 < text.size() && continuation(text[i + 1])) ++i;
       } else {
-        if (word + length > kMaxWordBytes) {
-          out.push_back(' ');
-          word = 0;
-        }
-        out.append(text.substr(i, length));
-        word += length;
+        append(text.substr(i, length));
         i += length - 1;
         continue;
       }
@@ -77,12 +81,7 @@ std::string speakable_text(std::string_view text) {
       const bool ellipsis = c == '.' && !(out.size() >= 3 && out[out.size() - 2] == '.' && out[out.size() - 3] == '.');
       if (!ellipsis) continue;
     }
-    if (word >= kMaxWordBytes && !continuation(c)) {
-      out.push_back(' ');
-      word = 0;
-    }
-    out.push_back(c);
-    ++word;
+    append(std::string_view(&c, 1));
   }
   while (!out.empty() && out.back() == ' ') out.pop_back();
   return out;
