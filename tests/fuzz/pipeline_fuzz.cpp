@@ -21,6 +21,7 @@
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/codec/fba.hpp"
 #include "fapc/pipeline/registry.hpp"
+#include "fapc/speech/engine.hpp"
 
 namespace {
 
@@ -83,6 +84,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 // once per process (the 3D head's mesh and morph targets, fonts, codecs: seconds under the
 // sanitizers) is not charged to whichever input comes first, against libFuzzer's timeout.
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  // Before libFuzzer's own threads (its memory watch): fapc/speech/engine.hpp.
+  fapc::speech::start_engine_process();
   const std::string warm = std::string("\x04\x00") + "main { jaw <hold=0.1,value=0.1>; }\n";  // .mimic, 25 fps
   LLVMFuzzerTestOneInput(reinterpret_cast<const std::uint8_t*>(warm.data()), warm.size());
   return 0;

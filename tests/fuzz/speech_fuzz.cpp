@@ -13,6 +13,12 @@
 #include "fapc/transcoder/audio_mix.hpp"
 #include "timeline_checks.hpp"
 
+// Before libFuzzer's own threads (its memory watch): fapc/speech/engine.hpp.
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  fapc::speech::start_engine_process();
+  return 0;
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   fapc::xmt::FmlOptions options;

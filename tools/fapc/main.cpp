@@ -15,6 +15,7 @@
 #include "fapc/commands.hpp"
 #include "fapc/help.hpp"
 #include "fapc/report.hpp"
+#include "fapc/speech/engine.hpp"
 
 namespace {
 
@@ -75,6 +76,9 @@ int main(int argc, char** argv) {
   }
   if (common.flag("quiet")) set_verbosity(Verbosity::quiet);
   if (common.flag("verbose")) set_verbosity(Verbosity::verbose);
+  // While fapc has a single thread: readers run on a thread of their own (deep_stack.hpp) and a
+  // batch on several, and speech must not fork from there (fapc/speech/engine.hpp).
+  fapc::speech::start_engine_process();
   const int status = it->second.run(args);
   finish_reports();
   return status;

@@ -13,6 +13,7 @@
 #include "fapc/pipeline/batch_merge.hpp"
 #include "fapc/pipeline/batch_resume.hpp"
 #include "fapc/pipeline/json_output.hpp"
+#include "fapc/speech/engine.hpp"
 
 namespace fapc::pipeline {
 
@@ -264,6 +265,9 @@ std::vector<BatchOutcome> run_batch(const std::vector<BatchJob>& jobs, const Con
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   const std::size_t wanted = run.threads > 0 ? static_cast<std::size_t>(run.threads) : cores;
   const std::size_t count = std::max<std::size_t>(1, std::min(wanted, jobs.size()));
+  // The speaker must be forked before the workers run (fapc/speech/engine.hpp); a no-op when the
+  // caller started it already, as fapc's main does.
+  if (count > 1 && options.speech_engine) speech::start_engine_process();
   std::vector<std::thread> threads;
   for (std::size_t t = 1; t < count; ++t) threads.emplace_back(worker);
   worker();  // this thread is one of the pool

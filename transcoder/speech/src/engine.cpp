@@ -1,16 +1,19 @@
 // eSpeak NG in synchronous mode: espeak_Synth calls back with blocks of samples and the events
 // of those samples, phoneme events included (espeakINITIALIZE_PHONEME_EVENTS). eSpeak NG keeps
-// its voice, rate, callback and synthesis state in globals, so one mutex covers every use of it,
-// and this process only ever initialises it and lists its voices: each utterance is spoken in a
-// child process forked from it (forked_call.hpp), so every utterance starts from the same state
-// whatever was said before, in this process or another (docs/speech.md, "Every utterance alike").
+// its voice, rate, callback and synthesis state in globals, so one mutex covers every use of it.
+// This process only ever initialises it and lists its voices, to check requests: each utterance is
+// spoken in a child of the speaker process (speaker_process.hpp), which initialised the engine
+// once and never speaks itself, so every utterance starts from the same state whatever was said
+// before, in this process or another (docs/speech.md, "Every utterance alike").
 #include "fapc/speech/engine.hpp"
 
 #ifdef FAPC_HAVE_ESPEAK
 
 #include <espeak-ng/speak_lib.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -21,7 +24,7 @@
 #include "engine_output.hpp"
 #include "fapc/speech/phoneme_visemes.hpp"
 #include "fapc/speech/speakable_text.hpp"
-#include "forked_call.hpp"
+#include "speaker_process.hpp"
 
 namespace fapc::speech {
 namespace {
@@ -120,8 +123,8 @@ bool plain_name(const std::string& s) {
 
 // The synthesis itself, run in the child (speak() checked the names and the rate). srand: the
 // breathy and Klatt voices draw noise from rand(), whose state the child would otherwise take
-// from whatever this process did with it.
-void spoken_in_this_process(const SpeechRequest& request, int rate, EngineOutput& into) {
+// from whatever its parent did with it.
+void spoken_in_this_process(const EngineRequest& request, EngineOutput& into) {
   std::srand(1);
   if (espeak_SetVoiceByName(request.language.c_str()) != EE_OK) {
     into.stop = EngineOutput::Stop::language_refused;
@@ -131,7 +134,7 @@ void spoken_in_this_process(const SpeechRequest& request, int rate, EngineOutput
     into.stop = EngineOutput::Stop::voice_refused;
     return;
   }
-  espeak_SetParameter(espeakRATE, rate, 0);
+  espeak_SetParameter(espeakRATE, request.words_per_minute, 0);
   // The text in bounded, neutralised pieces (speakable_text.hpp), spoken one after the other:
   // each piece's phonemes are moved by the audio before it.
   const int sample_rate = started().sample_rate;
@@ -149,6 +152,22 @@ void spoken_in_this_process(const SpeechRequest& request, int rate, EngineOutput
   }
 }
 
+// What the speaker's child runs for each request.
+std::string serve(std::string_view bytes) {
+  const std::optional<EngineRequest> request = decode_engine_request(bytes);
+  if (!request) ::_exit(6);
+  Collect collect;
+  collect.max_samples = request->max_samples;
+  collecting = &collect;
+  spoken_in_this_process(*request, collect.output);
+  return encode(collect.output);
+}
+
+// The speaker initialises the engine once, before its first child.
+void prepare() { started(); }
+
+constexpr SpeakerWork kSpeakerWork{prepare, serve};
+
 // How a child that did not finish ended, for an error: "crashed (signal 11)".
 std::string failure(const ForkedOutcome& forked) {
   switch (forked.end) {
@@ -158,7 +177,8 @@ std::string failure(const ForkedOutcome& forked) {
     case ForkedOutcome::End::too_large:
       return "answered more than was asked for";
     case ForkedOutcome::End::could_not_start:
-      return std::string("could not start a process (") + std::strerror(forked.detail) + ")";
+      return forked.detail == ESRCH ? std::string("process has ended")
+                                    : std::string("could not start a process (") + std::strerror(forked.detail) + ")";
     case ForkedOutcome::End::finished:
       break;
   }
@@ -190,16 +210,14 @@ Result<Utterance> speak(const SpeechRequest& request) {
     return make_error(ErrorKind::bad_input, request.where, "the speech rate " + std::to_string(rate) + " words per minute is outside 80 to 450");
 
   const auto max_samples = static_cast<std::size_t>(std::max(0.0, request.max_seconds) * engine.sample_rate);
-  const ForkedOutcome forked = call_in_child(
-      [&] {
-        Collect collect;
-        collect.max_samples = max_samples;
-        collecting = &collect;
-        spoken_in_this_process(request, rate, collect.output);
-        return encode(collect.output);
-      },
-      // The samples, and a generous bound on the events (a few per character of text).
-      max_samples * sizeof(std::int16_t) + 64 * request.text.size() + 4096, kMaxEngineMessageBytes);
+  // Started here when nobody started it earlier (start_engine_process): this process may run
+  // other threads by now, a risk taken once, never again for its utterances.
+  if (start_speaker(kSpeakerWork, true) != SpeakerStart::started)
+    return make_error(ErrorKind::io, request.where, std::string("the speech engine (eSpeak NG) could not start a process (") + std::strerror(errno) + ")");
+  const ForkedOutcome forked =
+      ask_speaker(kSpeakerWork, encode(EngineRequest{request.language, request.voice, rate, max_samples, request.text}),
+                  // The samples, and a generous bound on the events (a few per character of text).
+                  max_samples * sizeof(std::int16_t) + 64 * request.text.size() + 4096, kMaxEngineMessageBytes);
   if (forked.end != ForkedOutcome::End::finished)
     return make_error(ErrorKind::io, request.where, "the speech engine (eSpeak NG) " + failure(forked) + " on this text");
   std::optional<EngineOutput> collected = decode_engine_output(forked.output);
@@ -273,6 +291,8 @@ std::string engine_name() {
 
 Synthesizer engine() { return speak; }
 
+bool start_engine_process() { return start_speaker(kSpeakerWork, false) == SpeakerStart::started; }
+
 }  // namespace fapc::speech
 
 #else
@@ -282,6 +302,7 @@ namespace fapc::speech {
 bool available() { return false; }
 std::string engine_name() { return "none"; }
 Synthesizer engine() { return {}; }
+bool start_engine_process() { return false; }
 
 }  // namespace fapc::speech
 

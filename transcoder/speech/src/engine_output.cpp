@@ -26,6 +26,12 @@ struct Reader {
     bytes.remove_prefix(sizeof value);
     return value;
   }
+  std::string text() {
+    const std::uint64_t n = count(1);
+    std::string out(bytes.substr(0, n));
+    bytes.remove_prefix(n);
+    return out;
+  }
   // A count of items of `item_size` bytes each, refused when the rest cannot hold them.
   std::uint64_t count(std::size_t item_size) {
     const auto n = take<std::uint64_t>();
@@ -33,6 +39,11 @@ struct Reader {
     return ok ? n : 0;
   }
 };
+
+void put_text(std::string& out, std::string_view text) {
+  put(out, static_cast<std::uint64_t>(text.size()));
+  out.append(text);
+}
 
 constexpr std::size_t kNameBytes = 8;  // eSpeak NG's phoneme mnemonics are at most 8 bytes
 
@@ -82,6 +93,28 @@ std::optional<EngineOutput> decode_engine_output(std::string_view bytes) {
     position = in.take<std::int32_t>();
     ms = in.take<std::int32_t>();
   }
+  if (!in.ok || !in.bytes.empty()) return std::nullopt;
+  return out;
+}
+
+std::string encode(const EngineRequest& request) {
+  std::string out;
+  put_text(out, request.language);
+  put_text(out, request.voice);
+  put(out, request.words_per_minute);
+  put(out, request.max_samples);
+  put_text(out, request.text);
+  return out;
+}
+
+std::optional<EngineRequest> decode_engine_request(std::string_view bytes) {
+  Reader in{bytes};
+  EngineRequest out;
+  out.language = in.text();
+  out.voice = in.text();
+  out.words_per_minute = in.take<std::int32_t>();
+  out.max_samples = in.take<std::uint64_t>();
+  out.text = in.text();
   if (!in.ok || !in.bytes.empty()) return std::nullopt;
   return out;
 }

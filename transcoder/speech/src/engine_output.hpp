@@ -1,6 +1,6 @@
-// What one utterance's synthesis gives back from the child process that spoke it (forked_call.hpp):
-// the samples and events eSpeak NG called back with, and where it stopped. Written by the child,
-// read by the parent, which checks every count against the bytes it got.
+// What the speaker process is asked for one utterance (speaker_process.hpp), and what the child
+// that spoke it gives back: the samples and events eSpeak NG called back with, and where it
+// stopped. The reading end checks every count against the bytes it got.
 #pragma once
 
 #include <cstdint>
@@ -28,6 +28,20 @@ struct EngineOutput {
 };
 
 std::string encode(const EngineOutput& output);
+
+// The synthesis asked for: speak() checked the names and the rate before sending it.
+struct EngineRequest {
+  std::string language;
+  std::string voice;  // a variant, or empty
+  std::int32_t words_per_minute = 0;
+  std::uint64_t max_samples = 0;
+  std::string text;
+};
+
+std::string encode(const EngineRequest& request);
+
+// nullopt when `bytes` is not exactly one encoded EngineRequest.
+std::optional<EngineRequest> decode_engine_request(std::string_view bytes);
 
 // nullopt when `bytes` is not exactly one encoded EngineOutput.
 std::optional<EngineOutput> decode_engine_output(std::string_view bytes);

@@ -32,8 +32,9 @@ struct ForkedOutcome {
 
 // Runs `work` in a child of this process and returns what it returned. The child writes only to
 // the two pipes and ends with _exit (no atexit handler, no flush of the parent's buffered
-// output). Safe to call while other threads run, as long as `work` takes no lock another thread
-// may hold (the child has only the calling thread); callers serialise their own calls.
+// output). Call it only from a process with a single thread, as the speaker is
+// (speaker_process.hpp): the child has only the calling thread, and a lock another thread held
+// at the fork would never be released there.
 ForkedOutcome call_in_child(const std::function<std::string()>& work, std::size_t max_output,
                             std::size_t max_messages);
 

@@ -19,11 +19,18 @@ std::string engine_name();
 
 // A synthesizer that speaks with eSpeak NG; an empty function when !available(). Calls from any
 // thread are serialised (eSpeak NG keeps global state), and each is spoken in a child process
-// forked for it, so the same request gives the same samples whatever was spoken before
-// (docs/speech.md, "Every utterance alike"). The engine's own messages come back as warnings
+// of the speaker process (start_engine_process), so the same request gives the same samples
+// whatever was spoken before (docs/speech.md, "Every utterance alike"). The engine's own messages come back as warnings
 // (code speech.engine_message), never printed. Errors, at request.where: an unknown language or
 // voice variant, a rate outside 80..450 words per minute, speech longer than request.max_seconds
 // (limit_exceeded), an engine failure or crash.
 Synthesizer engine();
+
+// Starts the speaker: the process, forked from this one, whose children speak. Call it while this
+// process has a single thread (at the start of main, before a batch's workers): a fork taken while
+// other threads run may leave the child waiting for ever on a lock one of them held. False when
+// other threads already run, or without the engine; the first utterance then starts the speaker
+// itself, taking that risk once. Calling it again does nothing.
+bool start_engine_process();
 
 }  // namespace fapc::speech
