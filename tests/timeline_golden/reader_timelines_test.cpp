@@ -1,8 +1,8 @@
 // What each reader makes of the bundled examples, compared as a timeline dump (docs/timeline.md)
 // with reviewed goldens under corpus/golden/timeline/<kind>/ (FAPC_REGENERATE_GOLDEN=1 rewrites
-// them; review with `git diff corpus/`). Script front ends (Mimic, FML, XMT-Omega) go through the
-// program, `fapc compile X -o - --to timeline`, so XMT-Omega's `animation src` reaches every
-// registered reader. Frame inputs (.fap, .fba, .mp4) have no timeline of their own: their frames
+// them; review with `git diff corpus/`). Script front ends (Mimic, FML, XMT-Omega, FML-APML, APML,
+// SMIL-Agent) go through the program, `fapc compile X -o - --to timeline`, so XMT-Omega's
+// `animation src` reaches every registered reader. Frame inputs (.fap, .fba, .mp4) have no timeline of their own: their frames
 // are lifted with timeline_from_frames(), the form an XMT-Omega include gives them.
 #include <gtest/gtest.h>
 
@@ -57,6 +57,24 @@ TEST(ReaderTimelines, Fml) {
 TEST(ReaderTimelines, XmtOmega) {
   for (const char* input : {"corpus/examples/xmto/compose.xmt", "corpus/examples/xmto/fml-moves.xmt"})
     expect_program_dump("xmto", input);
+}
+
+// The intention readers (docs/intentions.md): intentions on speech marks, through the lexicon.
+TEST(ReaderTimelines, FmlApml) {
+  for (const char* input : {"corpus/fml-apml/SEMAINE__SEMAINE-3.1/fml-embarrassment.xml",
+                            "corpus/fml-apml/SEMAINE__SEMAINE-3.1/fml-apml_nospeech.xml"})
+    expect_program_dump("fml-apml", input);
+}
+
+TEST(ReaderTimelines, Apml) {
+  for (const char* input : {"corpus/apml/SEMAINE__SEMAINE-3.1/intensity_joy.xml"}) expect_program_dump("apml", input);
+}
+
+// SMIL-Agent (docs/smil.md): speech with marks, affects and actions.
+TEST(ReaderTimelines, SmilAgent) {
+  for (const char* input : {"corpus/smil/bestdpf__xface-new/Faps/withMarks.smil",
+                            "corpus/smil/bestdpf__xface-new/Faps/actionOnlySeq.smil"})
+    expect_program_dump("smil", input);
 }
 
 TEST(ReaderTimelines, Fap) {
