@@ -76,9 +76,11 @@ int main(int argc, char** argv) {
   }
   if (common.flag("quiet")) set_verbosity(Verbosity::quiet);
   if (common.flag("verbose")) set_verbosity(Verbosity::verbose);
-  // While fapc has a single thread: readers run on a thread of their own (deep_stack.hpp) and a
-  // batch on several, and speech must not fork from there (fapc/speech/engine.hpp).
-  fapc::speech::start_engine_process();
+  // A command that may speak (one that takes --speech-rate) starts the speech engine's process
+  // now, while fapc has a single thread: readers run on a thread of their own (deep_stack.hpp) and
+  // a batch on several, and speech must not fork from there (fapc/speech/engine.hpp).
+  if (const OptionSpec* rate = find_option("speech-rate"); rate != nullptr && rate->applies_to(name))
+    fapc::speech::start_engine_process();
   const int status = it->second.run(args);
   finish_reports();
   return status;
