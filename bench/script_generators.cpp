@@ -150,6 +150,38 @@ std::string xmto(std::size_t elements, bool to_animations) {
   return out + "   </seq>\n  </body>\n</XMT-O>\n";
 }
 
+// BML 1.0: a block's first face lexeme starts at the end of the previous block's (a chain through
+// the whole document, solved in one pass), and the block's other behaviours are placed by sync
+// references to it.
+std::string bml(std::size_t elements) {
+  static constexpr const char* kLexemes[] = {"RAISE_BROWS", "LOWER_BROWS", "OPEN_MOUTH", "RAISE_MOUTH_CORNERS",
+                                             "CLOSE_EYES", "WIDEN_EYES", "OBLIQUE_BROWS", "LOWER_MOUTH_CORNERS"};
+  Numbers r(3);
+  std::string out = "<?xml version=\"1.0\"?>\n<bml xmlns=\"http://www.bml-initiative.org/bml/bml-1.0\" id=\"bml1\" "
+                    "characterId=\"agent\">\n";
+  for (std::size_t i = 0; i < block_count(elements); ++i) {
+    const std::string id = "l" + std::to_string(i);
+    const auto at = [&](double offset) { return "\"" + id + ":start+" + num(offset) + "\""; };
+    const auto lexeme = [&](std::size_t k) { return std::string(kLexemes[(i + k) % 8]); };
+    out += "  <faceLexeme id=\"" + id + "\" lexeme=\"" + lexeme(0) + "\" amount=\"" + num(r.between(0.3, 1)) +
+           "\" start=" + (i == 0 ? std::string("\"0\"") : "\"l" + std::to_string(i - 1) + ":end\"") + " end=" + at(0.8) +
+           "/>\n";
+    static constexpr double kSpans[][2] = {{0.1, 0.3}, {0.2, 0.5}, {0.3, 0.7}};
+    for (std::size_t k = 1; k <= 3; ++k)
+      out += "  <faceLexeme id=\"" + id + "f" + std::to_string(k) + "\" lexeme=\"" + lexeme(k) + "\" amount=\"" +
+             num(r.between(0.2, 0.8)) + "\" start=" + at(kSpans[k - 1][0]) + " end=" + at(kSpans[k - 1][1]) + "/>\n";
+    out += "  <faceFacs id=\"" + id + "a\" au=\"12\" amount=\"" + num(r.between(0.2, 0.8)) + "\" start=" + at(0) +
+           " end=" + at(0.6) + "/>\n";
+    out += "  <faceFacs id=\"" + id + "b\" au=\"" + (i % 2 ? "1" : "4") + "\" side=\"" + (i % 3 ? "BOTH" : "LEFT") +
+           "\" amount=\"" + num(r.between(0.2, 0.8)) + "\" start=" + at(0.2) + " end=" + at(0.7) + "/>\n";
+    out += "  <head id=\"" + id + "h\" lexeme=\"" + (i % 2 ? "NOD" : "SHAKE") + "\" repetition=\"2\" amount=\"" +
+           num(r.between(0.2, 0.8)) + "\" start=" + at(0.05) + " end=" + at(0.65) + "/>\n";
+    out += "  <head id=\"" + id + "t\" lexeme=\"TILT\" amount=\"" + num(r.between(0.1, 0.5)) + "\" start=" + at(0.4) +
+           " end=" + at(0.75) + "/>\n";
+  }
+  return out + "</bml>\n";
+}
+
 }  // namespace
 
 const char* name(ScriptKind kind) {
@@ -158,6 +190,7 @@ const char* name(ScriptKind kind) {
     case ScriptKind::fml: return "fml";
     case ScriptKind::xmto: return "xmto";
     case ScriptKind::xmto_to: return "xmto-to";
+    case ScriptKind::bml: return "bml";
   }
   return "?";
 }
@@ -168,6 +201,7 @@ const char* extension(ScriptKind kind) {
     case ScriptKind::fml: return ".fml";
     case ScriptKind::xmto:
     case ScriptKind::xmto_to: return ".xmt";
+    case ScriptKind::bml: return ".bml";
   }
   return "";
 }
@@ -188,6 +222,7 @@ std::string generate_script(ScriptKind kind, std::size_t elements) {
     case ScriptKind::fml: return fml(elements);
     case ScriptKind::xmto: return xmto(elements, false);
     case ScriptKind::xmto_to: return xmto(elements, true);
+    case ScriptKind::bml: return bml(elements);
   }
   return {};
 }

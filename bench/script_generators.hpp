@@ -15,9 +15,11 @@
 //   expressions), nested `seq`s.
 // - xmto_to: the same with `to`-animations (which start from the underlying value) in every
 //   block.
+// - bml: BML 1.0 face lexemes, FACS action units and head lexemes placed by sync references; each
+//   block's first lexeme starts at the previous block's end, a chain through the document.
 //
 // "Elements" counts what the front end schedules as leaves before repeats: atomic actions and
-// macro uses in Mimic, moves and template uses in FML, animate/set in XMT-Omega.
+// macro uses in Mimic, moves and template uses in FML, animate/set in XMT-Omega, behaviours in BML.
 #pragma once
 
 #include <cstddef>
@@ -26,14 +28,14 @@
 
 namespace fapc::bench {
 
-enum class ScriptKind { mimic, fml, xmto, xmto_to };
+enum class ScriptKind { mimic, fml, xmto, xmto_to, bml };
 
 // The kinds in a fixed order, for loops over every front end.
 inline constexpr ScriptKind kScriptKinds[] = {ScriptKind::mimic, ScriptKind::fml, ScriptKind::xmto,
-                                              ScriptKind::xmto_to};
+                                              ScriptKind::xmto_to, ScriptKind::bml};
 
-const char* name(ScriptKind kind);       // "mimic", "fml", "xmto", "xmto-to"
-const char* extension(ScriptKind kind);  // ".mimic", ".fml", ".xmt", ".xmt"
+const char* name(ScriptKind kind);       // "mimic", "fml", "xmto", "xmto-to", "bml"
+const char* extension(ScriptKind kind);  // ".mimic", ".fml", ".xmt", ".xmt", ".bml"
 // Parses a name() back; false when unknown.
 bool parse_script_kind(std::string_view text, ScriptKind& kind);
 
