@@ -158,6 +158,31 @@ TEST(BmlSmartBody, TheRecordingBesideTheDocumentIsTheVoice) {
   fs::remove(wav);
 }
 
+TEST(BmlSmartBody, ARecordingIsBoundedAndMustBeAWav) {
+  const std::string wav = write("take.wav", wav_bytes(tone()));
+  BmlOptions options;
+  options.speech_limits.max_decompressed_bytes = 1000;  // the tone is 48 KB
+  const Result<BmlDocument> big = load_bml(write("big.bml", kRecorded), options);
+  ASSERT_FALSE(big);
+  EXPECT_EQ(big.error().kind, ErrorKind::limit_exceeded);
+  EXPECT_EQ(big.error().where.line, 13);
+  options.speech_limits = Limits{};
+  options.speech_limits.max_audio_samples = 1000;
+  const Result<BmlDocument> long_one = load_bml(write("long.bml", kRecorded), options);
+  ASSERT_FALSE(long_one);
+  EXPECT_EQ(long_one.error().kind, ErrorKind::limit_exceeded);
+  write("take.wav", "not a wav at all");
+  const Result<BmlDocument> bad = load_bml(write("bad.bml", kRecorded), BmlOptions{});
+  ASSERT_FALSE(bad);
+  // The include rules: a name leading outside the document's folder is refused.
+  std::string outside = kRecorded;
+  outside.replace(outside.find("ref=\"take\""), 10, "ref=\"../../etc/passwd\"");
+  const Result<BmlDocument> escaped = load_bml(write("outside.bml", outside), BmlOptions{});
+  ASSERT_FALSE(escaped);
+  EXPECT_NE(escaped.error().message.find("--allow-include"), std::string::npos) << escaped.error().message;
+  fs::remove(wav);
+}
+
 // FAP 1 at the middle of each lips row: its viseme at its articulation.
 TEST(BmlSmartBody, LipsMoveTheMouth) {
   fs::remove(temp_dir() / "take.wav");
@@ -216,6 +241,11 @@ TEST(BmlSmartBody, RecordedMarksOutOfOrderOrWithoutTimeAreErrors) {
   const Result<BmlDocument> untimed = read_bml(head + "<sync id=\"a\"/>hi" + tail, "o.bml");
   ASSERT_FALSE(untimed);
   EXPECT_NE(untimed.error().message.find("needs time"), std::string::npos);
+  // A mark beyond the longest speech is refused before anything is scheduled or rendered.
+  const Result<BmlDocument> far = read_bml(head + "<sync id=\"a\" time=\"1e300\"/>hi" + tail, "o.bml");
+  ASSERT_FALSE(far);
+  EXPECT_EQ(far.error().kind, ErrorKind::limit_exceeded);
+  EXPECT_EQ(far.error().where.line, 1);
 }
 
 TEST(BmlSmartBody, FacsFaceAndTypedHeadTakeTheBml10Paths) {

@@ -22,7 +22,7 @@ std::string seconds_text(double v) {
 }
 
 // The marks of the speech's text (sync, tm or mark elements), each with its recorded time.
-Status read_marks(const xml::XmlDocument& doc, const xmlNode* text, SpokenText& out) {
+Status read_marks(const xml::XmlDocument& doc, const xmlNode* text, const BmlOptions& options, SpokenText& out) {
   for (const xmlNode* mark : doc.children(text)) {
     const std::string_view name = xml::local_name(mark);
     if (name != "sync" && name != "tm" && name != "mark") continue;
@@ -35,6 +35,13 @@ Status read_marks(const xml::XmlDocument& doc, const xmlNode* text, SpokenText& 
     const auto time = xml::decimal(xml::trim(*time_text));
     if (!time || !std::isfinite(*time) || *time < 0)
       return doc.error(mark, "time", "time '" + *time_text + "' is not a number of seconds from 0 on");
+    if (*time > options.max_speech_seconds) {
+      Diagnostic d = doc.error(mark, "time", "mark '" + id + "' at " + seconds_text(*time) + ": the speech would last more than " +
+                                                 seconds_text(options.max_speech_seconds) +
+                                                 " (the frame limit at this frame rate; raise it with --max-frames)");
+      d.kind = ErrorKind::limit_exceeded;
+      return d;
+    }
     if (!out.mark_times.empty() && *time < out.mark_times.back())
       return doc.error(mark, "time", "mark '" + id + "' at " + seconds_text(*time) + " comes before the mark before it ('" +
                                          out.mark_ids.back() + "' at " + seconds_text(out.mark_times.back()) + ")");
@@ -76,6 +83,14 @@ Status read_audio(const xml::XmlDocument& doc, const xmlNode* description, const
     warnings.push_back(std::move(w));
     return ok_status();
   }
+  // Refused by its size before it is read (a recording is never compressed, so its size is its bytes).
+  if (const auto size = fs::file_size(*path, error);
+      !error && static_cast<std::int64_t>(size) > options.speech_limits.max_decompressed_bytes) {
+    Diagnostic d = limit_error(doc.where(file, "ref"), "recording '" + name + "' is " + std::to_string(size) + " bytes",
+                               Limit::decompressed_bytes, options.speech_limits);
+    d.source_line = doc.line_text(d.where.line);
+    return d;
+  }
   Result<std::string> bytes = read_file_bytes(*path, options.speech_limits);
   if (!bytes) {
     Diagnostic d = doc.error(file, "ref", "recording '" + name + "': " + bytes.error().message);
@@ -115,7 +130,7 @@ Result<SpokenText> recorded_speech(const xml::XmlDocument& doc, const xmlNode* s
   out.recorded = true;
   for (const xmlNode* child : doc.children(speech))
     if (xml::local_name(child) == "text")
-      if (Status marks = read_marks(doc, child, out); !marks) return marks.error();
+      if (Status marks = read_marks(doc, child, options, out); !marks) return marks.error();
   if (Status audio = read_audio(doc, description, options, warnings, recordings, out); !audio) return audio.error();
   return out;
 }
