@@ -76,7 +76,9 @@ Status read_audio(const xml::XmlDocument& doc, const xmlNode* description, const
     return refused;
   }
   std::error_code error;
-  if (!fs::is_regular_file(*path, error)) {
+  // Only a name that is not there is missing; a directory or FIFO there is refused by
+  // read_file_bytes (before it could block).
+  if (!fs::exists(*path, error)) {
     Diagnostic w = doc.warning(file, "ref", "the recording '" + name + "' is not next to the document: the speech keeps "
                                             "its recorded times, with no voice");
     w.code = "bml.recorded_audio_missing";
@@ -98,7 +100,13 @@ Status read_audio(const xml::XmlDocument& doc, const xmlNode* description, const
     return d;
   }
   Result<AudioClip> audio = read_wav(*bytes, *path);
-  if (!audio) return audio.error();
+  if (!audio) {  // placed at the reference, saying what is wrong where in the file
+    Diagnostic d = doc.error(file, "ref", "recording '" + name + "': " + audio.error().message + (audio.error().where.byte_offset >= 0
+                                                   ? " (at byte " + std::to_string(audio.error().where.byte_offset) + ")"
+                                                   : std::string()));
+    d.kind = audio.error().kind;
+    return d;
+  }
   if (static_cast<std::int64_t>(audio->samples.size()) > options.speech_limits.max_audio_samples) {
     Diagnostic d = limit_error(doc.where(file, "ref"), "recording '" + name + "' holds " + std::to_string(audio->samples.size()) +
                                                            " samples",
