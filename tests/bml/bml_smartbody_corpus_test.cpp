@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "fapc/pipeline/convert.hpp"
+#include "support/param_names.hpp"
 #include "support/test_support.hpp"
 
 namespace fapc {
@@ -31,9 +32,7 @@ TEST_P(BmlSmartBodyFile, CompilesWithItsRecordedTiming) {
   const std::string relative = GetParam();
   pipeline::ConvertOptions options;
   options.speech_engine = false;  // recorded speech needs none: were it asked, this would show
-  std::string stem;
-  for (char c : relative) stem += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-  const std::string output = (fs::temp_directory_path() / ("fapc-" + stem + ".fap")).string();
+  const std::string output = (fs::temp_directory_path() / ("fapc-" + test::identifier(relative) + ".fap")).string();
   fs::remove(output);
   const pipeline::ConvertResult result = pipeline::convert(test::corpus_dir() + "/" + relative, {{output, ""}}, options);
   ASSERT_TRUE(result.ok()) << result.error->message;
@@ -52,11 +51,7 @@ TEST_P(BmlSmartBodyFile, CompilesWithItsRecordedTiming) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Files, BmlSmartBodyFile, testing::ValuesIn(corpus_files()),
-                         [](const testing::TestParamInfo<std::string>& p) {
-                           std::string name;
-                           for (char c : p.param) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-                           return name + "_" + std::to_string(p.index);
-                         });
+                         test::file_param_name);
 
 }  // namespace
 }  // namespace fapc
