@@ -18,6 +18,7 @@
 #include "fapc/transcoder/wav.hpp"
 #include "fapc/vocabulary/mapping_table.hpp"
 #include "bml/smartbody_visemes.hpp"
+#include "support/sync_to_word.hpp"
 
 namespace fapc::bml {
 namespace {
@@ -156,6 +157,27 @@ TEST(BmlSmartBody, TheRecordingBesideTheDocumentIsTheVoice) {
   for (std::size_t i = 0; i < static_cast<std::size_t>(rate); ++i) energy += std::abs(double(loaded->audio->samples[i]));
   EXPECT_GT(energy / rate, 3000);  // the tone's mean level is 8000 * 2/pi
   fs::remove(wav);
+}
+
+// Measured on the audio as the speech sync tests do: a recording of two words (tones after
+// silences), marks at their onsets, a nod synced to the second word's mark starts within one frame
+// of where that word is heard.
+TEST(BmlSmartBody, ANodSyncedToARecordedMarkStartsWithTheWordInTheAudio) {
+  AudioTrack words;
+  words.sample_rate = 16000;
+  for (int i = 0; i < 24000; ++i) {
+    const double t = i / 16000.0;
+    const bool voiced = (t >= 0.3 && t < 0.6) || (t >= 1.0 && t < 1.4);
+    words.samples.push_back(static_cast<std::int16_t>(voiced ? 8000 * std::sin(2 * std::numbers::pi * 180 * t) : 0));
+  }
+  write("two.wav", wav_bytes(words));
+  test::expect_moves_with_word(write("two.bml", R"(<bml>
+<speech id="sp1" start="0.0" end="0.2"><text><sync id="T0" time="0.3"/>good <sync id="T1" time="0.6"/>
+<sync id="T2" time="1.0"/>morning<sync id="T3" time="1.4"/></text>
+<description level="1" type="audio/x-wav"><file ref="two"/></description></speech>
+<head id="n1" type="NOD" start="sp1:T2"/>
+</bml>
+)"), 48, 1);
 }
 
 TEST(BmlSmartBody, ARecordingIsBoundedAndMustBeAWav) {
