@@ -247,11 +247,12 @@ TEST(BmlSmartBody, LipsWinOverSynthesisedVisemes) {
 }
 
 TEST(BmlSmartBody, RecordedSpeechWithoutLipsSaysItsMouthIsStill) {
-  const Result<BmlDocument> d = read_bml(R"(<bml><speech id="s"><text><sync id="a" time="0"/>hi<sync id="b" time="0.4"/></text>
+  const Result<BmlDocument> d = read_bml(R"(<bml><speech id="s"><text><sync id="a" time="0"/>hi<sync id="b" time="0.4"/><emph>there</emph></text>
 <description type="audio/x-wav"><file ref="absent"/></description></speech></bml>)", (temp_dir() / "q.bml").string());
   ASSERT_TRUE(d) << format_diagnostic(d.error());
   EXPECT_EQ(count(d->warnings, "bml.recorded_speech_without_lips"), 1);
   EXPECT_EQ(count(d->warnings, "bml.recorded_timing_wins"), 0);  // no placeholders here
+  EXPECT_EQ(count(d->warnings, "bml.speech_markup_skipped"), 1);  // emph: the recording is what is heard
 }
 
 TEST(BmlSmartBody, RecordedMarksOutOfOrderOrWithoutTimeAreErrors) {

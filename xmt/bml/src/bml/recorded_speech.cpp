@@ -22,10 +22,22 @@ std::string seconds_text(double v) {
 }
 
 // The marks of the speech's text (sync, tm or mark elements), each with its recorded time.
-Status read_marks(const xml::XmlDocument& doc, const xmlNode* text, const BmlOptions& options, SpokenText& out) {
+// Other elements in the text (prosody marks) are said once: the recording is what is heard.
+Status read_marks(const xml::XmlDocument& doc, const xmlNode* text, const BmlOptions& options, Diagnostics& warnings,
+                  SpokenText& out) {
+  bool said = false;
   for (const xmlNode* mark : doc.children(text)) {
     const std::string_view name = xml::local_name(mark);
-    if (name != "sync" && name != "tm" && name != "mark") continue;
+    if (name != "sync" && name != "tm" && name != "mark") {
+      if (!said) {
+        Diagnostic w = doc.warning(mark, "<" + std::string(name) + "> in recorded speech is not read: the recording is what "
+                                                                    "is heard, and only the marks' times are taken");
+        w.code = "bml.speech_markup_skipped";
+        warnings.push_back(std::move(w));
+        said = true;
+      }
+      continue;
+    }
     const std::string id(xml::trim(xml::attribute(mark, "id").value_or("")));
     if (id.empty()) return doc.error(mark, "<" + std::string(name) + "> in speech needs an id");
     const auto time_text = xml::attribute(mark, "time");
@@ -138,7 +150,7 @@ Result<SpokenText> recorded_speech(const xml::XmlDocument& doc, const xmlNode* s
   out.recorded = true;
   for (const xmlNode* child : doc.children(speech))
     if (xml::local_name(child) == "text")
-      if (Status marks = read_marks(doc, child, options, out); !marks) return marks.error();
+      if (Status marks = read_marks(doc, child, options, warnings, out); !marks) return marks.error();
   if (Status audio = read_audio(doc, description, options, warnings, recordings, out); !audio) return audio.error();
   return out;
 }
