@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "fapc/bml/bml.hpp"
+#include "fapc/pipeline/convert.hpp"
 #include "fapc/pipeline/registry.hpp"
 #include "fapc/transcoder/wav.hpp"
 #include "fapc/vocabulary/mapping_table.hpp"
@@ -156,6 +157,19 @@ TEST(BmlSmartBody, TheRecordingBesideTheDocumentIsTheVoice) {
   double energy = 0;
   for (std::size_t i = 0; i < static_cast<std::size_t>(rate); ++i) energy += std::abs(double(loaded->audio->samples[i]));
   EXPECT_GT(energy / rate, 3000);  // the tone's mean level is 8000 * 2/pi
+
+  // In an .mp4: its sound track, read back, is the tone (AAC keeps its level within a few %).
+  const std::string mp4 = (temp_dir() / "voiced.mp4").string();
+  const pipeline::ConvertResult written = pipeline::convert((temp_dir() / "voiced.bml").string(), {{mp4, ""}}, options);
+  ASSERT_TRUE(written.ok()) << written.error->message;
+  const Result<pipeline::Loaded> back = pipeline::load(mp4, options);
+  ASSERT_TRUE(back) << format_diagnostic(back.error());
+  ASSERT_TRUE(back->audio.has_value());
+  double square = 0;
+  for (std::int16_t v : back->audio->samples) square += double(v) * v;
+  const double rms = std::sqrt(square / double(back->audio->samples.size()));
+  EXPECT_NEAR(rms, 8000 / std::numbers::sqrt2, 800) << "the tone's level is 8000 / sqrt 2";
+  fs::remove(mp4);
   fs::remove(wav);
 }
 
