@@ -114,6 +114,9 @@ TEST(BmlSmartBody, MarksLandAtTheirRecordedTimesAndTheRecordingWinsOverPlacehold
       EXPECT_DOUBLE_EQ(b.start, 0.34);
     } else if (b.id == "f1") {
       EXPECT_DOUBLE_EQ(b.start, 0.66);
+    } else if (b.element == "curves") {  // from its first key to its last
+      EXPECT_DOUBLE_EQ(b.start, 0);
+      EXPECT_DOUBLE_EQ(b.end, 0.5);
     }
   }
   // The placeholders are said once, at the first that disagrees (ready="0.1", line 3).

@@ -11,6 +11,7 @@
 #include <libxml/tree.h>
 
 #include "bml/behaviour_defaults.hpp"
+#include "bml/facefx_curves.hpp"
 #include "bml/block_reader.hpp"
 #include "bml/bml_model.hpp"
 #include "bml/recorded_speech.hpp"
@@ -268,6 +269,7 @@ class BmlReader {
       timing.own_label = label(node, "", b.id + " lasts " + format_seconds(b.speech->duration) + " as spoken");
     }
     const auto index = static_cast<std::uint32_t>(block.behaviours.size());
+    const std::size_t timed_before = pending.size();
     // Greta 0.x (SEMAINE) writes a behaviour's later points as times within it: a plain time
     // earlier than a plain start is read from the start (docs/bml.md, "Dialects").
     std::optional<double> plain_start;
@@ -304,9 +306,27 @@ class BmlReader {
       p_.attribute = attribute;
       pending.push_back(std::move(p_));
     }
+    if (name == "curves" && pending.size() == timed_before) time_curves(node, b, index, pending);
     block.behaviours.push_back(std::move(b));
     block.timing.push_back(std::move(timing));
     return true;
+  }
+
+  // FaceFX curves with no timing attributes last from their first key to their last (times from
+  // the utterance's start, which NVBG puts at the block's): their own timing, not a gesture's default.
+  void time_curves(const xmlNode* node, const Behaviour& b, std::uint32_t index, std::vector<Pending>& pending) {
+    const auto extent = curves_extent(doc_, node);
+    if (!extent) return;
+    for (const auto& [point, time] : {std::pair{kStart, extent->first}, std::pair{kEnd, extent->second}}) {
+      Pending p;
+      p.behaviour = index;
+      p.point = point;
+      p.b.absolute = true;
+      p.b.offset = time;
+      p.label = label(node, "", b.id + " " + kPointNames[point] + " at its keys' " + format_seconds(time));
+      p.node = node;
+      pending.push_back(std::move(p));
+    }
   }
 
   // NVBG writes placeholder times on recorded speech (ready="0.1" ... end="0.2" for a second of
