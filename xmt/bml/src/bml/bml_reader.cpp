@@ -317,13 +317,13 @@ class BmlReader {
   void time_curves(const xmlNode* node, const Behaviour& b, std::uint32_t index, std::vector<Pending>& pending) {
     const auto extent = curves_extent(doc_, node);
     if (!extent) return;
-    for (const auto& [point, time] : {std::pair{kStart, extent->first}, std::pair{kEnd, extent->second}}) {
+    for (const auto& [point, seconds] : {std::pair{kStart, extent->first}, std::pair{kEnd, extent->second}}) {
       Pending p;
       p.behaviour = index;
       p.point = point;
       p.b.absolute = true;
-      p.b.offset = time;
-      p.label = label(node, "", b.id + " " + kPointNames[point] + " at its keys' " + format_seconds(time));
+      p.b.offset = seconds;
+      p.label = label(node, "", b.id + " " + kPointNames[point] + " at its keys' " + format_seconds(seconds));
       p.node = node;
       pending.push_back(std::move(p));
     }
