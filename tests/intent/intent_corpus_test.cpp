@@ -11,6 +11,7 @@
 
 #include "fapc/pipeline/convert.hpp"
 #include "intent_test_support.hpp"
+#include "support/param_names.hpp"
 #include "support/test_support.hpp"
 
 namespace fapc {
@@ -76,11 +77,7 @@ TEST_P(IntentCorpus, CompilesOrIsRefusedForARealDefect) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Files, IntentCorpus, testing::ValuesIn(corpus_files()),
-                         [](const testing::TestParamInfo<std::string>& p) {
-                           std::string name;
-                           for (char c : p.param) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-                           return name + "_" + std::to_string(p.index);
-                         });
+                         test::file_param_name);
 
 }  // namespace
 }  // namespace fapc

@@ -846,11 +846,38 @@ def smil_cases():
     return cases
 
 
+# SmartBody/NVBG BML (docs/bml.md, "SmartBody"): recorded speech and its file.
+EXT["bml"] = ".bml"
+
+
+def smartbody_cases():
+    """Recorded speech whose file is not a file, lies outside, is not a WAV or is missing (a
+    warning), and marks whose times are absurd or out of order."""
+    def recorded(marks='<sync id="a" time="0"/>hi<sync id="b" time="0.4"/>', ref="rec"):
+        return ('<bml><speech id="s" start="0"><text>' + marks + '</text><description type="audio/x-wav">'
+                '<file ref="' + ref + '"/></description></speech>'
+                '<lips viseme="BMP" start="0" end="0.2"/></bml>\n')
+    return [
+        compile_case("bml.notfile.recording-directory", recorded(), files={"rec.wav": DIR}),
+        compile_case("bml.notfile.recording-fifo", recorded(), files={"rec.wav": FIFO}),
+        compile_case("bml.notfile.recording-missing", recorded(), exit=0, diagnostic="warning",
+                     outputs=["out/out.fap"]),
+        compile_case("bml.notfile.recording-outside", recorded(ref="../../outside.wav")),
+        compile_case("bml.notfile.recording-not-wav", recorded(ref="in.bml")),
+        compile_case("bml.huge.recording-samples", recorded(), extra=["--max-audio-samples", "100"],
+                     files={"rec.wav": lambda: wav(8000, 8000)}),
+        compile_case("bml.huge.recorded-mark-1e300", recorded('<sync id="a" time="1e300"/>hi')),
+        compile_case("bml.numbers.recorded-mark-nan", recorded('<sync id="a" time="nan"/>hi')),
+        compile_case("bml.wrong.recorded-marks-backwards",
+                     recorded('<sync id="a" time="0.5"/>hi<sync id="b" time="0.2"/>')),
+    ]
+
+
 # Every generator of cases: CTest runs each group as one test (`groups`), which builds only its own
 # group's inputs, not the megabytes of every other group's.
 GROUPS = (not_a_file_cases, depth_cases, cycle_cases, huge_cases, number_cases, truncation_cases,
           junk_cases, wrong_result_cases, diagnostic_cases, batch_cases, csv_cases, speech_cases,
-          output_cases, intent_cases, speech_placed_cases, smil_cases)
+          output_cases, intent_cases, speech_placed_cases, smil_cases, smartbody_cases)
 
 
 def all_cases(group=None):

@@ -31,6 +31,8 @@ bml::BmlOptions bml_options(const ConvertOptions& options) {
   out.coarticulation = speech.coarticulation;
   out.max_behaviours = options.limits.max_runs;
   out.frames = frame_budget_for(options);
+  out.includes = options.includes;
+  out.speech_limits = options.limits;
   return out;
 }
 

@@ -97,7 +97,8 @@ std::vector<Clip> coarticulated_viseme_clips(std::vector<VisemeSpan> spans, doub
     clip.begin = s.begin - in;
     clip.end = s.end + out;
     const double span = clip.end - clip.begin;
-    clip.curve.keys = {KeyPoint{0, 0}, KeyPoint{2 * in, kWeight}, KeyPoint{span - 2 * out, kWeight}, KeyPoint{span, 0}};
+    const double weight = kWeight * s.weight;
+    clip.curve.keys = {KeyPoint{0, 0}, KeyPoint{2 * in, weight}, KeyPoint{span - 2 * out, weight}, KeyPoint{span, 0}};
     clip.source = where;
     clips.push_back(std::move(clip));
   }

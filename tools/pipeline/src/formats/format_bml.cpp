@@ -22,6 +22,7 @@ nlohmann::ordered_json facts_of(const bml::BmlDocument& document) {
   out["behaviours"] = document.behaviours.size();
   out["behaviours_drawn"] = drawn;
   if (!document.languages.empty()) out["speech_languages"] = document.languages;
+  if (!document.recordings.empty()) out["recordings"] = document.recordings;
   out["clips"] = document.timeline.clips.size();
   return out;
 }

@@ -21,6 +21,7 @@ struct VisemeSpan {
   int viseme = 0;
   double begin = 0;
   double end = 0;
+  double weight = 1;  // 0..1: how far the mouth goes (a recorded viseme's articulation)
   friend bool operator==(const VisemeSpan&, const VisemeSpan&) = default;
 };
 
@@ -72,8 +73,8 @@ using Synthesizer = std::function<Result<Utterance>(const SpeechRequest&)>;
 // spoken phoneme, else the previous one; pauses (names starting with '_') are gaps.
 std::vector<VisemeSpan> viseme_spans(const std::vector<SpokenPhoneme>& phonemes);
 
-// The coarticulation rule (docs/speech.md): each span becomes one viseme clip of weight 63 whose
-// edges are linear cross-fades of `fade` seconds centred on the span's boundaries, so neighbours
+// The coarticulation rule (docs/speech.md): each span becomes one viseme clip of weight 63 (times
+// the span's weight) whose edges are linear cross-fades of `fade` seconds centred on the span's boundaries, so neighbours
 // overlap and FAP 1 blends them (viseme_select1/2, viseme_blend); a fade is never longer than the
 // shorter of the two spans it joins, and at silence the weight falls to 0 (neutral). The first
 // fade-in starts no earlier than time 0; the last fade-out may end fade/2 after the last span. Spans shorter

@@ -28,6 +28,10 @@ std::array<double, kStandardPoints> default_offsets(const Behaviour& b) {
     case BehaviourKind::not_drawn:
       // A gesture's phases, as the BML 1.0 text draws them: preparation, stroke, retraction.
       return {0, 0.3, 0.4, 0.6, 0.8, 1.2, 1.5};
+    case BehaviourKind::lips:
+      // One viseme of a recording: about a tenth of a second, held whole (start = ready,
+      // relax = end, as NVBG writes them).
+      return {0, 0, 0, 0.05, 0.1, 0.1, 0.1};
     case BehaviourKind::speech: {
       const double d = b.speech ? b.speech->duration : 0.0;
       return {0, 0, 0, 0, d, d, d};

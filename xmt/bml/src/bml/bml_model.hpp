@@ -23,6 +23,7 @@ enum class BehaviourKind : std::uint8_t {
   head,         // head: a lexeme (NOD, SHAKE, TILT...) repeated
   head_direction,  // headDirectionShift: the head turned and held
   speech,       // speech: visemes and the voice
+  lips,         // lips (SmartBody): one recorded viseme, through smartbody_visemes.tsv
   wait,         // wait: time only
   not_drawn,    // gesture, posture, locomotion, pointing, torso...: time only, reported once per kind
 };
@@ -32,6 +33,7 @@ struct SpokenText {
   std::vector<VisemeSpan> visemes;
   AudioClip audio;  // no samples when spoken by the letter table
   double duration = 0;
+  bool recorded = false;  // its audio and times come from a recording, not from synthesis
   std::vector<std::string> mark_ids;
   std::vector<double> mark_times;  // seconds from the speech's start, per mark
 };
@@ -47,6 +49,7 @@ struct Behaviour {
   int au = 0;           // faceFacs
   char side = 'B';      // faceFacs: L, R or B(oth)
   int repetition = 1;   // head
+  int viseme = 0;       // lips: the MPEG-4 viseme (0: rest); amount is its articulation
   double offset_angle = 0;        // gaze, headDirectionShift: degrees
   std::string offset_direction;   // RIGHT, LEFT, UP, DOWN, UPRIGHT, ...
   std::string influence;          // gaze: EYES, HEAD, NECK, ...

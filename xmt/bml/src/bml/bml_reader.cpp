@@ -11,8 +11,11 @@
 #include <libxml/tree.h>
 
 #include "bml/behaviour_defaults.hpp"
+#include "bml/facefx_curves.hpp"
 #include "bml/block_reader.hpp"
 #include "bml/bml_model.hpp"
+#include "bml/recorded_speech.hpp"
+#include "bml/smartbody_visemes.hpp"
 #include "bml/speak_text.hpp"
 #include "bml/sync_ref.hpp"
 #include "fapc/bml/bml.hpp"
@@ -53,7 +56,7 @@ const char* kPointNames[kStandardPoints] = {"start", "ready", "strokeStart", "st
 // Behaviours fapc does not draw: their timing is kept (others may sync to them).
 bool is_not_drawn(std::string_view name) {
   static const std::set<std::string_view> kNames = {"gesture", "posture", "postureShift", "locomotion", "pointing",
-                                                    "torso", "stance", "pose", "lips", "lip", "curves"};
+                                                    "torso", "stance", "pose", "curves"};
   return kNames.count(name) != 0;
 }
 
@@ -100,6 +103,7 @@ class BmlReader {
   std::optional<Diagnostic> error_;
   std::vector<ConstraintSource> sources_;
   bool warned_no_engine_ = false;
+  std::set<const xmlNode*> overruled_;  // recorded speeches whose placeholder times were said
   std::int64_t counted_ = 0;
 
   // The dialect (docs/bml.md, "Dialects"): BML 1.0 by its namespace; Greta/SEMAINE by its
@@ -167,9 +171,34 @@ class BmlReader {
       if (!count_one(child)) return false;
       if (!read_behaviour(child, block, pending)) return false;
     }
+    settle_mouth(block);
     for (const xmlNode* c : constraints)
       if (!read_constraint(c, block, pending)) return false;
     return resolve(block, pending);
+  }
+
+  // A block's lips rows are its mouth (the shapes of recorded audio): they win over the visemes
+  // of synthesised speech. Recorded speech without lips has no mouth at all: fapc does not find
+  // the phonemes of audio. Each said once.
+  void settle_mouth(Block& block) {
+    const bool lips = std::any_of(block.behaviours.begin(), block.behaviours.end(),
+                                  [](const Behaviour& b) { return b.kind == BehaviourKind::lips; });
+    for (Behaviour& b : block.behaviours) {
+      if (!b.speech) continue;
+      if (lips && !b.speech->visemes.empty()) {
+        b.speech->visemes.clear();
+        once_.report("lips over synthesis", with_code(make_warning(b.where, "the block's <lips> rows move the mouth: the visemes "
+                                                                            "synthesised for this speech are not drawn",
+                                                                   doc_.line_text(b.where.line)),
+                                                      "bml.lips_over_synthesis"));
+      } else if (!lips && b.speech->recorded) {
+        once_.report("recorded without lips",
+                     with_code(make_warning(b.where, "recorded speech without <lips> rows: fapc does not find the phonemes "
+                                                     "of audio, so the mouth does not follow it",
+                                            doc_.line_text(b.where.line)),
+                               "bml.recorded_speech_without_lips"));
+      }
+    }
   }
 
   // ---- behaviours -------------------------------------------------------------------------
@@ -189,23 +218,18 @@ class BmlReader {
       once_.report("not drawn " + b.element,
                    with_code(doc_.warning(node, "<" + b.element + "> is not drawn by fapc (no body): its timing is kept"),
                              "bml.not_drawn"));
+    } else if (name == "lips" || name == "lip") {
+      read_lips(node, b);
+    } else if (name == "face" && upper(xml::trim(xml::attribute(node, "type").value_or(""))) == "FACS") {
+      // SmartBody's <face type="facs" au="N" amount=>: BML 1.0's faceFacs under another name.
+      if (!read_facs(node, b)) return false;
     } else if (name == "faceLexeme" || name == "faceShift" || name == "face") {
       b.kind = BehaviourKind::face_lexeme;
       b.shift = name == "faceShift";
       b.lexeme = xml::attribute(node, "lexeme").value_or("");
       if (b.lexeme.empty()) b.kind = BehaviourKind::not_drawn;
     } else if (name == "faceFacs") {
-      b.kind = BehaviourKind::face_facs;
-      const auto au = xml::attribute(node, "au");
-      const auto n = au ? xml::decimal(xml::trim(*au)) : std::nullopt;
-      if (!n || *n != std::floor(*n) || *n < 1 || *n > 99)
-        return fail(doc_.error(node, "au", "faceFacs needs au, an action unit number from 1 to 99"));
-      b.au = static_cast<int>(*n);
-      const std::string side = upper(xml::trim(xml::attribute(node, "side").value_or("BOTH")));
-      if (side == "LEFT") b.side = 'L';
-      else if (side == "RIGHT") b.side = 'R';
-      else if (side == "BOTH") b.side = 'B';
-      else return fail(doc_.error(node, "side", "side '" + side + "' is not LEFT, RIGHT or BOTH"));
+      if (!read_facs(node, b)) return false;
     } else if (name == "gaze" || name == "gazeShift") {
       b.kind = BehaviourKind::gaze;
       b.shift = name == "gazeShift";
@@ -213,7 +237,8 @@ class BmlReader {
       b.influence = upper(xml::trim(xml::attribute(node, "influence").value_or("EYES")));
     } else if (name == "head") {
       b.kind = BehaviourKind::head;
-      b.lexeme = upper(xml::trim(xml::attribute(node, "lexeme").value_or("")));
+      // SmartBody names the lexeme `type` (<head type="NOD"/>).
+      b.lexeme = upper(xml::trim(xml::attribute(node, "lexeme").value_or(xml::attribute(node, "type").value_or(""))));
       // Checked as a double: a huge value converted to int first is undefined (found by fuzzing).
       const double repetition = number_attribute(node, "repetition", 1.0);
       if (!(repetition >= 1 && repetition <= 100) || repetition != std::floor(repetition))
@@ -244,6 +269,7 @@ class BmlReader {
       timing.own_label = label(node, "", b.id + " lasts " + format_seconds(b.speech->duration) + " as spoken");
     }
     const auto index = static_cast<std::uint32_t>(block.behaviours.size());
+    const std::size_t timed_before = pending.size();
     // Greta 0.x (SEMAINE) writes a behaviour's later points as times within it: a plain time
     // earlier than a plain start is read from the start (docs/bml.md, "Dialects").
     std::optional<double> plain_start;
@@ -260,6 +286,8 @@ class BmlReader {
       std::string why;
       const auto ref = parse_sync_ref(*value, why);
       if (!ref) return fail(doc_.error(node, attribute, why));
+      if (p != kStart && b.speech && b.speech->recorded && overruled_by_recording(node, b, timing, p, attribute, *ref))
+        continue;
       Pending p_;
       p_.behaviour = index;
       p_.point = p;
@@ -278,8 +306,81 @@ class BmlReader {
       p_.attribute = attribute;
       pending.push_back(std::move(p_));
     }
+    if (name == "curves" && pending.size() == timed_before) time_curves(node, b, index, pending);
     block.behaviours.push_back(std::move(b));
     block.timing.push_back(std::move(timing));
+    return true;
+  }
+
+  // FaceFX curves with no timing attributes last from their first key to their last (times from
+  // the utterance's start, which NVBG puts at the block's): their own timing, not a gesture's default.
+  void time_curves(const xmlNode* node, const Behaviour& b, std::uint32_t index, std::vector<Pending>& pending) {
+    const auto extent = curves_extent(doc_, node);
+    if (!extent) return;
+    for (const auto& [point, seconds] : {std::pair{kStart, extent->first}, std::pair{kEnd, extent->second}}) {
+      Pending p;
+      p.behaviour = index;
+      p.point = point;
+      p.b.absolute = true;
+      p.b.offset = seconds;
+      p.label = label(node, "", b.id + " " + kPointNames[point] + " at its keys' " + format_seconds(seconds));
+      p.node = node;
+      pending.push_back(std::move(p));
+    }
+  }
+
+  // NVBG writes placeholder times on recorded speech (ready="0.1" ... end="0.2" for a second of
+  // words): a plain time that disagrees with the recording (by more than a millisecond) is not
+  // read; the recording wins, said once per speech at the first such attribute (docs/bml.md).
+  bool overruled_by_recording(const xmlNode* node, const Behaviour& b, const SolverBehaviour& timing, std::uint32_t p,
+                              const char* attribute, const SyncRef& ref) {
+    if (!ref.absolute) return false;  // a reference is a constraint of the user's: the solver checks it
+    std::optional<double> start = 0.0;
+    if (const auto text = xml::attribute(node, "start")) start = parse_seconds(*text);
+    if (!start) return false;  // the start is itself a reference: the solver checks the plain time
+    const double recorded = *start + timing.defaults[p];
+    if (std::abs(ref.offset - recorded) <= 1e-3) return false;
+    if (overruled_.insert(node).second)
+      out_.warnings.push_back(with_code(doc_.warning(node, attribute, std::string(attribute) + "=\"" + std::string(xml::trim(*xml::attribute(node, attribute))) +
+                                                                          "\" contradicts the recording of '" + b.id + "' (" +
+                                                                          std::string(attribute) + " at " + format_seconds(recorded) + ", " +
+                                                                          format_seconds(b.speech->duration) + " long by its marks and audio): "
+                                                                          "the recorded timing wins, and the speech's other placeholder times are not read"),
+                                        "bml.recorded_timing_wins"));
+    return true;
+  }
+
+  // <lips viseme="BMP" articulation="1.0"/>: one viseme of a recording (SmartBody), through
+  // smartbody_visemes.tsv. An unknown name keeps its timing and moves nothing.
+  void read_lips(const xmlNode* node, Behaviour& b) {
+    b.kind = BehaviourKind::lips;
+    b.amount = std::clamp(number_attribute(node, "articulation", 1.0), 0.0, 1.0);
+    const std::string name(xml::trim(xml::attribute(node, "viseme").value_or("")));
+    const auto viseme = smartbody_viseme(name);
+    if (viseme) {
+      b.viseme = *viseme;
+      return;
+    }
+    std::string known;
+    for (const std::string& n : smartbody_viseme_names()) known += (known.empty() ? "" : " ") + n;
+    once_.report("viseme " + name, with_code(doc_.warning(node, "viseme", "viseme '" + name + "' is not one of SmartBody's (" + known +
+                                                                             "): its timing is kept, the mouth does not move"),
+                                             "bml.unknown_viseme"));
+  }
+
+  // faceFacs (and SmartBody's face type="facs"): au and side.
+  bool read_facs(const xmlNode* node, Behaviour& b) {
+    b.kind = BehaviourKind::face_facs;
+    const auto au = xml::attribute(node, "au");
+    const auto n = au ? xml::decimal(xml::trim(*au)) : std::nullopt;
+    if (!n || *n != std::floor(*n) || *n < 1 || *n > 99)
+      return fail(doc_.error(node, "au", "<" + b.element + "> needs au, an action unit number from 1 to 99"));
+    b.au = static_cast<int>(*n);
+    const std::string side = upper(xml::trim(xml::attribute(node, "side").value_or("BOTH")));
+    if (side == "LEFT") b.side = 'L';
+    else if (side == "RIGHT") b.side = 'R';
+    else if (side == "BOTH") b.side = 'B';
+    else return fail(doc_.error(node, "side", "side '" + side + "' is not LEFT, RIGHT or BOTH"));
     return true;
   }
 
@@ -312,6 +413,12 @@ class BmlReader {
   // <speech><text>words <sync id="s1"/> words</text></speech>, or the text and its tm marks
   // right inside the speech (Greta).
   bool read_speech(const xmlNode* node, Behaviour& b) {
+    if (const xmlNode* description = audio_description(doc_, node)) {
+      Result<SpokenText> recorded = recorded_speech(doc_, node, description, options_, out_.warnings, out_.recordings);
+      if (!recorded) return fail(recorded.error());
+      b.speech = std::make_unique<SpokenText>(std::move(*recorded));
+      return true;
+    }
     const xmlNode* text_node = nullptr;
     for (const xmlNode* child : doc_.children(node))
       if (xml::local_name(child) == "text") text_node = child;

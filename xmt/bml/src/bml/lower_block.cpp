@@ -1,6 +1,7 @@
 // A solved block to clips (docs/bml.md, "What is drawn"): speech to visemes and voice, head
 // lexemes to head rotations, gaze to the eyes (and the head, by influence), faces to their
 // action units' FAPs.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -124,6 +125,49 @@ void lower_speech(const Behaviour& b, const std::array<double, kStandardPoints>&
   }
 }
 
+// The block's lips rows (SmartBody's recorded visemes) as one viseme track: each row held from
+// its start to its end at its articulation, cross-faded with its neighbours by the coarticulation
+// rule of synthesised speech, as one utterance's visemes are (rows are lowered together so that
+// each fade is shared by the two rows it joins). Touching rows of one viseme and articulation are
+// one held shape; a row that overlaps the one before it starts where that one ends.
+void lower_lips(const Block& block, const Solution& solution, double origin, const Coarticulation& rule, Timeline& out) {
+  struct Row {
+    VisemeSpan span;
+    Location where;
+  };
+  std::vector<Row> rows;
+  for (std::size_t i = 0; i < block.behaviours.size(); ++i) {
+    const Behaviour& b = block.behaviours[i];
+    const auto& t = solution.points[i];
+    if (b.kind == BehaviourKind::lips && t[kEnd] > t[kStart])
+      rows.push_back({VisemeSpan{b.viseme, origin + t[kStart], origin + t[kEnd], b.amount}, b.where});
+  }
+  std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.span.begin < b.span.begin; });
+  std::vector<VisemeSpan> spans;
+  std::vector<Location> sources;
+  double previous_end = 0;
+  for (Row& row : rows) {
+    VisemeSpan s = row.span;
+    s.begin = std::max(s.begin, previous_end);
+    if (s.end <= s.begin) continue;
+    previous_end = s.end;
+    if (s.viseme <= 0 || s.weight <= 0) continue;  // rest: the mouth at its neutral
+    if (!spans.empty() && spans.back().viseme == s.viseme && spans.back().weight == s.weight &&
+        std::abs(spans.back().end - s.begin) < 1e-9) {
+      spans.back().end = s.end;
+      continue;
+    }
+    spans.push_back(s);
+    sources.push_back(row.where);
+  }
+  if (spans.empty()) return;
+  std::vector<Clip> clips = coarticulated_viseme_clips(spans, 1.0, rule, sources.front());
+  // One clip per row, unless a widened short row swallowed a neighbour: then the first row names them.
+  if (clips.size() == sources.size())
+    for (std::size_t i = 0; i < clips.size(); ++i) clips[i].source = sources[i];
+  for (Clip& clip : clips) out.clips.push_back(std::move(clip));
+}
+
 }  // namespace
 
 void lower_behaviour(const Behaviour& b, const std::array<double, kStandardPoints>& t, double origin,
@@ -151,6 +195,8 @@ void lower_behaviour(const Behaviour& b, const std::array<double, kStandardPoint
     case BehaviourKind::speech:
       lower_speech(b, t, origin, rule, out);
       break;
+    case BehaviourKind::lips:  // with the block's other rows, in lower_block
+      break;
     case BehaviourKind::wait:
     case BehaviourKind::not_drawn:
       break;
@@ -161,6 +207,7 @@ void lower_block(const Block& block, const Solution& solution, double origin, co
                  Diagnostics& warnings) {
   for (std::size_t i = 0; i < block.behaviours.size(); ++i)
     lower_behaviour(block.behaviours[i], solution.points[i], origin, rule, out, warnings);
+  lower_lips(block, solution, origin, rule, out);
 }
 
 }  // namespace fapc::bml

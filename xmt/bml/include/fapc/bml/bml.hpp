@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/codec/include_policy.hpp"
 #include "fapc/codec/limits.hpp"
 #include "fapc/transcoder/frame_budget.hpp"
 #include "fapc/transcoder/speech.hpp"
@@ -32,6 +33,10 @@ struct BmlOptions {
   double words_per_minute = 175;
   double max_speech_seconds = 3600;
   Coarticulation coarticulation;
+  // Recorded speech (SmartBody's <file ref>): which files may be read, and how large they may be
+  // (max_decompressed_bytes, max_audio_samples).
+  IncludePolicy includes;
+  Limits speech_limits;
 };
 
 // One behaviour as scheduled, for `fapc info` and the tests.
@@ -60,6 +65,7 @@ struct BmlDocument {
   std::vector<ScheduledBehaviour> behaviours;
   std::vector<ScheduledMark> marks;
   std::vector<std::string> languages;       // the languages speech was spoken in
+  std::vector<std::string> recordings;      // the audio files of recorded speech that were read
   Diagnostics warnings;
 };
 
