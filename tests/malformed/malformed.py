@@ -557,7 +557,22 @@ def diagnostic_cases():
                      fml('<fap type="open_jaw" val="1" duration="100000000s"/>')),
         compile_case("fap.diag.encoder-refuses-gap", fap([0, 2000000]), out="out/out.fba"),
         compile_case("fap.diag.frames-not-ascending", fap([5, 3]), out="out/out.fba"),
+        # One line of 256 KB: the caret line shows a window around the column, not the line.
+        compile_case("mimic.diag.long-line-caret", mimic("jaw" + " " * (1 << 18) + "@"),
+                     check=bounded_caret),
+        compile_case("xmto.diag.long-line-caret",
+                     xmto('<animate attributeName="open_jaw"' + " " * (1 << 18) + 'values="0;1" dur="x"/>'),
+                     check=bounded_caret),
     ]
+
+
+def bounded_caret(_, stderr):
+    """The error's source excerpt is a window (docs/cli.md, "Diagnostics"), the caret under it."""
+    if len(stderr) > 2000:
+        return "stderr holds {} bytes: the whole source line was printed".format(len(stderr))
+    if "^" not in stderr:
+        return "no caret under the error"
+    return None
 
 
 def batch_cases():
