@@ -1,4 +1,4 @@
-// The caret under a diagnostic (docs/cli.md, "Diagnostics"): a short line is shown whole; a long
+// The caret under a diagnostic (docs/cli.md, its Diagnostics rule): a short line is shown whole; a long
 // one as a window of at most 100 characters around the column, "..." on each cut side, the caret
 // under the character the column names, UTF-8 characters never cut. The expectations of the long
 // lines are checked by reading the rendered text back (which character stands above the caret),

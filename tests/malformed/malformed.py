@@ -567,7 +567,7 @@ def diagnostic_cases():
 
 
 def bounded_caret(_, stderr):
-    """The error's source excerpt is a window (docs/cli.md, "Diagnostics"), the caret under it."""
+    """The error's source excerpt is a window (docs/cli.md, the Diagnostics rule), the caret under it."""
     if len(stderr) > 2000:
         return "stderr holds {} bytes: the whole source line was printed".format(len(stderr))
     if "^" not in stderr:

@@ -1,4 +1,4 @@
-// A video's limits on its length (docs/security.md, "Pixels"): asked of a script's timeline before
+// A video's limits on its length (docs/security.md, "Resource limits"): asked of a script's timeline before
 // its frames are rendered, and placed at the element that ends the animation; asked of frames read
 // from a file at that file; the errors about the options (--size) name the output.
 #include <gtest/gtest.h>
