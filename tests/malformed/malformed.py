@@ -635,7 +635,7 @@ def batch_placed_cases():
 
 def video_length_cases():
     """Issue 32: a short script of hours to a video is refused from its length, at the element that
-    ends it, before its frames are rendered (7 s and 350 MB for four hours before); so is a .fap
+    ends it, before its frames are rendered (1.7 s and 350 MB for four hours before); so is a .fap
     whose frame numbers span hours (at the file: its frames are read already)."""
     four_hours = xmto('<animate attributeName="open_jaw" values="0;100;0" dur="4h"/>')
     long_hold = mimic("jaw <hold=30000,value=0.1>;")
