@@ -557,7 +557,22 @@ def diagnostic_cases():
                      fml('<fap type="open_jaw" val="1" duration="100000000s"/>')),
         compile_case("fap.diag.encoder-refuses-gap", fap([0, 2000000]), out="out/out.fba"),
         compile_case("fap.diag.frames-not-ascending", fap([5, 3]), out="out/out.fba"),
+        # One line of 256 KB: the caret line shows a window around the column, not the line.
+        compile_case("mimic.diag.long-line-caret", mimic("jaw" + " " * (1 << 18) + "@"),
+                     check=bounded_caret),
+        compile_case("xmto.diag.long-line-caret",
+                     xmto('<animate attributeName="open_jaw"' + " " * (1 << 18) + 'values="0;1" dur="x"/>'),
+                     check=bounded_caret),
     ]
+
+
+def bounded_caret(_, stderr):
+    """The error's source excerpt is a window (docs/cli.md, the Diagnostics rule), the caret under it."""
+    if len(stderr) > 2000:
+        return "stderr holds {} bytes: the whole source line was printed".format(len(stderr))
+    if "^" not in stderr:
+        return "no caret under the error"
+    return None
 
 
 def batch_cases():
@@ -571,6 +586,67 @@ def batch_cases():
              check=summary),
         Case("batch.notfile.output-is-a-file", {"in/good.mimic": GOOD["mimic"], "taken": "x"},
              ["batch", "in", "-o", "taken", "--to", "fap"], exit=2, diagnostic="named"),
+    ]
+
+
+def names(file):
+    """A check: an error names `file` (the input), not the output."""
+    return lambda _, err: None if re.search("^" + re.escape(file) + r": error: ", err, re.M) else \
+        "no error names " + file
+
+
+def no_audio_cases():
+    """Issue 32: an input without audio asked for a .wav has nothing to point at: the error names
+    the input (docs/speech.md), in compile and in batch alike."""
+    return [
+        compile_case("xmto.speech.no-audio-to-wav", xmto(ANIMATE), out="out/out.wav", diagnostic="named",
+                     check=names("in.xmt")),
+        Case("batch.speech.no-audio-to-wav", {"in/a.xmt": xmto(ANIMATE)},
+             ["batch", "in", "-o", "out", "--to", "wav"], diagnostic="named", check=names("in/a.xmt")),
+    ]
+
+
+def batch_placed_cases():
+    """Issue 32: batch places each input's content error as compile does, on standard error and in
+    both reports (docs/json.md: a job's error is a diagnostic with its line and column, or byte)."""
+    def reports_placed(folder, stderr):
+        import json
+        import xml.etree.ElementTree as ET
+        with open(os.path.join(folder, "r.json")) as f:
+            jobs = json.load(f)["jobs"]
+        for job in jobs:
+            e = job["error"]
+            if not e or not (e["line"] and e["column"] or e["byte"] is not None):
+                return "the JSON report's error of {} has no place: {}".format(job["input"], e)
+        for case in ET.parse(os.path.join(folder, "r.xml")).getroot().iter("testcase"):
+            failure = case.find("failure")
+            if failure is None or not ERROR_PLACED.match(failure.get("message")):
+                return "the JUnit report's failure of {} has no place".format(case.get("name"))
+        return None
+    def cut(path, fraction):
+        return lambda: truncated(source_bytes(path), fraction)
+    files = {"in/a.mimic": mimic("jaw <hold=1,value=0.1>;\n@"), "in/b.fml": fml('<fap type="open_jaw" val="x"/>'),
+             "in/c.xmt": xmto('<animate attributeName="open_jaw" values="0;100;0" dur="4h"/>'),
+             "in/d.fba": cut(FBA, 0.3), "in/e.mp4": cut(MP4, 0.5)}
+    return [Case("batch.diag.reports-placed", files,
+                 ["batch", "in", "-o", "out", "--to", "webm", "--keep-going", "--report-json", "r.json",
+                  "--report", "r.xml"], check=reports_placed)]
+
+
+def video_length_cases():
+    """Issue 32: a short script of hours to a video is refused from its length, at the element that
+    ends it, before its frames are rendered (1.7 s and 350 MB for four hours before); so is a .fap
+    whose frame numbers span hours (at the file: its frames are read already)."""
+    four_hours = xmto('<animate attributeName="open_jaw" values="0;100;0" dur="4h"/>')
+    long_hold = mimic("jaw <hold=30000,value=0.1>;")
+    return [
+        compile_case("xmto.huge.video-four-hours-webm", four_hours, out="out/out.webm"),
+        compile_case("xmto.huge.video-four-hours-html", four_hours, out="out/out.html"),
+        Case("xmto.huge.render-four-hours", {"in.xmt": four_hours}, ["render", "in.xmt", "-o", "out/out.webm"]),
+        compile_case("mimic.huge.video-past-four-hours", long_hold, out="out/out.webm"),
+        compile_case("fap.huge.video-frames-1e5", fap([0, 100000]), out="out/out.webm", diagnostic="named",
+                     check=names("in.fap")),
+        Case("batch.huge.video-four-hours", {"in/long.xmt": four_hours}, ["batch", "in", "-o", "out", "--to", "webm"]),
     ]
 
 
@@ -877,7 +953,8 @@ def smartbody_cases():
 # group's inputs, not the megabytes of every other group's.
 GROUPS = (not_a_file_cases, depth_cases, cycle_cases, huge_cases, number_cases, truncation_cases,
           junk_cases, wrong_result_cases, diagnostic_cases, batch_cases, csv_cases, speech_cases,
-          output_cases, intent_cases, speech_placed_cases, smil_cases, smartbody_cases)
+          output_cases, intent_cases, speech_placed_cases, smil_cases, smartbody_cases,
+          video_length_cases, no_audio_cases, batch_placed_cases)
 
 
 def all_cases(group=None):

@@ -107,6 +107,13 @@ ConvertResult convert(const std::string& input, const std::vector<OutputRequest>
   ConvertOptions load_options = options;
   load_options.curves = std::any_of(writers.begin(), writers.end(), [](const OutputFormat* w) { return w->uses_curves; });
   load_options.frames = std::any_of(writers.begin(), writers.end(), [](const OutputFormat* w) { return w->uses_frames; });
+  // The outputs' limits on the length (a video's pictures), before a script's frames are made.
+  load_options.check_length = [&writers, &outputs, &options](std::int64_t frames, int fps, const Location& ends) {
+    for (std::size_t i = 0; i < writers.size(); ++i)
+      if (writers[i]->check_length)
+        if (Status fits = writers[i]->check_length(frames, fps, ends, outputs[i].path, options); !fits) return fits;
+    return ok_status();
+  };
   auto loaded = load(input, load_options);
   if (!loaded) {
     result.error = loaded.error();

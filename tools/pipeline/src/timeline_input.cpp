@@ -1,5 +1,7 @@
 #include "timeline_input.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include "fapc/transcoder/audio_mix.hpp"
@@ -78,6 +80,13 @@ Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
     loaded.warnings = std::move(warnings);
     loaded.facts = std::move(facts);
     return loaded;
+  }
+  // The outputs' own limits on the length first: a four-hour video is refused before its 360,000
+  // frames are rendered. A timeline past the frame limit is left to the renderer, which says so.
+  if (options.check_length && !frame_budget_for(options).exceeded_by(timeline.end())) {
+    const auto frames = static_cast<std::int64_t>(std::max(0.0, std::ceil(timeline.end() * options.fps - 1e-9)));
+    if (Status fits = options.check_length(frames, options.fps, where_it_ends(timeline)); !fits)
+      return named_after(fits.error(), name);
   }
   const RenderOptions render = render_options_for(name, profile, options);
   FramesSeen seen;

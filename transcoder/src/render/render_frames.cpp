@@ -133,10 +133,6 @@ class FrameRenderer {
 
 }  // namespace
 
-namespace {
-
-// Where a too-long animation is reported: what the front end says ends it, else the clip that ends
-// last.
 Location where_it_ends(const Timeline& timeline) {
   if (timeline.explicit_end) return timeline.end_source;
   const Clip* last = nullptr;
@@ -144,8 +140,6 @@ Location where_it_ends(const Timeline& timeline) {
     if (!last || clip.end >= last->end) last = &clip;
   return last ? last->source : Location{};
 }
-
-}  // namespace
 
 struct FrameStream::State {
   State(const Timeline& timeline, const RenderOptions& options, std::int64_t frames)

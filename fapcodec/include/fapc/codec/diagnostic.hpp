@@ -68,7 +68,8 @@ using Diagnostics = std::vector<Diagnostic>;
 // caret lines; see render_with_caret for the full form.
 std::string format_diagnostic(const Diagnostic& d);
 
-// format_diagnostic plus, when the source line is known, the line and a caret under the column.
+// format_diagnostic plus, when the source line is known, the line (at most 100 characters of it
+// around the column, "..." marking a cut side) and a caret under the column.
 std::string render_with_caret(const Diagnostic& d);
 
 // Built field by field: Diagnostic grows fields (code) that most diagnostics leave empty.

@@ -39,7 +39,24 @@ std::optional<face::AudioInput> voice_of(const Loaded& loaded) {
   return voice;
 }
 
+// A video's limits on the length (OutputFormat::check_length): the errors about the length at
+// `ends`, those about the options at the output.
+Status video_takes(std::int64_t frames, int fps, const Location& ends, const std::string& path,
+                   const ConvertOptions& options) {
+  const PictureSettings& p = options.picture;
+  return face::check_video(frames, fps, face::VideoOptions{p.width, p.height, p.frame_rate, options.limits, {}},
+                           Location{path, 0, 0, -1}, ends);
+}
+
+// The same of frames already loaded (a .fap, an .fba), their length placed at the input.
+Status video_takes(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
+  const std::vector<FapFrame>& frames = loaded.frames.frames;
+  return video_takes(frames.empty() ? 0 : frames.back().number + 1, loaded.frames.fps,
+                     Location{loaded.named(path), 0, 0, -1}, path, options);
+}
+
 Result<std::string> write_webm(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
+  if (Status fits = video_takes(loaded, path, options); !fits) return fits.error();
   const auto voice = voice_of(loaded);
   return face::face_webm(loaded.frames, picture_options(options, path), voice ? &*voice : nullptr, path);
 }
@@ -47,6 +64,7 @@ Result<std::string> write_webm(const Loaded& loaded, const std::string& path, co
 // The page, with the 3D head's .glb (named by FAP: the page plays it, no avatar reads it) when
 // --view asks for the 3D view.
 Result<std::string> write_html(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
+  if (Status fits = video_takes(loaded, path, options); !fits) return fits.error();
   const auto voice = voice_of(loaded);
   const std::string& v = options.picture.view;
   const face::PreviewView view = v == "3d" ? face::PreviewView::three_d
@@ -69,10 +87,18 @@ OutputFormat face_output(OutputFormat format, bool with_voice) {
   return format;
 }
 
+// A video: its length checked before a script's frames are made.
+OutputFormat video_output(OutputFormat format) {
+  format = face_output(std::move(format), true);
+  format.check_length = [](std::int64_t frames, int fps, const Location& ends, const std::string& path,
+                           const ConvertOptions& options) { return video_takes(frames, fps, ends, path, options); };
+  return format;
+}
+
 }  // namespace
 
 OutputFormat png_output() { return face_output({"png", {".png"}, write_png}, false); }
-OutputFormat webm_output() { return face_output({"webm", {".webm"}, write_webm}, true); }
-OutputFormat html_output() { return face_output({"html", {".html"}, write_html}, true); }
+OutputFormat webm_output() { return video_output({"webm", {".webm"}, write_webm}); }
+OutputFormat html_output() { return video_output({"html", {".html"}, write_html}); }
 
 }  // namespace fapc::pipeline::builtin

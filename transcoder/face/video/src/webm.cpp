@@ -70,40 +70,54 @@ struct Output {
 
 }  // namespace
 
-std::int64_t video_frame_count(const FaceTrack& track, int frame_rate) {
-  const int rate = frame_rate > 0 ? frame_rate : track.fps();
-  if (rate == track.fps()) return std::max<std::int64_t>(1, track.frame_count());
-  return std::max<std::int64_t>(1, std::llround(track.duration_seconds() * rate));
+std::int64_t video_frame_count(std::int64_t frames, int fps, int frame_rate) {
+  const int rate = frame_rate > 0 ? frame_rate : fps;
+  if (rate == fps) return std::max<std::int64_t>(1, frames);
+  const double seconds = fps > 0 ? static_cast<double>(frames) / fps : 0;
+  return std::max<std::int64_t>(1, std::llround(seconds * rate));
 }
 
-Result<std::string> encode_webm(const FaceTrack& track, const VideoOptions& options,
-                                const AudioInput* audio, const std::string& where) {
-  const Location at{where, 0, 0, -1};
+std::int64_t video_frame_count(const FaceTrack& track, int frame_rate) {
+  return video_frame_count(track.frame_count(), track.fps(), frame_rate);
+}
+
+Status check_video(std::int64_t frames, int fps, const VideoOptions& options, const Location& at,
+                   const Location& length_at) {
   if (options.width < kMinSide || options.height < kMinSide || options.width > kMaxSide ||
       options.height > kMaxSide || options.width % 2 || options.height % 2)
     return make_error(ErrorKind::usage, at,
                       "--size " + std::to_string(options.width) + "x" + std::to_string(options.height) +
                           ": a .webm needs even sides from " + std::to_string(kMinSide) + " to " +
                           std::to_string(kMaxSide) + " pixels");
-  const int rate = options.frame_rate > 0 ? options.frame_rate : track.fps();
+  const int rate = options.frame_rate > 0 ? options.frame_rate : fps;
   if (rate > 120) return make_error(ErrorKind::usage, at, "--frame-rate must be 1 to 120");
-  if (track.duration_seconds() > kMaxVideoSeconds)
-    return make_error(ErrorKind::limit_exceeded, at,
-                      "the animation lasts " + std::to_string(track.duration_seconds()) +
-                          " s; a video is limited to " + std::to_string(int(kMaxVideoSeconds)) + " s");
-  const std::int64_t frames = video_frame_count(track, rate);
+  const double seconds = fps > 0 ? static_cast<double>(frames) / fps : 0;
+  if (seconds > kMaxVideoSeconds)
+    return make_error(ErrorKind::limit_exceeded, length_at,
+                      "the animation lasts " + std::to_string(seconds) + " s; a video is limited to " +
+                          std::to_string(int(kMaxVideoSeconds)) + " s");
+  const std::int64_t pictures = video_frame_count(frames, fps, rate);
   // The cost, from the duration and the rate, before any picture is drawn.
   const std::int64_t picture_pixels = std::int64_t{options.width} * options.height;
   if (picture_pixels > options.limits.max_frame_pixels)
     return limit_error(at, "--size " + std::to_string(options.width) + "x" + std::to_string(options.height) + " is " +
                                std::to_string(picture_pixels) + " pixels a picture",
                        Limit::frame_pixels, options.limits);
-  if (frames > options.limits.max_video_pixels / picture_pixels)
-    return limit_error(at, "the video would be " + std::to_string(frames) + " pictures of " +
+  if (pictures > options.limits.max_video_pixels / picture_pixels)
+    return limit_error(length_at, "the video would be " + std::to_string(pictures) + " pictures of " +
                                std::to_string(options.width) + "x" + std::to_string(options.height) + " (" +
-                               std::to_string(track.duration_seconds()) + " s at " + std::to_string(rate) +
-                               " per second), " + std::to_string(frames * picture_pixels) + " pixels",
+                               std::to_string(seconds) + " s at " + std::to_string(rate) +
+                               " per second), " + std::to_string(pictures * picture_pixels) + " pixels",
                        Limit::video_pixels, options.limits);
+  return ok_status();
+}
+
+Result<std::string> encode_webm(const FaceTrack& track, const VideoOptions& options,
+                                const AudioInput* audio, const std::string& where) {
+  const Location at{where, 0, 0, -1};
+  if (Status checked = check_video(track.frame_count(), track.fps(), options, at, at); !checked) return checked.error();
+  const int rate = options.frame_rate > 0 ? options.frame_rate : track.fps();
+  const std::int64_t frames = video_frame_count(track, rate);
   auto failed = [&](const std::string& what, int code) {
     return make_error(ErrorKind::io, at, what + ": " + av_message(code));
   };

@@ -50,6 +50,10 @@ struct Rendered {
 // than options.max_frames frames (at the timeline's end_source, or the clip that ends last).
 Result<Rendered> render_frames(const Timeline& timeline, const RenderOptions& options);
 
+// Where a too-long animation is reported: what the front end says ends it, else the clip that
+// ends last (empty for a timeline without clips).
+Location where_it_ends(const Timeline& timeline);
+
 // The same frames one at a time, for writers that never hold them all (an encoder that takes two
 // passes renders them twice: rendering is deterministic). start() makes every check render_frames
 // makes before its first frame; the timeline must outlive the stream.

@@ -72,6 +72,9 @@ struct ConvertOptions {
   // and summary (Loaded::frames_not_kept). convert() sets it from its outputs
   // (OutputFormat::uses_frames): the curves JSON and the plots of a script read its curves.
   bool frames = true;
+  // Asked before a script's frames are rendered, with their count, their rate and the place that
+  // ends the animation: convert() sets it from its outputs (OutputFormat::check_length).
+  std::function<Status(std::int64_t frames, int fps, const Location& ends)> check_length;
 };
 
 }  // namespace fapc::pipeline

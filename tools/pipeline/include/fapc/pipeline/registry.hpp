@@ -75,6 +75,13 @@ struct OutputFormat {
   // What this output cannot carry of the frames, as warnings (docs/bridges.md); computed for every
   // output before any is written, so that --strict refuses before writing. Empty: nothing lost.
   std::function<Diagnostics(const Loaded&, const std::string& path)> losses{};
+  // What this output refuses of an animation from its length alone (`frames` on a grid of `fps`):
+  // asked before a script's frames are rendered, so that a video too long for its limits is
+  // refused up front (docs/security.md, "Resource limits"). `ends` is the place that ends the
+  // animation, where length errors point. Empty: the output takes any length the frames may have.
+  std::function<Status(std::int64_t frames, int fps, const Location& ends, const std::string& path,
+                       const ConvertOptions&)>
+      check_length{};
 };
 
 class Registry {

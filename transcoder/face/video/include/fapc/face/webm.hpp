@@ -32,6 +32,17 @@ inline constexpr double kMaxVideoSeconds = 4 * 3600.0;
 
 // The number of pictures a video of `track` has: duration x rate, rounded, at least 1.
 std::int64_t video_frame_count(const FaceTrack& track, int frame_rate);
+// The same for a sequence of `frames` frames on a grid of `fps`, known before they are made.
+std::int64_t video_frame_count(std::int64_t frames, int fps, int frame_rate);
+
+// What encode_webm refuses from the picture size, the rate and the length alone, before any
+// picture is drawn: usage errors for sizes and rates the encoder cannot take; limit_exceeded past
+// kMaxVideoSeconds, Limits::max_frame_pixels or Limits::max_video_pixels. A pipeline asks it of an
+// animation's length before rendering its frames (docs/security.md, "Resource limits"), with the
+// place that ends the animation as `length_at` (the length errors) and the output as `at` (the
+// others); encode_webm asks it again of the frames it is given.
+Status check_video(std::int64_t frames, int fps, const VideoOptions& options, const Location& at,
+                   const Location& length_at);
 
 // `where` names the output in errors. Usage errors for odd sizes (4:2:0 video needs even sides)
 // and bad rates; limit_exceeded past kMaxVideoSeconds; unsupported when libav lacks libvpx-vp9
