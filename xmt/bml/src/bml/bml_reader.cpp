@@ -685,7 +685,9 @@ class BmlReader {
   }
 };
 
-Result<BmlDocument> read_text(std::string_view text, const std::string& file_name, const BmlOptions& options) {
+}  // namespace
+
+Result<BmlDocument> read_bml(std::string_view text, const std::string& file_name, const BmlOptions& options) {
   if (const Status depth = xml::check_element_depth(text, file_name); !depth) return depth.error();
   // Only speech text is read; elsewhere white space is dropped.
   const xml::BlankText blank_text{false, {"text", "speech"}};
@@ -694,20 +696,14 @@ Result<BmlDocument> read_text(std::string_view text, const std::string& file_nam
   return BmlReader(*doc, options).run(doc->root(), true);
 }
 
-}  // namespace
-
 Result<BmlDocument> read_bml_block(const xml::XmlDocument& doc, const xmlNode* block, const BmlOptions& options) {
   return BmlReader(doc, options).run(block, false);
-}
-
-Result<BmlDocument> read_bml(std::string_view text, const std::string& file_name, const BmlOptions& options) {
-  return read_text(text, file_name, options);
 }
 
 Result<BmlDocument> load_bml(const std::string& path, const BmlOptions& options) {
   const auto source = SourceText::open(path);
   if (!source) return source.error();
-  return read_text(source->bytes(), path, options);
+  return read_bml(source->bytes(), path, options);
 }
 
 }  // namespace fapc::bml

@@ -534,7 +534,9 @@ class SmilReader {
   }
 };
 
-Result<SmilDocument> read_text(std::string_view text, const std::string& file_name, const SmilOptions& options) {
+}  // namespace
+
+Result<SmilDocument> read_smil(std::string_view text, const std::string& file_name, const SmilOptions& options) {
   if (const Status depth = xml::check_element_depth(text, file_name); !depth) return depth.error();
   // Only speech and parameter text is read; elsewhere white space is dropped.
   const xml::BlankText blank_text{false, {"speech", "parameter"}};
@@ -543,16 +545,10 @@ Result<SmilDocument> read_text(std::string_view text, const std::string& file_na
   return SmilReader(*doc, options).run();
 }
 
-}  // namespace
-
-Result<SmilDocument> read_smil(std::string_view text, const std::string& file_name, const SmilOptions& options) {
-  return read_text(text, file_name, options);
-}
-
 Result<SmilDocument> load_smil(const std::string& path, const SmilOptions& options) {
   const auto source = SourceText::open(path);
   if (!source) return source.error();
-  return read_text(source->bytes(), path, options);
+  return read_smil(source->bytes(), path, options);
 }
 
 }  // namespace fapc::smil
