@@ -4,14 +4,13 @@
 // x towards the character's left, y up (fapc/codec/fap_motion.hpp).
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 
 #include "fapc/face/face_pose.hpp"
 #include "fapc/face/face_track.hpp"
 #include "fapc/pipeline/registry.hpp"
+#include "support/test_support.hpp"
 
 namespace fapc {
 namespace {
@@ -22,8 +21,7 @@ using face::P;
 constexpr double kMoved = 0.3;  // millimetres: well above rounding, well below any lexeme's motion
 
 face::FacePose pose_of(const std::string& lexeme) {
-  const fs::path dir = fs::temp_directory_path() / ("fapc-bml-lexeme-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const fs::path dir = test::scratch_folder("bml-lexeme");
   const fs::path path = dir / (lexeme + ".bml");
   std::ofstream(path) << "<bml xmlns=\"http://www.bml-initiative.org/bml/bml-1.0\" id=\"b\"><faceLexeme id=\"f\" lexeme=\""
                       << lexeme << "\" start=\"0\"/></bml>\n";

@@ -4,8 +4,6 @@
 // documents are written here in the corpus files' style; the WAV is made by the test.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -20,6 +18,7 @@
 #include "fapc/vocabulary/mapping_table.hpp"
 #include "bml/smartbody_visemes.hpp"
 #include "support/sync_to_word.hpp"
+#include "support/test_support.hpp"
 
 namespace fapc::bml {
 namespace {
@@ -27,9 +26,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path temp_dir() {
-  const fs::path dir = fs::temp_directory_path() / ("fapc-bml-smartbody-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
+  return test::scratch_folder("bml-smartbody");
 }
 
 // NVBG's output: placeholder speech times (end="0.2" for 1.24 s of words), marks with their

@@ -4,13 +4,12 @@
 // rendered frame where the synced behaviour moves the face.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 
 #include "support/sync_to_word.hpp"
+#include "support/test_support.hpp"
 
 namespace fapc {
 namespace {
@@ -18,8 +17,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string write_bml(const std::string& name, const std::string& body) {
-  const fs::path dir = fs::temp_directory_path() / ("fapc-bml-sync-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const fs::path dir = test::scratch_folder("bml-sync");
   const fs::path path = dir / name;
   std::ofstream(path) << "<bml xmlns=\"http://www.bml-initiative.org/bml/bml-1.0\" id=\"b1\">" << body << "</bml>\n";
   return path.string();

@@ -2,21 +2,18 @@
 // the real pipeline, and FAP values read off its frames.
 #pragma once
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <optional>
 #include <string>
 
 #include "fapc/pipeline/registry.hpp"
+#include "support/test_support.hpp"
 
 namespace fapc::test {
 
 inline std::string write_temp(const std::string& name, const std::string& text) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("fapc-intent-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const std::filesystem::path dir = test::scratch_folder("intent");
   const std::filesystem::path path = dir / name;
   std::ofstream(path, std::ios::binary) << text;
   return path.string();

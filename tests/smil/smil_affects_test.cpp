@@ -4,8 +4,6 @@
 // au_faps.tsv) summed here over the affect's rows, independently of the reader's placing.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -16,6 +14,7 @@
 #include "fapc/pipeline/registry.hpp"
 #include "fapc/vocabulary/mapping_table.hpp"
 #include "smil/agent_behaviours.hpp"
+#include "support/test_support.hpp"
 
 namespace fapc::smil {
 namespace {
@@ -56,8 +55,7 @@ TEST(SmilAffects, EveryRowIsWellFormedAndDrawable) {
 
 // The frames of a script with the affect alone from 1 s to 3 s at intensity 0.8.
 FapSequence frames_of(const std::string& affect) {
-  const fs::path dir = fs::temp_directory_path() / ("fapc-smil-affect-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const fs::path dir = test::scratch_folder("smil-affect");
   const fs::path path = dir / "affect.smil";
   std::ofstream(path) << "<par><speech-animation affect=\"" << affect
                       << "\" intensity=\"0.8\" begin=\"1s\" dur=\"2s\"/><par dur=\"4s\"/></par>\n";

@@ -4,12 +4,11 @@
 // the first rendered frame where the anchored behaviour moves the face.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 
 #include "support/sync_to_word.hpp"
+#include "support/test_support.hpp"
 
 namespace fapc {
 namespace {
@@ -17,8 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string write_smil(const std::string& body) {
-  const fs::path dir = fs::temp_directory_path() / ("fapc-smil-sync-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const fs::path dir = test::scratch_folder("smil-sync");
   const fs::path path = dir / "sync.smil";
   std::ofstream(path) << body;
   return path.string();

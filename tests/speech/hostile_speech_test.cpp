@@ -4,8 +4,6 @@
 // timeline (checked against --max-audio-samples before anything is allocated).
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -23,9 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path scratch() {
-  const fs::path dir = fs::temp_directory_path() / ("fapc-hostile-speech-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
+  return test::scratch_folder("hostile-speech");
 }
 
 std::string write_file(const std::string& name, const std::string& text) {

@@ -126,8 +126,7 @@ TEST(SpeechEngine, ThreadsAreSerialised) {
 }
 
 std::string write_file(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / ("fapc-speech-engine-test-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const fs::path dir = test::scratch_folder("speech-engine-test");
   std::ofstream(dir / name) << text;
   return (dir / name).string();
 }

@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -25,8 +24,7 @@ constexpr int kFps = 25;
 constexpr double kFrame = 1.0 / kFps;
 
 std::string write_fml(const std::string& name, const std::string& talks) {
-  const fs::path dir = fs::temp_directory_path() / ("fapc-speech-test-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const fs::path dir = test::scratch_folder("speech-test");
   const fs::path path = dir / name;
   std::ofstream(path) << "<fml><story><action>" << talks << "</action></story></fml>\n";
   return path.string();

@@ -64,6 +64,12 @@ std::string slurp_and_remove(const std::string& path) {
 }
 }  // namespace
 
+std::string scratch_folder(const std::string& name) {
+  const fs::path folder = fs::temp_directory_path() / ("fapc-" + name + "-" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  return folder.string();
+}
+
 CommandRun run_shell(const std::string& command) {
   static int counter = 0;
   const std::string stem = (fs::temp_directory_path() / ("fapc-test-" + std::to_string(::getpid()) +

@@ -12,6 +12,9 @@ std::string corpus_dir();  // source_dir() + "/corpus"
 std::string fapc_program();  // the built fapc program
 
 std::string read_text(const std::string& path);  // bytes as they are; fails the test if missing
+// A folder of this test process's own for the files a test writes: "fapc-<name>-<pid>" under the
+// system's temporary folder, made if it is not there.
+std::string scratch_folder(const std::string& name);
 // Every regular file under `folder` whose name ends with `suffix`, sorted.
 std::vector<std::string> files_under(const std::string& folder, const std::string& suffix);
 
