@@ -38,14 +38,16 @@ struct Projected {
   double inverse_depth = 0;
   bool in_front = false;
   double motion = 0;  // millimetres, to the same point in the other frame
+  double shade = 0;
 };
 
 class Rasteriser {
  public:
   Rasteriser(const Camera& c, int w, int h)
       : image_{w, h, std::vector<int>(static_cast<std::size_t>(w) * h, -1),
+               std::vector<double>(static_cast<std::size_t>(w) * h, 0.0),
+               std::vector<double>(static_cast<std::size_t>(w) * h, 0.0),
                std::vector<double>(static_cast<std::size_t>(w) * h, 0.0)} {
-    depth_.assign(image_.material.size(), 0.0);  // 1 / depth: larger is nearer; 0 is infinitely far
     eye_ = c.position;
     back_ = unit(sub(c.position, c.target));  // three.js's camera looks down its -z
     right_ = unit(cross({0, 1, 0}, back_));
@@ -85,10 +87,11 @@ class Rasteriser {
         if (wa < 0 || wb < 0 || wc < 0) continue;
         const double inverse_depth = wa * a.inverse_depth + wb * b.inverse_depth + wc * c.inverse_depth;
         const std::size_t i = static_cast<std::size_t>(y) * image_.width + x;
-        if (inverse_depth <= depth_[i]) continue;
-        depth_[i] = inverse_depth;
+        if (inverse_depth <= image_.inverse_depth[i]) continue;
+        image_.inverse_depth[i] = inverse_depth;
         image_.material[i] = material;
         image_.motion[i] = wa * a.motion + wb * b.motion + wc * c.motion;
+        image_.shade[i] = wa * a.shade + wb * b.shade + wc * c.shade;
       }
   }
 
@@ -96,7 +99,6 @@ class Rasteriser {
 
  private:
   MaterialImage image_;
-  std::vector<double> depth_;
   V eye_{}, back_{}, right_{}, up_{};
   double focal_ = 1, aspect_ = 1;
 };
@@ -124,16 +126,30 @@ std::vector<V> scene_vertices(const HeadFrame& frame) {
   return out;
 }
 
+// The light each of those vertices takes: its neutral normal turned as the vertex is.
+std::vector<double> scene_shades(const HeadFrame& frame) {
+  const V lamp = unit({0.45, 0.5, 0.75});
+  auto shade = [&](V n) { return 0.3 + 0.7 * std::max(0.0, dot(n, lamp)); };
+  std::vector<double> out;
+  auto as_v = [](Vec3 n) { return V{n.x, n.y, n.z}; };
+  for (const Vec3& n : head_mesh().normals) out.push_back(shade(rotate(frame.head, as_v(n))));
+  for (int e = 0; e < 2; ++e)
+    for (const Vec3& n : eyeball_mesh().normals) out.push_back(shade(rotate(frame.head, rotate(frame.eyes[e], as_v(n)))));
+  return out;
+}
+
 MaterialImage rasterise_frame(const HeadFrame& frame, const Camera& camera, int width, int height,
                               const HeadFrame* other) {
   Rasteriser r(camera, width, height);
   const std::vector<V> here = scene_vertices(frame);
   const std::vector<V> there = other ? scene_vertices(*other) : here;
+  const std::vector<double> shades = scene_shades(frame);
   std::vector<Projected> points;
   for (std::size_t i = 0; i < here.size(); ++i) {
     points.push_back(r.project(here[i]));
     const V d = sub(here[i], there[i]);
     points.back().motion = std::sqrt(dot(d, d)) * 1e3;
+    points.back().shade = shades[i];
   }
   const std::size_t head = head_mesh().positions.size(), eye = eyeball_mesh().positions.size();
   draw_parts(r, head_mesh().parts, points);
@@ -143,6 +159,11 @@ MaterialImage rasterise_frame(const HeadFrame& frame, const Camera& camera, int 
     draw_parts(r, eyeball_mesh().parts, eye_points);
   }
   return r.take();
+}
+
+std::array<double, 3> project_point(const Camera& camera, int width, int height, const std::array<double, 3>& point) {
+  const Projected p = Rasteriser(camera, width, height).project(point);
+  return {p.x, p.y, p.inverse_depth};
 }
 
 }  // namespace fapc::head3d::reference
