@@ -152,21 +152,24 @@ TEST(AdaptiveModel, KeepsTheCountsOfAPlainListOfFrequencies) {
       AdaptiveModel m;
       m.reset(n);
       std::vector<std::int32_t> counts(static_cast<std::size_t>(n), 1);
-      const auto cum = [&](int j) {
-        std::int32_t sum = 0;
-        for (int i = j; i < n; ++i) sum += counts[static_cast<std::size_t>(i)];
-        return sum;
-      };
+      std::int32_t total = n;  // the sum of the counts, kept as they change
+      std::vector<std::int32_t> suffix(static_cast<std::size_t>(n) + 1);  // cum(j), made at each check
+      const auto cum = [&](int j) { return suffix[static_cast<std::size_t>(j)]; };
       for (int step = 0; step < 40000; ++step) {
         int s = static_cast<int>(rng() % static_cast<unsigned>(n));
         if (crowded) s = std::clamp(n / 2 + static_cast<int>(rng() % 7) - 3, 0, n - 1);
         if (n > 1) {
-          if (cum(0) == kMaxFrequency)
-            for (std::int32_t& c : counts) c = (c + 1) / 2;
+          if (total == kMaxFrequency) {
+            total = 0;
+            for (std::int32_t& c : counts) total += c = (c + 1) / 2;
+          }
           ++counts[static_cast<std::size_t>(s)];
+          ++total;
         }
         m.update(s);
         if (step % 997 != 0 && step < 39990) continue;
+        for (int j = n - 1; j >= 0; --j) suffix[static_cast<std::size_t>(j)] = suffix[static_cast<std::size_t>(j) + 1] + counts[static_cast<std::size_t>(j)];
+        ASSERT_EQ(cum(0), total);
         ASSERT_EQ(m.total(), cum(0)) << n << " step " << step;
         for (int j = 0; j <= n; ++j) ASSERT_EQ(m.cum(j), cum(j)) << n << " cum " << j << " step " << step;
         for (std::int32_t t = 0; t < m.total(); t += 1 + static_cast<std::int32_t>(rng() % 37)) {
