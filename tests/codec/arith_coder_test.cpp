@@ -28,8 +28,7 @@ struct Segment {
   int trailer_bits = 0;
 };
 
-std::vector<std::uint8_t> encode_segments(const std::vector<Segment>& segments,
-                                          std::vector<AdaptiveModel> models) {
+std::vector<std::uint8_t> encode_segments(const std::vector<Segment>& segments, std::vector<AdaptiveModel> models) {
   BitWriter out;
   ArithEncoder coder(out);
   for (const Segment& segment : segments) {
@@ -152,7 +151,7 @@ TEST(AdaptiveModel, KeepsTheCountsOfAPlainListOfFrequencies) {
       AdaptiveModel m;
       m.reset(n);
       std::vector<std::int32_t> counts(static_cast<std::size_t>(n), 1);
-      std::int32_t total = n;  // the sum of the counts, kept as they change
+      std::int32_t total = n;                                             // the sum of the counts, kept as they change
       std::vector<std::int32_t> suffix(static_cast<std::size_t>(n) + 1);  // cum(j), made at each check
       const auto cum = [&](int j) { return suffix[static_cast<std::size_t>(j)]; };
       for (int step = 0; step < 40000; ++step) {
@@ -168,7 +167,9 @@ TEST(AdaptiveModel, KeepsTheCountsOfAPlainListOfFrequencies) {
         }
         m.update(s);
         if (step % 997 != 0 && step < 39990) continue;
-        for (int j = n - 1; j >= 0; --j) suffix[static_cast<std::size_t>(j)] = suffix[static_cast<std::size_t>(j) + 1] + counts[static_cast<std::size_t>(j)];
+        for (int j = n - 1; j >= 0; --j)
+          suffix[static_cast<std::size_t>(j)] =
+              suffix[static_cast<std::size_t>(j) + 1] + counts[static_cast<std::size_t>(j)];
         ASSERT_EQ(cum(0), total);
         ASSERT_EQ(m.total(), cum(0)) << n << " step " << step;
         for (int j = 0; j <= n; ++j) ASSERT_EQ(m.cum(j), cum(j)) << n << " cum " << j << " step " << step;
@@ -232,7 +233,8 @@ TEST(ArithCoder, RandomStreamsWithRandomModelsRoundTrip) {
         segment.symbols.push_back(c);
       }
       segment.trailer_bits = static_cast<int>(rng() % 33);
-      segment.trailer = segment.trailer_bits == 0 ? 0 : static_cast<std::uint32_t>(rng()) >> (32 - segment.trailer_bits);
+      segment.trailer =
+          segment.trailer_bits == 0 ? 0 : static_cast<std::uint32_t>(rng()) >> (32 - segment.trailer_bits);
     }
     const auto bytes = encode_segments(segments, models);
     expect_decodes(bytes, segments, models, bits_of(segments, models));

@@ -103,7 +103,8 @@ face::Image side_by_side(const std::vector<face::Image>& panels) {
   for (std::size_t k = 0; k < panels.size(); ++k)
     for (int y = 0; y < kPanelHeight; ++y)
       for (int x = 0; x < kPanelWidth; ++x)
-        out.pixels[static_cast<std::size_t>(y) * out.width + static_cast<int>(k) * kPanelWidth + x] = panels[k].at(x, y);
+        out.pixels[static_cast<std::size_t>(y) * out.width + static_cast<int>(k) * kPanelWidth + x] =
+            panels[k].at(x, y);
   return out;
 }
 
@@ -188,7 +189,8 @@ TEST(HeadFigures, EachFapMovesTheSkinAroundItsPoint) {
     // At a weight that moves the FAP's own point by 8 mm, about as far as faces go.
     const MorphTarget& target = morph_targets()[target_of(fap)];
     double largest = 0;
-    for (const Vec3& d : target.displacements) largest = std::max(largest, std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z));
+    for (const Vec3& d : target.displacements)
+      largest = std::max(largest, std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z));
     HeadFrame f = neutral;
     f.weights[target_of(fap)] = 8 / largest;
     const reference::MaterialImage image =

@@ -64,7 +64,8 @@ TEST(EarlyFrameLimit, RefusesEveryCorpusScriptAsRenderingItsTimelineWould) {
       refused += expect_refused_as_rendering_would(input, options);
   }
   EXPECT_GT(scripts, 40u / test::kSweepStride);
-  EXPECT_GT(refused, 40u / test::kSweepStride);  // most scripts at the lowest limits: errors compared, not only successes
+  EXPECT_GT(refused,
+            40u / test::kSweepStride);  // most scripts at the lowest limits: errors compared, not only successes
 }
 
 // The Mimic compiler works out the timeline's end and the clip that ends it before making any
