@@ -1,7 +1,7 @@
 // .bml as an input: BML blocks (docs/bml.md). Speech is spoken as FML talk is (--voice,
 // --speech-rate); --max-runs bounds the behaviours.
 #include "fapc/bml/bml.hpp"
-#include "formats.hpp"
+#include "fapc/pipeline/registry.hpp"
 #include "speech_options.hpp"
 #include "timeline_input.hpp"
 

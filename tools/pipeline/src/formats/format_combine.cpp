@@ -4,7 +4,7 @@
 
 #include "fapc/codec/file_io.hpp"
 #include "fapc/pipeline/combine.hpp"
-#include "formats.hpp"
+#include "fapc/pipeline/registry.hpp"
 
 namespace fapc::pipeline::builtin {
 

@@ -7,7 +7,7 @@
 #include "fapc/face/pictures.hpp"
 #include "fapc/face/webm.hpp"
 #include "fapc/head3d/gltf_writer.hpp"
-#include "formats.hpp"
+#include "fapc/pipeline/registry.hpp"
 
 namespace fapc::pipeline::builtin {
 

@@ -6,7 +6,7 @@
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "fapc/pipeline/fba_io.hpp"
-#include "formats.hpp"
+#include "fapc/pipeline/registry.hpp"
 
 namespace fapc::pipeline::builtin {
 

@@ -5,7 +5,7 @@
 #include "../fba_frame_writer.hpp"
 #include "../verify_streams.hpp"
 #include "fapc/pipeline/fba_io.hpp"
-#include "formats.hpp"
+#include "fapc/pipeline/registry.hpp"
 
 namespace fapc::pipeline::builtin {
 

@@ -1,7 +1,7 @@
 // .fml as an input: FML documents (docs/fml.md). --event chooses excl branches, --duration ends
 // indefinite loops, --profile names the parameters of param moves.
 #include "fapc/fml/fml.hpp"
-#include "formats.hpp"
+#include "fapc/pipeline/registry.hpp"
 #include "speech_options.hpp"
 #include "timeline_input.hpp"
 

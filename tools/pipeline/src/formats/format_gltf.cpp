@@ -1,7 +1,7 @@
 // The 3D head outputs: .glb (binary glTF 2.0) and .gltf (JSON with the buffer embedded), written
 // by fapc::head3d from the frames of any input (docs/render.md, "The 3D head").
 #include "fapc/head3d/gltf_writer.hpp"
-#include "formats.hpp"
+#include "fapc/pipeline/registry.hpp"
 
 namespace fapc::pipeline::builtin {
 

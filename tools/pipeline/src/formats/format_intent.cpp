@@ -5,7 +5,7 @@
 
 #include "fapc/codec/file_io.hpp"
 #include "fapc/intent/intent.hpp"
-#include "formats.hpp"
+#include "fapc/pipeline/registry.hpp"
 #include "speech_options.hpp"
 #include "timeline_input.hpp"
 

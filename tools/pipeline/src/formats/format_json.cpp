@@ -1,6 +1,6 @@
 // .json output: the curves JSON of docs/cli.md (time-value lists after blending and thinning).
 #include "curves_json.hpp"
-#include "formats.hpp"
+#include "fapc/pipeline/registry.hpp"
 
 namespace fapc::pipeline::builtin {
 

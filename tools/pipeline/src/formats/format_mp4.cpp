@@ -11,7 +11,7 @@
 #include "fapc/mpeg4/mp4_reader.hpp"
 #include "fapc/mpeg4/mp4_writer.hpp"
 #include "fapc/pipeline/fba_io.hpp"
-#include "formats.hpp"
+#include "fapc/pipeline/registry.hpp"
 
 namespace fapc::pipeline::builtin {
 

@@ -3,7 +3,7 @@
 #include <filesystem>
 
 #include "fapc/pipeline/plot.hpp"
-#include "formats.hpp"
+#include "fapc/pipeline/registry.hpp"
 
 namespace fapc::pipeline::builtin {
 

@@ -1,5 +1,5 @@
 // .timeline output: the shared timeline as text (docs/timeline.md), for debugging front ends.
-#include "formats.hpp"
+#include "fapc/pipeline/registry.hpp"
 
 namespace fapc::pipeline::builtin {
 

@@ -2,7 +2,7 @@
 // which reader takes the document (docs/bml.md, "Inputs named .xml"): the row whose xml_roots name
 // it. Any other root is refused naming it and the roots fapc reads.
 #include "fapc/codec/file_io.hpp"
-#include "formats.hpp"
+#include "fapc/pipeline/registry.hpp"
 #include "formats/xml_root.hpp"
 
 namespace fapc::pipeline::builtin {

@@ -10,7 +10,7 @@
 #include "fapc/audio_codec/aac.hpp"
 #include "fapc/mpeg4/mp4_writer.hpp"
 #include "fapc/mpeg4/xmta_writer.hpp"
-#include "formats.hpp"
+#include "fapc/pipeline/registry.hpp"
 
 namespace fapc::pipeline::builtin {
 

@@ -6,7 +6,7 @@
 
 #include "fapc/transcoder/timeline_from_frames.hpp"
 #include "fapc/xmto/xmto.hpp"
-#include "formats.hpp"
+#include "fapc/pipeline/registry.hpp"
 #include "input_chain.hpp"
 #include "speech_options.hpp"
 #include "timeline_input.hpp"
