@@ -7,7 +7,7 @@
 #include "fapc/audio_codec/aac.hpp"
 #include "tone.hpp"
 
-namespace fapc::audio {
+namespace fapc::audio_codec {
 namespace {
 
 TEST(Aac, AudioSpecificConfigFromTheStandardsSyntax) {
@@ -49,4 +49,4 @@ TEST(Aac, RateWithoutAnIndexIsUnsupported) {
 }
 
 }  // namespace
-}  // namespace fapc::audio
+}  // namespace fapc::audio_codec

@@ -8,7 +8,7 @@
 #include "fapc/mpeg4/xmta_writer.hpp"
 #include "support/test_support.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 namespace {
 
 void expect_valid(const std::string& text, const std::string& name) {
@@ -101,4 +101,4 @@ TEST(XmtaWriter, FirstFrameAfterZeroStartsFromAnEmptyFace) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

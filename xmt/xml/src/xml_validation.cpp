@@ -36,7 +36,7 @@
 #include "xml_tag_scan.hpp"
 #include "fapc/xml/xml_document.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xml {
 
 namespace {
 
@@ -478,4 +478,4 @@ Result<ValidationReport> validate_xml(std::string_view text_in, const std::strin
   return std::move(*outcome);
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xml

@@ -11,7 +11,7 @@
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/mpeg4/fba_track.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 // Descriptor and command tags (14496-1 §7.2.2.1, 14496-14 §3.1).
 inline constexpr std::uint8_t kObjectDescriptorUpdateTag = 0x01;
@@ -94,4 +94,4 @@ Result<std::vector<ObjectDescriptor>> decode_object_descriptor_updates(const Byt
                                                                       std::uint64_t base,
                                                                       const std::string& file);
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4
