@@ -4,6 +4,7 @@
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "fapc/pipeline/fba_io.hpp"
+#include "fapc/pipeline/json_access.hpp"
 #include "../frame_source.hpp"
 #include "fap_text_outputs.hpp"
 #include "formats.hpp"
@@ -52,7 +53,7 @@ Result<Loaded> load_fap(const std::string& path, const ConvertOptions& options) 
   }
   loaded.frame_lines = std::move(read->value_lines);
   loaded.warnings = std::move(read->warnings);
-  if (options.facts) loaded.facts = facts_of(read->facts);
+  if (options.facts) loaded.facts = json_value(facts_of(read->facts));
   return loaded;
 }
 

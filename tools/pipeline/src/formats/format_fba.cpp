@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "fapc/pipeline/fba_io.hpp"
+#include "fapc/pipeline/json_access.hpp"
 #include "../fba_frame_writer.hpp"
 #include "../verify_streams.hpp"
 #include "formats.hpp"
@@ -52,7 +53,7 @@ Result<Loaded> load_fba(const std::string& path, const ConvertOptions& options) 
   loaded.frames = std::move(decoded->sequence);
   loaded.frames.name = std::filesystem::path(path).stem().string();
   loaded.warnings = std::move(decoded->warnings);
-  if (options.facts) loaded.facts = facts_of(decoded->info);
+  if (options.facts) loaded.facts = json_value(facts_of(decoded->info));
   return loaded;
 }
 

@@ -6,6 +6,7 @@
 
 #include "fapc/codec/file_io.hpp"
 #include "fapc/pipeline/fba_io.hpp"
+#include "fapc/pipeline/json_access.hpp"
 #include "fapc/mpeg4/mp4_reader.hpp"
 #include "fapc/mpeg4/mp4_writer.hpp"
 #include "../audio_io.hpp"
@@ -123,7 +124,7 @@ Result<Loaded> load_mp4(const std::string& path, const ConvertOptions& options) 
     if (!audio) return audio.error();
     loaded.audio = std::move(*audio);
   }
-  if (options.facts) loaded.facts = facts_of(&*mp4);
+  if (options.facts) loaded.facts = json_value(facts_of(&*mp4));
   return loaded;
 }
 
