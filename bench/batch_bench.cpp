@@ -217,18 +217,18 @@ int per_node(const std::string& fapc, const fs::path& work, std::size_t files, s
     return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
            static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) / 1e6;
   };
-  for (const auto coder : {audio::AacCoder::twoloop, audio::AacCoder::fast}) {
+  for (const auto coder : {audio_codec::AacCoder::twoloop, audio_codec::AacCoder::fast}) {
     const double start = cpu_of_this_process();
-    Result<audio::AacStream> aac = audio::encode_aac(voice, "talk.mp4", 64000, 0, coder);
-    for (int repeat = 1; aac && repeat < 5; ++repeat) aac = audio::encode_aac(voice, "talk.mp4", 64000, 0, coder);
+    Result<audio_codec::AacStream> aac = audio_codec::encode_aac(voice, "talk.mp4", 64000, 0, coder);
+    for (int repeat = 1; aac && repeat < 5; ++repeat) aac = audio_codec::encode_aac(voice, "talk.mp4", 64000, 0, coder);
     const double seconds = (cpu_of_this_process() - start) / 5;  // CPU seconds per file
-    auto decoded = aac ? audio::decode_aac(*aac, "talk.mp4") : Result<std::vector<std::int16_t>>(aac.error());
+    auto decoded = aac ? audio_codec::decode_aac(*aac, "talk.mp4") : Result<std::vector<std::int16_t>>(aac.error());
     if (!decoded) {
       std::cerr << "batch_bench: " << decoded.error().message << "\n";
       return 1;
     }
     const double snr = snr_db(voice.samples, *decoded);
-    const bool fast = coder == audio::AacCoder::fast;
+    const bool fast = coder == audio_codec::AacCoder::fast;
     per_file[fast] = seconds;
     std::size_t bytes = 0;
     for (const auto& frame : aac->frames) bytes += frame.size();

@@ -1,4 +1,4 @@
-# Writes OUT, a C++ file defining fapc::xmt::embedded_schemas(): every schema in SCHEMAS (a list
+# Writes OUT, a C++ file defining fapc::xml::embedded_schemas(): every schema in SCHEMAS (a list
 # of .xsd paths) as a name -> text table, so the fapc program validates without the source tree.
 # Run as a script: cmake -DOUT=... -DSCHEMAS=... -P EmbedSchemas.cmake
 include(${CMAKE_CURRENT_LIST_DIR}/EmbedText.cmake)
@@ -9,7 +9,7 @@ fapc_write_if_different(${OUT}
 #include <string>
 #include <string_view>
 
-namespace fapc::xmt {
+namespace fapc::xml {
 
 const std::map<std::string, std::string_view>& embedded_schemas() {
   static const std::map<std::string, std::string_view> schemas = {
@@ -17,5 +17,5 @@ ${body}  };
   return schemas;
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xml
 ")

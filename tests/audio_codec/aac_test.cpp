@@ -7,7 +7,7 @@
 #include "fapc/audio_codec/aac.hpp"
 #include "tone.hpp"
 
-namespace fapc::audio {
+namespace fapc::audio_codec {
 namespace {
 
 TEST(Aac, AudioSpecificConfigFromTheStandardsSyntax) {
@@ -51,4 +51,4 @@ TEST(Aac, RateWithoutAnIndexIsUnsupported) {
 }
 
 }  // namespace
-}  // namespace fapc::audio
+}  // namespace fapc::audio_codec

@@ -18,6 +18,7 @@
 #include "fapc/pipeline/batch_merge.hpp"
 #include "fapc/pipeline/batch_resume.hpp"
 #include "fapc/pipeline/batch_shard.hpp"
+#include "fapc/pipeline/json_access.hpp"
 
 namespace fapc {
 namespace {
@@ -222,14 +223,14 @@ TEST(MergeReports, EveryPlannedJobGetsItsBestResult) {
   EXPECT_EQ(merged->no_result, std::vector<std::string>{"e"});
   EXPECT_TRUE(merged->missing_shards.empty());
   EXPECT_FALSE(merged->complete());
-  const auto& totals = merged->report["totals"];
+  const auto& totals = json_of(merged->report)["totals"];
   EXPECT_EQ(totals["jobs"], 6);
   EXPECT_EQ(totals["converted"], 3);  // a, c (converted beats up to date), f
   EXPECT_EQ(totals["up_to_date"], 1);
   EXPECT_EQ(totals["failed"], 1);
   EXPECT_EQ(totals["not_run"], 1);
   std::vector<std::string> inputs;
-  for (const auto& job : merged->report["jobs"]) inputs.push_back(job["input"].get<std::string>());
+  for (const auto& job : json_of(merged->report)["jobs"]) inputs.push_back(job["input"].get<std::string>());
   EXPECT_EQ(inputs, (std::vector<std::string>{"a", "b", "c", "d", "e", "f"}));
   const std::string junit = pipeline::junit_from_report(merged->report);
   EXPECT_NE(junit.find("tests=\"6\" failures=\"1\" errors=\"1\""), std::string::npos) << junit;
@@ -243,7 +244,7 @@ TEST(MergeReports, MissingShardsAndMismatchesAreSaid) {
   ASSERT_TRUE(merged);
   EXPECT_EQ(merged->missing_shards, std::vector<std::size_t>{1});
   EXPECT_EQ(merged->unnamed_without_result, 1u);
-  EXPECT_EQ(merged->report["totals"]["not_run"], 1);
+  EXPECT_EQ(json_of(merged->report)["totals"]["not_run"], 1);
   EXPECT_NE(pipeline::junit_from_report(merged->report).find("name=\"shard 1/3\""), std::string::npos);
   auto counts = pipeline::merge_batch_reports({{"s0.json", report(0, 3, 3, {})}, {"t.json", report(0, 4, 3, {})}});
   ASSERT_FALSE(counts);

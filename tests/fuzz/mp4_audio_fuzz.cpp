@@ -9,7 +9,7 @@
 #include "fapc/mpeg4/mp4_reader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  using namespace fapc::xmt;
+  using namespace fapc::mpeg4;
   auto mp4 = read_mp4(Bytes(data, data + size), "fuzz.mp4");
   if (!mp4.ok()) return 0;
   const Mp4Track* found = find_audio_track(*mp4);
@@ -22,7 +22,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // The media holds at most its access units' ticks; the length never passes them.
   if (track->media_start + track->length < track->length) std::abort();
   if (track->length > (std::uint64_t{1} << 22)) return 0;  // decoding is bounded by the caller's limit
-  fapc::audio::AacStream stream;
+  fapc::audio_codec::AacStream stream;
   stream.sample_rate = static_cast<int>(track->sample_rate);
   stream.channels = track->channels < 1 ? 1 : track->channels;
   stream.audio_specific_config = track->decoder_specific_info;
@@ -31,7 +31,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   stream.length = track->length;
   stream.config_offset = track->config_offset;
   stream.frame_offsets = track->sample_offsets;
-  auto samples = fapc::audio::decode_aac(stream, "fuzz.mp4");
+  auto samples = fapc::audio_codec::decode_aac(stream, "fuzz.mp4");
   if (samples.ok() && samples->size() != track->length) std::abort();
   // The decoder's errors name the configuration or the access unit (issue 32).
   if (!samples.ok() && samples.error().where.byte_offset < 0) std::abort();

@@ -8,7 +8,7 @@
 #include "fapc/mpeg4/mp4_writer.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  using namespace fapc::xmt;
+  using namespace fapc::mpeg4;
   auto mp4 = read_mp4(Bytes(data, data + size), "fuzz.mp4");
   if (!mp4.ok()) return 0;
   (void)read_scene(*mp4);

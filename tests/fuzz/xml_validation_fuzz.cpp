@@ -10,7 +10,7 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  auto report = fapc::xmt::validate_xml(text, "fuzz.xml");
+  auto report = fapc::xml::validate_xml(text, "fuzz.xml");
   if (!report) {
     fapc::fuzz::require_placed(report.error());
     return 0;

@@ -14,7 +14,7 @@
 #include "fapc/mpeg4/scene.hpp"
 #include "test_tracks.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 namespace {
 
 std::string bit_string(const Bytes& bytes) {
@@ -165,4 +165,4 @@ TEST(Mp4Audio, RejectsAudioTheAccessUnitsCannotHold) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

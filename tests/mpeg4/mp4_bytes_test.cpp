@@ -11,7 +11,7 @@
 #include "fapc/mpeg4/scene.hpp"
 #include "test_tracks.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 namespace {
 
 Bytes slice(const Bytes& data, std::uint64_t offset, std::size_t size) {
@@ -123,4 +123,4 @@ TEST(Mp4Bytes, SampleTableTimingAndSync) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

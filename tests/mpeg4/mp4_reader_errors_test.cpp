@@ -11,7 +11,7 @@
 #include "fapc/mpeg4/mp4_writer.hpp"
 #include "test_tracks.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 namespace {
 
 Bytes written() { return *write_mp4(test::hand_made_track()); }
@@ -161,4 +161,4 @@ TEST(BifsErrors, DecoderStopsAtTheFirstUnknownThing) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

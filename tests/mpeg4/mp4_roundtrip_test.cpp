@@ -6,7 +6,7 @@
 #include "support/test_support.hpp"
 #include "test_tracks.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 namespace {
 
 Mp4File written(const FbaTrackInput& track) {
@@ -87,4 +87,4 @@ TEST(Mp4RoundTrip, ReadsTheFileGpacBuildsFromOurXmt) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

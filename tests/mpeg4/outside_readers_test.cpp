@@ -12,7 +12,7 @@
 #include "support/test_support.hpp"
 #include "test_tracks.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 namespace {
 
 namespace fs = std::filesystem;
@@ -115,4 +115,4 @@ TEST(OutsideReaders, AcceptTheMp4OfEveryBundledExample) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

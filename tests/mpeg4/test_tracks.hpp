@@ -6,7 +6,7 @@
 #include "fapc/codec/fap_sequence.hpp"
 #include "fapc/mpeg4/fba_track.hpp"
 
-namespace fapc::xmt::test {
+namespace fapc::mpeg4::test {
 
 inline FbaTrackInput hand_made_track(int samples = 10, std::uint32_t timescale = 25, int intra_every = 5) {
   FbaTrackInput t;
@@ -42,4 +42,4 @@ inline const FapFrame& frame_with_viseme() {
   return frame;
 }
 
-}  // namespace fapc::xmt::test
+}  // namespace fapc::mpeg4::test

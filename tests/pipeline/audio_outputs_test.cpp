@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "fapc/pipeline/info.hpp"
+#include "fapc/pipeline/json_access.hpp"
 #include "fapc/pipeline/registry.hpp"
 #include "fapc/pipeline/validate.hpp"
 #include "fapc/pipeline/verify.hpp"
@@ -113,7 +114,7 @@ TEST(AudioOutputs, InfoReportsTheAudioAndVerifyChecksItsSpan) {
   const std::string path = write(face_with_voice(0.3), dir / "voice.mp4");
   auto info = describe(path);
   ASSERT_TRUE(info.ok());
-  const auto& format = (*info)["format"];
+  const auto& format = json_of(*info)["format"];
   EXPECT_EQ(format["audio_codec"], "AAC-LC (mp4a.40.2)");
   EXPECT_EQ(format["audio_sample_rate"], kRate);
   EXPECT_EQ(format["audio_channels"], 1);

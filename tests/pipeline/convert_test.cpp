@@ -6,6 +6,7 @@
 
 #include "fapc/pipeline/convert.hpp"
 #include "fapc/pipeline/info.hpp"
+#include "fapc/pipeline/json_access.hpp"
 #include "fapc/pipeline/verify.hpp"
 #include "pipeline_test_helpers.hpp"
 #include "support/test_support.hpp"
@@ -58,10 +59,10 @@ TEST(Convert, StrictTurnsWarningsIntoAnErrorAndWritesNothing) {
 TEST(Info, FactsComeFromTheOneRead) {
   auto info = pipeline::describe(anger());
   ASSERT_TRUE(info) << format_diagnostic(info.error());
-  EXPECT_EQ((*info)["kind"], "fap");
-  EXPECT_EQ((*info)["frames"], 108);
-  ASSERT_TRUE(info->contains("format"));
-  EXPECT_TRUE((*info)["format"].contains("variant"));
+  EXPECT_EQ(json_of(*info)["kind"], "fap");
+  EXPECT_EQ(json_of(*info)["frames"], 108);
+  ASSERT_TRUE(json_of(*info).contains("format"));
+  EXPECT_TRUE(json_of(*info)["format"].contains("variant"));
 }
 
 TEST(Loading, AScriptCanStopAtItsTimeline) {

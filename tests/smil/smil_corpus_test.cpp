@@ -8,6 +8,7 @@
 #include <map>
 
 #include "fapc/pipeline/convert.hpp"
+#include "fapc/pipeline/json_access.hpp"
 #include "support/test_support.hpp"
 
 namespace fapc {
@@ -71,8 +72,8 @@ TEST(SmilCorpus, AScriptNamedXmlIsReadByItsRoot) {
   fs::remove(copy);
   ASSERT_TRUE(as_xml) << format_diagnostic(as_xml.error());
   ASSERT_TRUE(as_smil) << format_diagnostic(as_smil.error());
-  EXPECT_EQ(as_xml->facts["format"], "SMIL-Agent");
-  EXPECT_EQ(as_xml->facts["recognised_by"], "root <seq>");
+  EXPECT_EQ(json_of(as_xml->facts)["format"], "SMIL-Agent");
+  EXPECT_EQ(json_of(as_xml->facts)["recognised_by"], "root <seq>");
   ASSERT_EQ(as_xml->frames.frames.size(), as_smil->frames.frames.size());
   for (std::size_t i = 0; i < as_xml->frames.frames.size(); ++i)
     for (int fap = 1; fap <= kFapCount; ++fap)

@@ -106,11 +106,11 @@ TEST(ReaderTimelines, Mp4) {
   const test::CommandRun run = test::run_fapc("compile " + source + " -o '" + written + "'");
   ASSERT_EQ(run.exit_status, 0) << run.err;
   const std::string bytes = read_bytes(fs::relative(written, test::source_dir()).string());
-  const auto mp4 = xmt::read_mp4(xmt::Bytes(bytes.begin(), bytes.end()), source);
+  const auto mp4 = mpeg4::read_mp4(mpeg4::Bytes(bytes.begin(), bytes.end()), source);
   ASSERT_TRUE(mp4.ok()) << format_diagnostic(mp4.error());
-  const auto track = xmt::read_fba_track(*mp4);
+  const auto track = mpeg4::read_fba_track(*mp4);
   ASSERT_TRUE(track.ok()) << format_diagnostic(track.error());
-  const auto decoded = decode_fba(xmt::fba_stream_from_track(*track), {.file = source});
+  const auto decoded = decode_fba(mpeg4::fba_stream_from_track(*track), {.file = source});
   ASSERT_TRUE(decoded.ok()) << format_diagnostic(decoded.error());
   expect_frames_dump("mp4", source, decoded->sequence);
 }

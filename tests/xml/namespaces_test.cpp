@@ -9,7 +9,7 @@
 #include "fapc/xml/xml_validation.hpp"
 #include "fapc/xmto/xmto.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xml {
 namespace {
 
 bool validates_kind(const std::string& expected) {
@@ -23,4 +23,4 @@ TEST(SchemaNamespaces, AgreeWithTheWriterAndTheReader) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::xml

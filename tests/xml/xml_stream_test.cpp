@@ -92,7 +92,7 @@ TEST(StreamedDocument, SaysWhenTheTextMustBeReadWhole) {
 }  // namespace
 }  // namespace fapc::xml
 
-namespace fapc::xmt {
+namespace fapc::xml {
 namespace {
 
 std::vector<std::string> messages(const Diagnostics& diagnostics) {
@@ -129,4 +129,4 @@ TEST(StreamedReaders, AModelAfterTheStoryIsStillRead) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::xml

@@ -8,7 +8,7 @@
 #include "fapc/mpeg4/xmta_writer.hpp"
 #include "fapc/xml/xml_validation.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 namespace {
 
 TEST(XmtaEscaping, AttributeValuesSurviveEveryCharacterThatNeedsEscaping) {
@@ -20,4 +20,4 @@ TEST(XmtaEscaping, AttributeValuesSurviveEveryCharacterThatNeedsEscaping) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

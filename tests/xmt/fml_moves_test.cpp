@@ -4,7 +4,7 @@
 // model's ranges, fap by number or name, param through the profile, talk onto visemes.
 #include "fml_test_helpers.hpp"
 
-namespace fapc::xmt {
+namespace fapc::fml {
 namespace {
 
 using namespace fml_test;
@@ -173,4 +173,4 @@ TEST(FmlMoves, ATalkFileOtherThanPhonemesIsSilentWithAWarning) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::fml

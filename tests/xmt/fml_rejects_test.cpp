@@ -10,7 +10,7 @@
 #include "fapc/fml/fml.hpp"
 #include "support/test_support.hpp"
 
-namespace fapc::xmt {
+namespace fapc::fml {
 namespace {
 
 const std::map<std::string, std::string>& expected_errors() {
@@ -172,4 +172,4 @@ TEST(FmlRejects, TheInnerFmlOfFmlApmlIsRecognised) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::fml

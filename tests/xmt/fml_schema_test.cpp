@@ -11,7 +11,7 @@
 #include "fapc/xml/xml_validation.hpp"
 #include "support/test_support.hpp"
 
-namespace fapc::xmt {
+namespace fapc::fml {
 namespace {
 
 std::string in_story(const std::string& content) { return "<fml>\n<story>\n" + content + "\n</story>\n</fml>\n"; }
@@ -141,4 +141,4 @@ TEST(FmlSchema, RejectsWhatTheReaderRejectsOrWarnsAbout) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::fml

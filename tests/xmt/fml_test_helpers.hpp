@@ -11,7 +11,7 @@
 #include "fapc/fml/fml.hpp"
 #include "xmto_test_helpers.hpp"
 
-namespace fapc::xmt::fml_test {
+namespace fapc::fml::fml_test {
 
 // A whole document: the model's items on line 2, the story's content from line 3 on.
 inline std::string document(const std::string& story, const std::string& model = "") {
@@ -57,4 +57,4 @@ inline std::vector<std::pair<double, double>> keys(const Clip& clip) {
   return out;
 }
 
-}  // namespace fapc::xmt::fml_test
+}  // namespace fapc::fml::fml_test

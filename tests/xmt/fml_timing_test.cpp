@@ -4,7 +4,7 @@
 // and indefinitely; excl branches chosen by event values; templates played by behavior.
 #include "fml_test_helpers.hpp"
 
-namespace fapc::xmt {
+namespace fapc::fml {
 namespace {
 
 using namespace fml_test;
@@ -154,4 +154,4 @@ TEST(FmlTiming, UnknownAttributesAreReportedOncePerElementAndName) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::fml

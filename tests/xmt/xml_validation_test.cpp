@@ -9,7 +9,7 @@
 #include "fapc/xml/xml_validation.hpp"
 #include "support/test_support.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xml {
 namespace {
 
 // A small valid document, edited by each test. Line 10 holds the FAP node.
@@ -132,4 +132,4 @@ TEST(XmlValidation, SchemaDeclaresEveryFapFieldUnderItsBifsName) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::xml

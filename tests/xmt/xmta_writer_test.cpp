@@ -8,7 +8,7 @@
 #include "fapc/xml/xml_validation.hpp"
 #include "support/test_support.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 namespace {
 
 void expect_valid(const std::string& text, const std::string& name) {
@@ -102,4 +102,4 @@ TEST(XmtaWriter, FirstFrameAfterZeroStartsFromAnEmptyFace) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

@@ -6,7 +6,7 @@
 
 #include "xmto_test_helpers.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 namespace {
 
 using test::document;
@@ -169,4 +169,4 @@ TEST(XmtoAnimation, WithoutALoaderOrWithAUrlItIsAnError) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

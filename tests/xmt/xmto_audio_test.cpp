@@ -9,7 +9,7 @@
 #include "support/test_support.hpp"
 #include "xmto_test_helpers.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 namespace {
 
 namespace fs = std::filesystem;
@@ -137,4 +137,4 @@ TEST(XmtoAudio, ErrorsAreAtTheElement) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

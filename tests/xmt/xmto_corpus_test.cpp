@@ -14,7 +14,7 @@
 #include "fapc/xmto/xmto.hpp"
 #include "support/test_support.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 namespace {
 
 namespace fs = std::filesystem;
@@ -119,4 +119,4 @@ TEST(XmtoCorpus, UsesEverySupportedElementAndAttribute) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

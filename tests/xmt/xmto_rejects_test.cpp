@@ -9,7 +9,7 @@
 #include "fapc/xmto/xmto.hpp"
 #include "support/test_support.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 namespace {
 
 const std::map<std::string, std::string>& expected_errors() {
@@ -163,4 +163,4 @@ TEST(XmtoRejects, EveryBadDocumentGivesItsExactDiagnostic) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

@@ -9,7 +9,7 @@
 #include "fapc/xml/xml_validation.hpp"
 #include "support/test_support.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 namespace {
 
 std::string in_body(const std::string& content) {
@@ -73,4 +73,4 @@ TEST(XmtoSchema, DocumentsWithoutTheNamespaceAreNotValidated) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

@@ -10,7 +10,7 @@
 #include "fapc/transcoder/render.hpp"
 #include "fapc/xmto/xmto.hpp"
 
-namespace fapc::xmt::test {
+namespace fapc::xmto::test {
 
 // A whole document around `body_content` (the body's children), laid out one line per part so
 // that the first child is on line 3.
@@ -54,4 +54,4 @@ inline double value_at(const Timeline& timeline, const std::string& target, doub
   return TimelineEvaluator(timeline).value_at(target, t);
 }
 
-}  // namespace fapc::xmt::test
+}  // namespace fapc::xmto::test

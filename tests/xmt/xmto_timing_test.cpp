@@ -6,7 +6,7 @@
 
 #include "xmto_test_helpers.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 namespace {
 
 using test::document;
@@ -216,4 +216,4 @@ TEST(XmtoTiming, RefusesToScheduleMillionsOfRuns) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

@@ -6,7 +6,7 @@
 
 #include "xmto_test_helpers.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 namespace {
 
 using test::document;
@@ -207,4 +207,4 @@ TEST(XmtoValues, IgnoredCombinationsAreReported) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

@@ -8,6 +8,7 @@
 #include "fapc/commands.hpp"
 #include "fapc/options.hpp"
 #include "fapc/pipeline/batch_merge.hpp"
+#include "fapc/pipeline/json_access.hpp"
 #include "fapc/report.hpp"
 
 namespace fapc::cli {
@@ -29,11 +30,12 @@ int run_batch_report(const std::vector<std::string>& argv) {
   }
   auto merged = pipeline::merge_batch_reports(reports);
   if (!merged) return report_outcome({}, merged.error());
-  const auto& totals = merged->report["totals"];
+  const auto& totals = json_of(merged->report)["totals"];
   for (const std::string& input : merged->failed) std::cout << "FAILED " << input << '\n';
   for (const std::string& input : merged->no_result) std::cout << "no result: " << input << '\n';
   for (const std::size_t index : merged->missing_shards)
-    std::cout << "no report: shard " << index << "/" << merged->report["merged"]["shards"].get<std::size_t>() << '\n';
+    std::cout << "no report: shard " << index << "/" << json_of(merged->report)["merged"]["shards"].get<std::size_t>()
+              << '\n';
   std::cout << reports.size() << " reports, " << totals["jobs"].get<std::size_t>()
             << " jobs planned: " << totals["converted"].get<std::size_t>() << " converted, "
             << totals["up_to_date"].get<std::size_t>() << " up to date, " << totals["failed"].get<std::size_t>()

@@ -8,6 +8,7 @@
 #include "fapc/commands.hpp"
 #include "fapc/options.hpp"
 #include "fapc/pipeline/info.hpp"
+#include "fapc/pipeline/json_access.hpp"
 #include "fapc/pipeline/json_output.hpp"
 #include "fapc/report.hpp"
 #include "fapc/streams.hpp"
@@ -89,11 +90,11 @@ int run_info(const std::vector<std::string>& argv) {
     if (args.flag("json")) std::cout << pipeline::error_document(info.error()).dump(2) << '\n';
     return report_outcome({}, info.error());
   }
-  if (input != args.positionals().front()) (*info)["file"] = args.positionals().front();  // not the copy's name
+  if (input != args.positionals().front()) json_of(*info)["file"] = args.positionals().front();  // not the copy's name
   if (args.flag("json")) {
     std::cout << info->dump(2) << '\n';
   } else {
-    print_text(*info);
+    print_text(json_of(*info));
   }
   return kExitOk;
 }

@@ -6,9 +6,9 @@
 
 namespace fapc::pipeline {
 
-Result<std::optional<xmt::AudioTrackInput>> pack_audio_track(const AudioTrack& audio, double face_seconds,
-                                                             const std::string& where, const Limits& limits) {
-  if (audio.samples.empty() || audio.sample_rate <= 0) return std::optional<xmt::AudioTrackInput>{};
+Result<std::optional<mpeg4::AudioTrackInput>> pack_audio_track(const AudioTrack& audio, double face_seconds,
+                                                               const std::string& where, const Limits& limits) {
+  if (audio.samples.empty() || audio.sample_rate <= 0) return std::optional<mpeg4::AudioTrackInput>{};
   // The track lasts as long as the face: silence after the voice is coded, never stored.
   std::size_t length = audio.samples.size();
   const double face_end = std::round((face_seconds - audio.start) * audio.sample_rate);
@@ -22,22 +22,22 @@ Result<std::optional<xmt::AudioTrackInput>> pack_audio_track(const AudioTrack& a
   // Sound before the face's time 0 has nowhere to play: it is cut (the edit list skips it).
   const double rate = audio.sample_rate;
   const auto skip = audio.start < 0 ? static_cast<std::uint64_t>(std::llround(-audio.start * rate)) : 0;
-  if (skip >= length) return std::optional<xmt::AudioTrackInput>{};
-  auto aac = audio::encode_aac(audio, where, 64000, length);
+  if (skip >= length) return std::optional<mpeg4::AudioTrackInput>{};
+  auto aac = audio_codec::encode_aac(audio, where, 64000, length);
   if (!aac) return aac.error();
-  xmt::AudioTrackInput track;
+  mpeg4::AudioTrackInput track;
   track.decoder_specific_info = std::move(aac->audio_specific_config);
   track.sample_rate = static_cast<std::uint32_t>(aac->sample_rate);
   track.channels = aac->channels;
   track.samples = std::move(aac->frames);
-  track.samples_per_unit = audio::kAacFrameLength;
+  track.samples_per_unit = audio_codec::kAacFrameLength;
   track.media_start = aac->priming + skip;
   track.length = aac->length - skip;
   track.delay_ms = audio.start > 0 ? static_cast<std::uint32_t>(std::llround(audio.start * 1000)) : 0;
-  return std::optional<xmt::AudioTrackInput>(std::move(track));
+  return std::optional<mpeg4::AudioTrackInput>(std::move(track));
 }
 
-Result<AudioTrack> unpack_audio_track(const xmt::AudioTrackInput& track, const std::string& where,
+Result<AudioTrack> unpack_audio_track(const mpeg4::AudioTrackInput& track, const std::string& where,
                                       const Limits& limits) {
   const Location at{where, 0, 0, -1};
   if (static_cast<double>(track.length) > static_cast<double>(limits.max_audio_samples))
@@ -46,7 +46,7 @@ Result<AudioTrack> unpack_audio_track(const xmt::AudioTrackInput& track, const s
   if (static_cast<double>(track.length) * 2 > static_cast<double>(limits.max_decompressed_bytes))
     return limit_error(at, "the audio track decodes to " + std::to_string(track.length * 2) + " bytes",
                        Limit::decompressed_bytes, limits);
-  audio::AacStream stream;
+  audio_codec::AacStream stream;
   stream.sample_rate = static_cast<int>(track.sample_rate);
   stream.channels = std::max(1, track.channels);
   stream.audio_specific_config = track.decoder_specific_info;
@@ -55,7 +55,7 @@ Result<AudioTrack> unpack_audio_track(const xmt::AudioTrackInput& track, const s
   stream.length = track.length;
   stream.config_offset = track.config_offset;
   stream.frame_offsets = track.sample_offsets;
-  auto samples = audio::decode_aac(stream, where);
+  auto samples = audio_codec::decode_aac(stream, where);
   if (!samples) return samples.error();
   AudioTrack out;
   out.sample_rate = static_cast<int>(track.sample_rate);

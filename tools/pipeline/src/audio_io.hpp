@@ -15,12 +15,12 @@ namespace fapc::pipeline {
 // before the face starts). Sound before the face's time 0 is cut; sound that ends before the face
 // (`face_seconds` long) is followed by silence up to the face's end, so that the audio track's
 // presentation (its delay, then its sound) spans the face track's. `where` names the output.
-Result<std::optional<xmt::AudioTrackInput>> pack_audio_track(const AudioTrack& audio, double face_seconds,
-                                                             const std::string& where, const Limits& limits);
+Result<std::optional<mpeg4::AudioTrackInput>> pack_audio_track(const AudioTrack& audio, double face_seconds,
+                                                               const std::string& where, const Limits& limits);
 
 // The sound of an MP4 audio track, starting at its delay. The decoded size is limited by
 // --max-decompressed-bytes (two bytes a sample). `where` names the file.
-Result<AudioTrack> unpack_audio_track(const xmt::AudioTrackInput& track, const std::string& where,
+Result<AudioTrack> unpack_audio_track(const mpeg4::AudioTrackInput& track, const std::string& where,
                                       const Limits& limits);
 
 }  // namespace fapc::pipeline

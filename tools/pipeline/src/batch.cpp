@@ -12,6 +12,7 @@
 
 #include "fapc/pipeline/batch_merge.hpp"
 #include "fapc/pipeline/batch_resume.hpp"
+#include "fapc/pipeline/json_access.hpp"
 #include "fapc/pipeline/json_output.hpp"
 #include "fapc/speech/engine.hpp"
 
@@ -298,7 +299,7 @@ std::string batch_summary_line(const BatchJob& job, const BatchOutcome& outcome)
 }
 
 std::string junit_report(const std::vector<BatchJob>& jobs, const std::vector<BatchOutcome>& outcomes) {
-  return junit_from_report(batch_report_json(jobs, outcomes, false));
+  return junit_from_report(json_value(batch_report_json(jobs, outcomes, false)));
 }
 
 }  // namespace fapc::pipeline

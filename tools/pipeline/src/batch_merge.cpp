@@ -5,6 +5,7 @@
 #include <set>
 
 #include "fapc/codec/xml_escape.hpp"
+#include "fapc/pipeline/json_access.hpp"
 #include "fapc/pipeline/json_output.hpp"
 
 namespace fapc::pipeline {
@@ -102,7 +103,7 @@ Result<MergedReport> merge_batch_reports(const std::vector<ReportText>& reports)
     jobs.push_back(std::move(job));
   }
   merged.unnamed_without_result = *planned > best.size() ? *planned - best.size() : 0;
-  json& out = merged.report;
+  json& out = json_of(merged.report);
   out["schema_version"] = kJsonSchemaVersion;
   out["shard"] = nullptr;
   out["planned"] = *planned;
@@ -121,7 +122,8 @@ Result<MergedReport> merge_batch_reports(const std::vector<ReportText>& reports)
   return merged;
 }
 
-std::string junit_from_report(const json& report) {
+std::string junit_from_report(const JsonValue& value) {
+  const json& report = json_of(value);
   std::string cases;
   std::size_t tests = 0, failures = 0, errors = 0;
   const auto add_error = [&](const std::string& name, const std::string& type, const std::string& message) {

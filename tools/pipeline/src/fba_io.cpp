@@ -12,7 +12,7 @@ namespace {
 // The decoder reads the raw stream rebuilt from the track (configuration, one stuffing byte, the
 // samples); a byte offset in it is turned back into the file's offset of that sample byte, so an
 // error points into the .mp4 the user has.
-Diagnostic in_file(Diagnostic d, const xmt::Mp4Track& track, const xmt::FbaTrackInput& input) {
+Diagnostic in_file(Diagnostic d, const mpeg4::Mp4Track& track, const mpeg4::FbaTrackInput& input) {
   if (d.where.byte_offset < 0) return d;
   auto at = static_cast<std::uint64_t>(d.where.byte_offset);
   const std::uint64_t header = input.decoder_specific_info.size() + 1;
@@ -103,9 +103,9 @@ Result<EncodedFba> encode_checked(const Loaded& loaded, const ConvertOptions& op
   return encoded;
 }
 
-xmt::FbaTrackView fba_track_view(const EncodedFba& encoded, int fps) {
+mpeg4::FbaTrackView fba_track_view(const EncodedFba& encoded, int fps) {
   const auto dsi = fba_decoder_specific_info();
-  xmt::FbaTrackView track{xmt::Bytes(dsi.begin(), dsi.end()), static_cast<std::uint32_t>(fps), {}};
+  mpeg4::FbaTrackView track{mpeg4::Bytes(dsi.begin(), dsi.end()), static_cast<std::uint32_t>(fps), {}};
   track.samples.reserve(encoded.planes.size());
   for (const CodedPlane& plane : encoded.planes)
     track.samples.push_back({std::span<const std::uint8_t>(encoded.bytes).subspan(plane.offset, plane.size),
@@ -113,27 +113,27 @@ xmt::FbaTrackView fba_track_view(const EncodedFba& encoded, int fps) {
   return track;
 }
 
-xmt::FbaTrackInput pack_fba_track(const EncodedFba& encoded, int fps) {
-  xmt::FbaTrackInput track;
+mpeg4::FbaTrackInput pack_fba_track(const EncodedFba& encoded, int fps) {
+  mpeg4::FbaTrackInput track;
   const auto dsi = fba_decoder_specific_info();
   track.decoder_specific_info.assign(dsi.begin(), dsi.end());
   track.timescale = static_cast<std::uint32_t>(fps);
   for (const CodedPlane& plane : encoded.planes) {
     const auto first = encoded.bytes.begin() + static_cast<std::ptrdiff_t>(plane.offset);
-    track.samples.push_back(xmt::FbaSample{xmt::Bytes(first, first + static_cast<std::ptrdiff_t>(plane.size)),
-                                           static_cast<std::uint32_t>(plane.frames), plane.intra});
+    track.samples.push_back(mpeg4::FbaSample{mpeg4::Bytes(first, first + static_cast<std::ptrdiff_t>(plane.size)),
+                                             static_cast<std::uint32_t>(plane.frames), plane.intra});
   }
   return track;
 }
 
-Result<Mp4Fba> decode_mp4_fba(const xmt::Mp4File& mp4, const std::string& path, const Limits& limits) {
-  auto track = xmt::read_fba_track(mp4);
+Result<Mp4Fba> decode_mp4_fba(const mpeg4::Mp4File& mp4, const std::string& path, const Limits& limits) {
+  auto track = mpeg4::read_fba_track(mp4);
   if (!track) return track.error();
   FbaDecodeOptions options;
   options.file = path;
   options.max_frames = limits.max_frames;
-  auto decoded = decode_fba(xmt::fba_stream_from_track(*track), options);
-  if (!decoded) return in_file(decoded.error(), *xmt::find_fba_track(mp4), *track);
+  auto decoded = decode_fba(mpeg4::fba_stream_from_track(*track), options);
+  if (!decoded) return in_file(decoded.error(), *mpeg4::find_fba_track(mp4), *track);
   decoded->warnings.insert(decoded->warnings.begin(), mp4.warnings.begin(), mp4.warnings.end());
   return Mp4Fba{std::move(*track), std::move(*decoded)};
 }
@@ -141,7 +141,7 @@ Result<Mp4Fba> decode_mp4_fba(const xmt::Mp4File& mp4, const std::string& path, 
 Result<Mp4Fba> read_mp4_fba(const std::string& path, const Limits& limits) {
   auto bytes = read_file_bytes(path, limits);
   if (!bytes) return bytes.error();
-  auto mp4 = xmt::read_mp4(xmt::Bytes(bytes->begin(), bytes->end()), path);
+  auto mp4 = mpeg4::read_mp4(mpeg4::Bytes(bytes->begin(), bytes->end()), path);
   if (!mp4) return mp4.error();
   return decode_mp4_fba(*mp4, path, limits);
 }

@@ -54,7 +54,7 @@ nlohmann::ordered_json summarise(const std::string& path, const std::string& kin
 
 }  // namespace
 
-Result<nlohmann::ordered_json> describe(const std::string& path, const Limits& limits, const std::string& kind) {
+Result<JsonValue> describe(const std::string& path, const Limits& limits, const std::string& kind) {
   ConvertOptions options;
   options.facts = true;  // the format's facts come from this one read
   options.limits = limits;
@@ -65,9 +65,9 @@ Result<nlohmann::ordered_json> describe(const std::string& path, const Limits& l
   auto loaded = format->load(path, reading.options());
   if (!loaded) return loaded.error();
   nlohmann::ordered_json info = summarise(path, format->kind, *loaded);
-  if (!loaded->facts.empty()) info["format"] = std::move(loaded->facts);
+  if (!loaded->facts.empty()) info["format"] = std::move(json_of(loaded->facts));
   info["warnings"] = diagnostics_json(loaded->warnings);
-  return info;
+  return json_value(std::move(info));
 }
 
 }  // namespace fapc::pipeline

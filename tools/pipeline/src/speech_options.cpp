@@ -5,7 +5,7 @@
 
 namespace fapc::pipeline {
 
-void set_speech(xmt::FmlOptions& fml, const ConvertOptions& options) {
+void set_speech(fml::FmlOptions& fml, const ConvertOptions& options) {
   fml.synthesize = options.speech_engine ? speech::engine() : Synthesizer{};
   const std::string& voice = options.voice;
   const std::size_t plus = voice.find('+');
@@ -20,7 +20,7 @@ void set_speech(xmt::FmlOptions& fml, const ConvertOptions& options) {
 
 bml::BmlOptions bml_options(const ConvertOptions& options) {
   // The speech settings are the FML reader's: one place reads --voice and --speech-rate.
-  xmt::FmlOptions speech;
+  fml::FmlOptions speech;
   set_speech(speech, options);
   bml::BmlOptions out;
   out.synthesize = std::move(speech.synthesize);

@@ -10,7 +10,7 @@ namespace fapc::pipeline {
 
 // Sets fml's synthesizer, language, voice variant, rate, speech length limit and coarticulation.
 // options.voice is LANGUAGE, LANGUAGE+VARIANT or +VARIANT ("fr", "fr+f3", "+m3").
-void set_speech(xmt::FmlOptions& fml, const ConvertOptions& options);
+void set_speech(fml::FmlOptions& fml, const ConvertOptions& options);
 
 // The same settings for the readers that speak as BML does (BML, SMIL-Agent), with the behaviour
 // limit (--max-runs) and the frames the document will be rendered at.

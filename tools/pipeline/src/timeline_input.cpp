@@ -77,7 +77,7 @@ Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name, 
     Loaded loaded;
     loaded.timeline = std::move(timeline);
     loaded.warnings = std::move(warnings);
-    loaded.facts = std::move(facts);
+    loaded.facts = json_value(std::move(facts));
     return loaded;
   }
   // The outputs' own limits on the length first: a four-hour video is refused before its 360,000
@@ -101,7 +101,7 @@ Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name, 
   if (options.curves) loaded.curves = render_curves(timeline, CurveOptions{options.fps, 1e-6});
   loaded.timeline = std::move(timeline);
   loaded.warnings = std::move(warnings);
-  loaded.facts = std::move(facts);
+  loaded.facts = json_value(std::move(facts));
   loaded.warnings.insert(loaded.warnings.end(), rendered->warnings.begin(), rendered->warnings.end());
   return loaded;
 }

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "fapc/pipeline/json_access.hpp"
 #include "fapc/pipeline/loaded.hpp"
 #include "fapc/pipeline/options.hpp"
 #include "fapc/transcoder/frame_budget.hpp"

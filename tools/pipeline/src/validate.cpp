@@ -4,10 +4,10 @@
 
 namespace fapc::pipeline {
 
-Result<xmt::ValidationReport> validate(const std::string& path) {
+Result<xml::ValidationReport> validate(const std::string& path) {
   auto bytes = read_file_bytes(path);
   if (!bytes) return bytes.error();
-  return xmt::validate_xml(*bytes, path);
+  return xml::validate_xml(*bytes, path);
 }
 
 }  // namespace fapc::pipeline

@@ -136,14 +136,14 @@ namespace {
 // An .mp4's voice: its presentation (the delay, then the sound) must span the face track's: it
 // starts at 0 like every edit list, its sound starts before the face ends, and it ends within one
 // frame of the face's end (docs/mp4-and-xmta.md section 1.2). Checked from the container alone.
-std::optional<Diagnostic> audio_mismatch(const std::string& path, const xmt::Mp4File& mp4,
-                                         const xmt::FbaTrackInput& fba) {
-  const xmt::Mp4Track* voice = xmt::find_audio_track(mp4);
+std::optional<Diagnostic> audio_mismatch(const std::string& path, const mpeg4::Mp4File& mp4,
+                                         const mpeg4::FbaTrackInput& fba) {
+  const mpeg4::Mp4Track* voice = mpeg4::find_audio_track(mp4);
   if (!voice) return std::nullopt;
-  auto audio = xmt::read_audio_track(mp4, *voice);
+  auto audio = mpeg4::read_audio_track(mp4, *voice);
   if (!audio) return audio.error();
   std::uint64_t ticks = 0;
-  for (const xmt::FbaSample& s : fba.samples) ticks += s.duration;
+  for (const mpeg4::FbaSample& s : fba.samples) ticks += s.duration;
   const double frame = fba.samples.empty() ? 0.0 : static_cast<double>(fba.samples.front().duration) / fba.timescale;
   const double face_end = static_cast<double>(ticks) / fba.timescale;
   const double start = audio->delay_ms / 1000.0;
@@ -171,20 +171,20 @@ std::optional<Diagnostic> audio_mismatch(const std::string& path, const xmt::Mp4
 VerifyResult verify_mp4_file(const std::string& path, const Limits& limits) {
   auto raw = read_file_bytes(path, limits);
   if (!raw) return failed(raw.error());
-  auto mp4 = xmt::read_mp4(xmt::Bytes(raw->begin(), raw->end()), path);
+  auto mp4 = mpeg4::read_mp4(mpeg4::Bytes(raw->begin(), raw->end()), path);
   if (!mp4) return failed(mp4.error());
   auto fba = decode_mp4_fba(*mp4, path, limits);
   if (!fba) return failed(fba.error());
   if (auto mismatch = audio_mismatch(path, *mp4, fba->track))
     return failed(std::move(*mismatch), fba->decoded.warnings);
-  const std::vector<xmt::FbaSample>& samples = fba->track.samples;
+  const std::vector<mpeg4::FbaSample>& samples = fba->track.samples;
   std::size_t bytes = 0;
-  for (const xmt::FbaSample& sample : samples) bytes += sample.bytes.size();
+  for (const mpeg4::FbaSample& sample : samples) bytes += sample.bytes.size();
   const auto same = [&](const EncodedFba& again) {
     if (again.planes.size() != samples.size()) return false;
     for (std::size_t k = 0; k < again.planes.size(); ++k) {
       const CodedPlane& plane = again.planes[k];
-      const xmt::FbaSample& sample = samples[k];
+      const mpeg4::FbaSample& sample = samples[k];
       const auto first = again.bytes.begin() + static_cast<std::ptrdiff_t>(plane.offset);
       if (!std::equal(first, first + static_cast<std::ptrdiff_t>(plane.size), sample.bytes.begin(),
                       sample.bytes.end()) ||

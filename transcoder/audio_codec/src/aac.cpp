@@ -11,7 +11,7 @@ extern "C" {
 #include <array>
 #include <cmath>
 
-namespace fapc::audio {
+namespace fapc::audio_codec {
 
 namespace {
 
@@ -211,4 +211,4 @@ Result<std::vector<std::int16_t>> decode_aac(const AacStream& stream, const std:
   return samples;
 }
 
-}  // namespace fapc::audio
+}  // namespace fapc::audio_codec

@@ -3,7 +3,7 @@
 #include <array>
 #include <string>
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 namespace {
 
@@ -63,4 +63,4 @@ Status check_audio_track(const AudioTrackInput& t) {
   return ok_status();
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

@@ -8,7 +8,7 @@
 #include "bit_io.hpp"
 #include "fapc/mpeg4/bifs.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 namespace {
 
@@ -217,4 +217,4 @@ Result<SceneNode> decode_scene_replace(const Bytes& bytes, const BifsConfig& con
   return std::move(*top);
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

@@ -8,7 +8,7 @@
 #include "bit_io.hpp"
 #include "fapc/mpeg4/bifs.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 namespace {
 
@@ -186,4 +186,4 @@ Result<Bytes> encode_scene_replace(const SceneNode& top, const BifsConfig& confi
   return encoder.finish();
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

@@ -5,7 +5,7 @@
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/mpeg4/scene.hpp"
 
-namespace fapc::xmt::bifs {
+namespace fapc::mpeg4::bifs {
 
 namespace {
 
@@ -110,4 +110,4 @@ int bit_size(std::uint32_t max_value) {
   return k;
 }
 
-}  // namespace fapc::xmt::bifs
+}  // namespace fapc::mpeg4::bifs

@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-namespace fapc::xmt::bifs {
+namespace fapc::mpeg4::bifs {
 
 enum class Ndt { top, node3d, fap, viseme, expression, geometry, appearance, fdp, fit, audio };
 enum class FieldKind { sf_int32, sf_bool, sf_float, sf_node, mf_node, mf_url, uncoded };
@@ -52,4 +52,4 @@ const NodeSpec* node_for_code(Ndt ndt, std::uint32_t code);
 // Bits needed to code values 0..max_value (GPAC's gf_get_bit_size, the standard's "nbBits").
 int bit_size(std::uint32_t max_value);
 
-}  // namespace fapc::xmt::bifs
+}  // namespace fapc::mpeg4::bifs

@@ -6,7 +6,7 @@
 
 #include "fapc/mpeg4/fba_track.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 class BitWriter {
  public:
@@ -60,4 +60,4 @@ class BitReader {
   bool failed_ = false;
 };
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

@@ -7,7 +7,7 @@
 
 #include "byte_io.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 class BoxWriter {
  public:
@@ -33,4 +33,4 @@ class BoxWriter {
   std::vector<std::size_t> starts_;
 };
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

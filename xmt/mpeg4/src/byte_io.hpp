@@ -8,7 +8,7 @@
 
 #include "fapc/mpeg4/fba_track.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 class ByteWriter {
  public:
@@ -90,4 +90,4 @@ class ByteReader {
   std::size_t failed_at_ = 0;
 };
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

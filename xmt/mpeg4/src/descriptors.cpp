@@ -6,7 +6,7 @@
 
 #include "byte_io.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 namespace {
 
@@ -248,4 +248,4 @@ Result<std::vector<ObjectDescriptor>> decode_object_descriptor_updates(const Byt
   return ods;
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

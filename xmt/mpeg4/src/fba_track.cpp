@@ -1,6 +1,6 @@
 #include "fapc/mpeg4/fba_track.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 namespace {
 
@@ -93,4 +93,4 @@ Bytes fba_stream_from_track(const FbaTrackInput& track) {
   return out;
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

@@ -1,6 +1,6 @@
 #include "mp4_box_reader.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 Result<std::vector<Box>> read_boxes(ByteReader range, const std::string& file) {
   std::vector<Box> boxes;
@@ -40,4 +40,4 @@ Result<std::vector<Box>> read_boxes(ByteReader range, const std::string& file) {
   return boxes;
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

@@ -8,7 +8,7 @@
 #include "byte_io.hpp"
 #include "fapc/codec/diagnostic.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 struct Box {
   std::string type;             // four characters; bytes outside printable ASCII shown as '?'
@@ -23,4 +23,4 @@ inline Diagnostic box_error(const std::string& file, std::uint64_t offset, const
   return make_error(Location::binary(file, static_cast<std::int64_t>(offset)), message);
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

@@ -7,7 +7,7 @@
 
 #include "mp4_box_reader.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 namespace {
 
@@ -398,4 +398,4 @@ Result<Mp4File> read_mp4(Bytes data, const std::string& file) {
   return out;
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 namespace {
 
@@ -151,4 +151,4 @@ Result<AudioTrackInput> read_audio_track(const Mp4File& mp4, const Mp4Track& t) 
   return out;
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

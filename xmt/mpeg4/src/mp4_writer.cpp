@@ -14,7 +14,7 @@
 #include "fapc/mpeg4/object_descriptors.hpp"
 #include "fapc/mpeg4/scene.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 namespace {
 
@@ -434,4 +434,4 @@ Status write_mp4(const FbaTrackView& fba, const AudioTrackInput* audio, const Mp
   return file.flush();
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

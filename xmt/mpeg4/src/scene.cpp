@@ -5,7 +5,7 @@
 #include "bifs_nodes.hpp"
 #include "fapc/codec/fap_table.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 namespace {
 
@@ -122,4 +122,4 @@ SceneNode with_sound(SceneNode scene, std::uint16_t audio_od_id) {
   return scene;
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

@@ -2,7 +2,7 @@
 
 #include "fapc/codec/xml_escape.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 void XmlOut::start_tag(const std::string& name, const XmlAttributes& attributes) {
   text_.append(2 * open_.size(), ' ');
@@ -28,4 +28,4 @@ void XmlOut::close() {
   text_ += "</" + name + ">\n";
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 using XmlAttributes = std::vector<std::pair<std::string, std::string>>;
 
@@ -24,4 +24,4 @@ class XmlOut {
   std::vector<std::string> open_;
 };
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

@@ -12,7 +12,7 @@
 #include "fapc/mpeg4/scene.hpp"
 #include "xml_out.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 namespace {
 
@@ -243,4 +243,4 @@ std::string write_xmta_commands(const FapSequence& sequence) {
   return xml.take();
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

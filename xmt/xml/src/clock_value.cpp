@@ -9,7 +9,7 @@
 
 #include "fapc/xml/clock_value.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xml {
 namespace {
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
@@ -104,4 +104,4 @@ std::optional<double> parse_clock_value(std::string_view text) {
   return s.find(':') != std::string_view::npos ? clock(s) : timecount(s);
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xml

@@ -2,7 +2,7 @@
 
 #include <cctype>
 
-namespace fapc::xmt {
+namespace fapc::xml {
 
 void OncePerName::report(const std::string& key, Diagnostic warning) {
   const auto [seen, fresh] = seen_.try_emplace(key, Seen{out_.size(), 0});
@@ -38,4 +38,4 @@ void report_stray_text(const xml::XmlDocument& doc, const xmlNode* element, Once
   }
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xml

@@ -1,6 +1,6 @@
 #include "schema_registry.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xml {
 
 namespace {
 
@@ -26,4 +26,4 @@ const SchemaBinding* schema_for_root(std::string_view local_name, std::string_vi
 
 std::span<const SchemaBinding> schema_bindings() { return kSchemaBindings; }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xml

@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-namespace fapc::xmt {
+namespace fapc::xml {
 
 struct SchemaBinding {
   std::string_view kind;    // shown to users
@@ -23,4 +23,4 @@ std::span<const SchemaBinding> schema_bindings();
 // Generated from docs/schemas/*.xsd (cmake/EmbedSchemas.cmake): file name -> schema text.
 const std::map<std::string, std::string_view>& embedded_schemas();
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xml

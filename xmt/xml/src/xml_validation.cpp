@@ -36,7 +36,7 @@
 #include "schema_registry.hpp"
 #include "xml_tag_scan.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xml {
 
 namespace {
 
@@ -489,4 +489,4 @@ Result<ValidationReport> validate_xml(std::string_view text_in, const std::strin
   return std::move(*outcome);
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xml

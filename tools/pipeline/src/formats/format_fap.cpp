@@ -6,6 +6,7 @@
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "fapc/pipeline/fba_io.hpp"
+#include "fapc/pipeline/json_access.hpp"
 #include "fapc/pipeline/registry.hpp"
 
 namespace fapc::pipeline::builtin {
@@ -52,7 +53,7 @@ Result<Loaded> load_fap(const std::string& path, const ConvertOptions& options) 
   }
   loaded.frame_lines = std::move(read->value_lines);
   loaded.warnings = std::move(read->warnings);
-  if (options.facts) loaded.facts = facts_of(read->facts);
+  if (options.facts) loaded.facts = json_value(facts_of(read->facts));
   return loaded;
 }
 

@@ -5,6 +5,7 @@
 #include "../fba_frame_writer.hpp"
 #include "../verify_streams.hpp"
 #include "fapc/pipeline/fba_io.hpp"
+#include "fapc/pipeline/json_access.hpp"
 #include "fapc/pipeline/registry.hpp"
 
 namespace fapc::pipeline::builtin {
@@ -54,7 +55,7 @@ Result<Loaded> load_fba(const std::string& path, const ConvertOptions& options) 
   loaded.frames = std::move(decoded->sequence);
   loaded.frames.name = std::filesystem::path(path).stem().string();
   loaded.warnings = std::move(decoded->warnings);
-  if (options.facts) loaded.facts = facts_of(decoded->info);
+  if (options.facts) loaded.facts = json_value(facts_of(decoded->info));
   return loaded;
 }
 

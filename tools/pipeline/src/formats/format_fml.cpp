@@ -9,8 +9,8 @@ namespace fapc::pipeline::builtin {
 
 namespace {
 
-Result<xmt::FmlDocument> read_document(const std::string& path, const ConvertOptions& options, const Profile& profile) {
-  xmt::FmlOptions fml;
+Result<fml::FmlDocument> read_document(const std::string& path, const ConvertOptions& options, const Profile& profile) {
+  fml::FmlOptions fml;
   fml.events = options.events;
   fml.duration = options.duration;
   fml.max_runs = options.limits.max_runs;
@@ -18,10 +18,10 @@ Result<xmt::FmlDocument> read_document(const std::string& path, const ConvertOpt
   set_speech(fml, options);
   fml.profile = &profile;
   fml.includes = options.includes;
-  return xmt::load_fml(path, fml);
+  return fml::load_fml(path, fml);
 }
 
-nlohmann::ordered_json facts_of(const xmt::FmlDocument& document) {
+nlohmann::ordered_json facts_of(const fml::FmlDocument& document) {
   nlohmann::ordered_json out;
   out["format"] = "FML";
   if (!document.character.empty()) out["character"] = document.character;

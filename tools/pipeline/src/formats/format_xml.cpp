@@ -2,6 +2,7 @@
 // which reader takes the document (docs/bml.md, "Inputs named .xml"): the row whose xml_roots name
 // it. Any other root is refused naming it and the roots fapc reads.
 #include "fapc/codec/file_io.hpp"
+#include "fapc/pipeline/json_access.hpp"
 #include "fapc/pipeline/registry.hpp"
 #include "formats/xml_root.hpp"
 
@@ -35,7 +36,7 @@ Result<Loaded> load_xml(const std::string& path, const ConvertOptions& options) 
   }
   Result<Loaded> loaded = reader->load(path, options);
   if (loaded && options.facts) {
-    loaded->facts["recognised_by"] = "root <" + root.name + ">" + (root.ns.empty() ? "" : " in " + root.ns);
+    json_of(loaded->facts)["recognised_by"] = "root <" + root.name + ">" + (root.ns.empty() ? "" : " in " + root.ns);
   }
   return loaded;
 }

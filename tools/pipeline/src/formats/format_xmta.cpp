@@ -20,25 +20,25 @@ Result<std::string> write_fba_scene(const Loaded& loaded, const std::string& pat
   std::string source, voice_source;
   if (path != "-") {  // "out/face.xmt" names "face.mp4", beside it
     const std::string mp4 = std::filesystem::path(path).stem().string() + ".mp4#";
-    source = mp4 + std::to_string(xmt::kFbaTrackId);
-    voice_source = mp4 + std::to_string(xmt::kAudioTrackId);
+    source = mp4 + std::to_string(mpeg4::kFbaTrackId);
+    voice_source = mp4 + std::to_string(mpeg4::kAudioTrackId);
   }
   // The voice as the .mp4 of the same input carries it (the same configuration, track 11).
-  std::optional<xmt::XmtaAudio> voice;
+  std::optional<mpeg4::XmtaAudio> voice;
   if (loaded.audio && !loaded.audio->samples.empty()) {
-    auto config = audio::aac_lc_mono_config(loaded.audio->sample_rate);
+    auto config = audio_codec::aac_lc_mono_config(loaded.audio->sample_rate);
     if (config.empty())
       return make_error(
           ErrorKind::unsupported,
           loaded.audio->source.file.empty() ? Location{loaded.named(path), 0, 0, -1} : loaded.audio->source,
           "audio at " + std::to_string(loaded.audio->sample_rate) + " Hz has no AAC sampling frequency index");
-    voice = xmt::XmtaAudio{std::move(config), static_cast<std::uint32_t>(loaded.audio->sample_rate), voice_source};
+    voice = mpeg4::XmtaAudio{std::move(config), static_cast<std::uint32_t>(loaded.audio->sample_rate), voice_source};
   }
-  return xmt::write_xmta_fba_scene(xmt::fba_decoder_specific_info(), source, voice ? &*voice : nullptr);
+  return mpeg4::write_xmta_fba_scene(mpeg4::fba_decoder_specific_info(), source, voice ? &*voice : nullptr);
 }
 
 Result<std::string> write_bifs_commands(const Loaded& loaded, const std::string&, const ConvertOptions&) {
-  return xmt::write_xmta_commands(loaded.frames);
+  return mpeg4::write_xmta_commands(loaded.frames);
 }
 
 }  // namespace

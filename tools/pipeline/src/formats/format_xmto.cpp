@@ -18,8 +18,8 @@ namespace {
 // Included inputs get their own length: --duration ends the outer document only. A script is
 // lowered to its timeline and not rendered (its clips join this document's); an input of frames
 // becomes clips holding them.
-Result<xmt::IncludedAnimation> load_animation(const std::string& path, const Location& where,
-                                              const ConvertOptions& options) {
+Result<xmto::IncludedAnimation> load_animation(const std::string& path, const Location& where,
+                                               const ConvertOptions& options) {
   ConvertOptions inner = options;
   inner.duration.reset();
   inner.render = false;
@@ -32,16 +32,16 @@ Result<xmt::IncludedAnimation> load_animation(const std::string& path, const Loc
     if (error.where.line > 0 || error.where.byte_offset >= 0) return error;
     return make_error(error.kind, where, "cannot place '" + path + "': " + error.message);
   }
-  xmt::IncludedAnimation included;
+  xmto::IncludedAnimation included;
   included.timeline = loaded->timeline ? std::move(*loaded->timeline)
                                        : timeline_from_frames(loaded->frames, 0, Location{path, 0, 0, -1});
   included.warnings = std::move(loaded->warnings);
   return included;
 }
 
-Result<xmt::XmtoDocument> read_document(const std::string& path, const ConvertOptions& options,
-                                        const Profile& profile) {
-  xmt::XmtoOptions xmto;
+Result<xmto::XmtoDocument> read_document(const std::string& path, const ConvertOptions& options,
+                                         const Profile& profile) {
+  xmto::XmtoOptions xmto;
   xmto.fml.events = options.events;
   xmto.fml.profile = &profile;
   set_speech(xmto.fml, options);
@@ -59,10 +59,10 @@ Result<xmt::XmtoDocument> read_document(const std::string& path, const ConvertOp
   xmto.load_animation = [&options](const std::string& included, const Location& where) {
     return load_animation(included, where, options);
   };
-  return xmt::load_xmto(path, xmto);
+  return xmto::load_xmto(path, xmto);
 }
 
-nlohmann::ordered_json facts_of(const xmt::XmtoDocument& document) {
+nlohmann::ordered_json facts_of(const xmto::XmtoDocument& document) {
   nlohmann::ordered_json out;
   out["format"] = "XMT-Omega";
   if (!document.meta.empty()) {

@@ -101,7 +101,7 @@ class BmlReader {
   const xml::XmlDocument& doc_;
   const BmlOptions& options_;
   BmlDocument out_;
-  xmt::OncePerName once_;
+  xml::OncePerName once_;
   std::optional<Diagnostic> error_;
   std::vector<ConstraintSource> sources_;
   bool warned_no_engine_ = false;

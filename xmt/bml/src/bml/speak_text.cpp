@@ -32,7 +32,7 @@ Result<SpokenText> speak(const MarkedText& text, const BmlOptions& options, cons
                                       "table, silent, and sync marks fall in proportion to the text"));
     }
     std::string skipped;
-    xmt::Speech speech = xmt::visemes_from_text(text.text, options.words_per_minute * 12 / 175, skipped);
+    fml::Speech speech = fml::visemes_from_text(text.text, options.words_per_minute * 12 / 175, skipped);
     out.visemes = std::move(speech.visemes);
     out.duration = speech.duration;
     for (std::size_t offset : text.mark_offsets)

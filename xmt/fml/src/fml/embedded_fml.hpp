@@ -6,7 +6,7 @@
 #include "fapc/xml/xml_document.hpp"
 #include "fml/fml_tree.hpp"
 
-namespace fapc::xmt {
+namespace fapc::fml {
 
 struct EmbeddedFmlMove {
   FmlLeaf leaf;        // what the move does (move, normal, talk or wait)
@@ -25,4 +25,4 @@ Result<EmbeddedFmlMove> read_embedded_fml_move(const xml::XmlDocument& doc, cons
 // `where`: the talk element.
 Timeline talk_timeline(const FmlTalk& talk, const Location& where, double duration, const Coarticulation& rule);
 
-}  // namespace fapc::xmt
+}  // namespace fapc::fml

@@ -26,7 +26,7 @@
 #include "fml/fml_tree.hpp"
 #include "fml/other_formats.hpp"
 
-namespace fapc::xmt {
+namespace fapc::fml {
 namespace {
 
 using Kind = ScheduleNode::Kind;
@@ -193,7 +193,7 @@ class FmlReader {
   const FmlOptions& options_;
   const Profile* profile_ = nullptr;
   FmlDocument result_;  // before once_, which appends to its warnings
-  OncePerName once_;
+  xml::OncePerName once_;
   std::int64_t speech_text_bytes_ = 0;  // talk text handed to the engine so far
   double speech_seconds_ = 0;           // speech it has made so far
   FmlTree tree_;
@@ -1024,4 +1024,4 @@ Result<FmlDocument> load_fml(const std::string& path, const FmlOptions& options)
   return read_fml_text(source->bytes(), path, options, [&](std::size_t offset) { source->release(offset); });
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::fml

@@ -4,14 +4,14 @@
 
 #include "fapc/xml/clock_value.hpp"
 
-namespace fapc::xmt {
+namespace fapc::fml {
 
 Result<FmlTiming> read_fml_timing(const xml::XmlDocument& doc, const xmlNode* element) {
   FmlTiming timing;
   const auto read = [&](const char* name, std::optional<double>& out) -> Status {
     const auto text = xml::attribute(element, name);
     if (!text) return ok_status();
-    out = parse_clock_value(*text);
+    out = xml::parse_clock_value(*text);
     if (!out) {
       return doc.error(element, name,
                        std::string(name) + " '" + *text + "' is not a time (seconds: 3, 3s, 250ms, 1.5min, 00:01.5)");
@@ -72,4 +72,4 @@ double estimated_runs(const ScheduleNode& node, double available, double& shorte
   return children_runs * std::max(repeats, 1.0);
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::fml

@@ -11,7 +11,7 @@
 #include "fapc/transcoder/schedule.hpp"
 #include "fapc/xml/xml_document.hpp"
 
-namespace fapc::xmt {
+namespace fapc::fml {
 
 struct FmlTiming {
   std::optional<double> begin;
@@ -42,4 +42,4 @@ Timing move_timing(const FmlTiming& timing, double intrinsic);
 double estimated_runs(const ScheduleNode& node, double available, double& shortest,
                       const std::function<double(std::size_t leaf_id)>& leaf_runs);
 
-}  // namespace fapc::xmt
+}  // namespace fapc::fml

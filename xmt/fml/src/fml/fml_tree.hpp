@@ -11,7 +11,7 @@
 #include "fapc/transcoder/timeline.hpp"
 #include "fml/speech_visemes.hpp"
 
-namespace fapc::xmt {
+namespace fapc::fml {
 
 // What a talk says: its visemes and, when spoken, its voice.
 struct FmlTalk {
@@ -51,4 +51,4 @@ Timeline lower_fml(const FmlTree& tree, const Schedule& schedule);
 // errors about the story's length.
 Location story_end_source(const FmlTree& tree, const Schedule& schedule);
 
-}  // namespace fapc::xmt
+}  // namespace fapc::fml

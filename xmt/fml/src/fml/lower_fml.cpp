@@ -7,7 +7,7 @@
 #include "fml/embedded_fml.hpp"
 #include "fml/fml_tree.hpp"
 
-namespace fapc::xmt {
+namespace fapc::fml {
 namespace {
 
 // The clip of one move run: a linear ramp over the run's simple duration, held afterwards.
@@ -109,4 +109,4 @@ Location story_end_source(const FmlTree& tree, const Schedule& schedule) {
   return end_source(schedule, tree.root.source, [&](std::size_t leaf) { return tree.leaves[leaf].where; });
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::fml

@@ -3,7 +3,7 @@
 #include <array>
 #include <string_view>
 
-namespace fapc::xmt {
+namespace fapc::fml {
 
 std::string other_format_name(const xml::XmlDocument& doc, const xmlNode* root) {
   const std::string_view name = xml::local_name(root);
@@ -31,4 +31,4 @@ std::string other_format_name(const xml::XmlDocument& doc, const xmlNode* root) 
   return {};
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::fml

@@ -7,11 +7,11 @@
 
 #include "fapc/xml/xml_document.hpp"
 
-namespace fapc::xmt {
+namespace fapc::fml {
 
 // "Greta FML-APML", "the fml part of a Greta FML-APML document", "APML", "BML", "Xface
 // SMIL-Agent", "Greta ERL", "Greta score", "XMT-Omega", "XMT-A"; empty when the document may be FML.
 // `root` is `doc`'s root; a streamed document is read only as far as its model or story.
 std::string other_format_name(const xml::XmlDocument& doc, const xmlNode* root);
 
-}  // namespace fapc::xmt
+}  // namespace fapc::fml

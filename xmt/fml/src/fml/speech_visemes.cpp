@@ -5,7 +5,7 @@
 
 #include "fapc/xml/text.hpp"
 
-namespace fapc::xmt {
+namespace fapc::fml {
 namespace {
 
 // The letter groups of visemes_from_text, longest first where they overlap.
@@ -213,4 +213,4 @@ Result<Speech> visemes_from_pho(std::string_view text, const std::string& file_n
   return speech;
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::fml

@@ -10,7 +10,7 @@
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/transcoder/speech.hpp"
 
-namespace fapc::xmt {
+namespace fapc::fml {
 
 using fapc::VisemeSpan;
 
@@ -33,4 +33,4 @@ Result<Speech> visemes_from_pho(std::string_view text, const std::string& file_n
 // The viseme of one SAMPA phoneme; 0 for silence, -1 when unknown.
 int viseme_of_phoneme(std::string_view phoneme);
 
-}  // namespace fapc::xmt
+}  // namespace fapc::fml

@@ -32,7 +32,7 @@ class DocumentReader {
   const IntentOptions& options_;
   const vocabulary::BehaviourLexicon& lexicon_;
   IntentDocument out_;
-  xmt::OncePerName once_;
+  xml::OncePerName once_;
 
  private:
   std::int64_t counted_ = 0;

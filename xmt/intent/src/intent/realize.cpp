@@ -65,7 +65,7 @@ std::string named(const Intention& i) { return i.value.empty() ? i.type : i.type
 }  // namespace
 
 void realize(Intention& intention, const vocabulary::BehaviourLexicon& lexicon, const Coarticulation& rule,
-             Timeline& out, xmt::OncePerName& once, Diagnostics& warnings) {
+             Timeline& out, xml::OncePerName& once, Diagnostics& warnings) {
   const std::vector<const LexiconRow*> rows = lexicon.rows_for(intention.type, intention.value);
   if (rows.empty()) {
     const std::string what = lexicon.knows(intention.type)

@@ -10,7 +10,7 @@ namespace fapc::intent {
 // Draws `intention` (its start and end set) into `out`; sets its `behaviours`. Unknown intentions
 // and values, and rows that draw nothing on purpose, are reported once per name through `once`.
 void realize(Intention& intention, const vocabulary::BehaviourLexicon& lexicon, const Coarticulation& rule,
-             Timeline& out, xmt::OncePerName& once, Diagnostics& warnings);
+             Timeline& out, xml::OncePerName& once, Diagnostics& warnings);
 
 // A strength attribute (importance, intensity, activation): 1 when absent; an error at the
 // attribute when it is not a number from 0 to 1.

@@ -118,7 +118,7 @@ class SmilReader {
   const xml::XmlDocument& doc_;
   const SmilOptions& options_;
   SmilDocument out_;
-  xmt::OncePerName once_;
+  xml::OncePerName once_;
   std::optional<Diagnostic> error_;
   std::vector<SmilLeaf> leaves_;
   std::map<std::string, std::size_t> speeches_;  // by id
@@ -184,7 +184,7 @@ class SmilReader {
                               context.language));
       }
     }
-    Result<xmt::FmlTiming> timing = xmt::read_fml_timing(doc_, node);
+    Result<fml::FmlTiming> timing = fml::read_fml_timing(doc_, node);
     if (!timing) {
       fail(timing.error());
       return std::nullopt;
@@ -193,8 +193,8 @@ class SmilReader {
     std::optional<ScheduleNode> placed;
     if (name == "par" || name == "seq") {
       check_attributes(node, {});
-      xmt::report_stray_text(doc_, node, once_);
-      placed = ScheduleNode::group(name == "par" ? Kind::parallel : Kind::sequence, xmt::group_timing(*timing),
+      xml::report_stray_text(doc_, node, once_);
+      placed = ScheduleNode::group(name == "par" ? Kind::parallel : Kind::sequence, fml::group_timing(*timing),
                                    doc_.where(node));
       for (const xmlNode* child : doc_.children(node)) {
         if (std::optional<ScheduleNode> inner = element(child, context)) placed->children.push_back(std::move(*inner));
@@ -257,7 +257,7 @@ class SmilReader {
     return leaves_.size() - 1;
   }
 
-  std::optional<ScheduleNode> speech(const xmlNode* node, const xmt::FmlTiming& timing, const Context& context) {
+  std::optional<ScheduleNode> speech(const xmlNode* node, const fml::FmlTiming& timing, const Context& context) {
     check_attributes(node, kSpeech);
     SmilLeaf leaf;
     leaf.kind = SmilLeaf::Kind::speech;
@@ -287,7 +287,7 @@ class SmilReader {
       said_affects_[leaves_.size()] = std::string(xml::trim(*affect));
     // The duration is the speech's own, known once spoken (set_speech_durations); dur and end
     // place what follows it in a seq.
-    const Timing t = xmt::move_timing(timing, 0);
+    const Timing t = fml::move_timing(timing, 0);
     if (timing.duration || timing.end) leaf.duration = t.duration;
     return ScheduleNode::leaf(add_leaf(std::move(leaf)), t, doc_.where(node));
   }
@@ -355,10 +355,10 @@ class SmilReader {
     return true;
   }
 
-  std::optional<ScheduleNode> display(const xmlNode* node, const xmt::FmlTiming& timing) {
+  std::optional<ScheduleNode> display(const xmlNode* node, const fml::FmlTiming& timing) {
     const bool action = xml::local_name(node) == "action";
     check_attributes(node, kAnchored);
-    xmt::report_stray_text(doc_, node, once_);
+    xml::report_stray_text(doc_, node, once_);
     SmilLeaf leaf;
     leaf.kind = action ? SmilLeaf::Kind::action : SmilLeaf::Kind::affect;
     leaf.where = doc_.where(node);
@@ -376,7 +376,7 @@ class SmilReader {
     if (action && !read_action(node, intensity, leaf, intrinsic)) return std::nullopt;
     if (!action) affect(node, intensity, leaf);
     const bool anchored = xml::attribute(node, "content-id").has_value();
-    Timing t = xmt::move_timing(timing, intrinsic);
+    Timing t = fml::move_timing(timing, intrinsic);
     if (anchored) {
       // Placed at its speech's marks, it takes no time in its container.
       leaf.offset = timing.begin.value_or(0);
@@ -552,7 +552,7 @@ class SmilReader {
   // indefinite repeat is taken to fill kUnendedSeconds when nothing ends it).
   Status check_runs(const ScheduleNode& tree) const {
     double shortest = 0;
-    const double total = xmt::estimated_runs(tree, kUnendedSeconds, shortest, [](std::size_t) { return 1.0; });
+    const double total = fml::estimated_runs(tree, kUnendedSeconds, shortest, [](std::size_t) { return 1.0; });
     if (total <= static_cast<double>(options_.max_runs)) return ok_status();
     Limits limits;
     limits.max_runs = options_.max_runs;

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 namespace {
 
 // SMIL values may carry a '+' sign.
@@ -215,4 +215,4 @@ Curve animation_curve(const AnimationShape& shape, std::span<const double> value
   return curve;
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

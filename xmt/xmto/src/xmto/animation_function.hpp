@@ -10,7 +10,7 @@
 #include "fapc/transcoder/timeline.hpp"
 #include "fapc/xml/xml_document.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 
 enum class CalcMode { linear, discrete, paced };
 
@@ -43,4 +43,4 @@ Result<AnimationFunction> read_animate(const xml::XmlDocument& doc, const xmlNod
                                        Diagnostics& warnings);
 Result<AnimationFunction> read_set(const xml::XmlDocument& doc, const xmlNode* element, std::optional<double> dur);
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

@@ -5,7 +5,7 @@
 #include "fapc/codec/include_policy.hpp"
 #include "fapc/xml/text.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 namespace {
 
 namespace fs = std::filesystem;
@@ -72,4 +72,4 @@ Result<Included> load_included(const xml::XmlDocument& doc, const xmlNode* eleme
   return included;
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

@@ -8,7 +8,7 @@
 #include "fapc/xml/xml_document.hpp"
 #include "fapc/xmto/xmto.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 
 struct Included {
   std::string path;  // as resolved
@@ -21,4 +21,4 @@ struct Included {
 Result<Included> load_included(const xml::XmlDocument& doc, const xmlNode* element, const XmtoOptions& options,
                                Diagnostics& warnings);
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

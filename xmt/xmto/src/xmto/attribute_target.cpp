@@ -6,7 +6,7 @@
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/transcoder/profile.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 namespace {
 
 // BIFS FAP field names (docs/fap-table.md section 5) that are no ISO/IEC 14496-2 name: unambiguous.
@@ -68,4 +68,4 @@ std::optional<AttributeTarget> resolve_attribute_name(std::string_view name, std
   return out;
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

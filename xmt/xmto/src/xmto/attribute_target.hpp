@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 
 struct AttributeTarget {
   std::string target;   // the timeline target: a standard FAP name, viseme.X or expression.X
@@ -17,4 +17,4 @@ struct AttributeTarget {
 // viseme.<name> / expression.<name> weights. Empty with `error` set when it is none of these.
 std::optional<AttributeTarget> resolve_attribute_name(std::string_view name, std::string& error);
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

@@ -13,7 +13,7 @@
 #include "fapc/xml/text.hpp"
 #include "fml/speech_visemes.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 namespace {
 
 namespace fs = std::filesystem;
@@ -79,7 +79,7 @@ Result<Recording> load_recording(const xml::XmlDocument& doc, const xmlNode* ele
   recording.wav_path = *path;
   double length = static_cast<double>(sound->samples.size()) / sound->sample_rate;
   if (const auto clip_end = xml::attribute(element, "clipEnd")) {
-    const auto seconds = parse_clock_value(*clip_end);
+    const auto seconds = xml::parse_clock_value(*clip_end);
     if (!seconds) return doc.error(element, "clipEnd", "clipEnd '" + std::string(*clip_end) + "' is not a clock value");
     length = std::min(length, *seconds);
   }
@@ -95,7 +95,7 @@ Result<Recording> load_recording(const xml::XmlDocument& doc, const xmlNode* ele
     if (!pho_path) return pho_path.error();
     Result<std::string> text = read_bounded(doc, element, pho_name, *pho_path, options);
     if (!text) return text.error();
-    Result<Speech> speech = visemes_from_pho(*text, *pho_path, warnings);
+    Result<fml::Speech> speech = fml::visemes_from_pho(*text, *pho_path, warnings);
     if (!speech) return speech.error();
     recording.pho_path = *pho_path;
     recording.timeline.clips =
@@ -105,4 +105,4 @@ Result<Recording> load_recording(const xml::XmlDocument& doc, const xmlNode* ele
   return recording;
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

@@ -8,7 +8,7 @@
 #include "fapc/xml/xml_document.hpp"
 #include "fapc/xmto/xmto.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 
 struct Recording {
   std::string wav_path;                 // as resolved
@@ -22,4 +22,4 @@ struct Recording {
 Result<Recording> load_recording(const xml::XmlDocument& doc, const xmlNode* element, const XmtoOptions& options,
                                  Diagnostics& warnings);
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

@@ -9,7 +9,7 @@
 #include "fapc/transcoder/render.hpp"
 #include "xmto/xmto_tree.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 namespace {
 
 // The clips made so far and the leaf each comes from (for the order of the timeline), side by
@@ -190,4 +190,4 @@ Location body_end_source(const XmtoTree& tree, const Schedule& schedule) {
   return end_source(schedule, tree.root.source, [&](std::size_t leaf) { return tree.leaves[leaf].where; });
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 
 RunBudget RunBudget::inside(const SmilTiming& timing, std::optional<double> implicit) const {
   constexpr double kForever = std::numeric_limits<double>::infinity();
@@ -26,4 +26,4 @@ RunBudget RunBudget::inside(const SmilTiming& timing, std::optional<double> impl
   return RunBudget{simple.value_or(active), repeats * runs};
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

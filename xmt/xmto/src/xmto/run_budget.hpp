@@ -10,7 +10,7 @@
 
 #include "xmto/smil_timing.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 
 struct RunBudget {
   double available = std::numeric_limits<double>::infinity();  // time the parent leaves
@@ -21,4 +21,4 @@ struct RunBudget {
   RunBudget inside(const SmilTiming& timing, std::optional<double> implicit) const;
 };
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

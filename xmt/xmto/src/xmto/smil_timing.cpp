@@ -8,7 +8,7 @@
 #include "fapc/xml/text.hpp"
 #include "fapc/xmto/xmto.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 namespace {
 
 constexpr const char* kClockForms = "a clock value such as 3, 3s, 250ms or 00:00:03.5";
@@ -43,7 +43,7 @@ class Reader {
       sign = s.front() == '-' ? -1 : 1;
       s = xml::trim(s.substr(1));
     }
-    if (const auto seconds = parse_clock_value(s)) {
+    if (const auto seconds = xml::parse_clock_value(s)) {
       value = sign * *seconds;
       return;
     }
@@ -60,7 +60,7 @@ class Reader {
       return;
     }
     if (allow_media && s == "media") return;
-    const auto seconds = parse_clock_value(s);
+    const auto seconds = xml::parse_clock_value(s);
     if (!seconds) {
       fail(name, std::string(name) + " '" + *text + "': expected " + kClockForms +
                      (allow_media ? ", indefinite or media" : " or indefinite"));
@@ -159,4 +159,4 @@ Timing to_schedule_timing(const SmilTiming& smil, std::optional<double> implicit
   return timing;
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

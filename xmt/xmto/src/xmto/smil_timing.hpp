@@ -9,7 +9,7 @@
 #include "fapc/transcoder/timeline.hpp"
 #include "fapc/xml/xml_document.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 
 struct SmilTiming {
   std::optional<double> begin;    // signed offset; empty: no begin attribute
@@ -43,4 +43,4 @@ Result<SmilTiming> read_smil_timing(const xml::XmlDocument& doc, const xmlNode* 
 // (an included animation's length); empty for animate, set and the time containers.
 Timing to_schedule_timing(const SmilTiming& smil, std::optional<double> implicit);
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

@@ -22,7 +22,7 @@
 #include "xmto/smil_timing.hpp"
 #include "xmto/xmto_tree.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 namespace {
 
 using Kind = ScheduleNode::Kind;
@@ -131,7 +131,7 @@ class DocumentReader {
   std::string root_namespace_;
   std::optional<Diagnostic> error_;
   XmtoDocument result_;  // before once_, which appends to its warnings
-  OncePerName once_;
+  xml::OncePerName once_;
   XmtoTree tree_;
   struct ElementFacts {
     std::uint32_t name = 0;  // in names_
@@ -393,7 +393,7 @@ class DocumentReader {
   // returns the expressions of the FML moves before it to 0; talk and wait are placed like an
   // included animation of their length.
   std::optional<ScheduleNode> fml_move(const xmlNode* node, const RunBudget& budget) {
-    Result<EmbeddedFmlMove> move = read_embedded_fml_move(doc_, node, options_.fml);
+    Result<fml::EmbeddedFmlMove> move = fml::read_embedded_fml_move(doc_, node, options_.fml);
     if (!move) {
       fail(move.error());
       return std::nullopt;
@@ -412,14 +412,14 @@ class DocumentReader {
       keep_function(leaf, target, function);
       return leaf;
     };
-    const FmlLeaf& fml = move->leaf;
+    const fml::FmlLeaf& fml = move->leaf;
     Leaf leaf;
     switch (fml.kind) {
-      case FmlLeaf::Kind::move:
+      case fml::FmlLeaf::Kind::move:
         if (weight_target(move->target)) fml_expressions_.insert(move->target);
         if (!within_budget(node, runs)) return std::nullopt;
         return add_leaf(node, hold(move->target, fml.value), move->timing);
-      case FmlLeaf::Kind::normal: {
+      case fml::FmlLeaf::Kind::normal: {
         if (!within_budget(node, runs * std::max<double>(1, static_cast<double>(fml_expressions_.size()))))
           return std::nullopt;
         ScheduleNode group = ScheduleNode::group(Kind::parallel, move->timing, doc_.where(node));
@@ -429,11 +429,11 @@ class DocumentReader {
           group.children.push_back(add_leaf(node, hold(target, 0), child));
         return scheduled_node(std::move(group), node);
       }
-      case FmlLeaf::Kind::talk:
+      case fml::FmlLeaf::Kind::talk:
         leaf.included =
-            std::make_unique<Timeline>(talk_timeline(*fml.talk, fml.where, length, options_.fml.coarticulation));
+            std::make_unique<Timeline>(fml::talk_timeline(*fml.talk, fml.where, length, options_.fml.coarticulation));
         break;
-      case FmlLeaf::Kind::wait:
+      case fml::FmlLeaf::Kind::wait:
         leaf.included = std::make_unique<Timeline>(Timeline{{}, length, doc_.where(node)});
         break;
     }
@@ -509,4 +509,4 @@ Result<XmtoDocument> load_xmto(const std::string& path, const XmtoOptions& optio
   return read_xmto_text(source->bytes(), path, options, [&](std::size_t offset) { source->release(offset); });
 }
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

@@ -13,7 +13,7 @@
 #include "fapc/transcoder/timeline.hpp"
 #include "xmto/animation_function.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 
 struct Leaf {
   Location where;
@@ -54,4 +54,4 @@ Timeline lower_to_timeline(const XmtoTree& tree, const Schedule& schedule);
 // for errors about the body's length.
 Location body_end_source(const XmtoTree& tree, const Schedule& schedule);
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

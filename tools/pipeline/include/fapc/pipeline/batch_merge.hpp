@@ -6,9 +6,8 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/pipeline/json_value.hpp"
 
 namespace fapc::pipeline {
 
@@ -19,7 +18,7 @@ struct ReportText {
 
 struct MergedReport {
   // The batch report's shape (docs/json.md) with "shard": null and a "merged" object.
-  nlohmann::ordered_json report;
+  JsonValue report;
   std::vector<std::string> failed;          // inputs whose best result is a failure
   std::vector<std::string> no_result;       // inputs planned, in a report, but never converted
   std::vector<std::size_t> missing_shards;  // shard indexes with no report: their jobs are unknown
@@ -37,6 +36,6 @@ Result<MergedReport> merge_batch_reports(const std::vector<ReportText>& reports)
 // A JUnit XML report of a batch report (one shard's or a merged one): a test case per job that
 // converted, was up to date or failed; in a merged report also an error per planned job and per
 // shard with no result, so that missing work is red on a dashboard.
-std::string junit_from_report(const nlohmann::ordered_json& report);
+std::string junit_from_report(const JsonValue& report);
 
 }  // namespace fapc::pipeline

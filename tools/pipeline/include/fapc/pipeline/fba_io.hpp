@@ -37,18 +37,18 @@ Result<EncodedFba> encode_checked(const Loaded& loaded, const ConvertOptions& op
 
 // The MP4 FBA track of an encoding made with align_planes: each plane, started by its start
 // code and byte-aligned, becomes one sample lasting the frames it covers (timescale = fps).
-xmt::FbaTrackInput pack_fba_track(const EncodedFba& encoded, int fps);
+mpeg4::FbaTrackInput pack_fba_track(const EncodedFba& encoded, int fps);
 // The same track as views into `encoded`, which must outlive it (no copy of each plane).
-xmt::FbaTrackView fba_track_view(const EncodedFba& encoded, int fps);
+mpeg4::FbaTrackView fba_track_view(const EncodedFba& encoded, int fps);
 
 // An .mp4's FBA track and what it decodes to. Errors inside the track point at the byte in the
 // .mp4 ("FBA track sample N"); decoded.warnings holds the container's warnings, then the
 // decoder's.
 struct Mp4Fba {
-  xmt::FbaTrackInput track;
+  mpeg4::FbaTrackInput track;
   DecodedFba decoded;
 };
 Result<Mp4Fba> read_mp4_fba(const std::string& path, const Limits& limits = {});
-Result<Mp4Fba> decode_mp4_fba(const xmt::Mp4File& mp4, const std::string& path, const Limits& limits = {});
+Result<Mp4Fba> decode_mp4_fba(const mpeg4::Mp4File& mp4, const std::string& path, const Limits& limits = {});
 
 }  // namespace fapc::pipeline

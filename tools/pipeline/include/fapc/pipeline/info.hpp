@@ -4,10 +4,9 @@
 
 #include <string>
 
-#include <nlohmann/json.hpp>
-
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/limits.hpp"
+#include "fapc/pipeline/json_value.hpp"
 
 namespace fapc::pipeline {
 
@@ -16,7 +15,6 @@ namespace fapc::pipeline {
 // the `info --json` document of docs/json.md.
 // `limits`: the resource limits of the read (docs/security.md); `kind`: the input's kind whatever
 // its name (--from), empty: from the extension.
-Result<nlohmann::ordered_json> describe(const std::string& path, const Limits& limits = {},
-                                        const std::string& kind = {});
+Result<JsonValue> describe(const std::string& path, const Limits& limits = {}, const std::string& kind = {});
 
 }  // namespace fapc::pipeline

@@ -7,10 +7,9 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/fap_sequence.hpp"
+#include "fapc/pipeline/json_value.hpp"
 #include "fapc/transcoder/audio.hpp"
 #include "fapc/transcoder/curves.hpp"
 #include "fapc/transcoder/timeline.hpp"
@@ -63,7 +62,7 @@ struct Loaded {
   Diagnostics warnings;
   // With ConvertOptions::facts: what the reader saw of the format (variant, stream statistics,
   // tracks...), by name; `fapc info` prints it. Found during the one read, never by a second one.
-  nlohmann::ordered_json facts = nlohmann::ordered_json::object();
+  JsonValue facts;
 };
 
 }  // namespace fapc::pipeline

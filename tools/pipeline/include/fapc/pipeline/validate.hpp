@@ -10,6 +10,6 @@ namespace fapc::pipeline {
 
 // The file's problems (report.problems; report.valid() when none is an error), or why it could
 // not be checked (unreadable, not XML, no schema for its root).
-Result<xmt::ValidationReport> validate(const std::string& path);
+Result<xml::ValidationReport> validate(const std::string& path);
 
 }  // namespace fapc::pipeline

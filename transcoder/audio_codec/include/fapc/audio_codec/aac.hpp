@@ -9,7 +9,7 @@
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/transcoder/audio.hpp"
 
-namespace fapc::audio {
+namespace fapc::audio_codec {
 
 inline constexpr int kAacFrameLength = 1024;  // samples per AAC-LC access unit (frameLengthFlag 0)
 
@@ -60,4 +60,4 @@ Result<AacStream> encode_aac(const AudioTrack& track, const std::string& where, 
 // errors carry the byte offset of the configuration or access unit at fault when the stream has them.
 Result<std::vector<std::int16_t>> decode_aac(const AacStream& stream, const std::string& where);
 
-}  // namespace fapc::audio
+}  // namespace fapc::audio_codec

@@ -20,7 +20,7 @@
 #include "fapc/transcoder/speech.hpp"
 #include "fapc/transcoder/timeline.hpp"
 
-namespace fapc::xmt {
+namespace fapc::fml {
 
 struct FmlOptions {
   // Event values (--event NAME=VALUE); they win over the model's <event val>.
@@ -70,4 +70,4 @@ struct FmlDocument {
 Result<FmlDocument> read_fml(std::string_view text, const std::string& file_name, const FmlOptions& options = {});
 Result<FmlDocument> load_fml(const std::string& path, const FmlOptions& options = {});
 
-}  // namespace fapc::xmt
+}  // namespace fapc::fml

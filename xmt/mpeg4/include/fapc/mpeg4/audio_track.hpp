@@ -9,7 +9,7 @@
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/mpeg4/fba_track.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 inline constexpr std::uint8_t kAudioStream = 0x05;         // streamType
 inline constexpr std::uint8_t kAudio14496_3Object = 0x40;  // objectTypeIndication: MPEG-4 audio
@@ -55,4 +55,4 @@ std::uint32_t audio_sample_rate(const Bytes& audio_specific_config);
 // up to 24 kHz and two channels, @ L2 (0x29) above (the levels of 14496-3's AAC Profile).
 std::uint8_t aac_profile_level(std::uint32_t sample_rate);
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

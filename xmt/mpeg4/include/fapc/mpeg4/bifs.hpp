@@ -10,7 +10,7 @@
 #include "fapc/mpeg4/fba_track.hpp"
 #include "fapc/mpeg4/scene.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 // BIFSConfig for BIFS version 1 (scene objectTypeIndication 1). The defaults are those of the
 // project's scene: 2-bit node IDs, no routes, a command stream without pixel metrics and with a
@@ -40,4 +40,4 @@ Result<Bytes> encode_scene_replace(const SceneNode& top, const BifsConfig& confi
 Result<SceneNode> decode_scene_replace(const Bytes& bytes, const BifsConfig& config, std::uint64_t base,
                                        const std::string& file);
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

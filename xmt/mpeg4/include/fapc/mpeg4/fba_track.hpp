@@ -11,7 +11,7 @@
 
 #include "fapc/codec/diagnostic.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 using Bytes = std::vector<std::uint8_t>;
 
@@ -81,4 +81,4 @@ Status check_fba_track(const FbaTrackView& track);
 // the samples in order, the visual object sequence end code (docs/mp4-and-xmta.md section 6.3).
 Bytes fba_stream_from_track(const FbaTrackInput& track);
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

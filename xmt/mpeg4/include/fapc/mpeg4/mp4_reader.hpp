@@ -16,7 +16,7 @@
 #include "fapc/mpeg4/object_descriptors.hpp"
 #include "fapc/mpeg4/scene.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 struct Mp4Sample {
   std::uint64_t offset = 0;  // in the file
@@ -94,4 +94,4 @@ const Mp4Track* find_audio_track(const Mp4File& mp4);
 // (several sound edits, a rate other than 1, access units of different durations but the last).
 Result<AudioTrackInput> read_audio_track(const Mp4File& mp4, const Mp4Track& track);
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

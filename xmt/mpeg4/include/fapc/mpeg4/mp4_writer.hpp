@@ -12,7 +12,7 @@
 #include "fapc/mpeg4/bifs.hpp"
 #include "fapc/mpeg4/fba_track.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 // Track IDs (which are also the ES_IDs) and the FBA stream's object descriptor ID. 10 for the
 // FBA track is what GPAC gives it when it builds the same file from the project's XMT-A
@@ -38,4 +38,4 @@ Result<Bytes> write_mp4(const FbaTrackInput& fba, const AudioTrackInput* audio =
 using Mp4Sink = std::function<Status(std::span<const std::uint8_t>)>;
 Status write_mp4(const FbaTrackView& fba, const AudioTrackInput* audio, const Mp4Sink& sink);
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

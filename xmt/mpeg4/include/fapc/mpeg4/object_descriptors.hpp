@@ -11,7 +11,7 @@
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/mpeg4/fba_track.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 // Descriptor and command tags (14496-1 §7.2.2.1, 14496-14 §3.1).
 inline constexpr std::uint8_t kObjectDescriptorUpdateTag = 0x01;
@@ -91,4 +91,4 @@ Result<InitialObjectDescriptor> decode_initial_object_descriptor(const Bytes& by
 Result<std::vector<ObjectDescriptor>> decode_object_descriptor_updates(const Bytes& bytes, std::uint64_t base,
                                                                        const std::string& file);
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

@@ -10,7 +10,7 @@
 
 #include "fapc/codec/fap_sequence.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 struct SceneField;
 
@@ -74,4 +74,4 @@ int fap_for_field_name(std::string_view name);
 std::vector<SceneField> viseme_fields(const VisemeFields& v);
 std::vector<SceneField> expression_fields(const ExpressionFields& e);
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

@@ -15,7 +15,7 @@
 #include "fapc/codec/fap_sequence.hpp"
 #include "fapc/mpeg4/fba_track.hpp"
 
-namespace fapc::xmt {
+namespace fapc::mpeg4 {
 
 inline constexpr const char* kXmtaNamespace = "urn:mpeg:mpeg4:xmta:schema:2002";
 
@@ -38,4 +38,4 @@ std::string write_xmta_fba_scene(const Bytes& decoder_specific_info, const std::
 // fields do). A frame numbered 0 goes into the initial scene.
 std::string write_xmta_commands(const FapSequence& frames);
 
-}  // namespace fapc::xmt
+}  // namespace fapc::mpeg4

@@ -10,7 +10,7 @@
 
 #include "fapc/codec/diagnostic.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xml {
 
 struct ValidationReport {
   std::string kind;      // "XMT-A", ...
@@ -26,4 +26,4 @@ Result<ValidationReport> validate_xml(std::string_view text, const std::string& 
 // "XMT-A (urn:mpeg:mpeg4:xmta:schema:2002)", ...: what validate_xml knows, for messages.
 std::vector<std::string> validated_document_kinds();
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xml

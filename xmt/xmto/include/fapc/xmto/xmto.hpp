@@ -19,7 +19,7 @@
 #include "fapc/transcoder/timeline.hpp"
 #include "fapc/xml/clock_value.hpp"  // parse_clock_value, part of this reader's interface
 
-namespace fapc::xmt {
+namespace fapc::xmto {
 
 // What an `animation src` element brings: the included input's timeline (starting at 0; its end()
 // is the element's intrinsic duration) and the warnings its reader gave.
@@ -56,7 +56,7 @@ struct XmtoOptions {
   std::int64_t max_audio_bytes = Limits{}.max_decompressed_bytes;
   // FML moves written in the document (docs/xmt-omega.md, "FML moves inside XMT-Omega"): event
   // values for repeat, the profile for param, the speech engine and voice for talk.
-  FmlOptions fml;
+  fml::FmlOptions fml;
 };
 
 struct XmtoDocument {
@@ -75,4 +75,4 @@ Result<XmtoDocument> load_xmto(const std::string& path, const XmtoOptions& optio
 // name, with or without it).
 inline constexpr std::string_view kXmtoNamespace = "urn:mpeg:mpeg4:xmto:schema:2002";
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xmto

@@ -1,6 +1,7 @@
 // The JSON the program prints (`info --json`, `verify --json`, `batch --report-json`, errors
 // under --json), built here so that its shape is one contract: docs/json.md, with a JSON Schema
 // per document in docs/json/. Keys are snake_case; every figure is a field of its own.
+// Part of the pipeline's kit (not installed): the program and the pipeline build these documents.
 #pragma once
 
 #include <optional>

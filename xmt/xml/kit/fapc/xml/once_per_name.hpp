@@ -8,7 +8,7 @@
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/xml/xml_document.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xml {
 
 class OncePerName {
  public:
@@ -32,4 +32,4 @@ class OncePerName {
 // readers, and entities are never expanded: both are reported once per element name.
 void report_stray_text(const xml::XmlDocument& doc, const xmlNode* element, OncePerName& once);
 
-}  // namespace fapc::xmt
+}  // namespace fapc::xml
