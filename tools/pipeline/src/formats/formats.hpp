@@ -14,6 +14,7 @@ InputFormat fml_input();
 InputFormat xmto_input();
 InputFormat combine_input();
 InputFormat bml_input();  // format_bml.cpp
+InputFormat bml_sequence_input();  // format_bml.cpp
 InputFormat xml_input();  // format_xml.cpp: by the root element
 InputFormat fml_apml_input();  // format_intent.cpp
 InputFormat apml_input();      // format_intent.cpp
