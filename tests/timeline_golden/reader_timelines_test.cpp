@@ -79,7 +79,7 @@ TEST(ReaderTimelines, SmilAgent) {
 
 // BML blocks given in order (docs/bml.md, "Several blocks"): MERGE, APPEND and REPLACE placed.
 TEST(ReaderTimelines, BmlSequence) {
-  for (const char* input : {"corpus/examples/bml/session.bmlseq", "corpus/examples/bml/greet.bml"})
+  for (const char* input : {"corpus/bml/sequence/session.bmlseq", "corpus/bml/sequence/greet.bml"})
     expect_program_dump(fs::path(input).extension() == ".bml" ? "bml" : "bmlseq", input);
 }
 
