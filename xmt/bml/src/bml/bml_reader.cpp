@@ -12,6 +12,7 @@
 
 #include "bml/behaviour_defaults.hpp"
 #include "bml/facefx_curves.hpp"
+#include "bml/greta_reference.hpp"
 #include "bml/block_reader.hpp"
 #include "bml/bml_model.hpp"
 #include "bml/recorded_speech.hpp"
@@ -229,6 +230,8 @@ class BmlReader {
       once_.report("not drawn " + b.element,
                    with_code(doc_.warning(node, "<" + b.element + "> is not drawn by fapc (no body): its timing is kept"),
                              "bml.not_drawn"));
+    } else if ((name == "face" || name == "head" || name == "gaze") && greta_reference(node, b)) {
+      // Greta's reference names (docs/bml.md, "Greta references"): read by greta_reference.cpp
     } else if (name == "lips" || name == "lip") {
       read_lips(node, b);
     } else if (name == "face" && upper(xml::trim(xml::attribute(node, "type").value_or(""))) == "FACS") {
@@ -359,6 +362,14 @@ class BmlReader {
                                                                           "the recorded timing wins, and the speech's other placeholder times are not read"),
                                         "bml.recorded_timing_wins"));
     return true;
+  }
+
+  // A face, head or gaze with a gretabml reference becomes that reference's rows; false (and
+  // error_ unset) when it has none.
+  bool greta_reference(const xmlNode* node, Behaviour& b) {
+    Result<bool> read = read_greta_reference(doc_, node, b, once_);
+    if (!read) return !fail(read.error());
+    return *read;
   }
 
   // <lips viseme="BMP" articulation="1.0"/>: one viseme of a recording (SmartBody), through
