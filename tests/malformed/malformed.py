@@ -949,12 +949,51 @@ def smartbody_cases():
     ]
 
 
+# BML blocks given in order (docs/bml.md, "Several blocks"): a .bmlseq list of documents.
+EXT["bmlseq"] = ".bmlseq"
+
+
+def bml_sequence_cases():
+    """Bad composition values, lists whose documents are not files, lie outside or are the list
+    itself, times that go back or are absurd, references to blocks not sent before, reused block
+    ids, and a list longer than --max-runs allows."""
+    def block(ident, body='<head id="n" lexeme="NOD"/>', composition="APPEND"):
+        return ('<bml xmlns="http://www.bml-initiative.org/bml/bml-1.0" id="' + ident + '" composition="'
+                + composition + '">' + body + '</bml>\n')
+    a = {"a.bml": block("a", composition="MERGE")}
+    cases = [
+        compile_case("bml.wrong.composition-blend", block("a", composition="blend")),
+        compile_case("bml.wrong.composition-empty", block("a", composition="")),
+        compile_case("bmlseq.junk.empty", ""),
+        compile_case("bmlseq.junk.comments-only", "# nothing\n\n"),
+        compile_case("bmlseq.junk.nul-bytes", b"a.bml\0\0\n", files=a),
+        compile_case("bmlseq.notfile.document-missing", "none.bml\n"),
+        compile_case("bmlseq.notfile.document-directory", "d.bml\n", files={"d.bml": DIR}),
+        compile_case("bmlseq.notfile.document-fifo", "f.bml\n", files={"f.bml": FIFO}),
+        compile_case("bmlseq.notfile.document-outside", "../../outside.bml\n"),
+        compile_case("bmlseq.cycle.lists-itself", "in.bmlseq\n"),
+        compile_case("bmlseq.wrong.at-backwards", "at 2 a.bml\nat 1 b.bml\n",
+                     files=dict(a, **{"b.bml": block("b")})),
+        compile_case("bmlseq.wrong.at-without-document", "at 1\n"),
+        compile_case("bmlseq.wrong.composition-in-document", "a.bml\nb.bml\n",
+                     files=dict(a, **{"b.bml": block("b", composition="blend")})),
+        compile_case("bmlseq.wrong.reference-to-later-block", "a.bml\nb.bml\n",
+                     files=dict(a, **{"b.bml": block("b", '<head id="n" lexeme="NOD" start="c:n:end"/>')})),
+        compile_case("bmlseq.wrong.duplicate-block-id", "a.bml\na.bml\n", files=a),
+        compile_case("bmlseq.huge.many-documents", "a.bml\n" * 2000, extra=["--max-runs", "50"],
+                     files={"a.bml": '<bml id="a"><head id="n" lexeme="NOD"/></bml>\n'}),
+    ]
+    for label, number in [("1e308", "1e308"), ("nan", "nan"), ("inf", "inf"), ("minus-1", "-1")]:
+        cases.append(compile_case("bmlseq.numbers.at-" + label, "at " + number + " a.bml\n", files=a))
+    return cases
+
+
 # Every generator of cases: CTest runs each group as one test (`groups`), which builds only its own
 # group's inputs, not the megabytes of every other group's.
 GROUPS = (not_a_file_cases, depth_cases, cycle_cases, huge_cases, number_cases, truncation_cases,
           junk_cases, wrong_result_cases, diagnostic_cases, batch_cases, csv_cases, speech_cases,
           output_cases, intent_cases, speech_placed_cases, smil_cases, smartbody_cases,
-          video_length_cases, no_audio_cases, batch_placed_cases)
+          video_length_cases, no_audio_cases, batch_placed_cases, bml_sequence_cases)
 
 
 def all_cases(group=None):

@@ -77,6 +77,12 @@ TEST(ReaderTimelines, SmilAgent) {
     expect_program_dump("smil", input);
 }
 
+// BML blocks given in order (docs/bml.md, "Several blocks"): MERGE, APPEND and REPLACE placed.
+TEST(ReaderTimelines, BmlSequence) {
+  for (const char* input : {"corpus/bml/sequence/session.bmlseq", "corpus/bml/sequence/greet.bml"})
+    expect_program_dump(fs::path(input).extension() == ".bml" ? "bml" : "bmlseq", input);
+}
+
 TEST(ReaderTimelines, Fap) {
   for (const char* input : {"corpus/examples/fap/greta-lips.fap", "corpus/examples/fap/semaine-stamps.fap",
                             "corpus/examples/fap/vreng-joy.fap", "corpus/examples/xmto/parts/blink.fap"}) {

@@ -18,11 +18,12 @@ InputFormat mimic_input();
 InputFormat fml_input();
 InputFormat xmto_input();
 InputFormat combine_input();
-InputFormat bml_input();       // format_bml.cpp
-InputFormat xml_input();       // format_xml.cpp: by the root element
-InputFormat fml_apml_input();  // format_intent.cpp
-InputFormat apml_input();      // format_intent.cpp
-InputFormat smil_input();      // format_smil.cpp: Xface SMIL-Agent
+InputFormat bml_input();           // format_bml.cpp
+InputFormat bml_sequence_input();  // format_bml.cpp: .bmlseq, BML blocks in order
+InputFormat xml_input();           // format_xml.cpp: by the root element
+InputFormat fml_apml_input();      // format_intent.cpp
+InputFormat apml_input();          // format_intent.cpp
+InputFormat smil_input();          // format_smil.cpp: Xface SMIL-Agent
 
 OutputFormat fap_output();
 OutputFormat fba_output();
@@ -102,6 +103,8 @@ Registry built_in() {
                   kScriptOptions));
   r.add(described(builtin::bml_input(), "a BML document: behaviours placed by their sync constraints, speech",
                   kScriptOptions));
+  r.add(described(builtin::bml_sequence_input(),
+                  "BML documents given in order, placed by their composition (docs/bml.md)", kScriptOptions));
   r.add(described(builtin::xml_input(),
                   "an .xml document read by its root: BML, FML, XMT-Omega, FML-APML, APML or SMIL-Agent",
                   kScriptOptions));

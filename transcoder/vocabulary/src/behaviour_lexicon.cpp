@@ -214,4 +214,13 @@ const BehaviourLexicon& bundled_behaviour_lexicon() {
   return lexicon;
 }
 
+const BehaviourLexicon& bundled_greta_references() {
+  static const BehaviourLexicon lexicon = [] {
+    Result<BehaviourLexicon> parsed =
+        parse_behaviour_lexicon(bundled_table_text("greta_references.tsv"), "greta_references.tsv");
+    return parsed ? std::move(*parsed) : BehaviourLexicon{"greta_references.tsv", {}};
+  }();
+  return lexicon;
+}
+
 }  // namespace fapc::vocabulary

@@ -23,6 +23,10 @@ nlohmann::ordered_json facts_of(const bml::BmlDocument& document) {
   out["behaviours_drawn"] = drawn;
   if (!document.languages.empty()) out["speech_languages"] = document.languages;
   if (!document.recordings.empty()) out["recordings"] = document.recordings;
+  if (document.blocks.size() > 1) {  // a sequence (docs/bml.md, "Several blocks")
+    out["compositions"] = document.compositions;
+    out["block_starts"] = document.block_starts;
+  }
   out["clips"] = document.timeline.clips.size();
   return out;
 }
@@ -32,7 +36,19 @@ Result<Loaded> load_bml(const std::string& path, const ConvertOptions& options) 
       path, options, [&](const Profile&) { return bml::load_bml(path, bml_options(options)); }, facts_of);
 }
 
+Result<Loaded> load_bml_sequence(const std::string& path, const ConvertOptions& options) {
+  return load_script(
+      path, options, [&](const Profile&) { return bml::load_bml_sequence(path, bml_options(options)); }, facts_of);
+}
+
 }  // namespace
+
+// .bmlseq: BML documents given in order, one per line (docs/bml.md, "Several blocks").
+InputFormat bml_sequence_input() {
+  InputFormat format{"bmlseq", {".bmlseq"}, load_bml_sequence};
+  format.timeline = true;
+  return format;
+}
 
 InputFormat bml_input() {
   InputFormat format{"bml", {".bml"}, load_bml};

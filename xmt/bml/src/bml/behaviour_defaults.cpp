@@ -8,6 +8,7 @@ std::array<double, kStandardPoints> default_offsets(const Behaviour& b) {
   switch (b.kind) {
     case BehaviourKind::face_lexeme:
     case BehaviourKind::face_facs:
+    case BehaviourKind::lexicon_rows:  // a Greta reference lasts as a display; its rows take fractions of it
       // A facial display: 0.4 s onset to its peak (attackPeak = ready), held, 0.4 s offset; 2 s in
       // all, about a spontaneous expression's length. A shift only has its onset.
       if (b.shift) return {0, 0.4, 0.4, 0.4, 0.4, 0.4, 0.4};

@@ -13,6 +13,7 @@
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/transcoder/speech.hpp"
 #include "fapc/transcoder/timeline.hpp"
+#include "fapc/vocabulary/behaviour_lexicon.hpp"
 
 namespace fapc::bml {
 
@@ -26,6 +27,7 @@ enum class BehaviourKind : std::uint8_t {
   lips,            // lips (SmartBody): one recorded viseme, through smartbody_visemes.tsv
   wait,            // wait: time only
   not_drawn,       // gesture, posture, locomotion, pointing, torso...: time only, reported once per kind
+  lexicon_rows,    // a Greta reference (docs/bml.md, "Greta references"): behaviour lexicon rows over the span
 };
 
 // What a speech says: its visemes and voice, and the time of each of its sync marks.
@@ -54,6 +56,12 @@ struct Behaviour {
   std::string offset_direction;  // RIGHT, LEFT, UP, DOWN, UPRIGHT, ...
   std::string influence;         // gaze: EYES, HEAD, NECK, ...
   std::unique_ptr<SpokenText> speech;
+  // lexicon_rows: the rows (of greta_references.tsv or intentions.tsv, which outlive the reader),
+  // each with its share of `amount`; gretabml's expressivity as docs/bml.md's rule reads it.
+  std::vector<const vocabulary::LexiconRow*> rows;
+  std::vector<double> row_shares;
+  double onset_scale = 1;       // TMP: the onset and offset last this much of the row's
+  double repetition_scale = 1;  // REP: head movements repeat this much more
 };
 
 // One block: its behaviours (the solver's view beside them) and relations.

@@ -14,6 +14,7 @@
 #include "bml/block_reader.hpp"
 #include "bml/bml_model.hpp"
 #include "bml/facefx_curves.hpp"
+#include "bml/greta_reference.hpp"
 #include "bml/recorded_speech.hpp"
 #include "bml/smartbody_visemes.hpp"
 #include "bml/speak_text.hpp"
@@ -77,8 +78,8 @@ struct Pending {
 
 class BmlReader {
  public:
-  BmlReader(const xml::XmlDocument& doc, const BmlOptions& options)
-      : doc_(doc), options_(options), once_(out_.warnings) {}
+  BmlReader(const xml::XmlDocument& doc, const BmlOptions& options, EarlierBlocks* earlier = nullptr)
+      : doc_(doc), options_(options), once_(out_.warnings), earlier_(earlier) {}
 
   // `root`: the document's root, or a bml element inside another language's document (FML-APML's
   // bml part), whose parser warnings that document's reader reports itself.
@@ -90,7 +91,7 @@ class BmlReader {
     out_.dialect = dialect_of(root);
     Block block;
     if (!read_block(root, block)) return *error_;
-    if (!schedule(block, 0)) return *error_;
+    if (!schedule(block, origin_)) return *error_;
     once_.finish();
     if (whole_document)
       for (const Diagnostic& w : doc_.warnings()) out_.warnings.push_back(w);
@@ -107,6 +108,9 @@ class BmlReader {
   bool warned_no_engine_ = false;
   std::set<const xmlNode*> overruled_;  // recorded speeches whose placeholder times were said
   std::int64_t counted_ = 0;
+  // A block of a sequence: the blocks before it, and where its composition placed it.
+  EarlierBlocks* earlier_ = nullptr;
+  double origin_ = 0;
 
   // The dialect (docs/bml.md, "Dialects"): BML 1.0 by its namespace; Greta/SEMAINE by its
   // gretabml descriptions or the older mindmakers namespace; SmartBody by its lips, curves and
@@ -165,6 +169,13 @@ class BmlReader {
         return fail(
             doc_.error(root, "composition", "composition '" + *composition + "' is not MERGE, APPEND or REPLACE"));
     }
+    static const char* const kCompositionNames[] = {"MERGE", "APPEND", "REPLACE"};
+    out_.compositions.emplace_back(kCompositionNames[static_cast<int>(block.composition)]);
+    if (earlier_ != nullptr) {
+      origin_ = earlier_->arrival;
+      if (block.composition == Block::Composition::append) origin_ = std::max(origin_, earlier_->end);
+    }
+    out_.block_starts.push_back(origin_);
     out_.blocks.push_back(block.id);
     out_.characters.push_back(block.character);
     std::vector<Pending> pending;
@@ -229,6 +240,8 @@ class BmlReader {
           "not drawn " + b.element,
           with_code(doc_.warning(node, "<" + b.element + "> is not drawn by fapc (no body): its timing is kept"),
                     "bml.not_drawn"));
+    } else if ((name == "face" || name == "head" || name == "gaze") && greta_reference(node, b)) {
+      // Greta's reference names (docs/bml.md, "Greta references"): read by greta_reference.cpp
     } else if (name == "lips" || name == "lip") {
       read_lips(node, b);
     } else if (name == "face" && upper(xml::trim(xml::attribute(node, "type").value_or(""))) == "FACS") {
@@ -365,6 +378,14 @@ class BmlReader {
                            "the recorded timing wins, and the speech's other placeholder times are not read"),
           "bml.recorded_timing_wins"));
     return true;
+  }
+
+  // A face, head or gaze with a gretabml reference becomes that reference's rows; false (and
+  // error_ unset) when it has none.
+  bool greta_reference(const xmlNode* node, Behaviour& b) {
+    Result<bool> read = read_greta_reference(doc_, node, b, once_);
+    if (!read) return !fail(read.error());
+    return *read;
   }
 
   // <lips viseme="BMP" articulation="1.0"/>: one viseme of a recording (SmartBody), through
@@ -611,8 +632,10 @@ class BmlReader {
       PointRef a{p.behaviour, p.point};
       double a_offset = 0;
       SyncRef other = p.b;
+      if (!p.self && !from_earlier_block(block, other, p)) return false;
       if (p.a_ref) {
         SyncRef mine = *p.a_ref;
+        if (!from_earlier_block(block, mine, p)) return false;
         // <synchronize> may hold a plain time: the others are put at it.
         if (mine.absolute && !other.absolute && p.kind == Relation::Kind::equal) std::swap(mine, other);
         if (mine.absolute)
@@ -652,6 +675,41 @@ class BmlReader {
     return true;
   }
 
+  // A reference to a point of an earlier block of the sequence becomes the plain time it was
+  // placed at, from this block's start (docs/bml.md, "Several blocks"). References to this block,
+  // or outside a sequence, are left to point_of.
+  bool from_earlier_block(const Block& block, SyncRef& ref, const Pending& at) {
+    if (earlier_ == nullptr || ref.absolute || ref.block.empty() || ref.block == block.id) return true;
+    const auto found = earlier_->placed.find(ref.block);
+    if (found == earlier_->placed.end()) {
+      std::string known;
+      for (const auto& [id, behaviours] : earlier_->placed) known += (known.empty() ? "'" : ", '") + id + "'";
+      return fail(doc_.error(at.node, at.attribute,
+                             "'" + describe(ref) + "' names the block '" + ref.block +
+                                 "', which is not an earlier block of the sequence (" +
+                                 (known.empty() ? std::string("there is none") : "those are " + known) +
+                                 "; this block is '" + block.id + "')"));
+    }
+    const auto behaviour = found->second.find(ref.behaviour);
+    if (behaviour == found->second.end())
+      return fail(
+          doc_.error(at.node, at.attribute,
+                     "'" + describe(ref) + "': no behaviour '" + ref.behaviour + "' in block '" + ref.block + "'"));
+    const PlacedPoints& placed = behaviour->second;
+    std::optional<double> time;
+    if (const auto p = standard_point(ref.sync)) time = placed.points[*p];
+    for (std::size_t m = 0; !time && m < placed.mark_ids.size(); ++m)
+      if (placed.mark_ids[m] == ref.sync) time = placed.marks[m];
+    if (!time)
+      return fail(doc_.error(at.node, at.attribute,
+                             "'" + describe(ref) + "': '" + ref.behaviour + "' of block '" + ref.block +
+                                 "' has no sync point '" + ref.sync + "'"));
+    ref.absolute = true;
+    ref.offset = *time + ref.offset - origin_;
+    ref.block.clear();
+    return true;
+  }
+
   // ---- scheduling -------------------------------------------------------------------------
 
   bool schedule(const Block& block, double origin) {
@@ -665,6 +723,13 @@ class BmlReader {
       if (b.speech)
         for (std::size_t m = 0; m < b.speech->mark_ids.size(); ++m)
           out_.marks.push_back({b.id, b.speech->mark_ids[m], origin + s.marks[i][m]});
+      if (earlier_ != nullptr) {  // later blocks of the sequence may name this behaviour's points
+        PlacedPoints placed;
+        for (std::uint32_t p = 0; p < kStandardPoints; ++p) placed.points[p] = origin + s.points[i][p];
+        if (b.speech) placed.mark_ids = b.speech->mark_ids;
+        for (double m : s.marks[i]) placed.marks.push_back(origin + m);
+        earlier_->placed[block.id].emplace(b.id, std::move(placed));  // a reused id: the first is named
+      }
     }
     lower_block(block, s, origin, options_.coarticulation, out_.timeline, out_.warnings);
     double end = origin;
@@ -737,6 +802,11 @@ Result<BmlDocument> read_bml(std::string_view text, const std::string& file_name
 
 Result<BmlDocument> read_bml_block(const xml::XmlDocument& doc, const xmlNode* block, const BmlOptions& options) {
   return BmlReader(doc, options).run(block, false);
+}
+
+Result<BmlDocument> read_sequenced_block(const xml::XmlDocument& doc, const BmlOptions& options,
+                                         EarlierBlocks& earlier) {
+  return BmlReader(doc, options, &earlier).run(doc.root(), true);
 }
 
 Result<BmlDocument> load_bml(const std::string& path, const BmlOptions& options) {

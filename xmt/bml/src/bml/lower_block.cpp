@@ -7,6 +7,7 @@
 
 #include "bml/bml_model.hpp"
 #include "bml/face_lowering.hpp"
+#include "bml/lexicon_behaviours.hpp"
 #include "fapc/transcoder/audio_mix.hpp"
 
 namespace fapc::bml {
@@ -203,6 +204,17 @@ void lower_behaviour(const Behaviour& b, const std::array<double, kStandardPoint
       break;
     case BehaviourKind::wait:
     case BehaviourKind::not_drawn:
+      break;
+    case BehaviourKind::lexicon_rows:
+      // Each row is its own behaviour over this one's span, as an intention's rows are.
+      for (std::size_t i = 0; i < b.rows.size(); ++i) {
+        Behaviour part = behaviour_of(*b.rows[i], b.amount * b.row_shares[i], b.where);
+        if (part.kind == BehaviourKind::not_drawn) continue;
+        part.id = b.id;
+        part.element = b.element;
+        part.repetition = std::max(1, static_cast<int>(std::lround(part.repetition * b.repetition_scale)));
+        lower_behaviour(part, points_of(*b.rows[i], t[kStart], t[kEnd], b.onset_scale), origin, rule, out, warnings);
+      }
       break;
   }
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "bml/bml_model.hpp"
+#include "bml/lexicon_behaviours.hpp"
 #include "fapc/xml/text.hpp"
 
 namespace fapc::intent {
@@ -10,55 +11,6 @@ namespace {
 
 using vocabulary::LexiconBehaviour;
 using vocabulary::LexiconRow;
-
-// The BML behaviour a lexicon row stands for, at `strength`.
-bml::Behaviour behaviour_of(const LexiconRow& row, double strength, const Location& where) {
-  bml::Behaviour b;
-  b.where = where;
-  b.element = "intention";
-  b.amount = row.amount * strength;
-  switch (row.behaviour) {
-    case LexiconBehaviour::lexeme:
-      b.kind = bml::BehaviourKind::face_lexeme;
-      b.lexeme = row.name;
-      break;
-    case LexiconBehaviour::unit:
-      b.kind = bml::BehaviourKind::face_facs;
-      b.au = row.unit;
-      b.side = row.side;
-      break;
-    case LexiconBehaviour::head:
-      b.kind = bml::BehaviourKind::head;
-      b.lexeme = row.name;
-      b.repetition = row.repetition;
-      break;
-    case LexiconBehaviour::gaze:
-    case LexiconBehaviour::head_turn:
-      b.kind = row.behaviour == LexiconBehaviour::gaze ? bml::BehaviourKind::gaze : bml::BehaviourKind::head_direction;
-      b.influence = "EYES";
-      b.offset_direction = row.name;
-      b.offset_angle = row.amount * strength;
-      b.amount = 1;
-      break;
-    case LexiconBehaviour::none:
-      b.kind = bml::BehaviourKind::not_drawn;
-      break;
-  }
-  return b;
-}
-
-// BML's seven sync points from the row's fractions of the span: the peak (ready) is also the
-// stroke, a nod's first extreme; the swings end by relax.
-std::array<double, bml::kStandardPoints> points_of(const LexiconRow& row, double start, double end) {
-  const double length = end - start;
-  auto at = [&](double fraction) { return start + fraction * length; };
-  std::array<double, bml::kStandardPoints> t{};
-  t[bml::kStart] = at(row.start);
-  t[bml::kReady] = t[bml::kStrokeStart] = t[bml::kStroke] = at(row.ready);
-  t[bml::kStrokeEnd] = t[bml::kRelax] = at(row.relax);
-  t[bml::kEnd] = at(row.end);
-  return t;
-}
 
 std::string named(const Intention& i) { return i.value.empty() ? i.type : i.type + " '" + i.value + "'"; }
 
@@ -84,8 +36,8 @@ void realize(Intention& intention, const vocabulary::BehaviourLexicon& lexicon, 
                                    std::to_string(row->line) + ": " + row->reason + "); its span is kept"));
       continue;
     }
-    const bml::Behaviour b = behaviour_of(*row, intention.strength, intention.where);
-    bml::lower_behaviour(b, points_of(*row, intention.start, intention.end), 0, rule, out, warnings);
+    const bml::Behaviour b = bml::behaviour_of(*row, intention.strength, intention.where);
+    bml::lower_behaviour(b, bml::points_of(*row, intention.start, intention.end), 0, rule, out, warnings);
     ++intention.behaviours;
   }
 }

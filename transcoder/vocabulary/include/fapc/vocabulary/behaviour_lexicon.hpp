@@ -67,4 +67,9 @@ Result<BehaviourLexicon> parse_behaviour_lexicon(std::string_view text, const st
 // The bundled lexicon (data/intentions.tsv), parsed once.
 const BehaviourLexicon& bundled_behaviour_lexicon();
 
+// Greta's and SEMAINE's reference names (data/greta_references.tsv, docs/bml.md "Greta
+// references"): a lexicon whose intentions are the elements face, head and gaze and whose values
+// are the names, parsed once.
+const BehaviourLexicon& bundled_greta_references();
+
 }  // namespace fapc::vocabulary

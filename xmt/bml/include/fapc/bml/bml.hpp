@@ -67,6 +67,10 @@ struct BmlDocument {
   std::vector<std::string> languages;   // the languages speech was spoken in
   std::vector<std::string> recordings;  // the audio files of recorded speech that were read
   Diagnostics warnings;
+  // Per block, with `blocks`: its composition (MERGE, APPEND, REPLACE) and where it was placed
+  // (seconds from the start; 0 for a document read alone, docs/bml.md "Several blocks").
+  std::vector<std::string> compositions;
+  std::vector<double> block_starts;
 };
 
 // Errors (file:line:col): not well-formed XML, another root than bml, malformed sync references,
@@ -75,5 +79,16 @@ struct BmlDocument {
 // before its block.
 Result<BmlDocument> read_bml(std::string_view text, const std::string& file_name, const BmlOptions& options = {});
 Result<BmlDocument> load_bml(const std::string& path, const BmlOptions& options = {});
+
+// Several BML documents given in order, as a realizer receives blocks (docs/bml.md, "Several
+// blocks"): `list` holds one document per line (`[at SECONDS] PATH`, `#` comments), each path
+// relative to the list's folder and read under options.includes. Each block is placed by its
+// composition: MERGE starts when it arrives, APPEND when every earlier block has ended, REPLACE
+// when it arrives, cutting what earlier blocks still run there. A block arrives with the one
+// before it (the first at 0) unless its line says when. Errors are placed in the list (a path or
+// time that cannot be read) or in the document.
+Result<BmlDocument> read_bml_sequence(std::string_view list, const std::string& list_name,
+                                      const BmlOptions& options = {});
+Result<BmlDocument> load_bml_sequence(const std::string& path, const BmlOptions& options = {});
 
 }  // namespace fapc::bml
