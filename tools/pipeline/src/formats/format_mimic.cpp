@@ -1,7 +1,7 @@
 // .mimic and .mim inputs: the Mimic compiler, then the shared rendering.
 #include "fapc/codec/file_io.hpp"
-#include "fapc/transcoder/mimic.hpp"
 #include "fapc/pipeline/registry.hpp"
+#include "fapc/transcoder/mimic.hpp"
 #include "timeline_input.hpp"
 
 namespace fapc::pipeline::builtin {

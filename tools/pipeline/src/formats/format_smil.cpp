@@ -1,7 +1,7 @@
 // .smil as an input: Xface SMIL-Agent scripts (docs/smil.md). Speech is spoken as FML talk is
 // (--voice, --speech-rate); --max-runs bounds the elements and runs; speech file= is an include.
-#include "fapc/smil/smil.hpp"
 #include "fapc/pipeline/registry.hpp"
+#include "fapc/smil/smil.hpp"
 #include "speech_options.hpp"
 #include "timeline_input.hpp"
 

@@ -1,7 +1,7 @@
 // .wav as an output: the input's voice (spoken FML talk text, or a recording a script names) as
 // mono 16-bit PCM, sample 0 at the face's time 0 (docs/speech.md).
-#include "fapc/transcoder/wav.hpp"
 #include "fapc/pipeline/registry.hpp"
+#include "fapc/transcoder/wav.hpp"
 
 namespace fapc::pipeline::builtin {
 

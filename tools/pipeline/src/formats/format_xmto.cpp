@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <vector>
 
+#include "fapc/pipeline/registry.hpp"
 #include "fapc/transcoder/timeline_from_frames.hpp"
 #include "fapc/xmto/xmto.hpp"
-#include "fapc/pipeline/registry.hpp"
 #include "input_chain.hpp"
 #include "speech_options.hpp"
 #include "timeline_input.hpp"
