@@ -40,6 +40,26 @@ struct SpokenText {
   std::vector<double> mark_times;  // seconds from the speech's start, per mark
 };
 
+// The speech a behaviour owns: held apart (most behaviours have none, and a speech is large), and
+// copied with the behaviour, so that a copy of a behaviour (SMIL-Agent places one shape many
+// times) is whole, whatever fields Behaviour gains.
+class OwnedSpeech {
+ public:
+  OwnedSpeech() = default;
+  OwnedSpeech(std::unique_ptr<SpokenText> speech) : speech_(std::move(speech)) {}  // NOLINT: as unique_ptr
+  OwnedSpeech(const OwnedSpeech& other)
+      : speech_(other.speech_ ? std::make_unique<SpokenText>(*other.speech_) : nullptr) {}
+  OwnedSpeech& operator=(const OwnedSpeech& other) { return *this = OwnedSpeech(other); }
+  OwnedSpeech(OwnedSpeech&&) = default;
+  OwnedSpeech& operator=(OwnedSpeech&&) = default;
+  explicit operator bool() const { return speech_ != nullptr; }
+  SpokenText* operator->() const { return speech_.get(); }
+  SpokenText& operator*() const { return *speech_; }
+
+ private:
+  std::unique_ptr<SpokenText> speech_;
+};
+
 struct Behaviour {
   BehaviourKind kind = BehaviourKind::wait;
   bool shift = false;  // faceShift, gazeShift, headDirectionShift: the new state holds afterwards
@@ -55,7 +75,7 @@ struct Behaviour {
   double offset_angle = 0;       // gaze, headDirectionShift: degrees
   std::string offset_direction;  // RIGHT, LEFT, UP, DOWN, UPRIGHT, ...
   std::string influence;         // gaze: EYES, HEAD, NECK, ...
-  std::unique_ptr<SpokenText> speech;
+  OwnedSpeech speech;
   // lexicon_rows: the rows (of greta_references.tsv or intentions.tsv, which outlive the reader),
   // each with its share of `amount`; gretabml's expressivity as docs/bml.md's rule reads it.
   std::vector<const vocabulary::LexiconRow*> rows;

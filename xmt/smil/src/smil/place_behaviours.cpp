@@ -53,20 +53,8 @@ Result<PlacedScript> place_behaviours(const std::vector<SmilLeaf>& leaves, const
     placed.push_back({leaf.kind == SmilLeaf::Kind::affect ? "speech-animation" : "action", leaf.name, start, end,
                       !leaf.behaviours.empty()});
     for (const bml::Behaviour& shape : leaf.behaviours) {
-      bml::Behaviour b;
-      b.kind = shape.kind;
-      b.shift = shape.shift;
-      b.element = shape.element;
-      b.where = shape.where;
-      b.lexeme = shape.lexeme;
-      b.amount = shape.amount;
-      b.au = shape.au;
-      b.side = shape.side;
-      b.offset_angle = shape.offset_angle;
-      b.offset_direction = shape.offset_direction;
-      b.influence = shape.influence;
-      out.solution.points.push_back(fitted(b, start, end));
-      out.block.behaviours.push_back(std::move(b));
+      out.solution.points.push_back(fitted(shape, start, end));
+      out.block.behaviours.push_back(shape);
     }
     if (end >= out.end) {
       out.end = end;
