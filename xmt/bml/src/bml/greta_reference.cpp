@@ -90,7 +90,7 @@ struct Expressivity {
 }  // namespace
 
 Result<bool> read_greta_reference(const xml::XmlDocument& doc, const xmlNode* node, Behaviour& b,
-                                  xmt::OncePerName& once) {
+                                  xml::OncePerName& once) {
   const xmlNode* description = nullptr;
   const xmlNode* reference = nullptr;
   for (const xmlNode* child : doc.children(node))

@@ -15,6 +15,6 @@ namespace fapc::bml {
 // is no reference (the element is read as BML). Errors: an intensity or parameter that is not a
 // number in its range, at its element.
 Result<bool> read_greta_reference(const xml::XmlDocument& doc, const xmlNode* node, Behaviour& b,
-                                  xmt::OncePerName& once);
+                                  xml::OncePerName& once);
 
 }  // namespace fapc::bml
