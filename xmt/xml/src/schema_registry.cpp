@@ -19,6 +19,11 @@ constexpr SchemaBinding kSchemaBindings[] = {
     {"BML 1.0", "bml", "http://www.bml-initiative.org/bml/bml-1.0", "bml.xsd"},
     {"BML (Greta)", "bml", "http://www.mindmakers.org/projects/BML", "bml-mindmakers.xsd"},
     {"BML", "bml", "", "bml-core.xsd"},
+    // The intention languages (docs/intentions.md, docs/smil.md): no namespace of their own.
+    {"FML-APML", "fml-apml", "", "fml-apml.xsd"},
+    {"APML", "apml", "", "apml.xsd"},
+    {"SMIL-Agent", "par", "", "smil-agent.xsd"},
+    {"SMIL-Agent", "seq", "", "smil-agent.xsd"},
 };
 
 }  // namespace

@@ -465,8 +465,10 @@ bool ValidationReport::valid() const {
 
 std::vector<std::string> validated_document_kinds() {
   std::vector<std::string> out;
-  for (const SchemaBinding& b : schema_bindings())
-    out.push_back(std::string(b.kind) + (b.ns.empty() ? "" : " (" + std::string(b.ns) + ")"));
+  for (const SchemaBinding& b : schema_bindings()) {
+    std::string kind = std::string(b.kind) + (b.ns.empty() ? "" : " (" + std::string(b.ns) + ")");
+    if (std::find(out.begin(), out.end(), kind) == out.end()) out.push_back(std::move(kind));  // SMIL-Agent has two roots
+  }
   return out;
 }
 
