@@ -985,6 +985,20 @@ def bml_sequence_cases():
     ]
     for label, number in [("1e308", "1e308"), ("nan", "nan"), ("inf", "inf"), ("minus-1", "-1")]:
         cases.append(compile_case("bmlseq.numbers.at-" + label, "at " + number + " a.bml\n", files=a))
+    # Greta's expressivity parameters (docs/bml.md, "Greta references"): -1 to 1, placed.
+    for label, number in [("1e308", "1e308"), ("nan", "nan"), ("inf", "inf"), ("2", "2")]:
+        cases.append(compile_case("bml.numbers.greta-spc-" + label,
+                                  '<bml id="b"><face id="f" start="0" end="1"><description type="gretabml">'
+                                  '<reference>affect=joy</reference><SPC.value>' + number
+                                  + '</SPC.value></description></face></bml>\n'))
+    # Invalid documents of each language fapc validates them in (docs/bml.md, docs/intentions.md,
+    # docs/smil.md "Validation"): exit 1, each problem at its line and column.
+    for name, text in [("bml-composition", '<bml xmlns="http://www.bml-initiative.org/bml/bml-1.0" id="b" composition="blend"/>\n'),
+                       ("bml-au", '<bml id="b">\n<faceFacs id="u" au="120"/></bml>\n'),
+                       ("fml-apml-no-start", '<fml-apml><fml>\n<emotion id="e" type="joy"/></fml></fml-apml>\n'),
+                       ("apml-pause", '<apml>\n<pause sec="-1"/></apml>\n'),
+                       ("smil-mark", '<seq>\n<speech>Hi <mark/></speech></seq>\n')]:
+        cases.append(Case("validate.wrong." + name, {"x.xml": text}, ["validate", "x.xml"]))
     return cases
 
 

@@ -86,11 +86,14 @@ TEST(XmlValidation, MalformedXmlHasALineAndColumn) {
 }
 
 TEST(XmlValidation, DocumentsWithoutASchemaAreAnError) {
-  auto report = validate_xml("<?xml version=\"1.0\"?>\n<bml/>\n", "x.bml");
+  auto report = validate_xml("<?xml version=\"1.0\"?>\n<story/>\n", "x.xml");
   ASSERT_FALSE(report.ok());
-  EXPECT_EQ(format_diagnostic(report.error()),
-            "x.bml:1:1: error: no schema for root element 'bml'; fapc validates XMT-A "
-            "(urn:mpeg:mpeg4:xmta:schema:2002), XMT-Omega (urn:mpeg:mpeg4:xmto:schema:2002), FML");
+  EXPECT_EQ(
+      format_diagnostic(report.error()),
+      "x.xml:1:1: error: no schema for root element 'story'; fapc validates XMT-A "
+      "(urn:mpeg:mpeg4:xmta:schema:2002), XMT-Omega (urn:mpeg:mpeg4:xmto:schema:2002), FML, "
+      "BML 1.0 (http://www.bml-initiative.org/bml/bml-1.0), BML (Greta) (http://www.mindmakers.org/projects/BML), BML, "
+      "FML-APML, APML, SMIL-Agent");
   // XMT-A without its namespace is not XMT-A.
   EXPECT_FALSE(validate_xml("<XMT-A/>", "x.xmt").ok());
 }

@@ -14,6 +14,16 @@ constexpr SchemaBinding kSchemaBindings[] = {
     {"XMT-Omega", "XMT-O", "urn:mpeg:mpeg4:xmto:schema:2002", "xmt-o.xsd"},
     // FML has no namespace; a root fml in one gets the schema's "no declaration" error.
     {"FML", "fml", "", "fml.xsd"},
+    // BML (docs/bml.md, "Validation"): one description, bml-core.xsd, in the namespace of each
+    // dialect; documents in no namespace (Greta, SEMAINE, SmartBody) and any other take it as is.
+    {"BML 1.0", "bml", "http://www.bml-initiative.org/bml/bml-1.0", "bml.xsd"},
+    {"BML (Greta)", "bml", "http://www.mindmakers.org/projects/BML", "bml-mindmakers.xsd"},
+    {"BML", "bml", "", "bml-core.xsd"},
+    // The intention languages (docs/intentions.md, docs/smil.md): no namespace of their own.
+    {"FML-APML", "fml-apml", "", "fml-apml.xsd"},
+    {"APML", "apml", "", "apml.xsd"},
+    {"SMIL-Agent", "par", "", "smil-agent.xsd"},
+    {"SMIL-Agent", "seq", "", "smil-agent.xsd"},
 };
 
 }  // namespace

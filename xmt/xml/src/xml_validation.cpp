@@ -244,10 +244,21 @@ class Collector : public xc::DefaultHandler, public xc::PSVIHandler {
   }
 
   // Nothing outside the document is ever read: DTDs and entities named by it resolve to nothing.
-  xc::InputSource* resolveEntity(const XMLCh*, const XMLCh*) override {
+  // While a built-in schema loads, the schemas it includes are the built-in ones of that name
+  // (bml.xsd includes bml-core.xsd): never a file, and never for the document itself.
+  xc::InputSource* resolveEntity(const XMLCh*, const XMLCh* system_id) override {
     static const XMLByte nothing[] = "";
+    if (serving_schemas && system_id != nullptr) {
+      std::string name = text(system_id);
+      name = name.substr(name.find_last_of('/') + 1);
+      const auto schema = embedded_schemas().find(name);
+      if (schema != embedded_schemas().end())
+        return new xc::MemBufInputSource(reinterpret_cast<const XMLByte*>(schema->second.data()), schema->second.size(),
+                                         system_id, false);
+    }
     return new xc::MemBufInputSource(nothing, 0, "", false);
   }
+  bool serving_schemas = false;
 
   bool root_seen = false;
   std::string root_ns, root_name;
@@ -436,7 +447,10 @@ Result<ValidationReport> validate_with_xerces(std::string_view text_in, const st
   const XmlCh schema_id(std::string(binding->schema));
   xc::MemBufInputSource grammar(reinterpret_cast<const XMLByte*>(schema->second.data()), schema->second.size(),
                                 schema_id.get(), false);
-  if (!reader->loadGrammar(grammar, xc::Grammar::SchemaGrammarType, true) || !collector.problems.empty()) {
+  collector.serving_schemas = true;
+  const bool loaded = reader->loadGrammar(grammar, xc::Grammar::SchemaGrammarType, true) != nullptr;
+  collector.serving_schemas = false;
+  if (!loaded || !collector.problems.empty()) {
     const std::string why = collector.problems.empty() ? "" : ": " + collector.problems.front().message;
     return make_error(Location{file, 0, 0, -1},
                       "built-in schema " + std::string(binding->schema) + " does not load" + why);
@@ -462,8 +476,11 @@ bool ValidationReport::valid() const {
 
 std::vector<std::string> validated_document_kinds() {
   std::vector<std::string> out;
-  for (const SchemaBinding& b : schema_bindings())
-    out.push_back(std::string(b.kind) + (b.ns.empty() ? "" : " (" + std::string(b.ns) + ")"));
+  for (const SchemaBinding& b : schema_bindings()) {
+    std::string kind = std::string(b.kind) + (b.ns.empty() ? "" : " (" + std::string(b.ns) + ")");
+    if (std::find(out.begin(), out.end(), kind) == out.end())
+      out.push_back(std::move(kind));  // SMIL-Agent has two roots
+  }
   return out;
 }
 
