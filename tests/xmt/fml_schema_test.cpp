@@ -23,7 +23,7 @@ std::string with_model(const std::string& items, const std::string& content) {
 
 // The first problem, formatted; "valid" when there is none.
 std::string first_problem(const std::string& text) {
-  const auto report = validate_xml(text, "s.fml");
+  const auto report = xml::validate_xml(text, "s.fml");
   if (!report.ok()) return "not validated: " + format_diagnostic(report.error());
   EXPECT_EQ(report->kind, "FML");
   EXPECT_EQ(report->schema, "fml.xsd");
@@ -45,7 +45,7 @@ TEST(FmlSchema, CorpusDocumentsAreValidExceptThePublishedSampleWithItsExtensions
   ASSERT_GE(paths.size(), 5u);
   for (const std::string& path : paths) {
     const bool extended = std::filesystem::path(path).filename() == "hindawi-alg1.fml";
-    const auto report = validate_xml(test::read_text(path), path);
+    const auto report = xml::validate_xml(test::read_text(path), path);
     ASSERT_TRUE(report.ok()) << format_diagnostic(report.error());
     EXPECT_EQ(report->valid(), !extended) << path;
   }

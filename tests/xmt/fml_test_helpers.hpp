@@ -35,9 +35,9 @@ inline std::string read_error(const std::string& text, const FmlOptions& options
   return read ? "no error" : format_diagnostic(read.error());
 }
 
-using test::messages;
-using test::Spans;
-using test::spans;
+using xmto::test::messages;
+using xmto::test::Spans;
+using xmto::test::spans;
 
 // Spans equal to within 1e-9 s (times like 5/12 s are not exact in binary).
 inline void expect_spans(const Timeline& timeline, const Spans& expected) {
