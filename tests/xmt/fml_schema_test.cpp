@@ -34,7 +34,7 @@ std::string first_problem(const std::string& text) {
 // The reader as the command line runs it, with a fixed phoneme file and an end for indefinite
 // repeats.
 Result<FmlDocument> read(const std::string& text) {
-  FmlOptions options;
+  ReaderOptions options;
   options.duration = 10;
   options.read_file = [](const std::string&) -> Result<std::string> { return std::string("h 50\n@ 80\nl 60\n@U 120\n"); };
   return read_fml(text, "s.fml", options);

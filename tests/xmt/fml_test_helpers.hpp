@@ -21,7 +21,7 @@ inline std::string in_action(const std::string& content, const std::string& mode
   return document("<story><action>" + content + "</action></story>", model);
 }
 
-inline FmlDocument read_ok(const std::string& text, const FmlOptions& options = {}) {
+inline FmlDocument read_ok(const std::string& text, const ReaderOptions& options = {}) {
   Result<FmlDocument> read = read_fml(text, "t.fml", options);
   if (!read) {
     ADD_FAILURE() << "unexpected error: " << format_diagnostic(read.error());
@@ -30,7 +30,7 @@ inline FmlDocument read_ok(const std::string& text, const FmlOptions& options = 
   return std::move(*read);
 }
 
-inline std::string read_error(const std::string& text, const FmlOptions& options = {}) {
+inline std::string read_error(const std::string& text, const ReaderOptions& options = {}) {
   Result<FmlDocument> read = read_fml(text, "t.fml", options);
   return read ? "no error" : format_diagnostic(read.error());
 }

@@ -2,7 +2,7 @@
 // --speech-rate); --max-runs bounds the behaviours.
 #include "fapc/bml/bml.hpp"
 #include "formats.hpp"
-#include "speech_options.hpp"
+#include "reader_options.hpp"
 #include "timeline_input.hpp"
 
 namespace fapc::pipeline::builtin {
@@ -28,7 +28,7 @@ nlohmann::ordered_json facts_of(const bml::BmlDocument& document) {
 }
 
 Result<Loaded> load_bml(const std::string& path, const ConvertOptions& options) {
-  return load_script(path, options, [&](const Profile&) { return bml::load_bml(path, bml_options(options)); },
+  return load_script(path, options, [&](const Profile&) { return bml::load_bml(path, reader_options(options)); },
                      facts_of);
 }
 

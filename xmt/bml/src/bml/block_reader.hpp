@@ -9,6 +9,6 @@ namespace fapc::bml {
 
 // `block` is an element of `doc` named bml (an error at it otherwise). The result's warnings
 // leave out the parser's own, which belong to the whole document.
-Result<BmlDocument> read_bml_block(const xml::XmlDocument& doc, const xmlNode* block, const BmlOptions& options);
+Result<BmlDocument> read_bml_block(const xml::XmlDocument& doc, const xmlNode* block, const ReaderOptions& options);
 
 }  // namespace fapc::bml

@@ -77,7 +77,7 @@ struct Pending {
 
 class BmlReader {
  public:
-  BmlReader(const xml::XmlDocument& doc, const BmlOptions& options) : doc_(doc), options_(options), once_(out_.warnings) {}
+  BmlReader(const xml::XmlDocument& doc, const ReaderOptions& options) : doc_(doc), options_(options), once_(out_.warnings) {}
 
   // `root`: the document's root, or a bml element inside another language's document (FML-APML's
   // bml part), whose parser warnings that document's reader reports itself.
@@ -97,7 +97,7 @@ class BmlReader {
 
  private:
   const xml::XmlDocument& doc_;
-  const BmlOptions& options_;
+  const ReaderOptions& options_;
   BmlDocument out_;
   xml::OncePerName once_;
   std::optional<Diagnostic> error_;
@@ -140,8 +140,8 @@ class BmlReader {
   }
 
   bool count_one(const xmlNode* node) {
-    if (++counted_ <= options_.max_behaviours) return true;
-    Diagnostic d = doc_.error(node, "more than " + std::to_string(options_.max_behaviours) +
+    if (++counted_ <= options_.limits.max_runs) return true;
+    Diagnostic d = doc_.error(node, "more than " + std::to_string(options_.limits.max_runs) +
                                         " behaviours and constraints (raise the limit with --max-runs)");
     d.kind = ErrorKind::limit_exceeded;
     return fail(std::move(d));
@@ -427,8 +427,8 @@ class BmlReader {
     if (error_) return false;
     Result<SpokenText> spoken = speak(marked, options_, b.where, out_.warnings, warned_no_engine_);
     if (!spoken) return fail(spoken.error());
-    if (std::find(out_.languages.begin(), out_.languages.end(), options_.language) == out_.languages.end())
-      out_.languages.push_back(options_.language);
+    if (std::find(out_.languages.begin(), out_.languages.end(), options_.speech.language) == out_.languages.end())
+      out_.languages.push_back(options_.speech.language);
     b.speech = std::make_unique<SpokenText>(std::move(*spoken));
     return true;
   }
@@ -631,7 +631,7 @@ class BmlReader {
         for (std::size_t m = 0; m < b.speech->mark_ids.size(); ++m)
           out_.marks.push_back({b.id, b.speech->mark_ids[m], origin + s.marks[i][m]});
     }
-    lower_block(block, s, origin, options_.coarticulation, out_.timeline, out_.warnings);
+    lower_block(block, s, origin, options_.speech.coarticulation, out_.timeline, out_.warnings);
     double end = origin;
     for (const auto& points : s.points) end = std::max(end, origin + points[kEnd]);
     out_.timeline.explicit_end = std::max(out_.timeline.explicit_end.value_or(0.0), end);
@@ -687,7 +687,7 @@ class BmlReader {
 
 }  // namespace
 
-Result<BmlDocument> read_bml(std::string_view text, const std::string& file_name, const BmlOptions& options) {
+Result<BmlDocument> read_bml(std::string_view text, const std::string& file_name, const ReaderOptions& options) {
   if (const Status depth = xml::check_element_depth(text, file_name); !depth) return depth.error();
   // Only speech text is read; elsewhere white space is dropped.
   const xml::BlankText blank_text{false, {"text", "speech"}};
@@ -696,11 +696,11 @@ Result<BmlDocument> read_bml(std::string_view text, const std::string& file_name
   return BmlReader(*doc, options).run(doc->root(), true);
 }
 
-Result<BmlDocument> read_bml_block(const xml::XmlDocument& doc, const xmlNode* block, const BmlOptions& options) {
+Result<BmlDocument> read_bml_block(const xml::XmlDocument& doc, const xmlNode* block, const ReaderOptions& options) {
   return BmlReader(doc, options).run(block, false);
 }
 
-Result<BmlDocument> load_bml(const std::string& path, const BmlOptions& options) {
+Result<BmlDocument> load_bml(const std::string& path, const ReaderOptions& options) {
   const auto source = SourceText::open(path);
   if (!source) return source.error();
   return read_bml(source->bytes(), path, options);
