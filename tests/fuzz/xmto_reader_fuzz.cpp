@@ -24,7 +24,9 @@ fapc::Timeline included() {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   fapc::xmto::XmtoOptions options;
-  options.load_animation = [](const std::string&, const fapc::Location&)
-      -> fapc::Result<fapc::xmto::IncludedAnimation> { return fapc::xmto::IncludedAnimation{included(), {}}; };
+  options.load_animation = [](const std::string&,
+                              const fapc::Location&) -> fapc::Result<fapc::xmto::IncludedAnimation> {
+    return fapc::xmto::IncludedAnimation{included(), {}};
+  };
   return fapc::fuzz::check_timeline_read(fapc::xmto::read_xmto(text, "fuzz.xmt", options));
 }

@@ -16,7 +16,7 @@ namespace fapc::pipeline {
 // (`face_seconds` long) is followed by silence up to the face's end, so that the audio track's
 // presentation (its delay, then its sound) spans the face track's. `where` names the output.
 Result<std::optional<mpeg4::AudioTrackInput>> pack_audio_track(const AudioTrack& audio, double face_seconds,
-                                                             const std::string& where, const Limits& limits);
+                                                               const std::string& where, const Limits& limits);
 
 // The sound of an MP4 audio track, starting at its delay. The decoded size is limited by
 // --max-decompressed-bytes (two bytes a sample). `where` names the file.

@@ -78,8 +78,8 @@ std::function<Location(std::int64_t, int)> frame_locator(const std::vector<std::
   };
 }
 
-Result<EncodedFba> encode_checked(const Loaded& loaded, const ConvertOptions& options,
-                                  const std::string& input, bool align_planes) {
+Result<EncodedFba> encode_checked(const Loaded& loaded, const ConvertOptions& options, const std::string& input,
+                                  bool align_planes) {
   const FapSequence& sequence = loaded.frames;
   if (auto error = fba_rate_error(sequence.fps, loaded.rate_at, loaded.rate_written, input)) return *error;
   FbaEncodeOptions fba = fba_encode_options(options);
@@ -121,7 +121,7 @@ mpeg4::FbaTrackInput pack_fba_track(const EncodedFba& encoded, int fps) {
   for (const CodedPlane& plane : encoded.planes) {
     const auto first = encoded.bytes.begin() + static_cast<std::ptrdiff_t>(plane.offset);
     track.samples.push_back(mpeg4::FbaSample{mpeg4::Bytes(first, first + static_cast<std::ptrdiff_t>(plane.size)),
-                                           static_cast<std::uint32_t>(plane.frames), plane.intra});
+                                             static_cast<std::uint32_t>(plane.frames), plane.intra});
   }
   return track;
 }

@@ -7,8 +7,8 @@
 #include "fapc/transcoder/timeline_from_frames.hpp"
 #include "fapc/xmto/xmto.hpp"
 #include "formats.hpp"
-#include "reader_options.hpp"
 #include "input_chain.hpp"
+#include "reader_options.hpp"
 #include "timeline_input.hpp"
 
 namespace fapc::pipeline::builtin {
@@ -19,7 +19,7 @@ namespace {
 // lowered to its timeline and not rendered (its clips join this document's); an input of frames
 // becomes clips holding them.
 Result<xmto::IncludedAnimation> load_animation(const std::string& path, const Location& where,
-                                              const ConvertOptions& options) {
+                                               const ConvertOptions& options) {
   ConvertOptions inner = options;
   inner.duration.reset();
   inner.render = false;
@@ -40,7 +40,7 @@ Result<xmto::IncludedAnimation> load_animation(const std::string& path, const Lo
 }
 
 Result<xmto::XmtoDocument> read_document(const std::string& path, const ConvertOptions& options,
-                                        const Profile& profile) {
+                                         const Profile& profile) {
   xmto::XmtoOptions xmto(reader_options(options, &profile));
   // The documents around this one (load() has put this one last): the reader names a cycle
   // among them at the animation element, before the loader is asked.
@@ -66,8 +66,8 @@ nlohmann::ordered_json facts_of(const xmto::XmtoDocument& document) {
 }
 
 Result<Loaded> load_xmto(const std::string& path, const ConvertOptions& options) {
-  return load_script(path, options, [&](const Profile& profile) { return read_document(path, options, profile); },
-                     facts_of);
+  return load_script(
+      path, options, [&](const Profile& profile) { return read_document(path, options, profile); }, facts_of);
 }
 
 }  // namespace

@@ -15,7 +15,6 @@ namespace fapc::pipeline {
 // the `info --json` document of docs/json.md.
 // `limits`: the resource limits of the read (docs/security.md); `kind`: the input's kind whatever
 // its name (--from), empty: from the extension.
-Result<JsonValue> describe(const std::string& path, const Limits& limits = {},
-                           const std::string& kind = {});
+Result<JsonValue> describe(const std::string& path, const Limits& limits = {}, const std::string& kind = {});
 
 }  // namespace fapc::pipeline
