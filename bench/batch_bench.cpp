@@ -30,7 +30,7 @@
 #include "fapc/transcoder/wav.hpp"
 
 namespace fs = std::filesystem;
-namespace audio = fapc::audio;
+namespace audio_codec = fapc::audio_codec;
 using fapc::AudioTrack;
 using fapc::Result;
 

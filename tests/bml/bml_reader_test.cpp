@@ -172,8 +172,8 @@ TEST(BmlReader, AnotherRootIsRefusedNamingIt) {
 }
 
 TEST(BmlReader, TooManyBehavioursIsALimitNamingTheOption) {
-  BmlOptions options;
-  options.max_behaviours = 2;
+  ReaderOptions options;
+  options.limits.max_runs = 2;
   Result<BmlDocument> d = read_bml(block("<wait id=\"a\"/><wait id=\"b\"/><wait id=\"c\"/>"), "t.bml", options);
   ASSERT_FALSE(d);
   EXPECT_EQ(d.error().kind, ErrorKind::limit_exceeded);

@@ -191,8 +191,8 @@ TEST(BmlSequence, TheBehaviourLimitCountsEveryBlock) {
   write("a.bml", R"(<bml id="a"><head id="n1" lexeme="NOD"/><head id="n2" lexeme="NOD"/></bml>)");
   std::string list;
   for (int i = 0; i < 5; ++i) list += "a.bml\n";
-  BmlOptions options;
-  options.max_behaviours = 6;
+  ReaderOptions options;
+  options.limits.max_runs = 6;
   const std::string path = (fs::path(folder()) / "many.bmlseq").string();
   std::ofstream(path, std::ios::binary) << list;
   Result<BmlDocument> d = load_bml_sequence(path, options);

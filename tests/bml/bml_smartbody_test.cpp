@@ -83,9 +83,9 @@ const Diagnostic* find(const Diagnostics& warnings, const std::string& code) {
 }
 
 // Options whose speech engine fails the test if it is ever asked to speak.
-BmlOptions no_synthesis(int& calls) {
-  BmlOptions options;
-  options.synthesize = [&calls](const SpeechRequest&) -> Result<Utterance> {
+ReaderOptions no_synthesis(int& calls) {
+  ReaderOptions options;
+  options.speech.synthesize = [&calls](const SpeechRequest&) -> Result<Utterance> {
     ++calls;
     return make_error(Location{}, "recorded speech must not be synthesised");
   };
@@ -197,24 +197,24 @@ TEST(BmlSmartBody, ANodSyncedToARecordedMarkStartsWithTheWordInTheAudio) {
 
 TEST(BmlSmartBody, ARecordingIsBoundedAndMustBeAWav) {
   const std::string wav = write("take.wav", wav_bytes(tone()));
-  BmlOptions options;
-  options.speech_limits.max_decompressed_bytes = 1000;  // the tone is 48 KB
+  ReaderOptions options;
+  options.limits.max_decompressed_bytes = 1000;  // the tone is 48 KB
   const Result<BmlDocument> big = load_bml(write("big.bml", kRecorded), options);
   ASSERT_FALSE(big);
   EXPECT_EQ(big.error().kind, ErrorKind::limit_exceeded);
   EXPECT_EQ(big.error().where.line, 13);
-  options.speech_limits = Limits{};
-  options.speech_limits.max_audio_samples = 1000;
+  options.limits = Limits{};
+  options.limits.max_audio_samples = 1000;
   const Result<BmlDocument> long_one = load_bml(write("long.bml", kRecorded), options);
   ASSERT_FALSE(long_one);
   EXPECT_EQ(long_one.error().kind, ErrorKind::limit_exceeded);
   write("take.wav", "not a wav at all");
-  const Result<BmlDocument> bad = load_bml(write("bad.bml", kRecorded), BmlOptions{});
+  const Result<BmlDocument> bad = load_bml(write("bad.bml", kRecorded), ReaderOptions{});
   ASSERT_FALSE(bad);
   // The include rules: a name leading outside the document's folder is refused.
   std::string outside = kRecorded;
   outside.replace(outside.find("ref=\"take\""), 10, "ref=\"../../etc/passwd\"");
-  const Result<BmlDocument> escaped = load_bml(write("outside.bml", outside), BmlOptions{});
+  const Result<BmlDocument> escaped = load_bml(write("outside.bml", outside), ReaderOptions{});
   ASSERT_FALSE(escaped);
   EXPECT_NE(escaped.error().message.find("--allow-include"), std::string::npos) << escaped.error().message;
   fs::remove(wav);

@@ -10,10 +10,10 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  fapc::bml::BmlOptions options;
-  options.max_behaviours = 4096;  // the limit is tested by bml_tests; here it keeps inputs quick
-  options.max_speech_seconds = 60;
+  fapc::ReaderOptions options;
+  options.limits.max_runs = 4096;  // the limit is tested by bml_tests; here it keeps inputs quick
+  options.speech.max_seconds = 60;
   // Recorded speech names files (resolved from the working folder): keep any it finds small.
-  options.speech_limits.max_decompressed_bytes = 1 << 20;
+  options.limits.max_decompressed_bytes = 1 << 20;
   return fapc::fuzz::check_timeline_read(fapc::bml::read_bml(text, "fuzz.xml", options));
 }

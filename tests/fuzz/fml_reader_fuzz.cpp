@@ -11,7 +11,7 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  fapc::fml::FmlOptions options;
+  fapc::ReaderOptions options;
   options.duration = 10;
   options.read_file = [](const std::string&) -> fapc::Result<std::string> {
     return std::string("_ 50\nh 60\n@ 80 50 120\nl 60\n@U 150\n_ 40\n");

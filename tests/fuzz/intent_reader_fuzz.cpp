@@ -13,8 +13,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   fapc::intent::IntentOptions options;
-  options.bml.frames.fps = 25;
-  options.bml.max_behaviours = 2000;
+  options.frames.fps = 25;
+  options.limits.max_runs = 2000;
   fapc::fuzz::check_timeline_read(fapc::intent::read_fml_apml(text, "fuzz.xml", options));
   return fapc::fuzz::check_timeline_read(fapc::intent::read_apml(text, "fuzz.xml", options));
 }

@@ -9,7 +9,7 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view source(reinterpret_cast<const char*>(data), size);
-  fapc::MimicOptions options;
+  fapc::ReaderOptions options;
   options.read_file = [](const std::string&) -> fapc::Result<std::string> {
     return std::string("raise_l_cornerlip 100\nopen_jaw 50\n");
   };

@@ -11,8 +11,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  fapc::smil::SmilOptions options;
-  options.max_runs = 100000;
+  fapc::ReaderOptions options;
+  options.limits.max_runs = 100000;
   options.includes.allowed_folders = {"/nonexistent-fapc-fuzz-folder"};
   return fapc::fuzz::check_timeline_read(fapc::smil::read_smil(text, "fuzz.smil", options));
 }

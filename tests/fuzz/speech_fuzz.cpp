@@ -21,18 +21,17 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  fapc::fml::FmlOptions options;
+  fapc::ReaderOptions options;
   options.duration = 10;
-  options.synthesize = fapc::speech::engine();
-  options.speech_limits.max_speech_text_bytes = 4096;
-  options.speech_limits.max_speech_seconds = 20;
-  options.speech_limits.max_audio_samples = std::int64_t{1} << 22;
-  options.max_speech_seconds = 20;
+  options.speech.synthesize = fapc::speech::engine();
+  options.limits.max_speech_text_bytes = 4096;
+  options.limits.max_speech_seconds = 20;
+  options.limits.max_audio_samples = std::int64_t{1} << 22;
+  options.speech.max_seconds = 20;
   const auto read = fapc::fml::read_fml(text, "fuzz.fml", options);
   if (read.ok()) {
-    auto mixed = fapc::mix_audio(read->timeline.audio, 1e6, options.speech_limits);
-    if (mixed.ok() && *mixed &&
-        static_cast<std::int64_t>((*mixed)->samples.size()) > options.speech_limits.max_audio_samples)
+    auto mixed = fapc::mix_audio(read->timeline.audio, 1e6, options.limits);
+    if (mixed.ok() && *mixed && static_cast<std::int64_t>((*mixed)->samples.size()) > options.limits.max_audio_samples)
       std::abort();
     if (!mixed.ok() && mixed.error().kind != fapc::ErrorKind::limit_exceeded) std::abort();
   }

@@ -163,7 +163,7 @@ TEST(FmlApmlReader, BadSpansAreRefusedWhereTheyAreWritten) {
 
 TEST(FmlApmlReader, MoreIntentionsThanTheLimitAreRefusedAtTheFirstTooMany) {
   IntentOptions options;
-  options.bml.max_behaviours = 3;
+  options.limits.max_runs = 3;
   std::string fml;
   for (int i = 0; i < 4; ++i) fml += "<beat id=\"b" + std::to_string(i) + "\" start=\"0\"/>\n";
   const auto d = read(fml, options);

@@ -9,8 +9,8 @@ namespace fapc {
 namespace {
 
 std::string error_with_runs(const std::string& source, std::int64_t max_runs) {
-  MimicOptions options;
-  options.max_runs = max_runs;
+  ReaderOptions options;
+  options.limits.max_runs = max_runs;
   Result<MimicProgram> program = compile_mimic(source, "t.mimic", options);
   EXPECT_FALSE(program.ok()) << "compiled: " << source;
   return program.ok() ? std::string() : render_with_caret(program.error());

@@ -13,7 +13,7 @@
 namespace fapc::test {
 
 inline Result<MimicProgram> compile(const std::string& source, const std::map<std::string, std::string>& files = {}) {
-  MimicOptions options;
+  ReaderOptions options;
   options.read_file = [files](const std::string& path) -> Result<std::string> {
     const auto found = files.find(path);
     if (found == files.end()) return make_error(Location{path, 0, 0, -1}, "no such file");

@@ -9,11 +9,11 @@
 namespace fapc::smil {
 namespace {
 
-Result<SmilDocument> read(const std::string& text, SmilOptions options = {}) {
+Result<SmilDocument> read(const std::string& text, ReaderOptions options = {}) {
   return read_smil(text, "t.smil", options);
 }
 
-void expect_error(const std::string& text, int line, int column, const std::string& says, SmilOptions options = {}) {
+void expect_error(const std::string& text, int line, int column, const std::string& says, ReaderOptions options = {}) {
   SCOPED_TRACE(text);
   const auto read_back = read(text, options);
   ASSERT_FALSE(read_back);
@@ -118,7 +118,7 @@ TEST(SmilReader, PointingLooksAtThePoint) {
 
 TEST(SmilReader, SystemLanguageChoosesTheVoice) {
   if (!speech::available()) GTEST_SKIP() << "built without the speech engine";
-  SmilOptions options;
+  ReaderOptions options;
   options.speech.synthesize = speech::engine();
   const auto doc = read(R"(<seq><par system-language="italian"><speech>Buongiorno a tutti.</speech></par>
 <speech system-language="en">Good morning.</speech></seq>)",
@@ -154,14 +154,14 @@ TEST(SmilReader, ErrorsArePlaced) {
 }
 
 TEST(SmilReader, LimitsAreCheckedBeforeTheWork) {
-  SmilOptions few;
-  few.max_runs = 3;
+  ReaderOptions few;
+  few.limits.max_runs = 3;
   expect_error("<seq><seq/><seq/><seq/><seq/></seq>", 1, 18, "--max-runs", few);
   expect_error("<seq repeat=\"1000000000\"/>", 1, 6, "--max-runs");
   // Repeats of repeats are counted before the scheduler makes any run.
   expect_error("<seq repeat=\"100000\"><seq repeat=\"100000\"><action/></seq></seq>", 1, 1, "too many runs");
-  SmilOptions short_text;
-  short_text.speech_limits.max_speech_text_bytes = 10;
+  ReaderOptions short_text;
+  short_text.limits.max_speech_text_bytes = 10;
   expect_error("<seq><speech>short</speech>\n<speech>this is longer</speech></seq>", 2, 1, "bytes", short_text);
 }
 

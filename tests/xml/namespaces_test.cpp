@@ -18,8 +18,8 @@ bool validates_kind(const std::string& expected) {
 }
 
 TEST(SchemaNamespaces, AgreeWithTheWriterAndTheReader) {
-  EXPECT_TRUE(validates_kind("XMT-A (" + std::string(kXmtaNamespace) + ")"));
-  EXPECT_TRUE(validates_kind("XMT-Omega (" + std::string(kXmtoNamespace) + ")"));
+  EXPECT_TRUE(validates_kind("XMT-A (" + std::string(mpeg4::kXmtaNamespace) + ")"));
+  EXPECT_TRUE(validates_kind("XMT-Omega (" + std::string(xmto::kXmtoNamespace) + ")"));
 }
 
 }  // namespace

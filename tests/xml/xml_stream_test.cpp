@@ -108,7 +108,7 @@ TEST(StreamedReaders, AnElementAfterTheBodyKeepsTheOrderOfTheWarnings) {
       "<XMT-O xmlns=\"urn:mpeg:mpeg4:xmto:schema:2002\"><body>\n"
       "<par odd=\"1\"><set attributeName=\"open_jaw\" to=\"100\" dur=\"1s\"/></par>\n"
       "</body>\n<extra/></XMT-O>\n";
-  Result<XmtoDocument> read = read_xmto(text, "t.xmt");
+  Result<xmto::XmtoDocument> read = xmto::read_xmto(text, "t.xmt");
   ASSERT_TRUE(read.ok()) << format_diagnostic(read.error());
   const std::vector<std::string> got = messages(read->warnings);
   ASSERT_EQ(got.size(), 2u);
@@ -122,7 +122,7 @@ TEST(StreamedReaders, AModelAfterTheStoryIsStillRead) {
   const std::string text =
       "<fml><story><action><behavior name=\"nod\"/></action></story>\n"
       "<model><template name=\"nod\"><hdmv type=\"pitch\" val=\"8\" duration=\"1s\"/></template></model></fml>\n";
-  Result<FmlDocument> read = read_fml(text, "t.fml");
+  Result<fml::FmlDocument> read = fml::read_fml(text, "t.fml");
   ASSERT_TRUE(read.ok()) << format_diagnostic(read.error());
   EXPECT_EQ(read->timeline.clips.size(), 1u);
   EXPECT_EQ(read->templates, std::vector<std::string>{"nod"});

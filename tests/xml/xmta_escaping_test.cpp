@@ -14,7 +14,7 @@ namespace {
 TEST(XmtaEscaping, AttributeValuesSurviveEveryCharacterThatNeedsEscaping) {
   const std::string text = write_xmta_fba_scene(fba_decoder_specific_info(), "a&b\"c<d>e\tf\r\ng.mp4#10");
   EXPECT_NE(text.find("url=\"a&amp;b&quot;c&lt;d&gt;e&#9;f&#13;&#10;g.mp4#10\""), std::string::npos) << text;
-  const auto report = validate_xml(text, "escaped.xmt");
+  const auto report = xml::validate_xml(text, "escaped.xmt");
   ASSERT_TRUE(report.ok()) << format_diagnostic(report.error());
   EXPECT_TRUE(report->valid()) << (report->problems.empty() ? "" : format_diagnostic(report->problems[0]));
 }

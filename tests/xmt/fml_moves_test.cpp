@@ -90,16 +90,16 @@ TEST(FmlMoves, ParamGoesThroughTheProfile) {
       << doc.warnings[0].message;
   Profile wink;
   wink.parameters["eye-wink"] = {{19, 1000}, {21, 1000}};
-  FmlOptions options;
+  ReaderOptions options;
   options.profile = &wink;
   EXPECT_EQ(spans(read_ok(in_action("<param type=\"eye-wink\" val=\"1\"/>"), options).timeline),
             (Spans{{"eye-wink", 0, 1}}));
 }
 
 // The letter table's and the .pho file's own timing, without the coarticulation's overlaps.
-FmlOptions exact_spans() {
-  FmlOptions options;
-  options.coarticulation = Coarticulation{0, 0};
+ReaderOptions exact_spans() {
+  ReaderOptions options;
+  options.speech.coarticulation = Coarticulation{0, 0};
   return options;
 }
 
@@ -124,7 +124,7 @@ TEST(FmlMoves, TalkWithADurationIsStretchedOverIt) {
 
 TEST(FmlMoves, TalkFileReadsMbrolaPhonemes) {
   // _ 100 ms silence; h 50 ms has no shape; @ 80 ms = E; l 60 ms = nn; @U 120 ms = oh (by its first vowel).
-  FmlOptions options = exact_spans();
+  ReaderOptions options = exact_spans();
   options.read_file = [](const std::string& path) -> Result<std::string> {
     EXPECT_EQ(path, "hello.pho");
     return std::string("; hello\n_ 100\nh 50\n@ 80 50 120\nl 60\n@U 120 0 110 100 90\n_ 40\n");
@@ -136,7 +136,7 @@ TEST(FmlMoves, TalkFileReadsMbrolaPhonemes) {
 }
 
 TEST(FmlMoves, UnknownPhonemesAreSilentWithOneWarningEach) {
-  FmlOptions options = exact_spans();
+  ReaderOptions options = exact_spans();
   options.read_file = [](const std::string&) -> Result<std::string> { return std::string("Y 100\np 50\nY 100\n"); };
   const auto doc = read_ok(in_action("<talk file=\"x.pho\"/>"), options);
   expect_spans(doc.timeline, Spans{{"viseme.PP", 0.1, 0.15}});

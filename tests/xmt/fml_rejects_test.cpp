@@ -130,7 +130,7 @@ TEST(FmlRejects, EveryBadDocumentGivesItsExactDiagnostic) {
   const std::vector<std::string> files = test::files_under(folder, ".fml");
   EXPECT_EQ(files.size(), expected_errors().size()) << "every bad document needs its expected error";
   EXPECT_GE(files.size(), 15u);
-  FmlOptions options;
+  ReaderOptions options;
   options.read_file = [&](const std::string& path) { return read_file_bytes(folder + path); };
   for (const std::string& path : files) {
     const std::string name = path.substr(folder.size());

@@ -23,7 +23,7 @@ std::string with_model(const std::string& items, const std::string& content) {
 
 // The first problem, formatted; "valid" when there is none.
 std::string first_problem(const std::string& text) {
-  const auto report = validate_xml(text, "s.fml");
+  const auto report = xml::validate_xml(text, "s.fml");
   if (!report.ok()) return "not validated: " + format_diagnostic(report.error());
   EXPECT_EQ(report->kind, "FML");
   EXPECT_EQ(report->schema, "fml.xsd");
@@ -34,7 +34,7 @@ std::string first_problem(const std::string& text) {
 // The reader as the command line runs it, with a fixed phoneme file and an end for indefinite
 // repeats.
 Result<FmlDocument> read(const std::string& text) {
-  FmlOptions options;
+  ReaderOptions options;
   options.duration = 10;
   options.read_file = [](const std::string&) -> Result<std::string> {
     return std::string("h 50\n@ 80\nl 60\n@U 120\n");
@@ -47,7 +47,7 @@ TEST(FmlSchema, CorpusDocumentsAreValidExceptThePublishedSampleWithItsExtensions
   ASSERT_GE(paths.size(), 5u);
   for (const std::string& path : paths) {
     const bool extended = std::filesystem::path(path).filename() == "hindawi-alg1.fml";
-    const auto report = validate_xml(test::read_text(path), path);
+    const auto report = xml::validate_xml(test::read_text(path), path);
     ASSERT_TRUE(report.ok()) << format_diagnostic(report.error());
     EXPECT_EQ(report->valid(), !extended) << path;
   }

@@ -21,7 +21,7 @@ inline std::string in_action(const std::string& content, const std::string& mode
   return document("<story><action>" + content + "</action></story>", model);
 }
 
-inline FmlDocument read_ok(const std::string& text, const FmlOptions& options = {}) {
+inline FmlDocument read_ok(const std::string& text, const ReaderOptions& options = {}) {
   Result<FmlDocument> read = read_fml(text, "t.fml", options);
   if (!read) {
     ADD_FAILURE() << "unexpected error: " << format_diagnostic(read.error());
@@ -30,14 +30,14 @@ inline FmlDocument read_ok(const std::string& text, const FmlOptions& options = 
   return std::move(*read);
 }
 
-inline std::string read_error(const std::string& text, const FmlOptions& options = {}) {
+inline std::string read_error(const std::string& text, const ReaderOptions& options = {}) {
   Result<FmlDocument> read = read_fml(text, "t.fml", options);
   return read ? "no error" : format_diagnostic(read.error());
 }
 
-using test::messages;
-using test::Spans;
-using test::spans;
+using xmto::test::messages;
+using xmto::test::Spans;
+using xmto::test::spans;
 
 // Spans equal to within 1e-9 s (times like 5/12 s are not exact in binary).
 inline void expect_spans(const Timeline& timeline, const Spans& expected) {

@@ -58,7 +58,7 @@ TEST(FmlTiming, RepeatByAnEventTakesItsValueAsTheCount) {
   const std::string model = "<event name=\"quit\" val=\"3\"/>";
   const std::string text = in_action("<seq repeat=\"quit\">" + jaw("duration=\"1s\"") + "</seq>", model);
   EXPECT_EQ(read_ok(text).timeline.clips.size(), 3u);
-  FmlOptions zero;
+  ReaderOptions zero;
   zero.events = {{"quit", "0"}};  // set to 0: it stops after the run in progress
   EXPECT_EQ(read_ok(text, zero).timeline.clips.size(), 1u);
 }
@@ -69,7 +69,7 @@ TEST(FmlTiming, AnUnsetLoopEventRepeatsUntilTheDuration) {
   EXPECT_EQ(read_error(text),
             "t.fml:3:16: error: seq repeats indefinitely and nothing around it ends: give it or a parent an end "
             "(repeat=\"indefinite\" and unset loop events need an end: a container's duration or end, or --duration)");
-  FmlOptions options;
+  ReaderOptions options;
   options.duration = 2.5;
   EXPECT_EQ(spans(read_ok(text, options).timeline),
             (Spans{{"open_jaw", 0, 1}, {"open_jaw", 1, 2}, {"open_jaw", 2, 2.5}}));
@@ -80,7 +80,7 @@ TEST(FmlTiming, RepeatUntilAnEventHasAValue) {
   const std::string text =
       in_action("<par duration=\"3s\"><seq repeat=\"kbd;F3\">" + jaw("duration=\"1s\"") + "</seq></par>",
                 "<event name=\"kbd\"/>");
-  FmlOptions pressed;
+  ReaderOptions pressed;
   pressed.events = {{"kbd", "F3"}};
   EXPECT_EQ(read_ok(text, pressed).timeline.clips.size(), 1u);
   EXPECT_EQ(read_ok(text).timeline.clips.size(), 3u);
@@ -93,10 +93,10 @@ TEST(FmlTiming, ExclPlaysTheBranchOfTheEventsValue) {
   // The model's val chooses, --event overrides it.
   ASSERT_EQ(read_ok(text).timeline.clips.size(), 1u);
   EXPECT_EQ(read_ok(text).timeline.clips[0].curve.keys.back().value, 10);
-  FmlOptions one;
+  ReaderOptions one;
   one.events = {{"user", "1"}};
   EXPECT_EQ(read_ok(text, one).timeline.clips[0].curve.keys.back().value, 20);
-  FmlOptions none;
+  ReaderOptions none;
   none.events = {{"user", "7"}};
   const auto unmatched = read_ok(text, none);
   EXPECT_TRUE(unmatched.timeline.clips.empty());

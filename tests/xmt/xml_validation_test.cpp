@@ -130,7 +130,7 @@ TEST(XmlValidation, SchemaDeclaresEveryFapFieldUnderItsBifsName) {
   for (auto it = std::sregex_iterator(fap.begin(), fap.end(), int_attribute); it != std::sregex_iterator(); ++it)
     declared.push_back((*it)[1]);
   std::vector<std::string> expected;
-  for (int number = 3; number <= 68; ++number) expected.emplace_back(fap_field_name(number));
+  for (int number = 3; number <= 68; ++number) expected.emplace_back(mpeg4::fap_field_name(number));
   EXPECT_EQ(declared, expected);
 }
 

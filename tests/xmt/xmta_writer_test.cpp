@@ -12,7 +12,7 @@ namespace fapc::mpeg4 {
 namespace {
 
 void expect_valid(const std::string& text, const std::string& name) {
-  auto report = validate_xml(text, name);
+  auto report = xml::validate_xml(text, name);
   ASSERT_TRUE(report.ok()) << format_diagnostic(report.error());
   EXPECT_EQ(report->kind, "XMT-A");
   for (const Diagnostic& d : report->problems) ADD_FAILURE() << format_diagnostic(d);

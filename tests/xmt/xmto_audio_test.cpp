@@ -124,7 +124,7 @@ TEST(XmtoAudio, ErrorsAreAtTheElement) {
   EXPECT_NE(outside.find("--allow-include"), std::string::npos) << outside;
   folder.write("a.wav", wav(100));
   XmtoOptions small;
-  small.max_audio_bytes = 100;
+  small.limits.max_decompressed_bytes = 100;
   const std::string limited = error_of(folder.doc(R"(<audio src="a.wav"/>)"), small);
   EXPECT_EQ(limited.rfind(at + "8: error: ", 0), 0u) << limited;
   EXPECT_NE(limited.find("--max-decompressed-bytes"), std::string::npos) << limited;

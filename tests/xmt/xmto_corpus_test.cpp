@@ -27,7 +27,7 @@ Result<IncludedAnimation> load(const std::string& path, std::vector<std::string>
       XmtoOptions options;
       options.including = including;
       // Spoken as `fapc` speaks it: the goldens are shared with the command tests.
-      options.fml.synthesize = speech::engine();
+      options.speech.synthesize = speech::engine();
       options.load_animation = [&](const std::string& inner, const Location&) {
         std::vector<std::string> chain = including;
         chain.push_back(path);

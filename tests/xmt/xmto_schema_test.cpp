@@ -18,7 +18,7 @@ std::string in_body(const std::string& content) {
 
 // The first problem, formatted; "valid" when there is none.
 std::string first_problem(const std::string& text) {
-  const auto report = validate_xml(text, "s.xmt");
+  const auto report = xml::validate_xml(text, "s.xmt");
   if (!report.ok()) return "not validated: " + format_diagnostic(report.error());
   EXPECT_EQ(report->kind, "XMT-Omega");
   if (report->problems.empty()) return "valid";
@@ -28,7 +28,7 @@ std::string first_problem(const std::string& text) {
 TEST(XmtoSchema, CorpusDocumentsAreValidExceptTheOneShowingWhatIsSkipped) {
   for (const std::string& path : test::files_under(test::corpus_dir() + "/xmto", ".xmt")) {
     const bool skips_things = std::filesystem::path(path).filename() == "unsupported.xmt";
-    const auto report = validate_xml(test::read_text(path), path);
+    const auto report = xml::validate_xml(test::read_text(path), path);
     ASSERT_TRUE(report.ok()) << format_diagnostic(report.error());
     EXPECT_EQ(report->valid(), !skips_things) << path;
   }
@@ -65,7 +65,7 @@ TEST(XmtoSchema, RejectsWhatTheReaderOnlySkips) {
 }
 
 TEST(XmtoSchema, DocumentsWithoutTheNamespaceAreNotValidated) {
-  const auto report = validate_xml("<XMT-O><body/></XMT-O>", "s.xmt");
+  const auto report = xml::validate_xml("<XMT-O><body/></XMT-O>", "s.xmt");
   ASSERT_FALSE(report.ok());
   EXPECT_EQ(
       format_diagnostic(report.error()),

@@ -21,23 +21,23 @@ std::string jaw(const std::string& timing) {
 }
 
 TEST(XmtoClock, ValuesOfEveryForm) {
-  EXPECT_EQ(parse_clock_value("3"), 3);
-  EXPECT_EQ(parse_clock_value("3s"), 3);
-  EXPECT_EQ(parse_clock_value("2.5s"), 2.5);
-  EXPECT_EQ(parse_clock_value("250ms"), 0.25);
-  EXPECT_EQ(parse_clock_value("1.5min"), 90);
-  EXPECT_EQ(parse_clock_value("2h"), 7200);
-  EXPECT_EQ(parse_clock_value("00:00:03.5"), 3.5);
-  EXPECT_EQ(parse_clock_value("1:02:03"), 3723);  // hours need not have two digits
-  EXPECT_EQ(parse_clock_value("01:30"), 90);      // partial clock: minutes and seconds
-  EXPECT_EQ(parse_clock_value("02:30.25"), 150.25);
-  EXPECT_EQ(parse_clock_value(" 4s "), 4);  // SMIL allows surrounding white space
+  EXPECT_EQ(xml::parse_clock_value("3"), 3);
+  EXPECT_EQ(xml::parse_clock_value("3s"), 3);
+  EXPECT_EQ(xml::parse_clock_value("2.5s"), 2.5);
+  EXPECT_EQ(xml::parse_clock_value("250ms"), 0.25);
+  EXPECT_EQ(xml::parse_clock_value("1.5min"), 90);
+  EXPECT_EQ(xml::parse_clock_value("2h"), 7200);
+  EXPECT_EQ(xml::parse_clock_value("00:00:03.5"), 3.5);
+  EXPECT_EQ(xml::parse_clock_value("1:02:03"), 3723);  // hours need not have two digits
+  EXPECT_EQ(xml::parse_clock_value("01:30"), 90);      // partial clock: minutes and seconds
+  EXPECT_EQ(xml::parse_clock_value("02:30.25"), 150.25);
+  EXPECT_EQ(xml::parse_clock_value(" 4s "), 4);  // SMIL allows surrounding white space
 }
 
 TEST(XmtoClock, RejectsWhatSmilDoesNotAllow) {
   for (const char* bad : {"", "s", "3x", ".5s", "5.", "3 s", "1:60", "00:1:00", "1:00:60", "-3s", "+3s", "1e3", "inf",
                           "nan", "3ss", "1.5:00", "indefinite", "1:2:3:4"}) {
-    EXPECT_FALSE(parse_clock_value(bad).has_value()) << bad;
+    EXPECT_FALSE(xml::parse_clock_value(bad).has_value()) << bad;
   }
 }
 

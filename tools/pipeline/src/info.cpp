@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 
+#include "fapc/pipeline/json_access.hpp"
 #include "fapc/pipeline/json_output.hpp"
 #include "fapc/pipeline/registry.hpp"
 #include "input_chain.hpp"

@@ -95,7 +95,7 @@ std::string format_number(double v) {
 // the definitions', a macro too big, main too big, and the first of the others in source order.
 class Compiler final : public MainSink {
  public:
-  Compiler(std::string_view source, const std::string& file, const MimicOptions& options)
+  Compiler(std::string_view source, const std::string& file, const ReaderOptions& options)
       : source_(source),
         file_(file),
         file_location_(Location::text(file, 0, 0)),
@@ -108,7 +108,7 @@ class Compiler final : public MainSink {
     ScheduleNode root = std::move(root_);
     if (main_params_->left) root.timing.offset += main_params_->left->value;
     ScheduleOptions schedule_options;
-    schedule_options.max_runs = options_.max_runs;
+    schedule_options.max_runs = options_.limits.max_runs;
     Result<Schedule> scheduled = schedule(root, schedule_options);
     if (!scheduled) return with_source_line(scheduled.error());
     if (auto too_long = check_length(*scheduled); !too_long) return too_long.error();
@@ -231,7 +231,7 @@ class Compiler final : public MainSink {
   std::string_view source_;
   const std::string& file_;
   const Location file_location_;  // copied per node: building a Location from the path costs more
-  const MimicOptions& options_;
+  const ReaderOptions& options_;
   const Profile& profile_;
   Program program_;
   std::optional<Pending> pending_;
@@ -286,11 +286,11 @@ class Compiler final : public MainSink {
   }
   const std::vector<FapContribution>& contributions(std::uint32_t id) const { return name_contributions_[id]; }
 
-  double run_limit() const { return static_cast<double>(std::max<std::int64_t>(options_.max_runs, 0)); }
+  double run_limit() const { return static_cast<double>(std::max<std::int64_t>(options_.limits.max_runs, 0)); }
 
   Diagnostic too_many_actions(const Action& action) const {
     Limits limits;
-    limits.max_runs = options_.max_runs;
+    limits.max_runs = options_.limits.max_runs;
     Diagnostic refused =
         limit_error(location(action.at), "the program has too many actions with macros expanded", Limit::runs, limits);
     refused.source_line = source_line(source_, action.at.line);
@@ -831,7 +831,8 @@ class Compiler final : public MainSink {
 }  // namespace
 }  // namespace mimic
 
-Result<MimicProgram> compile_mimic(std::string_view source, const std::string& file_name, const MimicOptions& options) {
+Result<MimicProgram> compile_mimic(std::string_view source, const std::string& file_name,
+                                   const ReaderOptions& options) {
   return mimic::Compiler(source, file_name, options).run();
 }
 

@@ -2,7 +2,7 @@
 // --speech-rate); --max-runs bounds the behaviours.
 #include "fapc/bml/bml.hpp"
 #include "fapc/pipeline/registry.hpp"
-#include "speech_options.hpp"
+#include "reader_options.hpp"
 #include "timeline_input.hpp"
 
 namespace fapc::pipeline::builtin {
@@ -33,12 +33,12 @@ nlohmann::ordered_json facts_of(const bml::BmlDocument& document) {
 
 Result<Loaded> load_bml(const std::string& path, const ConvertOptions& options) {
   return load_script(
-      path, options, [&](const Profile&) { return bml::load_bml(path, bml_options(options)); }, facts_of);
+      path, options, [&](const Profile&) { return bml::load_bml(path, reader_options(options)); }, facts_of);
 }
 
 Result<Loaded> load_bml_sequence(const std::string& path, const ConvertOptions& options) {
   return load_script(
-      path, options, [&](const Profile&) { return bml::load_bml_sequence(path, bml_options(options)); }, facts_of);
+      path, options, [&](const Profile&) { return bml::load_bml_sequence(path, reader_options(options)); }, facts_of);
 }
 
 }  // namespace

@@ -2,7 +2,7 @@
 // indefinite loops, --profile names the parameters of param moves.
 #include "fapc/fml/fml.hpp"
 #include "fapc/pipeline/registry.hpp"
-#include "speech_options.hpp"
+#include "reader_options.hpp"
 #include "timeline_input.hpp"
 
 namespace fapc::pipeline::builtin {
@@ -10,15 +10,7 @@ namespace fapc::pipeline::builtin {
 namespace {
 
 Result<fml::FmlDocument> read_document(const std::string& path, const ConvertOptions& options, const Profile& profile) {
-  fml::FmlOptions fml;
-  fml.events = options.events;
-  fml.duration = options.duration;
-  fml.max_runs = options.limits.max_runs;
-  fml.frames = frame_budget_for(options);
-  set_speech(fml, options);
-  fml.profile = &profile;
-  fml.includes = options.includes;
-  return fml::load_fml(path, fml);
+  return fml::load_fml(path, reader_options(options, &profile));
 }
 
 nlohmann::ordered_json facts_of(const fml::FmlDocument& document) {

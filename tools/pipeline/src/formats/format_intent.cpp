@@ -6,7 +6,7 @@
 #include "fapc/codec/file_io.hpp"
 #include "fapc/intent/intent.hpp"
 #include "fapc/pipeline/registry.hpp"
-#include "speech_options.hpp"
+#include "reader_options.hpp"
 #include "timeline_input.hpp"
 
 namespace fapc::pipeline::builtin {
@@ -42,8 +42,7 @@ Result<std::optional<vocabulary::BehaviourLexicon>> user_lexicon(const ConvertOp
 Result<Loaded> load_with(Reader read, const std::string& path, const ConvertOptions& options) {
   Result<std::optional<vocabulary::BehaviourLexicon>> lexicon = user_lexicon(options);
   if (!lexicon) return lexicon.error();
-  intent::IntentOptions intent_options;
-  intent_options.bml = bml_options(options);
+  intent::IntentOptions intent_options(reader_options(options));
   if (*lexicon) intent_options.lexicon = &**lexicon;
   const std::string lexicon_name = options.lexicon.value_or("intentions.tsv (fapc's own)");
   return load_script(

@@ -2,6 +2,7 @@
 #include "fapc/codec/file_io.hpp"
 #include "fapc/pipeline/registry.hpp"
 #include "fapc/transcoder/mimic.hpp"
+#include "reader_options.hpp"
 #include "timeline_input.hpp"
 
 namespace fapc::pipeline::builtin {
@@ -13,12 +14,7 @@ Result<Loaded> load_mimic(const std::string& path, const ConvertOptions& options
   if (!source) return source.error();
   Result<Profile> profile = profile_for(options);
   if (!profile) return profile.error();
-  MimicOptions mimic;
-  mimic.profile = &*profile;
-  mimic.max_runs = options.limits.max_runs;
-  mimic.frames = frame_budget_for(options);
-  mimic.includes = options.includes;
-  Result<MimicProgram> program = compile_mimic(*source, path, mimic);
+  Result<MimicProgram> program = compile_mimic(*source, path, reader_options(options, &*profile));
   // The timeline and the warnings keep nothing of the text: let it go before rendering (a
   // million-action script is 44 MB).
   *source = std::string();

@@ -2,21 +2,12 @@
 // (--voice, --speech-rate); --max-runs bounds the elements and runs; speech file= is an include.
 #include "fapc/pipeline/registry.hpp"
 #include "fapc/smil/smil.hpp"
-#include "speech_options.hpp"
+#include "reader_options.hpp"
 #include "timeline_input.hpp"
 
 namespace fapc::pipeline::builtin {
 
 namespace {
-
-smil::SmilOptions smil_options(const ConvertOptions& options) {
-  smil::SmilOptions out;
-  out.speech = bml_options(options);
-  out.speech_limits = options.limits;
-  out.max_runs = options.limits.max_runs;
-  out.includes = options.includes;
-  return out;
-}
 
 nlohmann::ordered_json facts_of(const smil::SmilDocument& document) {
   nlohmann::ordered_json out;
@@ -34,7 +25,7 @@ nlohmann::ordered_json facts_of(const smil::SmilDocument& document) {
 
 Result<Loaded> load_smil(const std::string& path, const ConvertOptions& options) {
   return load_script(
-      path, options, [&](const Profile&) { return smil::load_smil(path, smil_options(options)); }, facts_of);
+      path, options, [&](const Profile&) { return smil::load_smil(path, reader_options(options)); }, facts_of);
 }
 
 }  // namespace

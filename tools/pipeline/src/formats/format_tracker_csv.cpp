@@ -6,6 +6,7 @@
 #include "bridges/csv_kind.hpp"
 #include "bridges/openface_csv.hpp"
 #include "fapc/codec/file_io.hpp"
+#include "fapc/pipeline/json_access.hpp"
 
 namespace fapc::pipeline::builtin {
 
@@ -28,7 +29,7 @@ Result<Loaded> load_as(const std::string& path, const ConvertOptions& options, s
   loaded.frames = std::move(read->frames);
   loaded.frames.name = std::filesystem::path(path).stem().string();
   loaded.warnings = std::move(read->warnings);
-  if (options.facts) loaded.facts["dialect"] = *kind == bridges::CsvKind::openface ? "OpenFace" : "ARKit";
+  if (options.facts) json_of(loaded.facts)["dialect"] = *kind == bridges::CsvKind::openface ? "OpenFace" : "ARKit";
   return loaded;
 }
 

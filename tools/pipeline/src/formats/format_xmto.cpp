@@ -8,7 +8,7 @@
 #include "fapc/transcoder/timeline_from_frames.hpp"
 #include "fapc/xmto/xmto.hpp"
 #include "input_chain.hpp"
-#include "speech_options.hpp"
+#include "reader_options.hpp"
 #include "timeline_input.hpp"
 
 namespace fapc::pipeline::builtin {
@@ -41,21 +41,11 @@ Result<xmto::IncludedAnimation> load_animation(const std::string& path, const Lo
 
 Result<xmto::XmtoDocument> read_document(const std::string& path, const ConvertOptions& options,
                                          const Profile& profile) {
-  xmto::XmtoOptions xmto;
-  xmto.fml.events = options.events;
-  xmto.fml.profile = &profile;
-  set_speech(xmto.fml, options);
+  xmto::XmtoOptions xmto(reader_options(options, &profile));
   // The documents around this one (load() has put this one last): the reader names a cycle
   // among them at the animation element, before the loader is asked.
   xmto.including = inputs_being_read();
   if (!xmto.including.empty()) xmto.including.pop_back();
-  xmto.includes = options.includes;
-  xmto.fml.includes = options.includes;
-  xmto.duration = options.duration;
-  xmto.max_runs = options.limits.max_runs;
-  xmto.frames = frame_budget_for(options);
-  xmto.fml.max_runs = options.limits.max_runs;
-  xmto.max_audio_bytes = options.limits.max_decompressed_bytes;
   xmto.load_animation = [&options](const std::string& included, const Location& where) {
     return load_animation(included, where, options);
   };

@@ -16,7 +16,7 @@ namespace fapc::bml {
 
 // `block` is an element of `doc` named bml (an error at it otherwise). The result's warnings
 // leave out the parser's own, which belong to the whole document.
-Result<BmlDocument> read_bml_block(const xml::XmlDocument& doc, const xmlNode* block, const BmlOptions& options);
+Result<BmlDocument> read_bml_block(const xml::XmlDocument& doc, const xmlNode* block, const ReaderOptions& options);
 
 // One behaviour of an earlier block as placed: its points and marks, seconds from the start of
 // the sequence. Later blocks may name them (`bml1:nod1:end`).
@@ -36,7 +36,7 @@ struct EarlierBlocks {
 
 // The document's root block, placed by its composition after `earlier` (its clips, behaviours and
 // marks at their times in the sequence), its points added to `earlier.placed`.
-Result<BmlDocument> read_sequenced_block(const xml::XmlDocument& doc, const BmlOptions& options,
+Result<BmlDocument> read_sequenced_block(const xml::XmlDocument& doc, const ReaderOptions& options,
                                          EarlierBlocks& earlier);
 
 }  // namespace fapc::bml

@@ -132,7 +132,7 @@ void add_new(std::vector<T>& to, const std::vector<T>& from) {
 
 class Sequence {
  public:
-  Sequence(const std::string& list_name, const BmlOptions& options) : list_name_(list_name), options_(options) {}
+  Sequence(const std::string& list_name, const ReaderOptions& options) : list_name_(list_name), options_(options) {}
 
   Status add(const ListedDocument& listed) {
     if (listed.at) {
@@ -144,7 +144,7 @@ class Sequence {
     }
     Result<std::string> path = resolve_include(listed.name, list_name_, options_.includes, listed.where);
     if (!path) return path.error();
-    Result<std::string> text = read_file_bytes(*path, options_.speech_limits);
+    Result<std::string> text = read_file_bytes(*path, options_.limits);
     if (!text) {
       Diagnostic d = text.error();
       d.message = "'" + listed.name + "': " + d.message;
@@ -154,8 +154,8 @@ class Sequence {
     if (const Status depth = xml::check_element_depth(*text, *path); !depth) return depth.error();
     Result<xml::XmlDocument> doc = xml::XmlDocument::parse(*text, *path, xml::BlankText{false, {"text", "speech"}});
     if (!doc) return doc.error();
-    BmlOptions options = options_;
-    options.max_behaviours = options_.max_behaviours - counted_;
+    ReaderOptions options = options_;
+    options.limits.max_runs = options_.limits.max_runs - counted_;
     Result<BmlDocument> block = read_sequenced_block(*doc, options, earlier_);
     if (!block) return block.error();
     counted_ += static_cast<std::int64_t>(block->behaviours.size()) + 1;
@@ -188,7 +188,7 @@ class Sequence {
 
  private:
   const std::string& list_name_;
-  const BmlOptions& options_;
+  const ReaderOptions& options_;
   EarlierBlocks earlier_;
   BmlDocument out_;
   std::vector<std::string> dialects_;
@@ -229,8 +229,9 @@ class Sequence {
 
 }  // namespace
 
-Result<BmlDocument> read_bml_sequence(std::string_view list, const std::string& list_name, const BmlOptions& options) {
-  Result<std::vector<ListedDocument>> listed = parse_list(list, list_name, options.max_behaviours);
+Result<BmlDocument> read_bml_sequence(std::string_view list, const std::string& list_name,
+                                      const ReaderOptions& options) {
+  Result<std::vector<ListedDocument>> listed = parse_list(list, list_name, options.limits.max_runs);
   if (!listed) return listed.error();
   Sequence sequence(list_name, options);
   for (const ListedDocument& d : *listed)
@@ -238,8 +239,8 @@ Result<BmlDocument> read_bml_sequence(std::string_view list, const std::string& 
   return sequence.finish();
 }
 
-Result<BmlDocument> load_bml_sequence(const std::string& path, const BmlOptions& options) {
-  Result<std::string> text = read_file_bytes(path, options.speech_limits);
+Result<BmlDocument> load_bml_sequence(const std::string& path, const ReaderOptions& options) {
+  Result<std::string> text = read_file_bytes(path, options.limits);
   if (!text) return text.error();
   return read_bml_sequence(*text, path, options);
 }

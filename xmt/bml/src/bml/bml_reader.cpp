@@ -78,7 +78,7 @@ struct Pending {
 
 class BmlReader {
  public:
-  BmlReader(const xml::XmlDocument& doc, const BmlOptions& options, EarlierBlocks* earlier = nullptr)
+  BmlReader(const xml::XmlDocument& doc, const ReaderOptions& options, EarlierBlocks* earlier = nullptr)
       : doc_(doc), options_(options), once_(out_.warnings), earlier_(earlier) {}
 
   // `root`: the document's root, or a bml element inside another language's document (FML-APML's
@@ -100,7 +100,7 @@ class BmlReader {
 
  private:
   const xml::XmlDocument& doc_;
-  const BmlOptions& options_;
+  const ReaderOptions& options_;
   BmlDocument out_;
   xml::OncePerName once_;
   std::optional<Diagnostic> error_;
@@ -146,8 +146,8 @@ class BmlReader {
   }
 
   bool count_one(const xmlNode* node) {
-    if (++counted_ <= options_.max_behaviours) return true;
-    Diagnostic d = doc_.error(node, "more than " + std::to_string(options_.max_behaviours) +
+    if (++counted_ <= options_.limits.max_runs) return true;
+    Diagnostic d = doc_.error(node, "more than " + std::to_string(options_.limits.max_runs) +
                                         " behaviours and constraints (raise the limit with --max-runs)");
     d.kind = ErrorKind::limit_exceeded;
     return fail(std::move(d));
@@ -471,8 +471,8 @@ class BmlReader {
     if (error_) return false;
     Result<SpokenText> spoken = speak(marked, options_, b.where, out_.warnings, warned_no_engine_);
     if (!spoken) return fail(spoken.error());
-    if (std::find(out_.languages.begin(), out_.languages.end(), options_.language) == out_.languages.end())
-      out_.languages.push_back(options_.language);
+    if (std::find(out_.languages.begin(), out_.languages.end(), options_.speech.language) == out_.languages.end())
+      out_.languages.push_back(options_.speech.language);
     b.speech = std::make_unique<SpokenText>(std::move(*spoken));
     return true;
   }
@@ -731,7 +731,7 @@ class BmlReader {
         earlier_->placed[block.id].emplace(b.id, std::move(placed));  // a reused id: the first is named
       }
     }
-    lower_block(block, s, origin, options_.coarticulation, out_.timeline, out_.warnings);
+    lower_block(block, s, origin, options_.speech.coarticulation, out_.timeline, out_.warnings);
     double end = origin;
     for (const auto& points : s.points) end = std::max(end, origin + points[kEnd]);
     out_.timeline.explicit_end = std::max(out_.timeline.explicit_end.value_or(0.0), end);
@@ -791,7 +791,7 @@ class BmlReader {
 
 }  // namespace
 
-Result<BmlDocument> read_bml(std::string_view text, const std::string& file_name, const BmlOptions& options) {
+Result<BmlDocument> read_bml(std::string_view text, const std::string& file_name, const ReaderOptions& options) {
   if (const Status depth = xml::check_element_depth(text, file_name); !depth) return depth.error();
   // Only speech text is read; elsewhere white space is dropped.
   const xml::BlankText blank_text{false, {"text", "speech"}};
@@ -800,16 +800,16 @@ Result<BmlDocument> read_bml(std::string_view text, const std::string& file_name
   return BmlReader(*doc, options).run(doc->root(), true);
 }
 
-Result<BmlDocument> read_bml_block(const xml::XmlDocument& doc, const xmlNode* block, const BmlOptions& options) {
+Result<BmlDocument> read_bml_block(const xml::XmlDocument& doc, const xmlNode* block, const ReaderOptions& options) {
   return BmlReader(doc, options).run(block, false);
 }
 
-Result<BmlDocument> read_sequenced_block(const xml::XmlDocument& doc, const BmlOptions& options,
+Result<BmlDocument> read_sequenced_block(const xml::XmlDocument& doc, const ReaderOptions& options,
                                          EarlierBlocks& earlier) {
   return BmlReader(doc, options, &earlier).run(doc.root(), true);
 }
 
-Result<BmlDocument> load_bml(const std::string& path, const BmlOptions& options) {
+Result<BmlDocument> load_bml(const std::string& path, const ReaderOptions& options) {
   const auto source = SourceText::open(path);
   if (!source) return source.error();
   return read_bml(source->bytes(), path, options);

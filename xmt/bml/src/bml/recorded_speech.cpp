@@ -23,7 +23,7 @@ std::string seconds_text(double v) {
 
 // The marks of the speech's text (sync, tm or mark elements), each with its recorded time.
 // Other elements in the text (prosody marks) are said once: the recording is what is heard.
-Status read_marks(const xml::XmlDocument& doc, const xmlNode* text, const BmlOptions& options, Diagnostics& warnings,
+Status read_marks(const xml::XmlDocument& doc, const xmlNode* text, const ReaderOptions& options, Diagnostics& warnings,
                   SpokenText& out) {
   bool said = false;
   for (const xmlNode* mark : doc.children(text)) {
@@ -49,10 +49,10 @@ Status read_marks(const xml::XmlDocument& doc, const xmlNode* text, const BmlOpt
     const auto time = xml::decimal(xml::trim(*time_text));
     if (!time || !std::isfinite(*time) || *time < 0)
       return doc.error(mark, "time", "time '" + *time_text + "' is not a number of seconds from 0 on");
-    if (*time > options.max_speech_seconds) {
+    if (*time > options.speech.max_seconds) {
       Diagnostic d = doc.error(mark, "time",
                                "mark '" + id + "' at " + seconds_text(*time) + ": the speech would last more than " +
-                                   seconds_text(options.max_speech_seconds) +
+                                   seconds_text(options.speech.max_seconds) +
                                    " (the frame limit at this frame rate; raise it with --max-frames)");
       d.kind = ErrorKind::limit_exceeded;
       return d;
@@ -69,7 +69,7 @@ Status read_marks(const xml::XmlDocument& doc, const xmlNode* text, const BmlOpt
 }
 
 // The file's audio, or no samples (a warning) when it does not exist.
-Status read_audio(const xml::XmlDocument& doc, const xmlNode* description, const BmlOptions& options,
+Status read_audio(const xml::XmlDocument& doc, const xmlNode* description, const ReaderOptions& options,
                   Diagnostics& warnings, std::vector<std::string>& recordings, SpokenText& out) {
   const xmlNode* file = nullptr;
   for (const xmlNode* child : doc.children(description))
@@ -106,13 +106,13 @@ Status read_audio(const xml::XmlDocument& doc, const xmlNode* description, const
   }
   // Refused by its size before it is read (a recording is never compressed, so its size is its bytes).
   if (const auto size = fs::file_size(*path, error);
-      !error && static_cast<std::int64_t>(size) > options.speech_limits.max_decompressed_bytes) {
+      !error && static_cast<std::int64_t>(size) > options.limits.max_decompressed_bytes) {
     Diagnostic d = limit_error(doc.where(file, "ref"), "recording '" + name + "' is " + std::to_string(size) + " bytes",
-                               Limit::decompressed_bytes, options.speech_limits);
+                               Limit::decompressed_bytes, options.limits);
     d.source_line = doc.line_text(d.where.line);
     return d;
   }
-  Result<std::string> bytes = read_file_bytes(*path, options.speech_limits);
+  Result<std::string> bytes = read_file_bytes(*path, options.limits);
   if (!bytes) {
     Diagnostic d = doc.error(file, "ref", "recording '" + name + "': " + bytes.error().message);
     d.kind = bytes.error().kind;
@@ -128,10 +128,10 @@ Status read_audio(const xml::XmlDocument& doc, const xmlNode* description, const
     d.kind = audio.error().kind;
     return d;
   }
-  if (static_cast<std::int64_t>(audio->samples.size()) > options.speech_limits.max_audio_samples) {
+  if (static_cast<std::int64_t>(audio->samples.size()) > options.limits.max_audio_samples) {
     Diagnostic d = limit_error(doc.where(file, "ref"),
                                "recording '" + name + "' holds " + std::to_string(audio->samples.size()) + " samples",
-                               Limit::audio_samples, options.speech_limits);
+                               Limit::audio_samples, options.limits);
     d.source_line = doc.line_text(d.where.line);
     return d;
   }
@@ -153,7 +153,7 @@ const xmlNode* audio_description(const xml::XmlDocument& doc, const xmlNode* spe
 }
 
 Result<SpokenText> recorded_speech(const xml::XmlDocument& doc, const xmlNode* speech, const xmlNode* description,
-                                   const BmlOptions& options, Diagnostics& warnings,
+                                   const ReaderOptions& options, Diagnostics& warnings,
                                    std::vector<std::string>& recordings) {
   SpokenText out;
   out.recorded = true;

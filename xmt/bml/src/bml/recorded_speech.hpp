@@ -21,7 +21,7 @@ const xmlNode* audio_description(const xml::XmlDocument& doc, const xmlNode* spe
 // at the file element; a file the include rules refuse, too large or not a WAV fapc reads is an
 // error. Paths read are added to `recordings`.
 Result<SpokenText> recorded_speech(const xml::XmlDocument& doc, const xmlNode* speech, const xmlNode* description,
-                                   const BmlOptions& options, Diagnostics& warnings,
+                                   const ReaderOptions& options, Diagnostics& warnings,
                                    std::vector<std::string>& recordings);
 
 }  // namespace fapc::bml

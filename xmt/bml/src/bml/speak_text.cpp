@@ -20,11 +20,11 @@ double onset_after(const Utterance& spoken, std::size_t offset) {
 
 }  // namespace
 
-Result<SpokenText> speak(const MarkedText& text, const BmlOptions& options, const Location& where,
+Result<SpokenText> speak(const MarkedText& text, const ReaderOptions& options, const Location& where,
                          Diagnostics& warnings, bool& warned) {
   SpokenText out;
   out.mark_ids = text.mark_ids;
-  if (!options.synthesize) {
+  if (!options.speech.synthesize) {
     if (!warned) {
       warned = true;
       warnings.push_back(make_warning(WarningCode{"bml.no_speech_engine"}, where,
@@ -32,7 +32,7 @@ Result<SpokenText> speak(const MarkedText& text, const BmlOptions& options, cons
                                       "table, silent, and sync marks fall in proportion to the text"));
     }
     std::string skipped;
-    fml::Speech speech = fml::visemes_from_text(text.text, options.words_per_minute * 12 / 175, skipped);
+    fml::Speech speech = fml::visemes_from_text(text.text, options.speech.words_per_minute * 12 / 175, skipped);
     out.visemes = std::move(speech.visemes);
     out.duration = speech.duration;
     for (std::size_t offset : text.mark_offsets)
@@ -41,12 +41,12 @@ Result<SpokenText> speak(const MarkedText& text, const BmlOptions& options, cons
   }
   SpeechRequest request;
   request.text = text.text;
-  request.language = options.language;
-  request.voice = options.voice;
-  request.words_per_minute = options.words_per_minute;
-  request.max_seconds = options.max_speech_seconds;
+  request.language = options.speech.language;
+  request.voice = options.speech.voice;
+  request.words_per_minute = options.speech.words_per_minute;
+  request.max_seconds = options.speech.max_seconds;
   request.where = where;
-  Result<Utterance> spoken = options.synthesize(request);
+  Result<Utterance> spoken = options.speech.synthesize(request);
   if (!spoken) return spoken.error();
   for (Diagnostic& w : spoken->warnings) warnings.push_back(std::move(w));
   out.visemes = viseme_spans(spoken->phonemes);

@@ -17,9 +17,9 @@ struct MarkedText {
   std::vector<std::size_t> mark_offsets;
 };
 
-// Speaks `text` with options.synthesize, or by the letter table with a warning (once per
+// Speaks `text` with options.speech.synthesize, or by the letter table with a warning (once per
 // document: `warned`). Errors at `where` (the engine's: language, limits).
-Result<SpokenText> speak(const MarkedText& text, const BmlOptions& options, const Location& where,
+Result<SpokenText> speak(const MarkedText& text, const ReaderOptions& options, const Location& where,
                          Diagnostics& warnings, bool& warned);
 
 }  // namespace fapc::bml

@@ -18,7 +18,7 @@ struct EmbeddedFmlMove {
 // Errors at the element: what read_fml would report for the move, and FML time containers or
 // model items, which are read only inside an FML document (place one with animation src).
 Result<EmbeddedFmlMove> read_embedded_fml_move(const xml::XmlDocument& doc, const xmlNode* move,
-                                               const FmlOptions& options);
+                                               const ReaderOptions& options);
 
 // A talk as a timeline from time 0: its viseme clips by the coarticulation rule, and its audio.
 // A spoken talk keeps its own length; a silent one (letters, .pho) is stretched to `duration`.

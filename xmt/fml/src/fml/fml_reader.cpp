@@ -97,7 +97,7 @@ struct EventDeclaration {
 
 class FmlReader {
  public:
-  FmlReader(const xml::XmlDocument& doc, const FmlOptions& options)
+  FmlReader(const xml::XmlDocument& doc, const ReaderOptions& options)
       : doc_(doc), options_(options), once_(result_.warnings) {
     profile_ = options.profile ? options.profile : &default_profile();
   }
@@ -172,7 +172,7 @@ class FmlReader {
     if (Status s = check_runs(); !s) return s.error();
     ScheduleOptions schedule_options;
     schedule_options.root_end = options_.duration;
-    schedule_options.max_runs = options_.max_runs;
+    schedule_options.max_runs = options_.limits.max_runs;
     auto scheduled = schedule_tree(tree_.root, schedule_options);
     if (const auto* problem = std::get_if<ScheduleError>(&scheduled)) return scheduler_error(*problem);
     const Schedule& schedule = std::get<Schedule>(scheduled);
@@ -181,7 +181,7 @@ class FmlReader {
     // Lowering needs the runs and the leaves, not the tree (the root's source aside): its nodes go
     // before the clips are made.
     std::vector<ScheduleNode>().swap(tree_.root.children);
-    tree_.coarticulation = options_.coarticulation;
+    tree_.coarticulation = options_.speech.coarticulation;
     if (Status s = check_placed_voice(schedule); !s) return s.error();
     result_.timeline = lower_fml(tree_, schedule);
     once_.finish();
@@ -190,7 +190,7 @@ class FmlReader {
 
  private:
   const xml::XmlDocument& doc_;
-  const FmlOptions& options_;
+  const ReaderOptions& options_;
   const Profile* profile_ = nullptr;
   FmlDocument result_;  // before once_, which appends to its warnings
   xml::OncePerName once_;
@@ -374,7 +374,7 @@ class FmlReader {
   // ---- story ---------------------------------------------------------------------------------
 
   bool count_node(const xmlNode* node) {
-    if (++nodes_ <= static_cast<double>(options_.max_runs)) return true;
+    if (++nodes_ <= static_cast<double>(options_.limits.max_runs)) return true;
     fail(limit_at(doc_.error(node, ""), "the story has too many elements after template expansion"));
     return false;
   }
@@ -421,7 +421,7 @@ class FmlReader {
         fail(doc_.error(node, "repeat", "repeat must be a count above 0"));
         return false;
       }
-      if (*n > static_cast<double>(options_.max_runs)) {
+      if (*n > static_cast<double>(options_.limits.max_runs)) {
         fail(limit_at(doc_.error(node, "repeat", ""), "repeat " + text + " asks for more runs than allowed"));
         return false;
       }
@@ -443,7 +443,7 @@ class FmlReader {
       timing.repeat_indefinite = true;
     } else {
       const auto count = number(*value);
-      timing.repeat = count && *count >= 1 ? std::min(*count, static_cast<double>(options_.max_runs) + 1) : 1;
+      timing.repeat = count && *count >= 1 ? std::min(*count, static_cast<double>(options_.limits.max_runs) + 1) : 1;
     }
     return true;
   }
@@ -765,7 +765,7 @@ class FmlReader {
     // The talk lasts until its sound ends and the mouth is back at neutral.
     FmlTalk& talk = *leaf.talk;
     talk.natural = talk.speech.duration;
-    for (const Clip& clip : talk_timeline(talk, leaf.where, talk.speech.duration, options_.coarticulation).clips)
+    for (const Clip& clip : talk_timeline(talk, leaf.where, talk.speech.duration, options_.speech.coarticulation).clips)
       talk.natural = std::max(talk.natural, clip.end);
     const double intrinsic = talk.natural;
     return add_leaf(node, std::move(leaf), move_timing(timing, intrinsic));
@@ -774,13 +774,13 @@ class FmlReader {
   // Talk text: spoken by the engine, or (built without one) the letter approximation, with a
   // warning once per document.
   bool speak(const xmlNode* node, const std::string& text, FmlTalk& talk) {
-    if (!options_.synthesize) {
+    if (!options_.speech.synthesize) {
       once_.report("no speech engine", doc_.warning(node,
                                                     "no speech engine (fapc built with FAPC_SPEECH=OFF, or none "
                                                     "given): talk text becomes visemes by the letter table, with "
                                                     "no voice"));
       std::string skipped;
-      talk.speech = visemes_from_text(text, options_.words_per_minute * 12 / 175, skipped);
+      talk.speech = visemes_from_text(text, options_.speech.words_per_minute * 12 / 175, skipped);
       if (!skipped.empty()) {
         once_.report("skipped " + skipped, doc_.warning(node, "talk: the characters '" + skipped +
                                                                   "' have no letter-to-viseme rule and are silent"));
@@ -792,12 +792,12 @@ class FmlReader {
     request.language = talk_language(node);
     request.voice = xml::attribute(node, "voice") ? trim(*xml::attribute(node, "voice"))
                     : !model_voice_.empty()       ? model_voice_
-                                                  : options_.voice;
-    request.words_per_minute = options_.words_per_minute;
+                                                  : options_.speech.voice;
+    request.words_per_minute = options_.speech.words_per_minute;
     request.where = xml::attribute(node, "lang") ? doc_.where(node, "lang") : doc_.where(node);
     // The document's speech budget, before the engine runs (docs/security.md): text bytes, then
     // seconds as estimated from the text; the engine then stops at the seconds left.
-    const Limits& limits = options_.speech_limits;
+    const Limits& limits = options_.limits;
     speech_text_bytes_ += static_cast<std::int64_t>(text.size());
     if (speech_text_bytes_ > limits.max_speech_text_bytes) {
       fail(placed(limit_error(doc_.where(node),
@@ -814,16 +814,16 @@ class FmlReader {
           Limit::speech_seconds, limits)));
       return false;
     }
-    request.max_seconds = std::min(left, options_.max_speech_seconds);
-    Result<Utterance> spoken = options_.synthesize(request);
+    request.max_seconds = std::min(left, options_.speech.max_seconds);
+    Result<Utterance> spoken = options_.speech.synthesize(request);
     if (!spoken && spoken.error().kind == ErrorKind::limit_exceeded) {
-      fail(placed(left <= options_.max_speech_seconds
+      fail(placed(left <= options_.speech.max_seconds
                       ? limit_error(doc_.where(node),
                                     "the speech of this document would last more than " +
                                         seconds_text(limits.max_speech_seconds) + " s",
                                     Limit::speech_seconds, limits)
                       : make_error(ErrorKind::limit_exceeded, doc_.where(node),
-                                   "the speech would last more than " + seconds_text(options_.max_speech_seconds) +
+                                   "the speech would last more than " + seconds_text(options_.speech.max_seconds) +
                                        " s (the frame limit, --max-frames, at the frame rate)")));
       return false;
     }
@@ -854,11 +854,11 @@ class FmlReader {
       const FmlLeaf& leaf = tree_.leaves[run.leaf_id];
       if (leaf.kind != FmlLeaf::Kind::talk || run.end <= run.begin) continue;
       samples += placed_samples(leaf.talk->audio, run.begin - run.curve_offset, run.begin, run.end);
-      if (samples > static_cast<double>(options_.speech_limits.max_audio_samples))
+      if (samples > static_cast<double>(options_.limits.max_audio_samples))
         return placed(limit_error(leaf.where,
                                   "the voice of this talk, once per run, adds up to " +
                                       std::to_string(static_cast<std::int64_t>(samples)) + " samples",
-                                  Limit::audio_samples, options_.speech_limits));
+                                  Limit::audio_samples, options_.limits));
     }
     return ok_status();
   }
@@ -883,7 +883,7 @@ class FmlReader {
       xmlFree(inherited);
       if (!lang.empty()) return lang;
     }
-    return !model_language_.empty() ? model_language_ : options_.language;
+    return !model_language_.empty() ? model_language_ : options_.speech.language;
   }
 
   // A .pho file's visemes; an empty speech for other files (the caller warns).
@@ -926,14 +926,14 @@ class FmlReader {
     double shortest = 0;
     const double total = estimated_runs(tree_.root, options_.duration.value_or(kUnendedSeconds), shortest,
                                         [this](std::size_t leaf_id) { return leaf_runs(leaf_id); });
-    if (total <= static_cast<double>(options_.max_runs)) return ok_status();
+    if (total <= static_cast<double>(options_.limits.max_runs)) return ok_status();
     return limit_at(make_error(tree_.root.source, ""), "the story repeats to too many runs");
   }
 
   // A limit_exceeded error at the place `at` points to (its source line kept).
   Diagnostic limit_at(const Diagnostic& at, const std::string& what) const {
     Limits limits;
-    limits.max_runs = options_.max_runs;
+    limits.max_runs = options_.limits.max_runs;
     Diagnostic d = limit_error(at.where, what, Limit::runs, limits);
     d.source_line = at.source_line;
     return d;
@@ -961,8 +961,8 @@ class FmlReader {
 // of <talk ...>TEXT</talk> without file=, in document order: an estimate (it counts markup
 // inside a talk, and talks in comments), made exact by the checks as each talk is spoken.
 std::optional<Diagnostic> talk_text_over_budget(std::string_view text, const std::string& file,
-                                                const FmlOptions& options) {
-  const Limits& limits = options.speech_limits;
+                                                const ReaderOptions& options) {
+  const Limits& limits = options.limits;
   std::int64_t bytes = 0;
   double seconds = 0;
   for (std::size_t at = text.find("<talk"); at != std::string_view::npos; at = text.find("<talk", at + 1)) {
@@ -975,7 +975,7 @@ std::optional<Diagnostic> talk_text_over_budget(std::string_view text, const std
     if (close == std::string_view::npos) break;
     const std::string_view body = text.substr(open_end + 1, close - open_end - 1);
     bytes += static_cast<std::int64_t>(body.size());
-    seconds += estimated_speech_seconds(body, options.words_per_minute);
+    seconds += estimated_speech_seconds(body, options.speech.words_per_minute);
     const bool too_much_text = bytes > limits.max_speech_text_bytes;
     if (too_much_text || seconds > limits.max_speech_seconds) {
       const std::size_t line_start = text.rfind('\n', at);
@@ -996,9 +996,9 @@ std::optional<Diagnostic> talk_text_over_budget(std::string_view text, const std
   return std::nullopt;
 }
 
-Result<FmlDocument> read_fml_text(std::string_view text, const std::string& file_name, const FmlOptions& options,
+Result<FmlDocument> read_fml_text(std::string_view text, const std::string& file_name, const ReaderOptions& options,
                                   const xml::XmlDocument::TextReleaser& release_text) {
-  if (options.synthesize) {
+  if (options.speech.synthesize) {
     if (auto refused = talk_text_over_budget(text, file_name, options)) return *std::move(refused);
   }
   // Only talk text is read (an FML move's, embedded or not); elsewhere white space is dropped.
@@ -1010,15 +1010,15 @@ Result<FmlDocument> read_fml_text(std::string_view text, const std::string& file
 }  // namespace
 
 Result<EmbeddedFmlMove> read_embedded_fml_move(const xml::XmlDocument& doc, const xmlNode* move,
-                                               const FmlOptions& options) {
+                                               const ReaderOptions& options) {
   return FmlReader(doc, options).run_embedded(move);
 }
 
-Result<FmlDocument> read_fml(std::string_view text, const std::string& file_name, const FmlOptions& options) {
+Result<FmlDocument> read_fml(std::string_view text, const std::string& file_name, const ReaderOptions& options) {
   return read_fml_text(text, file_name, options, {});
 }
 
-Result<FmlDocument> load_fml(const std::string& path, const FmlOptions& options) {
+Result<FmlDocument> load_fml(const std::string& path, const ReaderOptions& options) {
   const auto source = SourceText::open(path);
   if (!source) return source.error();
   return read_fml_text(source->bytes(), path, options, [&](std::size_t offset) { source->release(offset); });

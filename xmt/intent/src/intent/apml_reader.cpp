@@ -86,10 +86,10 @@ class ApmlReader : public DocumentReader {
     double seconds = 0;
     if (const auto sec = xml::attribute(n, "sec")) {
       const auto value = xml::decimal(xml::trim(*sec));
-      if (!value || *value < 0 || *value > options_.bml.max_speech_seconds)
+      if (!value || *value < 0 || *value > options_.speech.max_seconds)
         return doc_.error(n, "sec",
                           "sec '" + *sec + "' is not a pause in seconds from 0 to " +
-                              std::to_string(static_cast<long long>(options_.bml.max_speech_seconds)) +
+                              std::to_string(static_cast<long long>(options_.speech.max_seconds)) +
                               " (--max-speech-seconds)");
       seconds = *value;
     }
@@ -149,10 +149,10 @@ class ApmlReader : public DocumentReader {
         spoken.push_back(std::move(silent));
         continue;
       }
-      Result<bml::SpokenText> said = bml::speak(s.text, options_.bml, where, out_.warnings, warned);
+      Result<bml::SpokenText> said = bml::speak(s.text, options_, where, out_.warnings, warned);
       if (!said) return said.error();
-      if (std::find(out_.languages.begin(), out_.languages.end(), options_.bml.language) == out_.languages.end())
-        out_.languages.push_back(options_.bml.language);
+      if (std::find(out_.languages.begin(), out_.languages.end(), options_.speech.language) == out_.languages.end())
+        out_.languages.push_back(options_.speech.language);
       // The speech is lowered as the BML reader lowers a speech behaviour.
       bml::Behaviour speech;
       speech.kind = bml::BehaviourKind::speech;
@@ -161,7 +161,7 @@ class ApmlReader : public DocumentReader {
       std::array<double, bml::kStandardPoints> t{};
       t.fill(clock);
       t[bml::kStrokeEnd] = t[bml::kRelax] = t[bml::kEnd] = clock + said->duration;
-      bml::lower_behaviour(speech, t, 0, options_.bml.coarticulation, out_.timeline, out_.warnings);
+      bml::lower_behaviour(speech, t, 0, options_.speech.coarticulation, out_.timeline, out_.warnings);
       clock += said->duration;
       spoken.push_back(std::move(*said));
     }

@@ -25,8 +25,8 @@ Result<const xmlNode*> DocumentReader::root_named(std::string_view name) const {
 }
 
 Status DocumentReader::count(const xmlNode* node, const char* what) {
-  if (++counted_ <= options_.bml.max_behaviours) return ok_status();
-  Diagnostic d = doc_.error(node, "more than " + std::to_string(options_.bml.max_behaviours) + " " + what +
+  if (++counted_ <= options_.limits.max_runs) return ok_status();
+  Diagnostic d = doc_.error(node, "more than " + std::to_string(options_.limits.max_runs) + " " + what +
                                       " (raise the limit with --max-runs)");
   d.kind = ErrorKind::limit_exceeded;
   return d;
@@ -35,7 +35,7 @@ Status DocumentReader::count(const xmlNode* node, const char* what) {
 Result<IntentDocument> DocumentReader::draw_and_finish(std::vector<Intention> intentions, double end,
                                                        Location end_where) {
   for (Intention& i : intentions) {
-    realize(i, lexicon_, options_.bml.coarticulation, out_.timeline, once_, out_.warnings);
+    realize(i, lexicon_, options_.speech.coarticulation, out_.timeline, once_, out_.warnings);
     if (i.end > end) {
       end = i.end;
       end_where = i.where;
@@ -44,7 +44,7 @@ Result<IntentDocument> DocumentReader::draw_and_finish(std::vector<Intention> in
   out_.intentions = std::move(intentions);
   out_.timeline.explicit_end = end;
   out_.timeline.end_source = end_where;
-  if (options_.bml.frames.exceeded_by(end)) return frame_budget_error(end, end_where, options_.bml.frames);
+  if (options_.frames.exceeded_by(end)) return frame_budget_error(end, end_where, options_.frames);
   once_.finish();
   for (const Diagnostic& w : doc_.warnings()) out_.warnings.push_back(w);
   return std::move(out_);

@@ -20,7 +20,7 @@ class DocumentReader {
 
   // The root element, or an error at it when it is not <name>.
   Result<const xmlNode*> root_named(std::string_view name) const;
-  // An error (limit_exceeded, at `node`) once more than options.bml.max_behaviours `what` are
+  // An error (limit_exceeded, at `node`) once more than options.limits.max_runs `what` are
   // counted: checked before each is stored.
   Status count(const xmlNode* node, const char* what);
   // Draws each intention (start and end set) through the lexicon, ends the document at the last

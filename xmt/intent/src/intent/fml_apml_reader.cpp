@@ -71,7 +71,7 @@ class FmlApmlReader : public DocumentReader {
   std::map<std::string, std::pair<double, double>> behaviours_;
 
   Status read_bml_part(const xmlNode* part) {
-    Result<bml::BmlDocument> block = bml::read_bml_block(doc_, part, options_.bml);
+    Result<bml::BmlDocument> block = bml::read_bml_block(doc_, part, options_);
     if (!block) return block.error();
     for (Clip& clip : block->timeline.clips) out_.timeline.clips.push_back(std::move(clip));
     for (AudioClip& audio : block->timeline.audio) out_.timeline.audio.push_back(std::move(audio));

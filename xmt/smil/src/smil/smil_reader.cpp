@@ -70,7 +70,7 @@ const std::vector<std::string_view> kAnchored = {"affect",  "content-id", "conte
 
 class SmilReader {
  public:
-  SmilReader(const xml::XmlDocument& doc, const SmilOptions& options)
+  SmilReader(const xml::XmlDocument& doc, const ReaderOptions& options)
       : doc_(doc), options_(options), once_(out_.warnings) {}
 
   Result<SmilDocument> run() {
@@ -89,7 +89,7 @@ class SmilReader {
     set_speech_durations(*tree);
     if (Status s = check_runs(*tree); !s) return s.error();
     ScheduleOptions schedule_options;
-    schedule_options.max_runs = options_.max_runs;
+    schedule_options.max_runs = options_.limits.max_runs;
     auto scheduled = schedule_tree(*tree, schedule_options);
     if (const auto* problem = std::get_if<ScheduleError>(&scheduled)) {
       Diagnostic d = problem->diagnostic("the element");
@@ -98,10 +98,10 @@ class SmilReader {
     }
     const Schedule& schedule = std::get<Schedule>(scheduled);
     if (Status s = check_voice(schedule); !s) return s.error();
-    Result<PlacedScript> placed = place_behaviours(leaves_, schedule, options_.max_runs, out_.behaviours);
+    Result<PlacedScript> placed = place_behaviours(leaves_, schedule, options_.limits.max_runs, out_.behaviours);
     if (!placed) return with_line(placed.error());
-    if (options_.speech.frames.exceeded_by(placed->end))
-      return frame_budget_error(placed->end, placed->end_source, options_.speech.frames);
+    if (options_.frames.exceeded_by(placed->end))
+      return frame_budget_error(placed->end, placed->end_source, options_.frames);
     bml::lower_block(placed->block, placed->solution, 0, options_.speech.coarticulation, out_.timeline, out_.warnings);
     out_.timeline.explicit_end = placed->end;
     out_.timeline.end_source = placed->end_source;
@@ -116,7 +116,7 @@ class SmilReader {
   };
 
   const xml::XmlDocument& doc_;
-  const SmilOptions& options_;
+  const ReaderOptions& options_;
   SmilDocument out_;
   xml::OncePerName once_;
   std::optional<Diagnostic> error_;
@@ -166,9 +166,9 @@ class SmilReader {
   // ---- the tree --------------------------------------------------------------------------------
 
   std::optional<ScheduleNode> element(const xmlNode* node, Context context) {
-    if (++elements_ > options_.max_runs) {
+    if (++elements_ > options_.limits.max_runs) {
       Limits limits;
-      limits.max_runs = options_.max_runs;
+      limits.max_runs = options_.limits.max_runs;
       fail(limit_error(doc_.where(node), "the script has too many elements", Limit::runs, limits));
       return std::nullopt;
     }
@@ -242,9 +242,9 @@ class SmilReader {
     const auto n = xml::decimal(xml::trim(*text));
     if (!n || *n <= 0)
       return fail(doc_.error(node, "repeat", "repeat '" + *text + "' is not a count above 0 or indefinite"));
-    if (*n > static_cast<double>(options_.max_runs)) {
+    if (*n > static_cast<double>(options_.limits.max_runs)) {
       Limits limits;
-      limits.max_runs = options_.max_runs;
+      limits.max_runs = options_.limits.max_runs;
       return fail(limit_error(doc_.where(node, "repeat"), "repeat " + *text + " asks for more runs than allowed",
                               Limit::runs, limits));
     }
@@ -335,14 +335,14 @@ class SmilReader {
     Result<std::string> path =
         resolve_include(xml::trim(name), doc_.file(), options_.includes, doc_.where(node, "file"));
     if (!path) return fail(path.error());
-    Result<std::string> bytes = read_file_bytes(*path, options_.speech_limits);
+    Result<std::string> bytes = read_file_bytes(*path, options_.limits);
     if (!bytes) return fail(doc_.error(node, "file", "speech file '" + name + "': " + bytes.error().message));
     Result<AudioClip> audio = read_wav(*bytes, *path);
     if (!audio) return fail(audio.error());
-    if (static_cast<std::int64_t>(audio->samples.size()) > options_.speech_limits.max_audio_samples)
+    if (static_cast<std::int64_t>(audio->samples.size()) > options_.limits.max_audio_samples)
       return fail(limit_error(doc_.where(node, "file"),
                               "speech file '" + name + "' holds " + std::to_string(audio->samples.size()) + " samples",
-                              Limit::audio_samples, options_.speech_limits));
+                              Limit::audio_samples, options_.limits));
     out_.recordings.push_back(*path);
     warn("recording", "smil.recording_without_visemes",
          doc_.warning(
@@ -501,7 +501,7 @@ class SmilReader {
 
   // All speech text against the budget before any is spoken (docs/security.md).
   Status check_speech_budget() const {
-    const Limits& limits = options_.speech_limits;
+    const Limits& limits = options_.limits;
     std::int64_t bytes = 0;
     double seconds = 0;
     for (const SmilLeaf& leaf : leaves_) {
@@ -524,9 +524,9 @@ class SmilReader {
   }
 
   Status speak(SmilLeaf& leaf) {
-    bml::BmlOptions options = options_.speech;
-    options.language = leaf.language;
-    options.max_speech_seconds = std::min(options.max_speech_seconds, options_.speech_limits.max_speech_seconds);
+    ReaderOptions options = options_;
+    options.speech.language = leaf.language;
+    options.speech.max_seconds = std::min(options.speech.max_seconds, options_.limits.max_speech_seconds);
     Result<bml::SpokenText> spoken = bml::speak(leaf.text, options, leaf.where, out_.warnings, warned_no_engine_);
     if (!spoken) return with_line(spoken.error());
     if (options_.speech.synthesize &&
@@ -553,9 +553,9 @@ class SmilReader {
   Status check_runs(const ScheduleNode& tree) const {
     double shortest = 0;
     const double total = fml::estimated_runs(tree, kUnendedSeconds, shortest, [](std::size_t) { return 1.0; });
-    if (total <= static_cast<double>(options_.max_runs)) return ok_status();
+    if (total <= static_cast<double>(options_.limits.max_runs)) return ok_status();
     Limits limits;
-    limits.max_runs = options_.max_runs;
+    limits.max_runs = options_.limits.max_runs;
     return with_line(limit_error(tree.source, "the script repeats to too many runs", Limit::runs, limits));
   }
 
@@ -566,11 +566,11 @@ class SmilReader {
       const SmilLeaf& leaf = leaves_[run.leaf_id];
       if (leaf.kind != SmilLeaf::Kind::speech) continue;
       samples += static_cast<double>(leaf.spoken->audio.samples.size());
-      if (samples > static_cast<double>(options_.speech_limits.max_audio_samples))
+      if (samples > static_cast<double>(options_.limits.max_audio_samples))
         return with_line(limit_error(leaf.where,
                                      "the voice of this speech, once per run, adds up to " +
                                          std::to_string(static_cast<std::int64_t>(samples)) + " samples",
-                                     Limit::audio_samples, options_.speech_limits));
+                                     Limit::audio_samples, options_.limits));
     }
     return ok_status();
   }
@@ -578,7 +578,7 @@ class SmilReader {
 
 }  // namespace
 
-Result<SmilDocument> read_smil(std::string_view text, const std::string& file_name, const SmilOptions& options) {
+Result<SmilDocument> read_smil(std::string_view text, const std::string& file_name, const ReaderOptions& options) {
   if (const Status depth = xml::check_element_depth(text, file_name); !depth) return depth.error();
   // Only speech and parameter text is read; elsewhere white space is dropped.
   const xml::BlankText blank_text{false, {"speech", "parameter"}};
@@ -587,7 +587,7 @@ Result<SmilDocument> read_smil(std::string_view text, const std::string& file_na
   return SmilReader(*doc, options).run();
 }
 
-Result<SmilDocument> load_smil(const std::string& path, const SmilOptions& options) {
+Result<SmilDocument> load_smil(const std::string& path, const ReaderOptions& options) {
   const auto source = SourceText::open(path);
   if (!source) return source.error();
   return read_smil(source->bytes(), path, options);

@@ -31,9 +31,9 @@ Result<std::string> read_bounded(const xml::XmlDocument& doc, const xmlNode* ele
                                  const std::string& path, const XmtoOptions& options) {
   std::error_code error;
   const auto size = fs::file_size(path, error);
-  if (!error && static_cast<std::int64_t>(size) > options.max_audio_bytes) {
+  if (!error && static_cast<std::int64_t>(size) > options.limits.max_decompressed_bytes) {
     Limits limits;
-    limits.max_decompressed_bytes = options.max_audio_bytes;
+    limits.max_decompressed_bytes = options.limits.max_decompressed_bytes;
     Diagnostic d = limit_error(doc.where(element, "src"), "audio '" + name + "' is " + std::to_string(size) + " bytes",
                                Limit::decompressed_bytes, limits);
     d.source_line = doc.line_text(d.where.line);
@@ -99,7 +99,7 @@ Result<Recording> load_recording(const xml::XmlDocument& doc, const xmlNode* ele
     if (!speech) return speech.error();
     recording.pho_path = *pho_path;
     recording.timeline.clips =
-        coarticulated_viseme_clips(std::move(speech->visemes), 1.0, options.fml.coarticulation, doc.where(element));
+        coarticulated_viseme_clips(std::move(speech->visemes), 1.0, options.speech.coarticulation, doc.where(element));
   }
   recording.timeline.audio.push_back(std::move(*sound));
   return recording;

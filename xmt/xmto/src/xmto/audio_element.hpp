@@ -17,7 +17,7 @@ struct Recording {
 };
 
 // Errors at the element or its src/clipEnd attribute: no src, a URL, a path outside the allowed
-// folders, a file that cannot be read or is larger than options.max_audio_bytes (checked before
+// folders, a file that cannot be read or is larger than options.limits.max_decompressed_bytes (checked before
 // reading), a WAV other than 16-bit PCM. A malformed .pho is an error at its own file:line:col.
 Result<Recording> load_recording(const xml::XmlDocument& doc, const xmlNode* element, const XmtoOptions& options,
                                  Diagnostics& warnings);

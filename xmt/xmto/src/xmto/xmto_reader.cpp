@@ -90,7 +90,7 @@ class DocumentReader {
     doc_.release_tree();
     ScheduleOptions schedule_options;
     schedule_options.root_end = options_.duration;
-    schedule_options.max_runs = options_.max_runs;
+    schedule_options.max_runs = options_.limits.max_runs;
     auto scheduled = schedule_tree(tree_.root, schedule_options);
     if (const auto* problem = std::get_if<ScheduleError>(&scheduled)) return scheduler_error(*problem);
     const Schedule& schedule = std::get<Schedule>(scheduled);
@@ -108,7 +108,7 @@ class DocumentReader {
   // Every run of an included animation or recording stores its own copy of its audio: their sum
   // against the audio sample limit, before any is made (a 10^5-fold repeatCount of a recording).
   Status check_placed_audio(const Schedule& schedule) const {
-    const Limits& limits = options_.fml.speech_limits;
+    const Limits& limits = options_.limits;
     double samples = 0;
     for (const Occurrence& run : schedule.occurrences) {
       const Leaf& leaf = tree_.leaves[run.leaf_id];
@@ -314,13 +314,13 @@ class DocumentReader {
     return group;
   }
 
-  // Counts the clips a leaf will make (runs times clips per run) against options_.max_runs.
+  // Counts the clips a leaf will make (runs times clips per run) against options_.limits.max_runs.
   bool within_budget(const xmlNode* node, double clips) {
     planned_clips_ += clips;
-    if (planned_clips_ <= static_cast<double>(options_.max_runs)) return true;
+    if (planned_clips_ <= static_cast<double>(options_.limits.max_runs)) return true;
     const Diagnostic at = doc_.error(node, "");
     Limits limits;
-    limits.max_runs = options_.max_runs;
+    limits.max_runs = options_.limits.max_runs;
     Diagnostic d = limit_error(
         at.where, std::string(xml::local_name(node)) + " brings the document to too many clips (repeats of repeats?)",
         Limit::runs, limits);
@@ -393,7 +393,7 @@ class DocumentReader {
   // returns the expressions of the FML moves before it to 0; talk and wait are placed like an
   // included animation of their length.
   std::optional<ScheduleNode> fml_move(const xmlNode* node, const RunBudget& budget) {
-    Result<fml::EmbeddedFmlMove> move = fml::read_embedded_fml_move(doc_, node, options_.fml);
+    Result<fml::EmbeddedFmlMove> move = fml::read_embedded_fml_move(doc_, node, options_);
     if (!move) {
       fail(move.error());
       return std::nullopt;
@@ -430,8 +430,8 @@ class DocumentReader {
         return scheduled_node(std::move(group), node);
       }
       case fml::FmlLeaf::Kind::talk:
-        leaf.included =
-            std::make_unique<Timeline>(fml::talk_timeline(*fml.talk, fml.where, length, options_.fml.coarticulation));
+        leaf.included = std::make_unique<Timeline>(
+            fml::talk_timeline(*fml.talk, fml.where, length, options_.speech.coarticulation));
         break;
       case fml::FmlLeaf::Kind::wait:
         leaf.included = std::make_unique<Timeline>(Timeline{{}, length, doc_.where(node)});

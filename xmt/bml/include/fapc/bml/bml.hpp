@@ -14,30 +14,11 @@
 #include "fapc/codec/include_policy.hpp"
 #include "fapc/codec/limits.hpp"
 #include "fapc/transcoder/frame_budget.hpp"
+#include "fapc/transcoder/reader_options.hpp"
 #include "fapc/transcoder/speech.hpp"
 #include "fapc/transcoder/timeline.hpp"
 
 namespace fapc::bml {
-
-struct BmlOptions {
-  // The most behaviours (and sync points) a document may hold: Limits::max_runs (--max-runs).
-  std::int64_t max_behaviours = Limits{}.max_runs;
-  // The frames the document will be rendered at: a document too long for them is refused once
-  // scheduled (fps 0: unchecked).
-  FrameBudget frames;
-  // speech text: spoken by `synthesize` (fapc::speech::engine()); without one, the letter table
-  // of the FML reader at words_per_minute, with a warning.
-  Synthesizer synthesize;
-  std::string language = "en";
-  std::string voice;
-  double words_per_minute = 175;
-  double max_speech_seconds = 3600;
-  Coarticulation coarticulation;
-  // Recorded speech (SmartBody's <file ref>): which files may be read, and how large they may be
-  // (max_decompressed_bytes, max_audio_samples).
-  IncludePolicy includes;
-  Limits speech_limits;
-};
 
 // One behaviour as scheduled, for `fapc info` and the tests.
 struct ScheduledBehaviour {
@@ -77,8 +58,8 @@ struct BmlDocument {
 // references to unknown behaviours or sync points, constraints that cannot hold together (named
 // with the chain of constraints that forces the contradiction), a behaviour that would start
 // before its block.
-Result<BmlDocument> read_bml(std::string_view text, const std::string& file_name, const BmlOptions& options = {});
-Result<BmlDocument> load_bml(const std::string& path, const BmlOptions& options = {});
+Result<BmlDocument> read_bml(std::string_view text, const std::string& file_name, const ReaderOptions& options = {});
+Result<BmlDocument> load_bml(const std::string& path, const ReaderOptions& options = {});
 
 // Several BML documents given in order, as a realizer receives blocks (docs/bml.md, "Several
 // blocks"): `list` holds one document per line (`[at SECONDS] PATH`, `#` comments), each path
@@ -88,7 +69,7 @@ Result<BmlDocument> load_bml(const std::string& path, const BmlOptions& options 
 // before it (the first at 0) unless its line says when. Errors are placed in the list (a path or
 // time that cannot be read) or in the document.
 Result<BmlDocument> read_bml_sequence(std::string_view list, const std::string& list_name,
-                                      const BmlOptions& options = {});
-Result<BmlDocument> load_bml_sequence(const std::string& path, const BmlOptions& options = {});
+                                      const ReaderOptions& options = {});
+Result<BmlDocument> load_bml_sequence(const std::string& path, const ReaderOptions& options = {});
 
 }  // namespace fapc::bml

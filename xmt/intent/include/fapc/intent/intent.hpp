@@ -7,18 +7,21 @@
 
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "fapc/bml/bml.hpp"
+#include "fapc/transcoder/reader_options.hpp"
 #include "fapc/vocabulary/behaviour_lexicon.hpp"
 
 namespace fapc::intent {
 
-struct IntentOptions {
-  // Speech (engine, voice, rate), the behaviour limit (max_behaviours also bounds the
-  // intentions: --max-runs) and the frame budget, as for BML.
-  bml::BmlOptions bml;
-  // The lexicon to read intentions by; null: fapc's own (data/intentions.tsv).
+// The reader options every reader takes (speech, the behaviour limit limits.max_runs, which also
+// bounds the intentions, the frame budget), and the lexicon to read intentions by: null, fapc's
+// own (data/intentions.tsv).
+struct IntentOptions : ReaderOptions {
+  IntentOptions() = default;
+  explicit IntentOptions(ReaderOptions common) : ReaderOptions(std::move(common)) {}
   const vocabulary::BehaviourLexicon* lexicon = nullptr;
 };
 
@@ -48,7 +51,7 @@ inline constexpr double kPointSpanSeconds = 0.5;
 // Errors (file:line:col): not well-formed XML, another root, a start or end that is neither a time
 // nor a reference to a speech mark or to another behaviour or intention (named, with what exists),
 // references in a cycle, an end before its start, importance or intensity outside 0..1, more
-// intentions than options.bml.max_behaviours (--max-runs), a document longer than the frames.
+// intentions than options.limits.max_runs (--max-runs), a document longer than the frames.
 // Unknown intentions and values are warnings (intent.unknown_intention) and keep their span.
 Result<IntentDocument> read_fml_apml(std::string_view text, const std::string& file_name,
                                      const IntentOptions& options = {});

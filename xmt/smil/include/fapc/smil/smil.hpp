@@ -14,24 +14,10 @@
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/include_policy.hpp"
 #include "fapc/codec/limits.hpp"
+#include "fapc/transcoder/reader_options.hpp"
 #include "fapc/transcoder/timeline.hpp"
 
 namespace fapc::smil {
-
-struct SmilOptions {
-  // The most elements, and runs after repeats, a script may have: Limits::max_runs (--max-runs).
-  std::int64_t max_runs = Limits{}.max_runs;
-  // How speech is spoken and the frames the script will be rendered at, as for BML: the engine
-  // (without one, the FML reader's letter table, silent, with a warning), the language where no
-  // system-language is in force, the voice, rate, longest speech and coarticulation; a script
-  // too long for `frames` is refused once scheduled. (max_behaviours is not read: max_runs is.)
-  bml::BmlOptions speech;
-  // The script's speech text and seconds, all speeches together (docs/security.md), checked
-  // before any is spoken; the audio samples of `file=` recordings.
-  Limits speech_limits;
-  // Which files `speech file=` may name (docs/security.md); by default the script's folder tree.
-  IncludePolicy includes;
-};
 
 // One affect or action as placed, for `fapc info` and the tests.
 struct PlacedBehaviour {
@@ -55,7 +41,7 @@ struct SmilDocument {
 // values, fill, repeat or intensity, a content-id naming no speech, a content-begin/content-end
 // naming no mark of it, a speech file= outside the allowed folders or not a 16-bit PCM WAV, and
 // the limits (elements and runs, speech text and seconds, audio samples, frames).
-Result<SmilDocument> read_smil(std::string_view text, const std::string& file_name, const SmilOptions& options = {});
-Result<SmilDocument> load_smil(const std::string& path, const SmilOptions& options = {});
+Result<SmilDocument> read_smil(std::string_view text, const std::string& file_name, const ReaderOptions& options = {});
+Result<SmilDocument> load_smil(const std::string& path, const ReaderOptions& options = {});
 
 }  // namespace fapc::smil

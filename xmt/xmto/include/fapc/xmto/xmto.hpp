@@ -16,6 +16,7 @@
 #include "fapc/codec/limits.hpp"
 #include "fapc/fml/fml.hpp"
 #include "fapc/transcoder/frame_budget.hpp"
+#include "fapc/transcoder/reader_options.hpp"
 #include "fapc/transcoder/timeline.hpp"
 #include "fapc/xml/clock_value.hpp"  // parse_clock_value, part of this reader's interface
 
@@ -33,30 +34,20 @@ struct IncludedAnimation {
 using AnimationLoader =
     std::function<Result<IncludedAnimation>(const std::string& resolved_path, const Location& where)>;
 
-struct XmtoOptions {
+// The reader options every reader takes (limits.max_runs: the clips after repeats in the whole
+// document; limits.max_decompressed_bytes: the largest file an `audio` element may read, its WAV
+// and the .pho beside it; includes: which files `animation src` and `audio` may name; frames fps
+// 0 for an included document, whose frames are never made; the speech, events and profile of the
+// FML moves written in the document: docs/xmt-omega.md, "FML moves inside XMT-Omega"), and what
+// only XMT-Omega has beside them:
+struct XmtoOptions : ReaderOptions {
+  XmtoOptions() = default;
+  explicit XmtoOptions(ReaderOptions common) : ReaderOptions(std::move(common)) {}
   // Without a loader an `animation` element is an error (nothing can read what it names).
   AnimationLoader load_animation;
-  // The end of the body when the document gives none (--duration): lets indefinite repeats and
-  // open-ended elements at the top level end.
-  std::optional<double> duration;
-  // The most runs (clips after repeats) in the whole document: Limits::max_runs.
-  std::int64_t max_runs = Limits{}.max_runs;
-  // The frames the body will be rendered at: a body too long for them is refused once it is
-  // scheduled, before its clips are made (the error FrameStream::start would give). fps 0:
-  // unchecked (an included document, whose frames are never made).
-  FrameBudget frames;
   // Documents being read around this one, outermost first (their paths as given): an `animation`
   // that names one of them, or this document, is an inclusion cycle and an error.
   std::vector<std::string> including;
-  // Which files `animation src` may name (docs/security.md); by default the document's folder
-  // tree. (The FML moves' talk files follow fml.includes.)
-  IncludePolicy includes;
-  // The largest file an `audio` element may read (its WAV, the .pho beside it), checked before
-  // reading: Limits::max_decompressed_bytes, --max-decompressed-bytes.
-  std::int64_t max_audio_bytes = Limits{}.max_decompressed_bytes;
-  // FML moves written in the document (docs/xmt-omega.md, "FML moves inside XMT-Omega"): event
-  // values for repeat, the profile for param, the speech engine and voice for talk.
-  fml::FmlOptions fml;
 };
 
 struct XmtoDocument {
