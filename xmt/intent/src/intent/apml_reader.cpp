@@ -4,7 +4,10 @@
 // emphasis by its pitch accent, boundary as a point) and those its attributes name (affect,
 // belief-relation, deictic, certainty, adjectival), drawn through the behaviour lexicon.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+
+#include <libxml/tree.h>
 
 #include "bml/bml_model.hpp"
 #include "bml/speak_text.hpp"
@@ -132,8 +135,22 @@ class ApmlReader : public DocumentReader {
     return ok_status();
   }
 
+  // The language the text is spoken in: the root's xml:lang (in lower case, "en-US" as the
+  // engine's "en-us"), as an FML talk's lang wins over --voice; else the command line's.
+  bml::BmlOptions speech_options(const xmlNode* root) const {
+    bml::BmlOptions speech = options_.bml;
+    if (xmlChar* lang = xmlNodeGetLang(root)) {
+      std::string language(xml::trim(reinterpret_cast<const char*>(lang)));
+      xmlFree(lang);
+      std::transform(language.begin(), language.end(), language.begin(), [](unsigned char c) { return std::tolower(c); });
+      if (!language.empty()) speech.language = language;
+    }
+    return speech;
+  }
+
   Result<IntentDocument> finish(const xmlNode* root) {
     const Location where = doc_.where(root);
+    const bml::BmlOptions speech_options = this->speech_options(root);
     bool warned = false;
     std::vector<double> begins;
     std::vector<bml::SpokenText> spoken;
@@ -147,10 +164,10 @@ class ApmlReader : public DocumentReader {
         spoken.push_back(std::move(silent));
         continue;
       }
-      Result<bml::SpokenText> said = bml::speak(s.text, options_.bml, where, out_.warnings, warned);
+      Result<bml::SpokenText> said = bml::speak(s.text, speech_options, where, out_.warnings, warned);
       if (!said) return said.error();
-      if (std::find(out_.languages.begin(), out_.languages.end(), options_.bml.language) == out_.languages.end())
-        out_.languages.push_back(options_.bml.language);
+      if (std::find(out_.languages.begin(), out_.languages.end(), speech_options.language) == out_.languages.end())
+        out_.languages.push_back(speech_options.language);
       // The speech is lowered as the BML reader lowers a speech behaviour.
       bml::Behaviour speech;
       speech.kind = bml::BehaviourKind::speech;
