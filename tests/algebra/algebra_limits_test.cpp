@@ -103,7 +103,8 @@ TEST(AlgebraLimits, MeetingOnTheHigherRateCountsAgainstTheLimit) {
 
 TEST(AlgebraLimits, AnOperandThatCannotBeReadIsReportedWhereTheExpressionNamesIt) {
   const OperandLoader missing = [](const std::string& name, int) -> Result<Value> {
-    return make_error(ErrorKind::io, Location{"folder/" + name, 0, 0, -1}, "cannot open file: No such file or directory");
+    return make_error(ErrorKind::io, Location{"folder/" + name, 0, 0, -1},
+                      "cannot open file: No such file or directory");
   };
   const auto r = evaluate("0.5 * nothere.fap", missing);
   ASSERT_FALSE(r.ok());

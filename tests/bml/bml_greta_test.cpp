@@ -17,8 +17,9 @@ namespace {
 // A Greta 0.x document (no namespace), one behaviour with its description.
 std::string greta(const std::string& element, const std::string& reference, const std::string& parameters = "",
                   const std::string& attributes = "start=\"0\" end=\"2\"") {
-  return "<bml id=\"b\">\n<" + element + " id=\"x\" " + attributes + ">\n<description level=\"1\" type=\"gretabml\">\n<reference>" +
-         reference + "</reference>\n" + parameters + "</description>\n</" + element + ">\n</bml>\n";
+  return "<bml id=\"b\">\n<" + element + " id=\"x\" " + attributes +
+         ">\n<description level=\"1\" type=\"gretabml\">\n<reference>" + reference + "</reference>\n" + parameters +
+         "</description>\n</" + element + ">\n</bml>\n";
 }
 
 BmlDocument read_ok(const std::string& text) {
@@ -63,7 +64,7 @@ TEST(BmlGreta, AnAffectIsTheEmotionOfTheIntentionLexicon) {
   EXPECT_GT(peak(joy, "lift_l_cheek"), 0);       // AU 6: the cheeks
   EXPECT_EQ(peak(joy, "raise_l_i_eyebrow"), 0);
   const BmlDocument sad = read_ok(greta("face", "affect=sadness"));
-  EXPECT_GT(peak(sad, "raise_l_i_eyebrow"), 0);  // AU 1: the inner brows up
+  EXPECT_GT(peak(sad, "raise_l_i_eyebrow"), 0);               // AU 1: the inner brows up
   const Clip* corner = first_clip(sad, "raise_l_cornerlip");  // AU 15: the corners down
   ASSERT_NE(corner, nullptr);
   EXPECT_LT(corner->curve.value_at(1.0), 0);

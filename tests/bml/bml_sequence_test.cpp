@@ -108,7 +108,9 @@ TEST(BmlSequence, ReplaceCutsWhatRunsAndDropsWhatHadNotStarted) {
 
 TEST(BmlSequence, ReplaceStopsTheVoice) {
   if (!speech::available()) GTEST_SKIP() << "built without the speech engine";
-  write("talk.bml", block("talk", "", R"(<speech id="s"><text>This sentence takes well over half a second to say.</text></speech>)"));
+  write(
+      "talk.bml",
+      block("talk", "", R"(<speech id="s"><text>This sentence takes well over half a second to say.</text></speech>)"));
   write("stop.bml", block("stop", "REPLACE", R"(<head id="nod" lexeme="NOD"/>)"));
   const std::string path = (fs::path(folder()) / "voice.bmlseq").string();
   std::ofstream(path, std::ios::binary) << "talk.bml\nat 0.5 stop.bml\n";

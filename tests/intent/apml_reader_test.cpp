@@ -10,13 +10,12 @@
 namespace fapc::intent {
 namespace {
 
-Result<IntentDocument> read(const std::string& body) {
-  return read_apml("<apml>\n" + body + "\n</apml>\n", "t.xml");
-}
+Result<IntentDocument> read(const std::string& body) { return read_apml("<apml>\n" + body + "\n</apml>\n", "t.xml"); }
 
 // Where a BML speech of the same text puts a mark before word `before`.
 double word_time(const std::string& text_with_mark) {
-  const auto bml = bml::read_bml("<bml id=\"b\"><speech id=\"s\"><text>" + text_with_mark + "</text></speech></bml>", "t.bml");
+  const auto bml =
+      bml::read_bml("<bml id=\"b\"><speech id=\"s\"><text>" + text_with_mark + "</text></speech></bml>", "t.bml");
   EXPECT_TRUE(bml) << bml.error().message;
   return bml->marks.at(0).time;
 }
@@ -35,7 +34,8 @@ const Intention* find(const IntentDocument& d, const std::string& type) {
 }
 
 TEST(ApmlReader, AnIntentionStartsOnItsFirstWordAndEndsWithTheNextWord) {
-  const auto d = read(R"(<performative type="announce">Whatever works for <emphasis x-pitchaccent="Hstar">you</emphasis> today</performative>)");
+  const auto d = read(
+      R"(<performative type="announce">Whatever works for <emphasis x-pitchaccent="Hstar">you</emphasis> today</performative>)");
   ASSERT_TRUE(d) << d.error().message;
   const Intention* e = find(*d, "emphasis");
   ASSERT_NE(e, nullptr);
@@ -49,7 +49,8 @@ TEST(ApmlReader, AnIntentionStartsOnItsFirstWordAndEndsWithTheNextWord) {
 }
 
 TEST(ApmlReader, AttributesAddIntentionsWithTheirIntensity) {
-  const auto d = read(R"(<rheme affect="sadness" intensity="0.4">so <emphasis x-pitchaccent="Hstar" deictic="self">me</emphasis></rheme>)");
+  const auto d = read(
+      R"(<rheme affect="sadness" intensity="0.4">so <emphasis x-pitchaccent="Hstar" deictic="self">me</emphasis></rheme>)");
   ASSERT_TRUE(d) << d.error().message;
   const Intention* affect = find(*d, "affect");
   ASSERT_NE(affect, nullptr);
@@ -130,8 +131,8 @@ TEST(ApmlLanguage, TheEngineIsAskedForIt) {
   options.bml.synthesize = speech::engine();
   // The same letters in two languages: eSpeak NG's German and English rules say them differently.
   auto samples = [&](const std::string& lang) {
-    Result<IntentDocument> d = read_apml("<apml xml:lang=\"" + lang + "\">\n<rheme>Wie geht es dir heute</rheme>\n</apml>\n",
-                                         "t.xml", options);
+    Result<IntentDocument> d = read_apml(
+        "<apml xml:lang=\"" + lang + "\">\n<rheme>Wie geht es dir heute</rheme>\n</apml>\n", "t.xml", options);
     EXPECT_TRUE(d) << (d ? "" : d.error().message);
     return d && !d->timeline.audio.empty() ? d->timeline.audio.front().samples.size() : std::size_t{0};
   };
@@ -140,7 +141,8 @@ TEST(ApmlLanguage, TheEngineIsAskedForIt) {
   EXPECT_GT(de, 0U);
   EXPECT_NE(de, en);
   // A language the engine does not have is its error, placed in the document.
-  Result<IntentDocument> unknown = read_apml("<apml xml:lang=\"qq\">\n<rheme>Hello</rheme>\n</apml>\n", "t.xml", options);
+  Result<IntentDocument> unknown =
+      read_apml("<apml xml:lang=\"qq\">\n<rheme>Hello</rheme>\n</apml>\n", "t.xml", options);
   ASSERT_FALSE(unknown);
   EXPECT_EQ(unknown.error().where.file.str(), "t.xml");
 }

@@ -23,9 +23,7 @@ ErrorKind load_error_kind(const std::string& path) {
   return loaded ? ErrorKind::bad_input : loaded.error().kind;
 }
 
-TEST(ErrorKinds, AMissingFileIsIo) {
-  EXPECT_EQ(load_error_kind("/nonexistent/x.fap"), ErrorKind::io);
-}
+TEST(ErrorKinds, AMissingFileIsIo) { EXPECT_EQ(load_error_kind("/nonexistent/x.fap"), ErrorKind::io); }
 
 TEST(ErrorKinds, AnUnknownExtensionIsUnsupported) {
   EXPECT_EQ(load_error_kind(test::corpus_dir() + "/catalog.tsv"), ErrorKind::unsupported);

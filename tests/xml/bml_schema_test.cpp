@@ -15,7 +15,8 @@ namespace {
 constexpr const char* kBml10 = "http://www.bml-initiative.org/bml/bml-1.0";
 
 std::string block(const std::string& ns, const std::string& body, const std::string& attributes = "id=\"b\"") {
-  return "<bml" + (ns.empty() ? std::string() : " xmlns=\"" + ns + "\"") + " " + attributes + ">\n" + body + "\n</bml>\n";
+  return "<bml" + (ns.empty() ? std::string() : " xmlns=\"" + ns + "\"") + " " + attributes + ">\n" + body +
+         "\n</bml>\n";
 }
 
 using test_schema::verdict;
@@ -33,8 +34,9 @@ TEST(BmlSchema, RepositoryDocumentsAreValid) {
 
 TEST(BmlSchema, TheSchemaFollowsTheNamespace) {
   EXPECT_EQ(verdict(block(kBml10, "<head id=\"h\" lexeme=\"NOD\"/>"), "bml.xsd"), "valid");
-  EXPECT_EQ(verdict(block("http://www.mindmakers.org/projects/BML", "<head id=\"h\" lexeme=\"NOD\"/>"), "bml-mindmakers.xsd"),
-            "valid");
+  EXPECT_EQ(
+      verdict(block("http://www.mindmakers.org/projects/BML", "<head id=\"h\" lexeme=\"NOD\"/>"), "bml-mindmakers.xsd"),
+      "valid");
   EXPECT_EQ(verdict(block("", "<head id=\"h\" lexeme=\"NOD\"/>"), "bml-core.xsd"), "valid");
 }
 
@@ -49,16 +51,20 @@ TEST(BmlSchema, EachDialectsFormsAreValid) {
 <bmlt:noise xmlns:bmlt="http://hmi.ewi.utwente.nl/bmlt" id="n" joint="skullbase"/>
 <constraint><synchronize><sync ref="h:stroke"/><sync ref="f:stroke"/></synchronize>
 <after ref="h:end"><sync ref="g:start"/></after></constraint>)",
-                                  "id=\"b\" characterId=\"Alice\" composition=\"APPEND\""),
+                          "id=\"b\" characterId=\"Alice\" composition=\"APPEND\""),
                     "bml.xsd"),
             "valid");
   // Greta: gretabml descriptions, tm marks in the speech, lower-case composition, own attributes.
-  EXPECT_EQ(verdict(block("", R"(<speech id="s" start="0" language="english"><tm id="t1"/>Hi <pitchaccent id="p" start="s:t1" end="s:t1" type="Hstar"/></speech>
+  EXPECT_EQ(
+      verdict(
+          block(
+              "",
+              R"(<speech id="s" start="0" language="english"><tm id="t1"/>Hi <pitchaccent id="p" start="s:t1" end="s:t1" type="Hstar"/></speech>
 <face id="f" start="-0.5" end="2" expressivityspc="0.3"><description level="1" type="gretabml"><reference>affect=joy</reference>
 <intensity>1</intensity><SPC.value>0.4</SPC.value><TMP.value>-0.7</TMP.value><OPN.value>0</OPN.value><SPC.min>-1</SPC.min></description></face>)",
-                                  "id=\"b\" composition=\"append\""),
-                    "bml-core.xsd"),
-            "valid");
+              "id=\"b\" composition=\"append\""),
+          "bml-core.xsd"),
+      "valid");
   // SmartBody: recorded speech, lips rows, curves.
   EXPECT_EQ(verdict(block("", R"(<speech id="sp1" start="0" end="0.2"><text><sync id="T0" time="0"/>we</text>
 <description level="1" type="audio/x-wav"><file ref="take"/></description></speech>
@@ -77,8 +83,9 @@ TEST(BmlSchema, WhatTheReaderRefusesIsInvalidWhereItStands) {
   EXPECT_EQ(verdict(block(kBml10, "<head id=\"h\" start=\"soon\"/>"), "bml.xsd"), "2:21");
   EXPECT_EQ(verdict(block(kBml10, "<smile id=\"s\"/>"), "bml.xsd"), "2:16");  // not a BML element
   EXPECT_EQ(verdict(block(kBml10, "<constraint><synchronize><sync/></synchronize></constraint>"), "bml.xsd"), "2:33");
-  EXPECT_EQ(verdict(block("", "<face id=\"f\"><description type=\"gretabml\"><reference>affect=joy</reference>\n"
-                              "<SPC.value>3</SPC.value></description></face>"),
+  EXPECT_EQ(verdict(block("",
+                          "<face id=\"f\"><description type=\"gretabml\"><reference>affect=joy</reference>\n"
+                          "<SPC.value>3</SPC.value></description></face>"),
                     "bml-core.xsd"),
             "3:25");
 }

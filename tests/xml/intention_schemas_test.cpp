@@ -28,24 +28,30 @@ TEST(IntentionSchemas, RepositoryDocumentsAreValid) {
       const bool invalid = name == "bml.xml" || name == "test_gaze_attributes.xml";
       const auto report = validate_xml(test::read_text(path), path);
       ASSERT_TRUE(report.ok()) << format_diagnostic(report.error());
-      EXPECT_EQ(report->valid(), !invalid) << path << (report->valid() ? "" : ": " + format_diagnostic(report->problems.front()));
+      EXPECT_EQ(report->valid(), !invalid)
+          << path << (report->valid() ? "" : ": " + format_diagnostic(report->problems.front()));
       ++checked;
     }
   EXPECT_EQ(checked, 88U);
 }
 
 TEST(IntentionSchemas, FmlApml) {
-  const std::string speech = "<bml><speech id=\"s1\" language=\"english\" voice=\"marytts\"><tm id=\"tm1\"/>Hello <tm id=\"tm2\"/>"
-                             "<pause id=\"p\" duration_num=\"0.2\"/></speech></bml>\n";
-  EXPECT_EQ(verdict("<fml-apml>" + speech + "<fml>\n<emotion id=\"e1\" type=\"joy\" start=\"s1:tm1\" end=\"s1:tm2+0.5\" "
-                                            "importance=\"0.8\" regulation=\"felt\"/>\n</fml></fml-apml>\n",
+  const std::string speech =
+      "<bml><speech id=\"s1\" language=\"english\" voice=\"marytts\"><tm id=\"tm1\"/>Hello <tm id=\"tm2\"/>"
+      "<pause id=\"p\" duration_num=\"0.2\"/></speech></bml>\n";
+  EXPECT_EQ(verdict("<fml-apml>" + speech +
+                        "<fml>\n<emotion id=\"e1\" type=\"joy\" start=\"s1:tm1\" end=\"s1:tm2+0.5\" "
+                        "importance=\"0.8\" regulation=\"felt\"/>\n</fml></fml-apml>\n",
                     "fml-apml.xsd"),
             "valid");
-  EXPECT_EQ(verdict("<fml-apml><fml>\n<emotion id=\"e1\" type=\"joy\" end=\"1\"/>\n</fml></fml-apml>\n", "fml-apml.xsd"),
-            "2:38");  // start is required
-  EXPECT_EQ(verdict("<fml-apml><fml>\n<emotion id=\"e1\" start=\"0\" importance=\"2\"/>\n</fml></fml-apml>\n", "fml-apml.xsd"),
+  EXPECT_EQ(
+      verdict("<fml-apml><fml>\n<emotion id=\"e1\" type=\"joy\" end=\"1\"/>\n</fml></fml-apml>\n", "fml-apml.xsd"),
+      "2:38");  // start is required
+  EXPECT_EQ(verdict("<fml-apml><fml>\n<emotion id=\"e1\" start=\"0\" importance=\"2\"/>\n</fml></fml-apml>\n",
+                    "fml-apml.xsd"),
             "2:40");
-  EXPECT_EQ(verdict("<fml-apml><fml>\n<emotion id=\"e1\" start=\"soon\"/>\n</fml></fml-apml>\n", "fml-apml.xsd"), "2:25");
+  EXPECT_EQ(verdict("<fml-apml><fml>\n<emotion id=\"e1\" start=\"soon\"/>\n</fml></fml-apml>\n", "fml-apml.xsd"),
+            "2:25");
   EXPECT_EQ(verdict("<fml-apml><fml>\n<wish id=\"w\" start=\"0\"/>\n</fml></fml-apml>\n", "fml-apml.xsd"), "2:25");
 }
 
@@ -61,12 +67,15 @@ TEST(IntentionSchemas, Apml) {
 }
 
 TEST(IntentionSchemas, SmilAgent) {
-  EXPECT_EQ(verdict("<par system-language=\"english\">\n<speech id=\"s\" channel=\"alice-speech\">Hello <mark id=\"m1\"/> world</speech>\n"
-                    "<speech-animation content-id=\"s\" content-begin=\"m1\" affect=\"SmileOpen\" fill=\"freeze\"/>\n"
-                    "<seq repeat=\"2\"><action channel=\"alice-eyes\" action-type=\"turning\" intensity=\"1\"><parameter>LookLeft"
-                    "</parameter></action></seq></par>\n",
-                    "smil-agent.xsd"),
-            "valid");
+  EXPECT_EQ(
+      verdict(
+          "<par system-language=\"english\">\n<speech id=\"s\" channel=\"alice-speech\">Hello <mark id=\"m1\"/> "
+          "world</speech>\n"
+          "<speech-animation content-id=\"s\" content-begin=\"m1\" affect=\"SmileOpen\" fill=\"freeze\"/>\n"
+          "<seq repeat=\"2\"><action channel=\"alice-eyes\" action-type=\"turning\" intensity=\"1\"><parameter>LookLeft"
+          "</parameter></action></seq></par>\n",
+          "smil-agent.xsd"),
+      "valid");
   EXPECT_EQ(verdict("<seq>\n<action fill=\"forever\"/></seq>\n", "smil-agent.xsd"), "2:15");
   EXPECT_EQ(verdict("<seq>\n<action intensity=\"high\"/></seq>\n", "smil-agent.xsd"), "2:20");
   EXPECT_EQ(verdict("<seq>\n<speech>Hi <mark/></speech></seq>\n", "smil-agent.xsd"), "2:19");

@@ -5,8 +5,8 @@
 #include <regex>
 
 #include "fapc/mpeg4/scene.hpp"
-#include "fapc/xml/xml_validation.hpp"
 #include "fapc/mpeg4/xmta_writer.hpp"
+#include "fapc/xml/xml_validation.hpp"
 #include "support/test_support.hpp"
 
 namespace fapc::xmt {
@@ -82,18 +82,18 @@ TEST(XmlValidation, VisemeSelectOutOfRange) {
 }
 
 TEST(XmlValidation, MalformedXmlHasALineAndColumn) {
-  EXPECT_EQ(problems(edited("</Body>", "</Bdy>")),
-            "doc.xmt:13:3: error: expected end of tag 'Body'\n");
+  EXPECT_EQ(problems(edited("</Body>", "</Bdy>")), "doc.xmt:13:3: error: expected end of tag 'Body'\n");
 }
 
 TEST(XmlValidation, DocumentsWithoutASchemaAreAnError) {
   auto report = validate_xml("<?xml version=\"1.0\"?>\n<story/>\n", "x.xml");
   ASSERT_FALSE(report.ok());
-  EXPECT_EQ(format_diagnostic(report.error()),
-            "x.xml:1:1: error: no schema for root element 'story'; fapc validates XMT-A "
-            "(urn:mpeg:mpeg4:xmta:schema:2002), XMT-Omega (urn:mpeg:mpeg4:xmto:schema:2002), FML, "
-            "BML 1.0 (http://www.bml-initiative.org/bml/bml-1.0), BML (Greta) (http://www.mindmakers.org/projects/BML), BML, "
-            "FML-APML, APML, SMIL-Agent");
+  EXPECT_EQ(
+      format_diagnostic(report.error()),
+      "x.xml:1:1: error: no schema for root element 'story'; fapc validates XMT-A "
+      "(urn:mpeg:mpeg4:xmta:schema:2002), XMT-Omega (urn:mpeg:mpeg4:xmto:schema:2002), FML, "
+      "BML 1.0 (http://www.bml-initiative.org/bml/bml-1.0), BML (Greta) (http://www.mindmakers.org/projects/BML), BML, "
+      "FML-APML, APML, SMIL-Agent");
   // XMT-A without its namespace is not XMT-A.
   EXPECT_FALSE(validate_xml("<XMT-A/>", "x.xmt").ok());
 }
@@ -102,8 +102,9 @@ TEST(XmlValidation, NothingOutsideTheDocumentIsRead) {
   // An external DTD and an external entity naming a local file: neither is read (the entity
   // expands to nothing) and the document is judged on its own content.
   std::string text = kDocument;
-  text.insert(text.find("<XMT-A"), "<!DOCTYPE XMT-A SYSTEM \"http://example.invalid/x.dtd\" "
-                                   "[<!ENTITY secret SYSTEM \"file:///etc/hostname\">]>\n");
+  text.insert(text.find("<XMT-A"),
+              "<!DOCTYPE XMT-A SYSTEM \"http://example.invalid/x.dtd\" "
+              "[<!ENTITY secret SYSTEM \"file:///etc/hostname\">]>\n");
   text.insert(text.find("<Body>") + 6, "&secret;");
   EXPECT_EQ(problems(text), "");
 }

@@ -67,11 +67,12 @@ TEST(XmtoSchema, RejectsWhatTheReaderOnlySkips) {
 TEST(XmtoSchema, DocumentsWithoutTheNamespaceAreNotValidated) {
   const auto report = validate_xml("<XMT-O><body/></XMT-O>", "s.xmt");
   ASSERT_FALSE(report.ok());
-  EXPECT_EQ(format_diagnostic(report.error()),
-            "s.xmt:1:1: error: no schema for root element 'XMT-O'; fapc validates XMT-A "
-            "(urn:mpeg:mpeg4:xmta:schema:2002), XMT-Omega (urn:mpeg:mpeg4:xmto:schema:2002), FML, "
-            "BML 1.0 (http://www.bml-initiative.org/bml/bml-1.0), BML (Greta) (http://www.mindmakers.org/projects/BML), BML, "
-            "FML-APML, APML, SMIL-Agent");
+  EXPECT_EQ(
+      format_diagnostic(report.error()),
+      "s.xmt:1:1: error: no schema for root element 'XMT-O'; fapc validates XMT-A "
+      "(urn:mpeg:mpeg4:xmta:schema:2002), XMT-Omega (urn:mpeg:mpeg4:xmto:schema:2002), FML, "
+      "BML 1.0 (http://www.bml-initiative.org/bml/bml-1.0), BML (Greta) (http://www.mindmakers.org/projects/BML), BML, "
+      "FML-APML, APML, SMIL-Agent");
 }
 
 }  // namespace

@@ -53,8 +53,8 @@ ConvertOptions convert_options(Args& args) {
   if (const auto size = args.value("size")) {
     int w = 0, h = 0;
     char x = 0, rest = 0;
-    if (std::sscanf(size->c_str(), "%d%c%d%c", &w, &x, &h, &rest) != 3 || x != 'x' || w < 16 ||
-        h < 16 || w > 7680 || h > 7680) {
+    if (std::sscanf(size->c_str(), "%d%c%d%c", &w, &x, &h, &rest) != 3 || x != 'x' || w < 16 || h < 16 || w > 7680 ||
+        h > 7680) {
       args.fail("--size takes WIDTHxHEIGHT, each 16 to 7680 pixels, not '" + *size + "'");
       return options;
     }
@@ -81,7 +81,8 @@ ConvertOptions convert_options(Args& args) {
       std::vector<std::string> names;
       std::istringstream all(fap_flavour_names());
       for (std::string name; std::getline(all, name, '|');) names.push_back(name);
-      args.fail("--fap-flavour takes " + fap_flavour_names() + ", not '" + *flavour + "'" + did_you_mean(*flavour, names));
+      args.fail("--fap-flavour takes " + fap_flavour_names() + ", not '" + *flavour + "'" +
+                did_you_mean(*flavour, names));
     }
     options.fap_flavour = known.value_or(FapFlavour::safe);
   }

@@ -11,12 +11,12 @@ Status BodyReader::read_intra_header() {
     const std::int64_t type_byte = c_.in.byte_offset();
     const auto type = c_.in.read_bits(kMaskTypeBits);
     if (type == kMaskListedInterpolate) return c_.error_at(type_byte, "BAP mask type 10 is not defined");
-    for (int j = 0; j < size; ++j, ++at) state_.mask[at] = type == kMaskAll || (type == kMaskListed && c_.in.read_bit());
+    for (int j = 0; j < size; ++j, ++at)
+      state_.mask[at] = type == kMaskAll || (type == kMaskListed && c_.in.read_bit());
   }
   c_.in.read_bit();  // fba_suggested_gender
   const std::int64_t coding_type_byte = c_.in.byte_offset();
-  if (c_.in.read_bit() == 1)
-    return c_.error_at(coding_type_byte, "BAP coding type 1 (DCT segments) is not supported");
+  if (c_.in.read_bit() == 1) return c_.error_at(coding_type_byte, "BAP coding type 1 (DCT segments) is not supported");
   bool present[kRangeListCount];
   for (bool& flag : present) flag = c_.in.read_bit() == 1;
   for (int list = 0; list < kRangeListCount; ++list) {
@@ -27,7 +27,8 @@ Status BodyReader::read_intra_header() {
         if (j % kMarkerEvery == 0)
           if (auto status = c_.read_marker("in a BAP range list"); !status) return status;
         if (!state_.mask[at]) continue;
-        const auto magnitude = static_cast<std::int32_t>(c_.in.read_bits(kRangeValueBits)) * kRangeDelta / state_.scaler;
+        const auto magnitude =
+            static_cast<std::int32_t>(c_.in.read_bits(kRangeValueBits)) * kRangeDelta / state_.scaler;
         const auto l = static_cast<std::size_t>(list);
         state_.range[l][at] = (list == kIntraMin || list == kPredMin) ? -magnitude : magnitude;
         state_.range_set[l][at] = true;

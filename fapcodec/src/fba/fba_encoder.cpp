@@ -52,8 +52,7 @@ Status check_fields(const FbaEncodeOptions& options, const FapFrame& f) {
 Status check_options(const FbaEncodeOptions& options) {
   if (options.quant < 0 || options.quant > fba::kMaxFapQuant)
     return make_error(Location{}, "fap_quant must be 0..31, not " + std::to_string(options.quant));
-  if (options.intra_period < 0)
-    return make_error(Location{}, "the intra period must not be negative");
+  if (options.intra_period < 0) return make_error(Location{}, "the intra period must not be negative");
   return ok_status();
 }
 
@@ -67,7 +66,8 @@ Status check_rate(int fps) {
 }  // namespace
 
 struct FbaEncoder::State {
-  explicit State(const FbaEncodeOptions& chosen) : options(chosen), setup(check_options(chosen)), planner(window, chosen) {
+  explicit State(const FbaEncodeOptions& chosen)
+      : options(chosen), setup(check_options(chosen)), planner(window, chosen) {
     if (chosen.masks == FbaMaskMode::fit) masks.emplace(chosen.quant);
   }
 
@@ -119,9 +119,9 @@ Status FbaEncoder::check(const FapFrame& frame) {
     if (frame.number - s.first_number >= s.options.max_frames) {
       Limits limits;
       limits.max_frames = s.options.max_frames;
-      return limit_error(Location{}, "frames " + std::to_string(s.first_number) + " to " +
-                                         std::to_string(frame.number) + " span " +
-                                         std::to_string(frame.number - s.first_number + 1) + " frames",
+      return limit_error(Location{},
+                         "frames " + std::to_string(s.first_number) + " to " + std::to_string(frame.number) + " span " +
+                             std::to_string(frame.number - s.first_number + 1) + " frames",
                          Limit::frames, limits);
     }
   }
@@ -156,7 +156,8 @@ Result<EncodedFba> FbaEncoder::finish() {
   if (!s.setup) return s.setup.error();
   if (!s.writer) return make_error(ErrorKind::usage, Location{}, "FbaEncoder: finished before start()");
   if (s.added != s.checked)
-    return make_error(ErrorKind::usage, Location{}, "FbaEncoder: the second pass added fewer frames than the first checked");
+    return make_error(ErrorKind::usage, Location{},
+                      "FbaEncoder: the second pass added fewer frames than the first checked");
   if (auto status = s.write_groups(true); !status) return status.error();
   return s.writer->finish();
 }

@@ -50,9 +50,10 @@ class FrameChecks {
   // An empty text when the frames agree, else what differs.
   std::string compare(const FapFrame& in, const FapFrame& out) {
     if (!first_number_) first_number_ = in.number;
-    if (out.number != in.number - *first_number_) return at_frame(in) + "decoded as frame " + std::to_string(out.number);
-    const bool masks_differ = options_.masks == FbaMaskMode::keep ? out.mask != in.mask
-                                                                  : out.has(1) != in.has(1) || out.has(2) != in.has(2);
+    if (out.number != in.number - *first_number_)
+      return at_frame(in) + "decoded as frame " + std::to_string(out.number);
+    const bool masks_differ =
+        options_.masks == FbaMaskMode::keep ? out.mask != in.mask : out.has(1) != in.has(1) || out.has(2) != in.has(2);
     if (masks_differ) return at_frame(in) + "the mask differs";
     if (auto differs = compare_fields(in, out, options_.quant); !differs.empty()) return at_frame(in) + differs;
     held_in_.advance(in);
@@ -108,8 +109,8 @@ Status verify_fba(std::size_t count, int fps, const FbaInputFrames& next, const 
     return failure(file, std::to_string(decoded_frames) + " frames decoded, " + std::to_string(count) + " encoded");
   // The rate travels in intra planes, so a stream without planes has none.
   if (count > 0 && decoded->sequence.fps != fps)
-    return failure(file, "frame rate " + std::to_string(decoded->sequence.fps) + " decoded, " + std::to_string(fps) +
-                             " encoded");
+    return failure(
+        file, "frame rate " + std::to_string(decoded->sequence.fps) + " decoded, " + std::to_string(fps) + " encoded");
   if (!first_difference.empty()) return failure(file, first_difference);
   // Second decoding: the frames coded again (as encode_fba would: the rate first, then every
   // frame checked, then added), and the bytes compared.
@@ -138,8 +139,8 @@ Status verify_fba(std::size_t count, int fps, const FbaInputFrames& next, const 
 Status verify_fba(const FapSequence& input, const EncodedFba& encoded, const FbaEncodeOptions& options,
                   const std::string& file) {
   std::size_t k = 0;
-  return verify_fba(input.frames.size(), input.fps, [&]() -> const FapFrame& { return input.frames[k++]; }, encoded,
-                    options, file);
+  return verify_fba(
+      input.frames.size(), input.fps, [&]() -> const FapFrame& { return input.frames[k++]; }, encoded, options, file);
 }
 
 }  // namespace fapc

@@ -98,9 +98,9 @@ void StreamReader::set_frame_rate(double rate) {
     info.frame_rate = rate;
     info.frame_rate_sent = true;
   } else if (rate != info.frame_rate && !rate_change_warned_) {
-    out_.warnings.push_back(make_warning({"fba.frame_rate_change"}, Location::binary(c_.file, c_.in.byte_offset()),
-                                         "the frame rate changes to " + std::to_string(rate) +
-                                             "; frames keep counting at the first rate"));
+    out_.warnings.push_back(
+        make_warning({"fba.frame_rate_change"}, Location::binary(c_.file, c_.in.byte_offset()),
+                     "the frame rate changes to " + std::to_string(rate) + "; frames keep counting at the first rate"));
     rate_change_warned_ = true;
   }
 }
@@ -112,7 +112,8 @@ Status StreamReader::read_temporal_header(bool intra, TemporalHeader& header) {
     const auto sixteenths = c_.in.read_bits(kFrameRateSecondsBits);
     const bool ntsc = c_.in.read_bit() == 1;  // 1000/1001 in floating point (D7)
     const double value = (rate + sixteenths / 16.0) * (ntsc ? 1000.0 / 1001.0 : 1.0);
-    if (value < 0.5) return c_.error_at(byte, "frame rate " + std::to_string(value) + " is below 0.5 frames per second");
+    if (value < 0.5)
+      return c_.error_at(byte, "frame rate " + std::to_string(value) + " is below 0.5 frames per second");
     set_frame_rate(value);
   }
   if (intra && c_.in.read_bit() == 1) {  // is_time_code
@@ -234,16 +235,19 @@ Result<DecodedFba> StreamReader::run() {
     if (auto status = read_plane(); !status) return explain(status.error());
   }
   if (!c_.in.at_end())
-    out_.warnings.push_back(make_warning({"fba.trailing_bytes"}, Location::binary(c_.file, c_.in.byte_offset()),
-                                         std::to_string(c_.in.size_bits() / 8 - static_cast<std::size_t>(c_.in.byte_offset())) +
-                                             " bytes after the end code are ignored"));
+    out_.warnings.push_back(
+        make_warning({"fba.trailing_bytes"}, Location::binary(c_.file, c_.in.byte_offset()),
+                     std::to_string(c_.in.size_bits() / 8 - static_cast<std::size_t>(c_.in.byte_offset())) +
+                         " bytes after the end code are ignored"));
   FbaStreamInfo& info = out_.info;
   if (!info.frame_rate_sent && any_frame_)
-    out_.warnings.push_back(make_warning({"fba.no_frame_rate"}, Location::binary(c_.file, 0), "the stream never gives its frame rate; assuming 30 frames per second"));
+    out_.warnings.push_back(make_warning({"fba.no_frame_rate"}, Location::binary(c_.file, 0),
+                                         "the stream never gives its frame rate; assuming 30 frames per second"));
   out_.sequence.fps = static_cast<int>(std::lround(info.frame_rate));
   if (std::abs(info.frame_rate - out_.sequence.fps) > 1e-9)
-    out_.warnings.push_back(make_warning({"fba.frame_rate_rounded"}, Location::binary(c_.file, 0), "frame rate " + std::to_string(info.frame_rate) +
-                                                                         " rounded to " + std::to_string(out_.sequence.fps)));
+    out_.warnings.push_back(make_warning(
+        {"fba.frame_rate_rounded"}, Location::binary(c_.file, 0),
+        "frame rate " + std::to_string(info.frame_rate) + " rounded to " + std::to_string(out_.sequence.fps)));
   return std::move(out_);
 }
 

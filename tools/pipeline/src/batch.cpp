@@ -21,9 +21,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-Diagnostic usage(const std::string& message) {
-  return make_error(ErrorKind::usage, Location{}, message);
-}
+Diagnostic usage(const std::string& message) { return make_error(ErrorKind::usage, Location{}, message); }
 
 std::string without_input_extension(const std::string& path) {
   if (const InputFormat* format = formats().input_for(path))
@@ -67,7 +65,8 @@ Result<std::vector<std::string>> listed_files(const std::string& base, const fs:
 }  // namespace
 
 Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs, const std::string& out_dir,
-                                         const std::vector<std::string>& kinds, const std::vector<std::string>* listed) {
+                                         const std::vector<std::string>& kinds,
+                                         const std::vector<std::string>* listed) {
   std::vector<const OutputFormat*> writers;
   for (const std::string& kind : kinds) {
     const OutputFormat* writer = formats().output_named(kind);
@@ -137,7 +136,8 @@ Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs,
   for (const auto& [input, name, full_name] : found) {
     BatchJob job{input, {}};
     for (std::size_t k = 0; k < kinds.size(); ++k) {
-      const std::string output = (fs::path(out_dir) / (name + writers[k]->extensions.front())).lexically_normal().string();
+      const std::string output =
+          (fs::path(out_dir) / (name + writers[k]->extensions.front())).lexically_normal().string();
       job.outputs.push_back(OutputRequest{output, kinds[k]});
       inputs_of[output].push_back(input);
     }
@@ -150,8 +150,10 @@ Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs,
     for (const std::string& input : writers_of) shared += " " + input;
   }
   if (!shared.empty())
-    return usage("inputs would overwrite each other's outputs; nothing converted (rename one, or convert them "
-                 "in separate runs):" + shared);
+    return usage(
+        "inputs would overwrite each other's outputs; nothing converted (rename one, or convert them "
+        "in separate runs):" +
+        shared);
   return jobs;
 }
 
@@ -214,8 +216,8 @@ BatchOutcome run_job(const BatchJob& job, const ConvertOptions& options, const B
       const fs::path folder = fs::path(output.path).parent_path();
       if (!folder.empty()) folders.make(folder, ec);
       if (ec) {
-        outcome.result.error = make_error(ErrorKind::io, Location{folder.string(), 0, 0, -1},
-                                          "cannot create the folder: " + ec.message());
+        outcome.result.error =
+            make_error(ErrorKind::io, Location{folder.string(), 0, 0, -1}, "cannot create the folder: " + ec.message());
         break;
       }
     }
@@ -248,7 +250,8 @@ std::vector<BatchOutcome> run_batch(const std::vector<BatchJob>& jobs, const Con
   // Hands every job finished in input order since the last call to in_order. Under `report`.
   const auto hand_over = [&] {
     for (; reported < jobs.size() && finished[reported]; ++reported)
-      if (run.in_order && (outcomes[reported].ran || outcomes[reported].up_to_date)) run.in_order(reported, outcomes[reported]);
+      if (run.in_order && (outcomes[reported].ran || outcomes[reported].up_to_date))
+        run.in_order(reported, outcomes[reported]);
   };
   const auto worker = [&] {
     for (std::size_t i; !stopping() && (i = next++) < jobs.size();) {

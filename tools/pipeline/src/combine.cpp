@@ -14,8 +14,7 @@ namespace {
 // A facial state (.xpr) or, through the registry, any input; an included one (an operand of a
 // .combine file) is checked for cycles and read on a stack of its own.
 Result<algebra::Value> load_operand(const std::string& path, const Location& where, bool included,
-                                    const ConvertOptions& options, const Profile& profile,
-                                    Diagnostics& warnings) {
+                                    const ConvertOptions& options, const Profile& profile, Diagnostics& warnings) {
   algebra::Value value;
   if (path.ends_with(".xpr")) {
     Result<std::string> text = read_file_bytes(path, options.limits);
@@ -38,8 +37,8 @@ Result<algebra::Value> load_operand(const std::string& path, const Location& whe
                                                       " is before time 0: an operand's frames start at 0 or later");
     if (frames.back().number >= options.limits.max_frames)
       return limit_error(Location{path, 0, 0, -1},
-                         "its frames run to number " + std::to_string(frames.back().number) +
-                             ", a grid of " + std::to_string(frames.back().number + 1) + " frames",
+                         "its frames run to number " + std::to_string(frames.back().number) + ", a grid of " +
+                             std::to_string(frames.back().number + 1) + " frames",
                          Limit::frames, options.limits);
   }
   value.animation = algebra::animation_from(loaded->frames);
@@ -48,8 +47,7 @@ Result<algebra::Value> load_operand(const std::string& path, const Location& whe
 
 }  // namespace
 
-Result<algebra::Value> evaluate_combination(const std::string& expression,
-                                            const std::string& including_file,
+Result<algebra::Value> evaluate_combination(const std::string& expression, const std::string& including_file,
                                             const ConvertOptions& options, Diagnostics& warnings) {
   Result<Profile> profile = profile_for(options);
   if (!profile) return profile.error();

@@ -29,8 +29,8 @@ struct Term {
 };
 
 bool name_char(char c) {
-  return !std::isspace(static_cast<unsigned char>(c)) && c != '+' && c != '*' && c != '|' &&
-         c != '[' && c != ']' && c != '(' && c != ')' && c != '@' && c != '"' && c != '>';
+  return !std::isspace(static_cast<unsigned char>(c)) && c != '+' && c != '*' && c != '|' && c != '[' && c != ']' &&
+         c != '(' && c != ')' && c != '@' && c != '"' && c != '>';
 }
 
 // A state meets an animation: the state holds on every slot of the animation's grid.
@@ -54,7 +54,9 @@ class Evaluator {
     if (!result) return result.error();
     skip_blanks();
     if (at_ < text_.size()) return error(at_, "unexpected '" + std::string(1, text_[at_]) + "'");
-    if (result->priority) return error(static_cast<std::size_t>(result->column - 1), "'@' gives a priority to an operand of '|'; there is no '|' here");
+    if (result->priority)
+      return error(static_cast<std::size_t>(result->column - 1),
+                   "'@' gives a priority to an operand of '|'; there is no '|' here");
     if (result->mask) return masked(*result);
     return result->value;
   }
@@ -103,21 +105,22 @@ class Evaluator {
                   "the operators up to here make %.15g frames in all, more than %d times the frame limit of %lld "
                   "(--max-frames N raises it)",
                   made_, kWorkFactor, static_cast<long long>(max_frames_));
-    Diagnostic d = make_error(ErrorKind::limit_exceeded, Location::text("<expression>", 1, static_cast<int>(offset) + 1), what);
+    Diagnostic d =
+        make_error(ErrorKind::limit_exceeded, Location::text("<expression>", 1, static_cast<int>(offset) + 1), what);
     d.source_line = std::string(text_);
     return d;
   }
   Diagnostic frames_limit(std::size_t offset, const std::string& what) const {
     Limits limits;
     limits.max_frames = max_frames_;
-    Diagnostic d = limit_error(Location::text("<expression>", 1, static_cast<int>(offset) + 1), what, Limit::frames, limits);
+    Diagnostic d =
+        limit_error(Location::text("<expression>", 1, static_cast<int>(offset) + 1), what, Limit::frames, limits);
     d.source_line = std::string(text_);
     return d;
   }
 
   Diagnostic error(std::size_t offset, const std::string& message) const {
-    return make_error(Location::text("<expression>", 1, static_cast<int>(offset) + 1), message,
-                      std::string(text_));
+    return make_error(Location::text("<expression>", 1, static_cast<int>(offset) + 1), message, std::string(text_));
   }
   void skip_blanks() {
     while (at_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[at_]))) ++at_;
@@ -168,9 +171,9 @@ class Evaluator {
       if (!t.priority) {
         return error(static_cast<std::size_t>(t.column - 1), "every operand of '|' needs a priority ('@2')");
       }
-      layers.push_back(LayeredAnimation{
-          t.value.state ? broadcast(*t.value.state, grid ? *grid : Animation{}) : t.value.animation,
-          t.mask.value_or(Mask::all()), *t.priority});
+      layers.push_back(
+          LayeredAnimation{t.value.state ? broadcast(*t.value.state, grid ? *grid : Animation{}) : t.value.animation,
+                           t.mask.value_or(Mask::all()), *t.priority});
     }
     Result<Animation> folded = fapc::algebra::overlap(layers);
     if (!folded) return error(static_cast<std::size_t>(terms.front().column - 1), folded.error().message);
@@ -204,7 +207,8 @@ class Evaluator {
       if (auto bad = overlap_only(*left); bad) return *bad;
       if (auto bad = overlap_only(*right); bad) return *bad;
       if (auto bad = too_many_frames(at, {&left->value, &right->value})) return *bad;
-      left->value = combine(left->value, right->value, [v](const auto& s, const auto& t) { return fapc::algebra::sum(s, t, v); });
+      left->value =
+          combine(left->value, right->value, [v](const auto& s, const auto& t) { return fapc::algebra::sum(s, t, v); });
     }
   }
 
@@ -271,8 +275,8 @@ class Evaluator {
         if (*seconds < 0 || *seconds > 86400)
           return error(at, "a delay is from 0 to 86400 s (a day); " + format(*seconds) + " is not");
         const long frames = std::lround(*seconds * term->value.animation.fps);
-        const double slots = static_cast<double>(term->value.animation.size()) +
-                             static_cast<double>(delay_frames) + static_cast<double>(frames);
+        const double slots = static_cast<double>(term->value.animation.size()) + static_cast<double>(delay_frames) +
+                             static_cast<double>(frames);
         if (slots > static_cast<double>(max_frames_)) {
           char what[96];
           std::snprintf(what, sizeof what, "the delayed animation spans %.15g frames at %d fps", slots,
@@ -282,7 +286,8 @@ class Evaluator {
         delay_frames += frames;
       } else {
         if (delay_frames > 0) {
-          const double delayed = static_cast<double>(term->value.animation.size() + static_cast<std::size_t>(delay_frames));
+          const double delayed =
+              static_cast<double>(term->value.animation.size() + static_cast<std::size_t>(delay_frames));
           if (auto bad = too_much_work(at_, delayed)) return *bad;
           delay_in_place(term->value.animation, delay_frames);
         }
@@ -320,8 +325,9 @@ class Evaluator {
       name = std::string(text_.substr(start, at_ - start));
     }
     if (name.empty()) {
-      return error(start, at_ < text_.size() ? "expected a file, a number or '(', found '" + std::string(1, text_[at_]) + "'"
-                                              : "expected a file, a number or '(' at the end");
+      return error(start, at_ < text_.size()
+                              ? "expected a file, a number or '(', found '" + std::string(1, text_[at_]) + "'"
+                              : "expected a file, a number or '(' at the end");
     }
     Result<Value> value = load_(name, static_cast<int>(start) + 1);
     if (value && !value->state)
@@ -340,8 +346,7 @@ class Evaluator {
 
   std::optional<Diagnostic> overlap_only(const Term& t) const {
     if (!t.mask && !t.priority) return std::nullopt;
-    return error(static_cast<std::size_t>(t.column - 1),
-                 "masks '[...]' and priorities '@N' belong to operands of '|'");
+    return error(static_cast<std::size_t>(t.column - 1), "masks '[...]' and priorities '@N' belong to operands of '|'");
   }
 
   static Value masked(const Term& t) {

@@ -57,8 +57,7 @@ Result<Layer> overlap(const Layer& a, const Layer& b) {
       out.state.values[i] = s + t;
       out.priority[i] = s != 0 ? a.priority[i] : b.priority[i];
     } else if (a.priority[i] == b.priority[i]) {
-      return make_error(Location{}, "equal priorities (" + std::to_string(a.priority[i]) +
-                                        ") overlap on " +
+      return make_error(Location{}, "equal priorities (" + std::to_string(a.priority[i]) + ") overlap on " +
                                         std::string(find_fap(static_cast<int>(i) + 3)->name) +
                                         ": give the operands different priorities");
     } else {
@@ -70,8 +69,7 @@ Result<Layer> overlap(const Layer& a, const Layer& b) {
   return out;
 }
 
-Result<FacialState> state_from_entries(const std::vector<ExpressionEntry>& entries,
-                                       const Profile& profile) {
+Result<FacialState> state_from_entries(const std::vector<ExpressionEntry>& entries, const Profile& profile) {
   std::array<double, kStateSize> sums{};
   for (const ExpressionEntry& entry : entries) {
     const std::vector<FapContribution> drives = resolve_target(entry.parameter, profile);

@@ -32,10 +32,17 @@ std::optional<int> number(std::string_view text) {
 // groups) and "all".
 const std::vector<std::pair<std::string_view, std::vector<int>>>& mask_group_names() {
   static const std::vector<std::pair<std::string_view, std::vector<int>>> names{
-      {"jaw", range(3, 18)},    {"lips", range(3, 18)},       {"eyes", range(19, 30)},
-      {"brows", range(31, 38)}, {"cheeks", range(39, 42)},    {"tongue", range(43, 47)},
-      {"head", range(48, 50)},  {"outer_lips", range(51, 60)}, {"nose", range(61, 64)},
-      {"ears", range(65, 68)},  {"mouth", joined(range(3, 18), range(51, 60))},
+      {"jaw", range(3, 18)},
+      {"lips", range(3, 18)},
+      {"eyes", range(19, 30)},
+      {"brows", range(31, 38)},
+      {"cheeks", range(39, 42)},
+      {"tongue", range(43, 47)},
+      {"head", range(48, 50)},
+      {"outer_lips", range(51, 60)},
+      {"nose", range(61, 64)},
+      {"ears", range(65, 68)},
+      {"mouth", joined(range(3, 18), range(51, 60))},
       {"all", range(3, 68)},
   };
   return names;

@@ -7,10 +7,10 @@
 #include <iterator>
 #include <map>
 #include <set>
+#include <sstream>
+#include <unordered_map>
 #include <utility>
 #include <variant>
-#include <unordered_map>
-#include <sstream>
 
 #include "action_params.hpp"
 #include "chunked_vector.hpp"
@@ -142,7 +142,8 @@ class Compiler final : public MainSink {
     stack_.clear();
     Result<ActionParams> main = read(main_params);
     if (!main) return hold(main.error(), Rank::other);
-    if (main->right) return hold(error(main->right->at, "'right' needs a parallel around it; main has none"), Rank::other);
+    if (main->right)
+      return hold(error(main->right->at, "'right' needs a parallel around it; main has none"), Rank::other);
     if (const Param* p = atomic_param(*main)) {
       return hold(error(p->at, "'" + p->name() + "' applies to atomic actions, not to main"), Rank::other);
     }
@@ -364,8 +365,7 @@ class Compiler final : public MainSink {
   }
 
   Diagnostic error(Position at, const std::string& message) const {
-    return make_error(location(at), message,
-                      source_line(source_, at.line));
+    return make_error(location(at), message, source_line(source_, at.line));
   }
   Diagnostic with_source_line(Diagnostic d) const {
     if (d.where.file == file_) d.source_line = source_line(source_, d.where.line);
@@ -455,7 +455,8 @@ class Compiler final : public MainSink {
   // the parameters, the timing and the blend mode its children inherit.
   Result<Prepared> prepare(const Action& action, const Context& context) {
     if (context.depth >= kMaxNestingDepth) {
-      return nesting_too_deep(location(action.at), "groups (with macros expanded)", source_line(source_, action.at.line));
+      return nesting_too_deep(location(action.at), "groups (with macros expanded)",
+                              source_line(source_, action.at.line));
     }
     // Macros that use each other twice double with every level: forty lines can ask for 2^40
     // actions. Counted over the whole compilation (the macro bodies' own checks included).
@@ -482,13 +483,12 @@ class Compiler final : public MainSink {
     if (const Param* p = atomic_param(prepared.params)) {
       return error(p->at, "'" + p->name() + "' applies to atomic actions, not to a group");
     }
-    return ScheduleNode::group(group.kind == Action::Kind::sequence ? Kind::sequence : Kind::parallel,
-                               prepared.timing, location(group.at));
+    return ScheduleNode::group(group.kind == Action::Kind::sequence ? Kind::sequence : Kind::parallel, prepared.timing,
+                               location(group.at));
   }
 
-  Result<ScheduleNode> instantiate(const Action& action, const Definition& macro,
-                                   const ActionParams& params, const Timing& timing,
-                                   const Context& body_context) {
+  Result<ScheduleNode> instantiate(const Action& action, const Definition& macro, const ActionParams& params,
+                                   const Timing& timing, const Context& body_context) {
     if (const Param* p = atomic_param(params)) {
       return error(p->at, "'" + p->name() + "' does not apply to '" + macro.name +
                               "', a macro: give it alignment and blend parameters only");
@@ -507,8 +507,8 @@ class Compiler final : public MainSink {
     return body;
   }
 
-  Result<ScheduleNode> atomic(const Action& action, ActionParams params, Timing timing,
-                              BlendMode blend, const Context& context) {
+  Result<ScheduleNode> atomic(const Action& action, ActionParams params, Timing timing, BlendMode blend,
+                              const Context& context) {
     Leaf leaf;
     leaf.at = action.at;
     leaf.blend = blend;
@@ -546,11 +546,13 @@ class Compiler final : public MainSink {
                                     params.first_fade->at.column > params.first_periodic->at.column)
                                ? params.first_fade
                                : params.first_periodic;
-      return error(later->at, "'" + later->name() + "' mixes a fade (in, hold, out, value) with a "
-                                                  "periodic action (min, max, freq, period, duration)");
+      return error(later->at, "'" + later->name() +
+                                  "' mixes a fade (in, hold, out, value) with a "
+                                  "periodic action (min, max, freq, period, duration)");
     } else if (params.first_fade || expression != expressions_.end()) {
       if (params.first_periodic) {
-        return error(params.first_periodic->at, "'" + params.first_periodic->name() + "' does not apply to an expression fade");
+        return error(params.first_periodic->at,
+                     "'" + params.first_periodic->name() + "' does not apply to an expression fade");
       }
       if (!params.value) return error(action.at, "a fade needs value=... (and in, hold, out as needed)");
       leaf.shape = Leaf::Shape::fade;
@@ -560,8 +562,9 @@ class Compiler final : public MainSink {
       leaf.shape = Leaf::Shape::periodic;
       if (params.duration) timing.duration = params.duration->value;
     } else {
-      return error(action.at, "'" + action.name + "' needs a fade (in, hold, out, value), a periodic "
-                              "function (min, max, freq or period) or a time-value list");
+      return error(action.at, "'" + action.name +
+                                  "' needs a fade (in, hold, out, value), a periodic "
+                                  "function (min, max, freq or period) or a time-value list");
     }
     leaf.curve = curve_of(leaf.shape, params);
     if (leaf.shape == Leaf::Shape::list) {
@@ -597,7 +600,8 @@ class Compiler final : public MainSink {
     }
     if (shape == Leaf::Shape::periodic) {
       Periodic wave;  // unscaled: each target scales it by its factor
-      wave.shape = p.function && p.function->id == ParamName::linear ? Periodic::Shape::triangle : Periodic::Shape::sine;
+      wave.shape =
+          p.function && p.function->id == ParamName::linear ? Periodic::Shape::triangle : Periodic::Shape::sine;
       wave.min = value_or_zero(p.min);
       wave.max = p.max->value;
       wave.period = p.period ? p.period->value : 1 / p.freq->value;
@@ -664,10 +668,9 @@ class Compiler final : public MainSink {
           if (fap_value >= low && fap_value <= high) continue;
           warnings_.push_back(make_warning(
               {"mimic.out_of_range"}, location(n->at),
-              "value " + format_number(n->value) + " of '" + names_[target.name] + "' is " +
-                  format_number(fap_value) + " in " + std::string(find_fap(c.fap)->name) +
-                  " units, outside " + std::to_string(low) + ".." + std::to_string(high) +
-                  " (it will be clamped)",
+              "value " + format_number(n->value) + " of '" + names_[target.name] + "' is " + format_number(fap_value) +
+                  " in " + std::string(find_fap(c.fap)->name) + " units, outside " + std::to_string(low) + ".." +
+                  std::to_string(high) + " (it will be clamped)",
               source_line(source_, n->at.line)));
         }
       }
@@ -713,8 +716,9 @@ class Compiler final : public MainSink {
     clip_names_.reserve(clips);
     // Runs come in tree order, as the leaves were made: each leaf is let go once its runs are
     // lowered, so that the leaves shrink as the clips grow. (A Mimic leaf runs once: no repeats.)
-    const bool in_leaf_order = std::is_sorted(scheduled.occurrences.begin(), scheduled.occurrences.end(),
-                                              [](const Occurrence& a, const Occurrence& b) { return a.leaf_id < b.leaf_id; });
+    const bool in_leaf_order =
+        std::is_sorted(scheduled.occurrences.begin(), scheduled.occurrences.end(),
+                       [](const Occurrence& a, const Occurrence& b) { return a.leaf_id < b.leaf_id; });
     for (const Occurrence& o : scheduled.occurrences) {
       if (in_leaf_order) leaves_.release_before(o.leaf_id);
       const Leaf& leaf = leaves_[o.leaf_id];
@@ -795,7 +799,9 @@ class Compiler final : public MainSink {
               [&](std::uint32_t a, std::uint32_t b) { return names_[a] < names_[b]; });
     for (const std::uint32_t id : in_name_order) {
       std::vector<std::size_t>& indices = by_target[id];
-      const auto by_begin = [&](std::size_t a, std::size_t b) { return timeline.clips[a].begin < timeline.clips[b].begin; };
+      const auto by_begin = [&](std::size_t a, std::size_t b) {
+        return timeline.clips[a].begin < timeline.clips[b].begin;
+      };
       // Clips come in schedule order, mostly already by begin: sorting them again costs a merge sort.
       if (!std::is_sorted(indices.begin(), indices.end(), by_begin)) {
         std::stable_sort(indices.begin(), indices.end(), by_begin);
@@ -808,9 +814,8 @@ class Compiler final : public MainSink {
         if (connect.given) {
           end_value = connect.to;
         } else {
-          const auto next = std::lower_bound(indices.begin(), indices.end(), clip.end, [&](std::size_t c, double t) {
-            return timeline.clips[c].begin < t;
-          });
+          const auto next = std::lower_bound(indices.begin(), indices.end(), clip.end,
+                                             [&](std::size_t c, double t) { return timeline.clips[c].begin < t; });
           if (next != indices.end()) {
             const Clip& following = timeline.clips[*next];
             end_value = following.curve.value_at(following.curve_offset);
@@ -826,8 +831,7 @@ class Compiler final : public MainSink {
 }  // namespace
 }  // namespace mimic
 
-Result<MimicProgram> compile_mimic(std::string_view source, const std::string& file_name,
-                                   const MimicOptions& options) {
+Result<MimicProgram> compile_mimic(std::string_view source, const std::string& file_name, const MimicOptions& options) {
   return mimic::Compiler(source, file_name, options).run();
 }
 

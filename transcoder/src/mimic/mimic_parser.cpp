@@ -12,9 +12,7 @@ namespace {
 bool takes_no_value(ParamName n) { return n >= ParamName::linear; }
 bool needs_value(ParamName n) { return n >= ParamName::in && n <= ParamName::max; }
 
-bool is_keyword(std::string_view name) {
-  return name == "main" || name == "def" || name == "defxpr";
-}
+bool is_keyword(std::string_view name) { return name == "main" || name == "def" || name == "defxpr"; }
 
 class Parser {
  public:
@@ -22,8 +20,7 @@ class Parser {
       : lexer_(source, file), current_(lexer_.next()), source_(source), file_(file), sink_(sink) {}
 
   Status program(Program& program) {
-    while (peek().kind == TokenKind::identifier &&
-           (peek().text == "def" || peek().text == "defxpr")) {
+    while (peek().kind == TokenKind::identifier && (peek().text == "def" || peek().text == "defxpr")) {
       Result<Definition> definition = define();
       if (!definition) return definition.error();
       program.definitions.push_back(std::move(*definition));
@@ -70,8 +67,7 @@ class Parser {
   static Position position(const Token& t) { return Position{t.line, t.column}; }
 
   Diagnostic error_at(const Token& t, std::string message) const {
-    return make_error(Location::text(file_, t.line, t.column), std::move(message),
-                      source_line(source_, t.line));
+    return make_error(Location::text(file_, t.line, t.column), std::move(message), source_line(source_, t.line));
   }
   Diagnostic unexpected(const std::string& wanted) const {
     const Token& t = peek();
@@ -115,8 +111,7 @@ class Parser {
       return unexpected("'{' (a sequence) or '[' (a parallel)");
     }
     if (depth_ >= kMaxNestingDepth) {
-      return nesting_too_deep(Location::text(file_, open.line, open.column), "groups",
-                              source_line(source_, open.line));
+      return nesting_too_deep(Location::text(file_, open.line, open.column), "groups", source_line(source_, open.line));
     }
     ++depth_;
     Result<Action> group = group_body(open, std::move(params));
@@ -129,8 +124,7 @@ class Parser {
     group.params = std::move(params);
     group.kind = open.kind == TokenKind::left_brace ? Action::Kind::sequence : Action::Kind::parallel;
     group.at = position(open);
-    const TokenKind close =
-        group.kind == Action::Kind::sequence ? TokenKind::right_brace : TokenKind::right_bracket;
+    const TokenKind close = group.kind == Action::Kind::sequence ? TokenKind::right_brace : TokenKind::right_bracket;
     next();
     if (peek().kind == close) {
       return error_at(peek(), std::string("an empty ") +
@@ -140,8 +134,8 @@ class Parser {
     if (streaming_) sink_.open_group(group);
     while (peek().kind != close) {
       if (peek().kind == TokenKind::end_of_input) {
-        return error_at(open, std::string("this '") + (close == TokenKind::right_brace ? "{" : "[") +
-                                  "' is never closed");
+        return error_at(open,
+                        std::string("this '") + (close == TokenKind::right_brace ? "{" : "[") + "' is never closed");
       }
       Result<Action> child = action(close);
       if (!child) return child.error();
@@ -204,8 +198,8 @@ class Parser {
         const Token& t = next();
         numbers_read_.push_back(Number{t.number, position(t)});
       }
-      const char* wanted = list == &atomic.times ? "a time or ';' ending the times"
-                                                 : "a value or ';' ending the values";
+      const char* wanted =
+          list == &atomic.times ? "a time or ';' ending the times" : "a value or ';' ending the values";
       if (auto semicolon = expect(TokenKind::semicolon, wanted); !semicolon) return semicolon.error();
       list->assign(numbers_read_.begin(), numbers_read_.end());
     }
@@ -236,8 +230,7 @@ class Parser {
         }
         next();
         if (peek().kind == TokenKind::identifier) {
-          return error_at(peek(), "'" + param.name() + "' takes a number, not the name '" +
-                                      peek().str() + "'");
+          return error_at(peek(), "'" + param.name() + "' takes a number, not the name '" + peek().str() + "'");
         }
         Result<Token> value = expect(TokenKind::number, "a number after '" + param.name() + "='");
         if (!value) return value.error();

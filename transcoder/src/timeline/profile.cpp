@@ -12,10 +12,8 @@ namespace fapc {
 namespace {
 
 bool same_ignoring_case(std::string_view a, std::string_view b) {
-  return a.size() == b.size() &&
-         std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::tolower(static_cast<unsigned char>(x)) ==
-                  std::tolower(static_cast<unsigned char>(y));
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
          });
 }
 
@@ -36,7 +34,6 @@ std::vector<Field> split_fields(std::string_view line) {
   }
   return fields;
 }
-
 
 }  // namespace
 
@@ -65,8 +62,7 @@ Result<Profile> parse_profile(std::string_view text, const std::string& file_nam
     const std::vector<Field> fields = split_fields(line);
     if (fields.empty()) continue;
     const auto error = [&](const Field& at, std::string message) {
-      return make_error(Location::text(file_name, line_number, at.column), std::move(message),
-                        std::string(line));
+      return make_error(Location::text(file_name, line_number, at.column), std::move(message), std::string(line));
     };
     if (fields.size() != 3) {
       return error(fields.size() > 3 ? fields[3] : fields.back(),
@@ -86,8 +82,8 @@ Result<Profile> parse_profile(std::string_view text, const std::string& file_nam
       return error(scale_field, "the scale '" + std::string(scale_field.text) + "' is not a number");
     }
     if (find_fap_by_name_or_number(fields[0].text) != nullptr) {
-      return error(fields[0], "'" + std::string(fields[0].text) +
-                                  "' is a standard FAP name; a profile maps other names");
+      return error(fields[0],
+                   "'" + std::string(fields[0].text) + "' is a standard FAP name; a profile maps other names");
     }
     profile.parameters[std::string(fields[0].text)].push_back(FapContribution{fap->number, scale});
   }

@@ -17,9 +17,11 @@ namespace {
 
 // The word for the way a FAP's feature point moves when its value is negative.
 std::string_view opposite(std::string_view positive) {
-  static const std::pair<std::string_view, std::string_view> pairs[] = {
-      {"up", "down"}, {"left", "right"}, {"forward", "backward"}, {"growing", "shrinking"},
-      {"concave upward", "concave downward"}};
+  static const std::pair<std::string_view, std::string_view> pairs[] = {{"up", "down"},
+                                                                        {"left", "right"},
+                                                                        {"forward", "backward"},
+                                                                        {"growing", "shrinking"},
+                                                                        {"concave upward", "concave downward"}};
   for (const auto& [a, b] : pairs) {
     if (positive == a) return b;
     if (positive == b) return a;
@@ -67,8 +69,9 @@ Status check_motion(const std::string& file, const TsvLine& line, MappingRow& ro
   const FapInfo* info = find_fap_by_name_or_number(fap_cell.text);
   if (!info || info->number < 3) {
     return cell_error(file, line, fap_cell,
-                      info ? "FAP " + std::to_string(info->number) + " is high-level; a table row names one of FAPs 3-68"
-                           : unknown_fap_message(fap_cell.text));
+                      info
+                          ? "FAP " + std::to_string(info->number) + " is high-level; a table row names one of FAPs 3-68"
+                          : unknown_fap_message(fap_cell.text));
   }
   row.fap = info->number;
   const std::optional<double> amount = finite_number(amount_cell.text);
@@ -77,8 +80,8 @@ Status check_motion(const std::string& file, const TsvLine& line, MappingRow& ro
   }
   if (std::abs(*amount) > info->legal_max()) {
     return cell_error(file, line, amount_cell,
-                      std::string(amount_cell.text) + " is outside " + std::string(info->name) + "'s legal range of +-" +
-                          std::to_string(info->legal_max()));
+                      std::string(amount_cell.text) + " is outside " + std::string(info->name) +
+                          "'s legal range of +-" + std::to_string(info->legal_max()));
   }
   row.amount = *amount;
   const std::string_view expected = *amount > 0 ? info->positive_motion : opposite(info->positive_motion);
@@ -144,7 +147,8 @@ Result<MappingTable> parse_mapping_table(std::string_view text, const std::strin
     if (!key) return key.error();
     MappingRow row{*key, 0, 0, std::string(line.cells[4].text), line.line};
     if (Status motion = check_motion(file, line, row); !motion) return motion.error();
-    if (row.reason.empty()) return cell_error(file, line, line.cells[4], "every row says why it holds: the reason is empty");
+    if (row.reason.empty())
+      return cell_error(file, line, line.cells[4], "every row says why it holds: the reason is empty");
     const auto [it, fresh] = seen.emplace(std::make_pair(row.key, row.fap), line.line);
     if (!fresh) {
       return cell_error(file, line, line.cells[1],
@@ -162,8 +166,9 @@ Result<MappingTable> parse_mapping_table(std::string_view text, const std::strin
     for (std::string_view shape : arkit_shape_names()) {
       if (!table.has_key(shape)) {
         return make_error(Location::text(file, lines->front().line, 1),
-                          "shape '" + std::string(shape) + "' has no row: every one of the 52 shapes needs one "
-                          "(a row with fap '-' if no FAP carries it)",
+                          "shape '" + std::string(shape) +
+                              "' has no row: every one of the 52 shapes needs one "
+                              "(a row with fap '-' if no FAP carries it)",
                           std::string(lines->front().whole));
       }
     }

@@ -16,9 +16,9 @@ Result<std::vector<TsvLine>> split_tsv(std::string_view text, const std::string&
     pos = end + 1;
   }
   if (rows > max_lines) {
-    return make_error(ErrorKind::limit_exceeded, Location::text(file, 1, 1),
-                      "the table has " + std::to_string(rows) + " lines, more than the limit of " +
-                          std::to_string(max_lines));
+    return make_error(
+        ErrorKind::limit_exceeded, Location::text(file, 1, 1),
+        "the table has " + std::to_string(rows) + " lines, more than the limit of " + std::to_string(max_lines));
   }
   std::vector<TsvLine> lines;
   lines.reserve(rows);
@@ -35,8 +35,8 @@ Result<std::vector<TsvLine>> split_tsv(std::string_view text, const std::string&
       continue;
     }
     if (const std::size_t cr = line.find('\r'); cr != std::string_view::npos) {
-      return make_error(Location::text(file, number, static_cast<int>(cr) + 1),
-                        "a carriage return inside a line", std::string(line));
+      return make_error(Location::text(file, number, static_cast<int>(cr) + 1), "a carriage return inside a line",
+                        std::string(line));
     }
     TsvLine parsed{number, line, {}};
     for (std::size_t start = 0;;) {

@@ -27,8 +27,8 @@ Result<std::vector<VisemeRow>> parse_viseme_table(std::string_view text, const s
     }
     VisemeRow& row = rows[static_cast<std::size_t>(viseme)];
     if (row.line != 0) {
-      return cell_error(file, line, number, "viseme " + std::to_string(viseme) + " is already given on line " +
-                                                std::to_string(row.line));
+      return cell_error(file, line, number,
+                        "viseme " + std::to_string(viseme) + " is already given on line " + std::to_string(row.line));
     }
     if (line.cells[1].text != viseme_name(viseme)) {
       return cell_error(file, line, line.cells[1],
@@ -38,8 +38,8 @@ Result<std::vector<VisemeRow>> parse_viseme_table(std::string_view text, const s
     const std::string_view openxr = line.cells[2].text;
     if (openxr.empty()) return cell_error(file, line, line.cells[2], "the OpenXR name is empty");
     if (const auto [it, fresh] = openxr_lines.emplace(openxr, line.line); !fresh) {
-      return cell_error(file, line, line.cells[2], "'" + std::string(openxr) + "' is already given on line " +
-                                                       std::to_string(it->second));
+      return cell_error(file, line, line.cells[2],
+                        "'" + std::string(openxr) + "' is already given on line " + std::to_string(it->second));
     }
     if (line.cells[3].text.empty()) return cell_error(file, line, line.cells[3], "the reason is empty");
     row = VisemeRow{viseme, std::string(line.cells[1].text), std::string(openxr), std::string(line.cells[3].text),

@@ -17,7 +17,7 @@ using bifs::FieldSpec;
 using bifs::Ndt;
 using bifs::NodeSpec;
 
-constexpr int kMaxDepth = 64;         // deeper scenes are not the project's
+constexpr int kMaxDepth = 64;           // deeper scenes are not the project's
 constexpr std::size_t kMaxName = 1024;  // DEF names longer than this are taken as corruption
 
 class SceneDecoder {
@@ -39,8 +39,7 @@ class SceneDecoder {
     const std::uint32_t code = in_.get(table.bits);
     if (in_.failed()) return cut_short();
     if (code == 0)
-      return fail(std::string(table.name) + " node from a later BIFS version: fapc decodes " +
-                  "version 1 nodes only");
+      return fail(std::string(table.name) + " node from a later BIFS version: fapc decodes " + "version 1 nodes only");
     const NodeSpec* spec = bifs::node_for_code(ndt, code);
     if (!spec)
       return fail(std::string(table.name) + " node type " + std::to_string(code) +
@@ -199,8 +198,8 @@ Result<BifsConfig> decode_bifs_config(const Bytes& bytes, std::uint64_t base, co
   return c;
 }
 
-Result<SceneNode> decode_scene_replace(const Bytes& bytes, const BifsConfig& config,
-                                       std::uint64_t base, const std::string& file) {
+Result<SceneNode> decode_scene_replace(const Bytes& bytes, const BifsConfig& config, std::uint64_t base,
+                                       const std::string& file) {
   SceneDecoder decoder(bytes, config, base, file);
   BitReader& in = decoder.bits();
   if (in.get(2) != 3) return decoder.fail("the scene access unit does not start with SceneReplace");

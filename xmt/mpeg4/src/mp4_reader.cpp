@@ -1,7 +1,7 @@
 // The MP4 reader: the box tree down to the sample tables, then each track's samples resolved to
 // file offsets, decode times and sync flags, every one checked to lie inside the file.
-#include <optional>
 #include "fapc/mpeg4/mp4_reader.hpp"
+#include <optional>
 
 #include <algorithm>
 
@@ -208,8 +208,8 @@ class Mp4Parser {
     for (Box& child : *boxes) {
       ByteReader& in = child.body;
       const std::string& type = child.type;
-      if (type != "stsd" && type != "stts" && type != "stss" && type != "stsc" && type != "stsz" &&
-          type != "stco" && type != "co64" && type != "stz2")
+      if (type != "stsd" && type != "stts" && type != "stss" && type != "stsc" && type != "stsz" && type != "stco" &&
+          type != "co64" && type != "stz2")
         continue;
       in.u32();  // version, flags
       if (type == "stz2") return error(child.offset, "compact sample sizes ('stz2') are not supported");
@@ -223,15 +223,16 @@ class Mp4Parser {
         t.have_stsz = true;
         if (fixed != 0) {
           // One size for all: the count is bounded by what the file can hold, not by this box.
-          if (count > out_.data.size()) return error(child.offset, "'stsz' sample count " + std::to_string(count) + " exceeds the file size");
+          if (count > out_.data.size())
+            return error(child.offset, "'stsz' sample count " + std::to_string(count) + " exceeds the file size");
           t.sizes.assign(count, fixed);
           count = 0;
         }
       }
       const std::size_t entry = type == "stts" ? 8 : type == "stsc" ? 12 : type == "co64" ? 8 : 4;
       if (in.failed() || count > in.remaining() / entry)
-        return error(child.offset, "'" + type + "' box holds fewer entries than its count (" +
-                                       std::to_string(count) + ")");
+        return error(child.offset,
+                     "'" + type + "' box holds fewer entries than its count (" + std::to_string(count) + ")");
       for (std::uint32_t i = 0; i < count; ++i) {
         if (type == "stts") {
           const std::uint32_t n = in.u32();
@@ -278,10 +279,14 @@ class Mp4Parser {
     // Bytes before the child boxes: SampleEntry (8), plus VisualSampleEntry (70) or
     // AudioSampleEntry (20) fields.
     std::size_t fixed = 0;
-    if (entry.type == "mp4s") fixed = 8;
-    else if (entry.type == "mp4v") fixed = 78;
-    else if (entry.type == "mp4a") fixed = 28;
-    else return ok_status();  // not an MPEG-4 systems sample entry: no ES descriptor to read
+    if (entry.type == "mp4s")
+      fixed = 8;
+    else if (entry.type == "mp4v")
+      fixed = 78;
+    else if (entry.type == "mp4a")
+      fixed = 28;
+    else
+      return ok_status();  // not an MPEG-4 systems sample entry: no ES descriptor to read
     ByteReader& e = entry.body;
     if (e.remaining() < fixed) return error(entry.offset, "sample entry '" + entry.type + "' cut short");
     e.skip(fixed);
@@ -311,14 +316,16 @@ class Mp4Parser {
     std::size_t i = 0;
     std::uint64_t time = 0;
     for (const auto& [count, duration] : t.stts) {
-      if (count > n - i) return error(t.stts_at, id + ": 'stts' describes more samples than 'stsz' (" + std::to_string(n) + ")");
+      if (count > n - i)
+        return error(t.stts_at, id + ": 'stts' describes more samples than 'stsz' (" + std::to_string(n) + ")");
       for (std::uint32_t k = 0; k < count; ++k, ++i) {
         track.samples[i].decode_time = time;
         track.samples[i].duration = duration;
         time += duration;
       }
     }
-    if (i != n) return error(t.stts_at, id + ": 'stts' describes " + std::to_string(i) + " samples, 'stsz' " + std::to_string(n));
+    if (i != n)
+      return error(t.stts_at, id + ": 'stts' describes " + std::to_string(i) + " samples, 'stsz' " + std::to_string(n));
     if (t.stss) {
       for (Mp4Sample& s : track.samples) s.sync = false;
       for (std::uint32_t number : *t.stss) {
@@ -341,11 +348,13 @@ class Mp4Parser {
         s.size = t.sizes[i];
         if (offset > out_.data.size() || s.size > out_.data.size() - offset)
           return error(t.stco_at, id + ": sample " + std::to_string(i + 1) + " (" + std::to_string(s.size) +
-                               " bytes at offset " + std::to_string(offset) + ") lies outside the file");
+                                      " bytes at offset " + std::to_string(offset) + ") lies outside the file");
         offset += s.size;
       }
     }
-    if (i != n) return error(t.stsc_at, id + ": 'stsc' and 'stco' place " + std::to_string(i) + " of " + std::to_string(n) + " samples");
+    if (i != n)
+      return error(t.stsc_at,
+                   id + ": 'stsc' and 'stco' place " + std::to_string(i) + " of " + std::to_string(n) + " samples");
     return ok_status();
   }
 
@@ -357,11 +366,10 @@ class Mp4Parser {
     }
     return s;
   }
-  Diagnostic error(std::uint64_t offset, const std::string& message) const {
-    return box_error(file_, offset, message);
-  }
+  Diagnostic error(std::uint64_t offset, const std::string& message) const { return box_error(file_, offset, message); }
   void warn(std::uint64_t offset, const std::string& message) {
-    out_.warnings.push_back(make_warning({"mp4.ignored"}, Location::binary(file_, static_cast<std::int64_t>(offset)), message));
+    out_.warnings.push_back(
+        make_warning({"mp4.ignored"}, Location::binary(file_, static_cast<std::int64_t>(offset)), message));
   }
 
   Mp4File& out_;

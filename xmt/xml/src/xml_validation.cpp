@@ -32,9 +32,9 @@
 #include <xercesc/validators/schema/SchemaSymbols.hpp>
 
 #include "fapc/codec/deep_stack.hpp"
+#include "fapc/xml/xml_document.hpp"
 #include "schema_registry.hpp"
 #include "xml_tag_scan.hpp"
-#include "fapc/xml/xml_document.hpp"
 
 namespace fapc::xmt {
 
@@ -121,9 +121,9 @@ bool is_number_list(std::string_view s) {
 // Which attribute a problem is about, as Xerces' API says (never its message): the problem is
 // moved there from the end of the start tag where Xerces reports it.
 struct AttributeTarget {
-  std::string name;     // local name
-  bool at_value = true; // point at the value (false: at the name, for an undeclared attribute)
-  std::string token;    // within the value: this token (an IDREFS item), or empty for the start
+  std::string name;      // local name
+  bool at_value = true;  // point at the value (false: at the name, for an undeclared attribute)
+  std::string token;     // within the value: this token (an IDREFS item), or empty for the start
 };
 
 // What Xerces' error codes say a problem is: a validity code, or a datatype validator's
@@ -138,10 +138,19 @@ bool about_an_attribute(const ProblemCode& code) {
   using v = xc::XMLValid;
   if (code.datatype) return true;
   switch (code.validity) {
-    case v::AttNotDefined: case v::AttNotDefinedForElement: case v::DatatypeError:
-    case v::DatatypeValidationFailure: case v::ProhibitedAttributePresent: case v::AttributeNotQualified:
-    case v::AttributeNotUnQualified: case v::InvalidEmptyAttValue: case v::AttrValNotName:
-    case v::ReusedIDValue: case v::BadEntityRefAttr: case v::UnknownEntityRefAttr: case v::UnknownNotRefAttr:
+    case v::AttNotDefined:
+    case v::AttNotDefinedForElement:
+    case v::DatatypeError:
+    case v::DatatypeValidationFailure:
+    case v::ProhibitedAttributePresent:
+    case v::AttributeNotQualified:
+    case v::AttributeNotUnQualified:
+    case v::InvalidEmptyAttValue:
+    case v::AttrValNotName:
+    case v::ReusedIDValue:
+    case v::BadEntityRefAttr:
+    case v::UnknownEntityRefAttr:
+    case v::UnknownNotRefAttr:
     case v::AttrDupToken:
       return true;
     default:
@@ -225,8 +234,8 @@ class Collector : public xc::DefaultHandler, public xc::PSVIHandler {
     std::set<std::string> named;
     for (const auto& [where, target] : references_)
       if (!ids_.count(target.token) && named.insert(target.token).second)
-        found.push_back({make_error(where, "ID attribute '" + target.token + "' is referenced but was never declared"),
-                         target});
+        found.push_back(
+            {make_error(where, "ID attribute '" + target.token + "' is referenced but was never declared"), target});
     if (found.size() != reported.size()) return;
     for (std::size_t k = 0; k < reported.size(); ++k) {
       problems[reported[k]] = found[k].first;
@@ -273,16 +282,18 @@ class Collector : public xc::DefaultHandler, public xc::PSVIHandler {
       if (is_number_list(value)) continue;
       const std::string shown = value.size() > 40 ? value.substr(0, 40) + "..." : value;
       targets[problems.size()] = {name, false, {}};
-      problems.push_back(make_error(here(), "'" + name + "': '" + shown + "' is not a list of numbers separated by ';'"));
+      problems.push_back(
+          make_error(here(), "'" + name + "': '" + shown + "' is not a list of numbers separated by ';'"));
       codes_.push_back({});
     }
   }
 
   void add(Severity severity, const xc::SAXParseException& e) {
-    problems.push_back(Diagnostic{severity,
-                                  Location::text(file_, static_cast<int>(e.getLineNumber()),
-                                                 static_cast<int>(e.getColumnNumber())),
-                                  text(e.getMessage()), {}});
+    problems.push_back(
+        Diagnostic{severity,
+                   Location::text(file_, static_cast<int>(e.getLineNumber()), static_cast<int>(e.getColumnNumber())),
+                   text(e.getMessage()),
+                   {}});
     codes_.push_back(next_code);
   }
   const std::string& file_;
@@ -422,10 +433,9 @@ Result<ValidationReport> validate_with_xerces(std::string_view text_in, const st
   if (!binding) {
     std::string known;
     for (const std::string& k : validated_document_kinds()) known += (known.empty() ? "" : ", ") + k;
-    return make_error(Location::text(file, 1, 1),
-                      "no schema for root element '" + first.root_name + "'" +
-                          (first.root_ns.empty() ? "" : " in namespace " + first.root_ns) +
-                          "; fapc validates " + known);
+    return make_error(Location::text(file, 1, 1), "no schema for root element '" + first.root_name + "'" +
+                                                      (first.root_ns.empty() ? "" : " in namespace " + first.root_ns) +
+                                                      "; fapc validates " + known);
   }
   const auto schema = embedded_schemas().find(std::string(binding->schema));
   if (schema == embedded_schemas().end())
@@ -435,14 +445,15 @@ Result<ValidationReport> validate_with_xerces(std::string_view text_in, const st
   Collector collector(file, binding->schema == "xmt-o.xsd");
   Reader reader = make_reader(collector, security, true);
   const XmlCh schema_id(std::string(binding->schema));
-  xc::MemBufInputSource grammar(reinterpret_cast<const XMLByte*>(schema->second.data()),
-                                schema->second.size(), schema_id.get(), false);
+  xc::MemBufInputSource grammar(reinterpret_cast<const XMLByte*>(schema->second.data()), schema->second.size(),
+                                schema_id.get(), false);
   collector.serving_schemas = true;
   const bool loaded = reader->loadGrammar(grammar, xc::Grammar::SchemaGrammarType, true) != nullptr;
   collector.serving_schemas = false;
   if (!loaded || !collector.problems.empty()) {
     const std::string why = collector.problems.empty() ? "" : ": " + collector.problems.front().message;
-    return make_error(Location{file, 0, 0, -1}, "built-in schema " + std::string(binding->schema) + " does not load" + why);
+    return make_error(Location{file, 0, 0, -1},
+                      "built-in schema " + std::string(binding->schema) + " does not load" + why);
   }
   xc::MemBufInputSource in(reinterpret_cast<const XMLByte*>(text_in.data()), text_in.size(), id.get(), false);
   reader->parse(in);
@@ -467,7 +478,8 @@ std::vector<std::string> validated_document_kinds() {
   std::vector<std::string> out;
   for (const SchemaBinding& b : schema_bindings()) {
     std::string kind = std::string(b.kind) + (b.ns.empty() ? "" : " (" + std::string(b.ns) + ")");
-    if (std::find(out.begin(), out.end(), kind) == out.end()) out.push_back(std::move(kind));  // SMIL-Agent has two roots
+    if (std::find(out.begin(), out.end(), kind) == out.end())
+      out.push_back(std::move(kind));  // SMIL-Agent has two roots
   }
   return out;
 }

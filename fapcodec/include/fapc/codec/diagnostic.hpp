@@ -22,12 +22,8 @@ struct Location {
   int column = 0;
   std::int64_t byte_offset = -1;
 
-  static Location text(std::string file, int line, int column) {
-    return Location{std::move(file), line, column, -1};
-  }
-  static Location binary(std::string file, std::int64_t offset) {
-    return Location{std::move(file), 0, 0, offset};
-  }
+  static Location text(std::string file, int line, int column) { return Location{std::move(file), line, column, -1}; }
+  static Location binary(std::string file, std::int64_t offset) { return Location{std::move(file), 0, 0, offset}; }
 };
 
 // What went wrong, as a value callers decide by (the exit status, whether to retry, whether a
@@ -88,8 +84,7 @@ inline Diagnostic make_error(Location where, std::string message, std::string so
   return make_diagnostic(Severity::error, ErrorKind::bad_input, std::move(where), std::move(message),
                          std::move(source_line), "");
 }
-inline Diagnostic make_error(ErrorKind kind, Location where, std::string message,
-                             std::string source_line = {}) {
+inline Diagnostic make_error(ErrorKind kind, Location where, std::string message, std::string source_line = {}) {
   return make_diagnostic(Severity::error, kind, std::move(where), std::move(message), std::move(source_line), "");
 }
 // A warning without a code is always shown (never counted with others).
@@ -97,8 +92,7 @@ inline Diagnostic make_warning(Location where, std::string message, std::string 
   return make_diagnostic(Severity::warning, ErrorKind::bad_input, std::move(where), std::move(message),
                          std::move(source_line), "");
 }
-inline Diagnostic make_warning(WarningCode code, Location where, std::string message,
-                               std::string source_line = {}) {
+inline Diagnostic make_warning(WarningCode code, Location where, std::string message, std::string source_line = {}) {
   return make_diagnostic(Severity::warning, ErrorKind::bad_input, std::move(where), std::move(message),
                          std::move(source_line), code.name);
 }
@@ -108,8 +102,8 @@ inline Diagnostic make_warning(WarningCode code, Location where, std::string mes
 template <class T>
 class Result {
  public:
-  Result(T value) : state_(std::move(value)) {}                 // NOLINT: implicit on purpose
-  Result(Diagnostic error) : state_(std::move(error)) {}        // NOLINT: implicit on purpose
+  Result(T value) : state_(std::move(value)) {}           // NOLINT: implicit on purpose
+  Result(Diagnostic error) : state_(std::move(error)) {}  // NOLINT: implicit on purpose
 
   bool ok() const { return std::holds_alternative<T>(state_); }
   explicit operator bool() const { return ok(); }

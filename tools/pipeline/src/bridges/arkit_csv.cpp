@@ -1,7 +1,7 @@
 #include "arkit_csv.hpp"
 
-#include <charconv>
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <optional>
 
@@ -54,7 +54,8 @@ Columns find_columns(const std::vector<std::string>& header) {
     if (c.clock != Clock::rows && i == c.time) continue;
     if (name == "BlendShapeCount" || name == "_neutral") continue;  // a count; MediaPipe's rest weight
     if (const std::optional<int> shape = vocabulary::find_arkit_shape(name)) {
-      Columns::Shape s{i, vocabulary::arkit_table().rows_of(vocabulary::arkit_shape_names()[static_cast<std::size_t>(*shape)])};
+      Columns::Shape s{
+          i, vocabulary::arkit_table().rows_of(vocabulary::arkit_shape_names()[static_cast<std::size_t>(*shape)])};
       std::erase_if(s.rows, [&](const vocabulary::MappingRow& row) {
         return row.fap == 0 || (c.eye_angles && row.fap >= 23 && row.fap <= 26);
       });
@@ -89,9 +90,15 @@ const std::array<ArkitAngle, 9>& arkit_angle_columns() {
   // positive pitch looks down (EyeLookDown minus EyeLookUp, 0.996-1.0). The head's are taken to
   // follow the eyes' (the corpus's takes do not record the head: all zero).
   static constexpr std::array<ArkitAngle, 9> columns{{
-      {"HeadYaw", 49, -1},     {"HeadPitch", 48, 1},      {"HeadRoll", 50, 1},
-      {"LeftEyeYaw", 23, -1},  {"LeftEyePitch", 25, 1},   {"LeftEyeRoll", 0, 0},
-      {"RightEyeYaw", 24, -1}, {"RightEyePitch", 26, 1},  {"RightEyeRoll", 0, 0},
+      {"HeadYaw", 49, -1},
+      {"HeadPitch", 48, 1},
+      {"HeadRoll", 50, 1},
+      {"LeftEyeYaw", 23, -1},
+      {"LeftEyePitch", 25, 1},
+      {"LeftEyeRoll", 0, 0},
+      {"RightEyeYaw", 24, -1},
+      {"RightEyePitch", 26, 1},
+      {"RightEyeRoll", 0, 0},
   }};
   return columns;
 }

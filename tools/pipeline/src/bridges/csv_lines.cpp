@@ -59,8 +59,8 @@ Status CsvLines::check_width(const std::vector<CsvCell>& cells, std::size_t widt
     return error_at(&cells[width], "more cells than the header's " + std::to_string(width) + " columns");
   }
   if (cells.size() < width) {
-    return error_at(nullptr, std::to_string(cells.size()) + " cells, but the header has " + std::to_string(width) +
-                                 " columns");
+    return error_at(nullptr,
+                    std::to_string(cells.size()) + " cells, but the header has " + std::to_string(width) + " columns");
   }
   return ok_status();
 }

@@ -32,13 +32,13 @@ nlohmann::ordered_json facts_of(const bml::BmlDocument& document) {
 }
 
 Result<Loaded> load_bml(const std::string& path, const ConvertOptions& options) {
-  return load_script(path, options, [&](const Profile&) { return bml::load_bml(path, bml_options(options)); },
-                     facts_of);
+  return load_script(
+      path, options, [&](const Profile&) { return bml::load_bml(path, bml_options(options)); }, facts_of);
 }
 
 Result<Loaded> load_bml_sequence(const std::string& path, const ConvertOptions& options) {
-  return load_script(path, options, [&](const Profile&) { return bml::load_bml_sequence(path, bml_options(options)); },
-                     facts_of);
+  return load_script(
+      path, options, [&](const Profile&) { return bml::load_bml_sequence(path, bml_options(options)); }, facts_of);
 }
 
 }  // namespace

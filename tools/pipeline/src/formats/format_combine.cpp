@@ -25,8 +25,8 @@ Result<Loaded> load_combine(const std::string& path, const ConvertOptions& optio
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.find_first_not_of(" \t") != std::string::npos && line[line.find_first_not_of(" \t")] != '#') {
       if (!expression.empty()) {
-        return make_error(Location::text(path, line_number, 1),
-                          "a .combine file holds one expression on one line", line);
+        return make_error(Location::text(path, line_number, 1), "a .combine file holds one expression on one line",
+                          line);
       }
       expression = line;
       expression_line = line_number;
@@ -35,8 +35,7 @@ Result<Loaded> load_combine(const std::string& path, const ConvertOptions& optio
   }
   if (expression.empty()) return make_error(Location::text(path, 1, 1), "no expression in this file");
   Loaded loaded;
-  Result<algebra::Value> value = evaluate_combination(
-      expression, path, options, loaded.warnings);
+  Result<algebra::Value> value = evaluate_combination(expression, path, options, loaded.warnings);
   if (!value) {
     Diagnostic d = value.error();
     if (d.where.file == "<expression>") d.where = Location::text(path, expression_line, d.where.column);

@@ -5,8 +5,7 @@ namespace fapc::pipeline::builtin {
 
 namespace {
 
-Result<std::string> write_timeline(const Loaded& loaded, const std::string& path,
-                                   const ConvertOptions&) {
+Result<std::string> write_timeline(const Loaded& loaded, const std::string& path, const ConvertOptions&) {
   if (!loaded.timeline) {
     return make_error(ErrorKind::unsupported, Location{path, 0, 0, -1},
                       "this input has frames, not a timeline (.timeline needs a script: " +

@@ -56,12 +56,17 @@ Result<XmlRoot> find_xml_root(std::string_view text, const std::string& file_nam
     }
     const std::string_view rest = text.substr(i);
     std::string_view close;
-    if (rest.starts_with("<?")) close = "?>";
-    else if (rest.starts_with("<!--")) close = "-->";
-    else if (rest.starts_with("<!")) close = ">";  // a doctype (an internal subset ends with "]>")
+    if (rest.starts_with("<?"))
+      close = "?>";
+    else if (rest.starts_with("<!--"))
+      close = "-->";
+    else if (rest.starts_with("<!"))
+      close = ">";  // a doctype (an internal subset ends with "]>")
     if (close.empty()) break;
-    std::size_t end = rest.starts_with("<!DOCTYPE") && rest.find('[') < rest.find('>') ? rest.find("]>") : rest.find(close);
-    if (end == std::string_view::npos) return make_error(at(text, i, file_name), "an unclosed declaration or comment before the root element");
+    std::size_t end =
+        rest.starts_with("<!DOCTYPE") && rest.find('[') < rest.find('>') ? rest.find("]>") : rest.find(close);
+    if (end == std::string_view::npos)
+      return make_error(at(text, i, file_name), "an unclosed declaration or comment before the root element");
     i += end + (rest.starts_with("<!DOCTYPE") && rest[end] == ']' ? 2 : close.size());
   }
   XmlRoot root;

@@ -36,6 +36,7 @@ struct EarlierBlocks {
 
 // The document's root block, placed by its composition after `earlier` (its clips, behaviours and
 // marks at their times in the sequence), its points added to `earlier.placed`.
-Result<BmlDocument> read_sequenced_block(const xml::XmlDocument& doc, const BmlOptions& options, EarlierBlocks& earlier);
+Result<BmlDocument> read_sequenced_block(const xml::XmlDocument& doc, const BmlOptions& options,
+                                         EarlierBlocks& earlier);
 
 }  // namespace fapc::bml

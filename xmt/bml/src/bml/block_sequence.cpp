@@ -48,10 +48,12 @@ Result<std::vector<ListedDocument>> parse_list(std::string_view text, const std:
     std::size_t path_at = first;
     if (line.substr(first).starts_with("at ") || line.substr(first).starts_with("at\t")) {
       const std::size_t number_at = line.find_first_not_of(" \t", first + 2);
-      const std::size_t number_end = number_at == std::string_view::npos ? line.size() : line.find_first_of(" \t", number_at);
+      const std::size_t number_end =
+          number_at == std::string_view::npos ? line.size() : line.find_first_of(" \t", number_at);
       d.at_where = Location::text(list_name, line_number, static_cast<int>(first) + 1);
-      const auto seconds =
-          number_at == std::string_view::npos ? std::nullopt : parse_seconds(line.substr(number_at, number_end - number_at));
+      const auto seconds = number_at == std::string_view::npos
+                               ? std::nullopt
+                               : parse_seconds(line.substr(number_at, number_end - number_at));
       if (!seconds || *seconds < 0)
         return make_error(d.at_where, "'at' needs the time the block is sent, seconds from 0 on, then the document",
                           std::string(line));
@@ -63,14 +65,17 @@ Result<std::vector<ListedDocument>> parse_list(std::string_view text, const std:
     d.where = Location::text(list_name, line_number, static_cast<int>(path_at) + 1);
     if (d.name.empty()) return make_error(d.where, "a time with no document after it", std::string(line));
     // A NUL would end the name early when the file is opened: another file than the one written.
-    const auto control = std::find_if(d.name.begin(), d.name.end(), [](unsigned char c) { return c < 0x20 && c != '\t'; });
+    const auto control =
+        std::find_if(d.name.begin(), d.name.end(), [](unsigned char c) { return c < 0x20 && c != '\t'; });
     if (control != d.name.end())
-      return make_error(Location::text(list_name, line_number, static_cast<int>(path_at + (control - d.name.begin())) + 1),
-                        "a control character in a document's path", std::string(line));
+      return make_error(
+          Location::text(list_name, line_number, static_cast<int>(path_at + (control - d.name.begin())) + 1),
+          "a control character in a document's path", std::string(line));
     if (static_cast<std::int64_t>(out.size()) >= max_documents) {
-      Diagnostic e = make_error(d.where, "more than " + std::to_string(max_documents) +
-                                             " documents and behaviours (raise the limit with --max-runs)",
-                                std::string(line));
+      Diagnostic e = make_error(
+          d.where,
+          "more than " + std::to_string(max_documents) + " documents and behaviours (raise the limit with --max-runs)",
+          std::string(line));
       e.kind = ErrorKind::limit_exceeded;
       return e;
     }
@@ -92,7 +97,8 @@ std::pair<std::size_t, std::string> cut_at(BmlDocument& doc, double cut) {
       c.fill = Fill::remove;
     }
   std::vector<AudioClip>& audio = doc.timeline.audio;
-  audio.erase(std::remove_if(audio.begin(), audio.end(), [&](const AudioClip& a) { return a.begin >= cut; }), audio.end());
+  audio.erase(std::remove_if(audio.begin(), audio.end(), [&](const AudioClip& a) { return a.begin >= cut; }),
+              audio.end());
   for (AudioClip& a : audio) {
     // Compared as doubles first: a cut far beyond the sound would not fit a size_t.
     const double keep = std::floor((cut - a.begin) * a.sample_rate);
@@ -108,8 +114,9 @@ std::pair<std::size_t, std::string> cut_at(BmlDocument& doc, double cut) {
                                   }),
                    behaviours.end());
   for (ScheduledBehaviour& b : behaviours) b.end = std::min(b.end, cut);
-  doc.marks.erase(std::remove_if(doc.marks.begin(), doc.marks.end(), [&](const ScheduledMark& m) { return m.time >= cut; }),
-                  doc.marks.end());
+  doc.marks.erase(
+      std::remove_if(doc.marks.begin(), doc.marks.end(), [&](const ScheduledMark& m) { return m.time >= cut; }),
+      doc.marks.end());
   return removed;
 }
 
@@ -131,8 +138,9 @@ class Sequence {
   Status add(const ListedDocument& listed) {
     if (listed.at) {
       if (*listed.at < earlier_.arrival)
-        return make_error(listed.at_where, "at " + seconds_text(*listed.at) + " is before the block listed before it (sent at " +
-                                               seconds_text(earlier_.arrival) + "): blocks are listed in the order they are sent");
+        return make_error(listed.at_where,
+                          "at " + seconds_text(*listed.at) + " is before the block listed before it (sent at " +
+                              seconds_text(earlier_.arrival) + "): blocks are listed in the order they are sent");
       earlier_.arrival = *listed.at;
     }
     Result<std::string> path = resolve_include(listed.name, list_name_, options_.includes, listed.where);
@@ -156,10 +164,11 @@ class Sequence {
     if (block->compositions.front() == "REPLACE") {
       const auto [removed, first] = cut_at(out_, block->block_starts.front());
       if (removed > 0) {
-        Diagnostic w = doc->warning(doc->root(), "composition", "this REPLACE block, sent at " + seconds_text(block->block_starts.front()) +
-                                                                    ", removes " + std::to_string(removed) +
-                                                                    " behaviour(s) of earlier blocks that had not started (the first: " +
-                                                                    first + ")");
+        Diagnostic w =
+            doc->warning(doc->root(), "composition",
+                         "this REPLACE block, sent at " + seconds_text(block->block_starts.front()) + ", removes " +
+                             std::to_string(removed) +
+                             " behaviour(s) of earlier blocks that had not started (the first: " + first + ")");
         w.code = "bml.replaced";
         out_.warnings.push_back(std::move(w));
       }
@@ -192,8 +201,11 @@ class Sequence {
     const std::string& id = block.blocks.front();
     if (id.empty() || std::find(out_.blocks.begin(), out_.blocks.end(), id) == out_.blocks.end()) return ok_status();
     if (block.dialect == "BML 1.0")
-      return doc.error(doc.root(), "id", "a second block with id '" + id + "' in this sequence (BML 1.0 asks every block's id to be unique)");
-    Diagnostic w = doc.warning(doc.root(), "id", "a second block with id '" + id + "' in this sequence: references name the first");
+      return doc.error(
+          doc.root(), "id",
+          "a second block with id '" + id + "' in this sequence (BML 1.0 asks every block's id to be unique)");
+    Diagnostic w = doc.warning(doc.root(), "id",
+                               "a second block with id '" + id + "' in this sequence: references name the first");
     w.code = "bml.duplicate_block_id";
     out_.warnings.push_back(std::move(w));
     return ok_status();

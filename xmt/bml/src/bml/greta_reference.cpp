@@ -89,7 +89,8 @@ struct Expressivity {
 
 }  // namespace
 
-Result<bool> read_greta_reference(const xml::XmlDocument& doc, const xmlNode* node, Behaviour& b, xmt::OncePerName& once) {
+Result<bool> read_greta_reference(const xml::XmlDocument& doc, const xmlNode* node, Behaviour& b,
+                                  xmt::OncePerName& once) {
   const xmlNode* description = nullptr;
   const xmlNode* reference = nullptr;
   for (const xmlNode* child : doc.children(node))
@@ -107,17 +108,23 @@ Result<bool> read_greta_reference(const xml::XmlDocument& doc, const xmlNode* no
     if (parameter == "reference" || parameter.ends_with(".min") || parameter.ends_with(".max")) continue;
     if (parameter.ends_with(".value")) parameter.remove_suffix(6);
     const bool is_intensity = parameter == "intensity";
-    double* slot = is_intensity ? &e.intensity : parameter == "SPC" ? &e.spc : parameter == "TMP" ? &e.tmp
-                 : parameter == "FLD" ? &e.fld : parameter == "PWR" ? &e.pwr : parameter == "REP" ? &e.rep
-                 : parameter == "OAC" ? &e.oac : nullptr;
+    double* slot = is_intensity         ? &e.intensity
+                   : parameter == "SPC" ? &e.spc
+                   : parameter == "TMP" ? &e.tmp
+                   : parameter == "FLD" ? &e.fld
+                   : parameter == "PWR" ? &e.pwr
+                   : parameter == "REP" ? &e.rep
+                   : parameter == "OAC" ? &e.oac
+                                        : nullptr;
     const std::string text(xml::trim(xml::text_content(child)));
     const auto value = xml::decimal(text);
     const double low = is_intensity ? 0 : -1;
     if (slot == nullptr) {  // OPN, TEN and the like: Greta's gesture and posture qualities
       if (value && *value != 0) {
-        Diagnostic w = doc.warning(child, "<" + std::string(xml::local_name(child)) +
-                                              "> is not drawn: fapc's faces and heads have no counterpart (docs/bml.md, "
-                                              "\"Greta references\")");
+        Diagnostic w =
+            doc.warning(child, "<" + std::string(xml::local_name(child)) +
+                                   "> is not drawn: fapc's faces and heads have no counterpart (docs/bml.md, "
+                                   "\"Greta references\")");
         w.code = "bml.expressivity_not_drawn";
         once.report("expressivity " + std::string(parameter), std::move(w));
       }
@@ -131,10 +138,12 @@ Result<bool> read_greta_reference(const xml::XmlDocument& doc, const xmlNode* no
   // Said, not drawn: fluidity and Greta's overall activation have no counterpart in one display
   // of fixed shape; power shapes head and gaze movements only.
   const bool face = b.element.starts_with("face");
-  for (const auto& [parameter, value] : {std::pair{"FLD", e.fld}, std::pair{"OAC", e.oac}, std::pair{"PWR", face ? e.pwr : 0.0}})
+  for (const auto& [parameter, value] :
+       {std::pair{"FLD", e.fld}, std::pair{"OAC", e.oac}, std::pair{"PWR", face ? e.pwr : 0.0}})
     if (value != 0) {
-      Diagnostic w = doc.warning(description, std::string(parameter) + " is read and not drawn on a " + (face ? "face" : "head or gaze") +
-                                                  " (docs/bml.md, \"Greta references\")");
+      Diagnostic w =
+          doc.warning(description, std::string(parameter) + " is read and not drawn on a " +
+                                       (face ? "face" : "head or gaze") + " (docs/bml.md, \"Greta references\")");
       w.code = "bml.expressivity_not_drawn";
       once.report("expressivity " + std::string(parameter), std::move(w));
     }
@@ -142,10 +151,11 @@ Result<bool> read_greta_reference(const xml::XmlDocument& doc, const xmlNode* no
   Rows found = rows_for(b.element, name);
   if (found.rows.empty()) {
     b.kind = BehaviourKind::not_drawn;
-    Diagnostic w = doc.warning(reference, "'" + name + "' is not a Greta reference fapc knows (greta_references.tsv, intentions.tsv" +
-                                              (found.missing.empty() || found.missing == name ? std::string()
-                                                                                               : "; '" + found.missing + "' has no row") +
-                                              "): its timing is kept, nothing is drawn");
+    Diagnostic w = doc.warning(
+        reference,
+        "'" + name + "' is not a Greta reference fapc knows (greta_references.tsv, intentions.tsv" +
+            (found.missing.empty() || found.missing == name ? std::string() : "; '" + found.missing + "' has no row") +
+            "): its timing is kept, nothing is drawn");
     w.code = "bml.unknown_reference";
     once.report("reference " + name, std::move(w));
     return true;

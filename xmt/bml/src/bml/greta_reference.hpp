@@ -14,6 +14,7 @@ namespace fapc::bml {
 // draws nothing (warning bml.unknown_reference, at the reference, once per name). False when there
 // is no reference (the element is read as BML). Errors: an intensity or parameter that is not a
 // number in its range, at its element.
-Result<bool> read_greta_reference(const xml::XmlDocument& doc, const xmlNode* node, Behaviour& b, xmt::OncePerName& once);
+Result<bool> read_greta_reference(const xml::XmlDocument& doc, const xmlNode* node, Behaviour& b,
+                                  xmt::OncePerName& once);
 
 }  // namespace fapc::bml

@@ -13,8 +13,8 @@ Result<FmlTiming> read_fml_timing(const xml::XmlDocument& doc, const xmlNode* el
     if (!text) return ok_status();
     out = parse_clock_value(*text);
     if (!out) {
-      return doc.error(element, name, std::string(name) + " '" + *text +
-                                          "' is not a time (seconds: 3, 3s, 250ms, 1.5min, 00:01.5)");
+      return doc.error(element, name,
+                       std::string(name) + " '" + *text + "' is not a time (seconds: 3, 3s, 250ms, 1.5min, 00:01.5)");
     }
     return ok_status();
   };

@@ -19,7 +19,8 @@ Result<const xmlNode*> DocumentReader::root_named(std::string_view name) const {
   const xmlNode* root = doc_.root();
   if (root == nullptr) return make_error(Location{doc_.file(), 1, 1}, "an empty document");
   if (xml::local_name(root) != name)
-    return doc_.error(root, "the root element is <" + std::string(xml::local_name(root)) + ">, not <" + std::string(name) + ">");
+    return doc_.error(
+        root, "the root element is <" + std::string(xml::local_name(root)) + ">, not <" + std::string(name) + ">");
   return root;
 }
 
@@ -31,7 +32,8 @@ Status DocumentReader::count(const xmlNode* node, const char* what) {
   return d;
 }
 
-Result<IntentDocument> DocumentReader::draw_and_finish(std::vector<Intention> intentions, double end, Location end_where) {
+Result<IntentDocument> DocumentReader::draw_and_finish(std::vector<Intention> intentions, double end,
+                                                       Location end_where) {
   for (Intention& i : intentions) {
     realize(i, lexicon_, options_.bml.coarticulation, out_.timeline, once_, out_.warnings);
     if (i.end > end) {

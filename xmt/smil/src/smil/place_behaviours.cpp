@@ -100,7 +100,7 @@ Result<PlacedScript> place_behaviours(const std::vector<SmilLeaf>& leaves, const
     if (!leaf.speech) continue;
     const bml::SpokenText& spoken = *leaves[*leaf.speech].spoken;
     const double from = (leaf.begin_mark ? spoken.mark_times[*leaf.begin_mark] : 0.0) + leaf.offset;
-    const double to = leaf.end_mark ? spoken.mark_times[*leaf.end_mark]
+    const double to = leaf.end_mark   ? spoken.mark_times[*leaf.end_mark]
                       : leaf.duration ? from + *leaf.duration
                                       : spoken.duration;
     if (to <= from) {

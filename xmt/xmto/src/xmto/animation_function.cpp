@@ -110,8 +110,8 @@ void check_key_times(Reader& reader, const AnimationFunction& f) {
 
 }  // namespace
 
-Result<AnimationFunction> read_animate(const xml::XmlDocument& doc, const xmlNode* element,
-                                       std::optional<double> dur, Diagnostics& warnings) {
+Result<AnimationFunction> read_animate(const xml::XmlDocument& doc, const xmlNode* element, std::optional<double> dur,
+                                       Diagnostics& warnings) {
   Reader reader(doc, element);
   AnimationFunction f;
   f.simple_duration = dur;
@@ -169,8 +169,7 @@ Result<AnimationFunction> read_animate(const xml::XmlDocument& doc, const xmlNod
   return f;
 }
 
-Result<AnimationFunction> read_set(const xml::XmlDocument& doc, const xmlNode* element,
-                                   std::optional<double> dur) {
+Result<AnimationFunction> read_set(const xml::XmlDocument& doc, const xmlNode* element, std::optional<double> dur) {
   Reader reader(doc, element);
   const auto to = reader.value("to");
   if (reader.error) return *reader.error;
@@ -182,8 +181,8 @@ Result<AnimationFunction> read_set(const xml::XmlDocument& doc, const xmlNode* e
   return f;
 }
 
-Curve animation_curve(const AnimationShape& shape, std::span<const double> values,
-                      std::span<const double> key_times, double underlying, int iteration) {
+Curve animation_curve(const AnimationShape& shape, std::span<const double> values, std::span<const double> key_times,
+                      double underlying, int iteration) {
   std::vector<double> v(values.begin(), values.end());
   if (shape.to_animation) v.front() = underlying;
   const double shift = shape.accumulate ? iteration * v.back() : 0;

@@ -25,8 +25,8 @@ std::string chain_text(const std::vector<std::string>& chain, const std::string&
 
 }  // namespace
 
-Result<Included> load_included(const xml::XmlDocument& doc, const xmlNode* element,
-                               const XmtoOptions& options, Diagnostics& warnings) {
+Result<Included> load_included(const xml::XmlDocument& doc, const xmlNode* element, const XmtoOptions& options,
+                               Diagnostics& warnings) {
   const auto src = xml::attribute(element, "src");
   const auto ref = xml::attribute(element, "ref");
   const char* used = src ? "src" : "ref";
@@ -36,8 +36,8 @@ Result<Included> load_included(const xml::XmlDocument& doc, const xmlNode* eleme
   if (name.starts_with("file:")) name.remove_prefix(5);
   if (name.empty()) return doc.error(element, used, std::string(used) + " is empty");
   if (name.find("://") != std::string_view::npos) {
-    return doc.error(element, used, std::string(used) + " '" + std::string(name) +
-                                        "': only local files can be placed, not URLs");
+    return doc.error(element, used,
+                     std::string(used) + " '" + std::string(name) + "': only local files can be placed, not URLs");
   }
   Result<std::string> path = resolve_include(name, doc.file(), options.includes, doc.where(element, used));
   if (!path) {
@@ -52,13 +52,14 @@ Result<Included> load_included(const xml::XmlDocument& doc, const xmlNode* eleme
   chain.push_back(doc.file());
   for (const std::string& open : chain) {
     if (same_file(open, included.path)) {
-      return doc.error(element, used, "animation includes a document that is being read: " +
-                                          chain_text(chain, included.path));
+      return doc.error(element, used,
+                       "animation includes a document that is being read: " + chain_text(chain, included.path));
     }
   }
   if (chain.size() > kMaxIncludeDepth) {
-    Diagnostic deep = doc.error(element, used, "animations nested more than " + std::to_string(kMaxIncludeDepth) +
-                                                   " documents deep: " + chain_text(chain, included.path));
+    Diagnostic deep = doc.error(element, used,
+                                "animations nested more than " + std::to_string(kMaxIncludeDepth) +
+                                    " documents deep: " + chain_text(chain, included.path));
     deep.kind = ErrorKind::limit_exceeded;
     return deep;
   }

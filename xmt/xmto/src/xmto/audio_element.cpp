@@ -34,9 +34,8 @@ Result<std::string> read_bounded(const xml::XmlDocument& doc, const xmlNode* ele
   if (!error && static_cast<std::int64_t>(size) > options.max_audio_bytes) {
     Limits limits;
     limits.max_decompressed_bytes = options.max_audio_bytes;
-    Diagnostic d = limit_error(doc.where(element, "src"),
-                               "audio '" + name + "' is " + std::to_string(size) + " bytes", Limit::decompressed_bytes,
-                               limits);
+    Diagnostic d = limit_error(doc.where(element, "src"), "audio '" + name + "' is " + std::to_string(size) + " bytes",
+                               Limit::decompressed_bytes, limits);
     d.source_line = doc.line_text(d.where.line);
     return d;
   }
@@ -57,8 +56,8 @@ Result<std::string> allowed(const xml::XmlDocument& doc, const xmlNode* element,
 
 }  // namespace
 
-Result<Recording> load_recording(const xml::XmlDocument& doc, const xmlNode* element,
-                                 const XmtoOptions& options, Diagnostics& warnings) {
+Result<Recording> load_recording(const xml::XmlDocument& doc, const xmlNode* element, const XmtoOptions& options,
+                                 Diagnostics& warnings) {
   const auto src = xml::attribute(element, "src");
   if (!src) return doc.error(element, "audio needs src naming a WAV file");
   std::string_view trimmed = xml::trim(*src);

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <string>
 
-#include "fapc/xmto/xmto.hpp"
 #include "fapc/xml/text.hpp"
+#include "fapc/xmto/xmto.hpp"
 
 namespace fapc::xmt {
 namespace {
@@ -81,8 +81,7 @@ class Reader {
     }
     double count = 0;
     const auto [end, failure] = std::from_chars(s.data(), s.data() + s.size(), count);
-    if (s.empty() || failure != std::errc() || end != s.data() + s.size() || !std::isfinite(count) ||
-        count <= 0) {
+    if (s.empty() || failure != std::errc() || end != s.data() + s.size() || !std::isfinite(count) || count <= 0) {
       fail("repeatCount", "repeatCount '" + *text + "': expected a number greater than 0 or indefinite");
       return;
     }

@@ -59,13 +59,13 @@ struct ScheduledMark {
 
 struct BmlDocument {
   Timeline timeline;
-  std::string dialect;                      // "BML 1.0", ...
-  std::vector<std::string> blocks;          // block ids in order
-  std::vector<std::string> characters;      // characterId of each block ("" when none)
+  std::string dialect;                  // "BML 1.0", ...
+  std::vector<std::string> blocks;      // block ids in order
+  std::vector<std::string> characters;  // characterId of each block ("" when none)
   std::vector<ScheduledBehaviour> behaviours;
   std::vector<ScheduledMark> marks;
-  std::vector<std::string> languages;       // the languages speech was spoken in
-  std::vector<std::string> recordings;      // the audio files of recorded speech that were read
+  std::vector<std::string> languages;   // the languages speech was spoken in
+  std::vector<std::string> recordings;  // the audio files of recorded speech that were read
   Diagnostics warnings;
   // Per block, with `blocks`: its composition (MERGE, APPEND, REPLACE) and where it was placed
   // (seconds from the start; 0 for a document read alone, docs/bml.md "Several blocks").
@@ -87,7 +87,8 @@ Result<BmlDocument> load_bml(const std::string& path, const BmlOptions& options 
 // when it arrives, cutting what earlier blocks still run there. A block arrives with the one
 // before it (the first at 0) unless its line says when. Errors are placed in the list (a path or
 // time that cannot be read) or in the document.
-Result<BmlDocument> read_bml_sequence(std::string_view list, const std::string& list_name, const BmlOptions& options = {});
+Result<BmlDocument> read_bml_sequence(std::string_view list, const std::string& list_name,
+                                      const BmlOptions& options = {});
 Result<BmlDocument> load_bml_sequence(const std::string& path, const BmlOptions& options = {});
 
 }  // namespace fapc::bml
