@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "fapc/bml/bml.hpp"
+#include "fapc/speech/engine.hpp"
 #include "support/test_support.hpp"
 
 namespace fapc::bml {
@@ -103,6 +104,24 @@ TEST(BmlSequence, ReplaceCutsWhatRunsAndDropsWhatHadNotStarted) {
   ASSERT_FALSE(d.warnings.empty());
   EXPECT_EQ(d.warnings.back().code, "bml.replaced");
   EXPECT_EQ(d.warnings.back().where.line, 1);
+}
+
+TEST(BmlSequence, ReplaceStopsTheVoice) {
+  if (!speech::available()) GTEST_SKIP() << "built without the speech engine";
+  write(
+      "talk.bml",
+      block("talk", "", R"(<speech id="s"><text>This sentence takes well over half a second to say.</text></speech>)"));
+  write("stop.bml", block("stop", "REPLACE", R"(<head id="nod" lexeme="NOD"/>)"));
+  const std::string path = (fs::path(folder()) / "voice.bmlseq").string();
+  std::ofstream(path, std::ios::binary) << "talk.bml\nat 0.5 stop.bml\n";
+  BmlOptions options;
+  options.synthesize = speech::engine();
+  Result<BmlDocument> d = load_bml_sequence(path, options);
+  ASSERT_TRUE(d) << format_diagnostic(d.error());
+  ASSERT_EQ(d->timeline.audio.size(), 1U);
+  const AudioClip& voice = d->timeline.audio.front();
+  EXPECT_EQ(voice.samples.size(), static_cast<std::size_t>(0.5 * voice.sample_rate));
+  EXPECT_DOUBLE_EQ(behaviour(*d, "talk", "s").end, 0.5);
 }
 
 TEST(BmlSequence, ReplaceKeepsAFinishedShiftsHeldState) {

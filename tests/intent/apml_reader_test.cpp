@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "fapc/intent/intent.hpp"
+#include "fapc/speech/engine.hpp"
 
 namespace fapc::intent {
 namespace {
@@ -103,6 +104,47 @@ TEST(ApmlReader, BadNumbersAreRefusedAtTheirAttribute) {
   EXPECT_EQ(intensity.error().where.column, 21);
   const auto root = read_apml("<fml-apml/>", "t.xml");
   ASSERT_FALSE(root);
+}
+
+}  // namespace
+}  // namespace fapc::intent
+
+namespace fapc::intent {
+namespace {
+
+// xml:lang on the root chooses the language the text is spoken in (docs/intentions.md, "APML").
+TEST(ApmlLanguage, TheRootsLangIsTheSpeechLanguage) {
+  Result<IntentDocument> german = read_apml("<apml xml:lang=\"de\">\n<rheme>Guten Morgen</rheme>\n</apml>\n", "t.xml");
+  ASSERT_TRUE(german) << german.error().message;
+  EXPECT_EQ(german->languages, std::vector<std::string>{"de"});
+  Result<IntentDocument> us = read_apml("<apml xml:lang=\"en-US\">\n<rheme>Good morning</rheme>\n</apml>\n", "t.xml");
+  ASSERT_TRUE(us) << us.error().message;
+  EXPECT_EQ(us->languages, std::vector<std::string>{"en-us"});
+  Result<IntentDocument> plain = read_apml("<apml>\n<rheme>Good morning</rheme>\n</apml>\n", "t.xml");
+  ASSERT_TRUE(plain) << plain.error().message;
+  EXPECT_EQ(plain->languages, std::vector<std::string>{"en"});  // the command line's (--voice)
+}
+
+TEST(ApmlLanguage, TheEngineIsAskedForIt) {
+  if (!speech::available()) GTEST_SKIP() << "built without the speech engine";
+  IntentOptions options;
+  options.bml.synthesize = speech::engine();
+  // The same letters in two languages: eSpeak NG's German and English rules say them differently.
+  auto samples = [&](const std::string& lang) {
+    Result<IntentDocument> d = read_apml(
+        "<apml xml:lang=\"" + lang + "\">\n<rheme>Wie geht es dir heute</rheme>\n</apml>\n", "t.xml", options);
+    EXPECT_TRUE(d) << (d ? "" : d.error().message);
+    return d && !d->timeline.audio.empty() ? d->timeline.audio.front().samples.size() : std::size_t{0};
+  };
+  const std::size_t de = samples("de");
+  const std::size_t en = samples("en");
+  EXPECT_GT(de, 0U);
+  EXPECT_NE(de, en);
+  // A language the engine does not have is its error, placed in the document.
+  Result<IntentDocument> unknown =
+      read_apml("<apml xml:lang=\"qq\">\n<rheme>Hello</rheme>\n</apml>\n", "t.xml", options);
+  ASSERT_FALSE(unknown);
+  EXPECT_EQ(unknown.error().where.file.str(), "t.xml");
 }
 
 }  // namespace

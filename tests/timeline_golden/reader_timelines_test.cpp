@@ -77,6 +77,12 @@ TEST(ReaderTimelines, SmilAgent) {
     expect_program_dump("smil", input);
 }
 
+// Greta references (docs/bml.md, "Greta references"): SEMAINE's faces named affect=... with
+// their expressivity, through greta_references.tsv and intentions.tsv.
+TEST(ReaderTimelines, BmlGreta) {
+  expect_program_dump("bml", "corpus/bml/SEMAINE__SEMAINE-3.1/fluent_expressions.xml");
+}
+
 // BML blocks given in order (docs/bml.md, "Several blocks"): MERGE, APPEND and REPLACE placed.
 TEST(ReaderTimelines, BmlSequence) {
   for (const char* input : {"corpus/bml/sequence/session.bmlseq", "corpus/bml/sequence/greet.bml"})

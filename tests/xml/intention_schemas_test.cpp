@@ -8,22 +8,15 @@
 #include <filesystem>
 
 #include "fapc/xml/xml_validation.hpp"
+#include "schema_verdict.hpp"
 #include "support/test_support.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xml {
 namespace {
 
 namespace fs = std::filesystem;
 
-// "valid", or the first problem as "LINE:COLUMN".
-std::string verdict(const std::string& text, const std::string& schema) {
-  const auto report = validate_xml(text, "i.xml");
-  if (!report.ok()) return "not validated: " + format_diagnostic(report.error());
-  EXPECT_EQ(report->schema, schema);
-  if (report->problems.empty()) return "valid";
-  const Diagnostic& d = report->problems.front();
-  return std::to_string(d.where.line) + ":" + std::to_string(d.where.column);
-}
+using test_schema::verdict;
 
 TEST(IntentionSchemas, RepositoryDocumentsAreValid) {
   std::size_t checked = 0;
@@ -90,4 +83,4 @@ TEST(IntentionSchemas, SmilAgent) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::xml

@@ -100,8 +100,9 @@ std::pair<std::size_t, std::string> cut_at(BmlDocument& doc, double cut) {
   audio.erase(std::remove_if(audio.begin(), audio.end(), [&](const AudioClip& a) { return a.begin >= cut; }),
               audio.end());
   for (AudioClip& a : audio) {
-    const auto keep = static_cast<std::size_t>(std::floor((cut - a.begin) * a.sample_rate));
-    if (a.samples.size() > keep) a.samples.resize(keep);
+    // Compared as doubles first: a cut far beyond the sound would not fit a size_t.
+    const double keep = std::floor((cut - a.begin) * a.sample_rate);
+    if (keep < static_cast<double>(a.samples.size())) a.samples.resize(static_cast<std::size_t>(keep));
   }
   std::pair<std::size_t, std::string> removed{0, ""};
   std::vector<ScheduledBehaviour>& behaviours = doc.behaviours;

@@ -4,7 +4,10 @@
 // emphasis by its pitch accent, boundary as a point) and those its attributes name (affect,
 // belief-relation, deictic, certainty, adjectival), drawn through the behaviour lexicon.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+
+#include <libxml/tree.h>
 
 #include "bml/bml_model.hpp"
 #include "bml/speak_text.hpp"
@@ -134,8 +137,23 @@ class ApmlReader : public DocumentReader {
     return ok_status();
   }
 
+  // The language the text is spoken in: the root's xml:lang (in lower case, "en-US" as the
+  // engine's "en-us"), as an FML talk's lang wins over --voice; else the command line's.
+  ReaderOptions speech_options(const xmlNode* root) const {
+    ReaderOptions speech = options_;
+    if (xmlChar* lang = xmlNodeGetLang(root)) {
+      std::string language(xml::trim(reinterpret_cast<const char*>(lang)));
+      xmlFree(lang);
+      std::transform(language.begin(), language.end(), language.begin(),
+                     [](unsigned char c) { return std::tolower(c); });
+      if (!language.empty()) speech.speech.language = language;
+    }
+    return speech;
+  }
+
   Result<IntentDocument> finish(const xmlNode* root) {
     const Location where = doc_.where(root);
+    const ReaderOptions speech_options = this->speech_options(root);
     bool warned = false;
     std::vector<double> begins;
     std::vector<bml::SpokenText> spoken;
@@ -149,10 +167,11 @@ class ApmlReader : public DocumentReader {
         spoken.push_back(std::move(silent));
         continue;
       }
-      Result<bml::SpokenText> said = bml::speak(s.text, options_, where, out_.warnings, warned);
+      Result<bml::SpokenText> said = bml::speak(s.text, speech_options, where, out_.warnings, warned);
       if (!said) return said.error();
-      if (std::find(out_.languages.begin(), out_.languages.end(), options_.speech.language) == out_.languages.end())
-        out_.languages.push_back(options_.speech.language);
+      const std::string& language = speech_options.speech.language;
+      if (std::find(out_.languages.begin(), out_.languages.end(), language) == out_.languages.end())
+        out_.languages.push_back(language);
       // The speech is lowered as the BML reader lowers a speech behaviour.
       bml::Behaviour speech;
       speech.kind = bml::BehaviourKind::speech;

@@ -6,9 +6,10 @@
 #include <gtest/gtest.h>
 
 #include "fapc/xml/xml_validation.hpp"
+#include "schema_verdict.hpp"
 #include "support/test_support.hpp"
 
-namespace fapc::xmt {
+namespace fapc::xml {
 namespace {
 
 constexpr const char* kBml10 = "http://www.bml-initiative.org/bml/bml-1.0";
@@ -18,15 +19,7 @@ std::string block(const std::string& ns, const std::string& body, const std::str
          "\n</bml>\n";
 }
 
-// The first problem as "LINE:COLUMN", "valid" when there is none.
-std::string verdict(const std::string& text, const std::string& schema) {
-  const auto report = validate_xml(text, "b.xml");
-  if (!report.ok()) return "not validated: " + format_diagnostic(report.error());
-  EXPECT_EQ(report->schema, schema);
-  if (report->problems.empty()) return "valid";
-  const Diagnostic& d = report->problems.front();
-  return std::to_string(d.where.line) + ":" + std::to_string(d.where.column);
-}
+using test_schema::verdict;
 
 TEST(BmlSchema, RepositoryDocumentsAreValid) {
   std::vector<std::string> paths = test::files_under(test::corpus_dir() + "/bml", ".bml");
@@ -98,4 +91,4 @@ TEST(BmlSchema, WhatTheReaderRefusesIsInvalidWhereItStands) {
 }
 
 }  // namespace
-}  // namespace fapc::xmt
+}  // namespace fapc::xml
