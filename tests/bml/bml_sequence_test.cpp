@@ -114,8 +114,8 @@ TEST(BmlSequence, ReplaceStopsTheVoice) {
   write("stop.bml", block("stop", "REPLACE", R"(<head id="nod" lexeme="NOD"/>)"));
   const std::string path = (fs::path(folder()) / "voice.bmlseq").string();
   std::ofstream(path, std::ios::binary) << "talk.bml\nat 0.5 stop.bml\n";
-  BmlOptions options;
-  options.synthesize = speech::engine();
+  ReaderOptions options;
+  options.speech.synthesize = speech::engine();
   Result<BmlDocument> d = load_bml_sequence(path, options);
   ASSERT_TRUE(d) << format_diagnostic(d.error());
   ASSERT_EQ(d->timeline.audio.size(), 1U);

@@ -128,7 +128,7 @@ TEST(ApmlLanguage, TheRootsLangIsTheSpeechLanguage) {
 TEST(ApmlLanguage, TheEngineIsAskedForIt) {
   if (!speech::available()) GTEST_SKIP() << "built without the speech engine";
   IntentOptions options;
-  options.bml.synthesize = speech::engine();
+  options.speech.synthesize = speech::engine();
   // The same letters in two languages: eSpeak NG's German and English rules say them differently.
   auto samples = [&](const std::string& lang) {
     Result<IntentDocument> d = read_apml(
