@@ -41,15 +41,10 @@ struct Projected {
   double shade = 0;
 };
 
-class Rasteriser {
+// The camera as three.js's PerspectiveCamera places a point on a picture of width x height.
+class Projection {
  public:
-  Rasteriser(const Camera& c, int w, int h)
-      : image_{w,
-               h,
-               std::vector<int>(static_cast<std::size_t>(w) * h, -1),
-               std::vector<double>(static_cast<std::size_t>(w) * h, 0.0),
-               std::vector<double>(static_cast<std::size_t>(w) * h, 0.0),
-               std::vector<double>(static_cast<std::size_t>(w) * h, 0.0)} {
+  Projection(const Camera& c, int w, int h) : width_(w), height_(h) {
     eye_ = c.position;
     back_ = unit(sub(c.position, c.target));  // three.js's camera looks down its -z
     right_ = unit(cross({0, 1, 0}, back_));
@@ -58,18 +53,34 @@ class Rasteriser {
     aspect_ = c.aspect;
   }
 
-  Projected project(V p) const {
+  Projected operator()(V p) const {
     const V d = sub(p, eye_);
     const double z = -dot(d, back_);  // distance in front of the camera
     Projected out;
     if (z <= 0.01) return out;  // the camera's near plane
     const double ndc_x = focal_ / aspect_ * dot(d, right_) / z, ndc_y = focal_ * dot(d, up_) / z;
-    out.x = (ndc_x + 1) / 2 * image_.width;
-    out.y = (1 - ndc_y) / 2 * image_.height;
+    out.x = (ndc_x + 1) / 2 * width_;
+    out.y = (1 - ndc_y) / 2 * height_;
     out.inverse_depth = 1 / z;
     out.in_front = true;
     return out;
   }
+
+ private:
+  int width_, height_;
+  V eye_{}, back_{}, right_{}, up_{};
+  double focal_ = 1, aspect_ = 1;
+};
+
+class Rasteriser {
+ public:
+  Rasteriser(int w, int h)
+      : image_{w,
+               h,
+               std::vector<int>(static_cast<std::size_t>(w) * h, -1),
+               std::vector<double>(static_cast<std::size_t>(w) * h, 0.0),
+               std::vector<double>(static_cast<std::size_t>(w) * h, 0.0),
+               std::vector<double>(static_cast<std::size_t>(w) * h, 0.0)} {}
 
   void triangle(const Projected& a, const Projected& b, const Projected& c, int material) {
     if (!a.in_front || !b.in_front || !c.in_front) return;
@@ -101,8 +112,6 @@ class Rasteriser {
 
  private:
   MaterialImage image_;
-  V eye_{}, back_{}, right_{}, up_{};
-  double focal_ = 1, aspect_ = 1;
 };
 
 void draw_parts(Rasteriser& r, const std::vector<Part>& parts, const std::vector<Projected>& points) {
@@ -144,13 +153,14 @@ std::vector<double> scene_shades(const HeadFrame& frame) {
 
 MaterialImage rasterise_frame(const HeadFrame& frame, const Camera& camera, int width, int height,
                               const HeadFrame* other) {
-  Rasteriser r(camera, width, height);
+  const Projection project(camera, width, height);
+  Rasteriser r(width, height);
   const std::vector<V> here = scene_vertices(frame);
   const std::vector<V> there = other ? scene_vertices(*other) : here;
   const std::vector<double> shades = scene_shades(frame);
   std::vector<Projected> points;
   for (std::size_t i = 0; i < here.size(); ++i) {
-    points.push_back(r.project(here[i]));
+    points.push_back(project(here[i]));
     const V d = sub(here[i], there[i]);
     points.back().motion = std::sqrt(dot(d, d)) * 1e3;
     points.back().shade = shades[i];
@@ -166,7 +176,7 @@ MaterialImage rasterise_frame(const HeadFrame& frame, const Camera& camera, int 
 }
 
 std::array<double, 3> project_point(const Camera& camera, int width, int height, const std::array<double, 3>& point) {
-  const Projected p = Rasteriser(camera, width, height).project(point);
+  const Projected p = Projection(camera, width, height)(point);
   return {p.x, p.y, p.inverse_depth};
 }
 
