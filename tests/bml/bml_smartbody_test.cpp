@@ -14,6 +14,7 @@
 #include "fapc/bml/bml.hpp"
 #include "fapc/pipeline/convert.hpp"
 #include "fapc/pipeline/registry.hpp"
+#include "fapc/speech/codes.hpp"
 #include "fapc/transcoder/wav.hpp"
 #include "fapc/vocabulary/mapping_table.hpp"
 #include "bml/smartbody_visemes.hpp"
@@ -88,7 +89,7 @@ BmlOptions no_synthesis(int& calls) {
   BmlOptions options;
   options.synthesize = [&calls](const SpeechRequest&) -> Result<Utterance> {
     ++calls;
-    return make_error(Location{}, "recorded speech must not be synthesised");
+    return make_error(codes::speech::engine_failed, Location{}, "recorded speech must not be synthesised");
   };
   return options;
 }

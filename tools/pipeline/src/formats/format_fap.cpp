@@ -3,6 +3,7 @@
 
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/codec/file_io.hpp"
+#include "fapc/pipeline/codes.hpp"
 #include "fapc/pipeline/fba_io.hpp"
 #include "../frame_source.hpp"
 #include "fap_text_outputs.hpp"
@@ -115,7 +116,7 @@ class FapSource : public FrameSource {
     return [this](std::size_t offset) { file_.release(offset); };
   }
   Diagnostic changed() const {
-    return make_error(ErrorKind::io, Location{path_, 0, 0, -1}, "the file changed while it was read");
+    return make_error(codes::input::changed_while_read, Location::whole_file(path_), "the file changed while it was read");
   }
   MappedFile file_;
   std::string path_;

@@ -2,6 +2,7 @@
 // .fba is decoded from its mapping frame by frame, and written by the encoder fed so.
 #include <filesystem>
 
+#include "fapc/pipeline/codes.hpp"
 #include "fapc/pipeline/fba_io.hpp"
 #include "../fba_frame_writer.hpp"
 #include "../verify_streams.hpp"
@@ -96,7 +97,7 @@ class FbaSource : public FrameSource {
       return code(frame);
     });
     if (!again || k != frames_)
-      return make_error(ErrorKind::io, Location{options_.file, 0, 0, -1}, "the file changed while it was read");
+      return make_error(codes::input::changed_while_read, Location::whole_file(options_.file), "the file changed while it was read");
     return ok_status();
   }
   std::size_t frames_read() const override { return frames_; }
