@@ -10,7 +10,7 @@
 namespace fapc::pipeline {
 
 struct CodeTable {
-  const char* library;  // "codec", "mpeg4", ...
+  const char* library;  // its target: "fapc::codec", "fapc::mpeg4", ...
   std::span<const CodeRow> rows;
 };
 
