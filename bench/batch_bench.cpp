@@ -46,7 +46,8 @@ bool is_input(const fs::path& p) {
 
 std::size_t inputs_under(const fs::path& folder) {
   std::size_t count = 0;
-  for (const auto& entry : fs::recursive_directory_iterator(folder)) count += entry.is_regular_file() && is_input(entry.path());
+  for (const auto& entry : fs::recursive_directory_iterator(folder))
+    count += entry.is_regular_file() && is_input(entry.path());
   return count;
 }
 
@@ -62,8 +63,10 @@ std::size_t make_inputs(const fs::path& examples, const fs::path& into, std::siz
   fs::create_directories(into / "rest");
   for (const char* folder : {"fap", "fml", "mimic"})
     for (const auto& entry : fs::directory_iterator(examples / folder)) {
-      if (is_input(entry.path())) standalone.push_back(entry.path());
-      else if (entry.is_regular_file()) fs::copy_file(entry.path(), into / "rest" / entry.path().filename());
+      if (is_input(entry.path()))
+        standalone.push_back(entry.path());
+      else if (entry.is_regular_file())
+        fs::copy_file(entry.path(), into / "rest" / entry.path().filename());
     }
   std::sort(standalone.begin(), standalone.end());
   for (std::size_t k = 0; made < wanted && k < standalone.size(); ++k, ++made)
@@ -98,8 +101,8 @@ Timing timed(const std::string& command, const fs::path& log) {
 
 std::string batch_command(const std::string& fapc, const fs::path& in, const fs::path& out, const std::string& kinds,
                           const std::string& options, const std::string& log) {
-  return "'" + fapc + "' batch '" + in.string() + "' -o '" + out.string() + "' --to " + kinds + " " + options +
-         " > '" + log + "' 2>&1";
+  return "'" + fapc + "' batch '" + in.string() + "' -o '" + out.string() + "' --to " + kinds + " " + options + " > '" +
+         log + "' 2>&1";
 }
 
 Timing run(const std::string& fapc, const fs::path& in, const fs::path& out, int jobs) {
@@ -109,18 +112,20 @@ Timing run(const std::string& fapc, const fs::path& in, const fs::path& out, int
 
 // A node running the batch as `tasks` array tasks at once, each its shard with cores/tasks jobs
 // (at least one), into one output folder, as Slurm would place them.
-Timing run_tasks(const std::string& fapc, const fs::path& in, const fs::path& out, const std::string& kinds,
-                 int tasks, int cores) {
+Timing run_tasks(const std::string& fapc, const fs::path& in, const fs::path& out, const std::string& kinds, int tasks,
+                 int cores) {
   const int jobs = std::max(1, cores / tasks);
   std::string line = "(";
   for (int t = 0; t < tasks; ++t)
-    line += batch_command(fapc, in, out, kinds,
-                          "--jobs " + std::to_string(jobs) + " --shard " + std::to_string(t) + "/" + std::to_string(tasks) +
-                              " --report-json '" + out.string() + "-" + std::to_string(t) + ".json'",
-                          out.string() + "-" + std::to_string(t) + ".log") +
-            " & ";
+    line +=
+        batch_command(fapc, in, out, kinds,
+                      "--jobs " + std::to_string(jobs) + " --shard " + std::to_string(t) + "/" + std::to_string(tasks) +
+                          " --report-json '" + out.string() + "-" + std::to_string(t) + ".json'",
+                      out.string() + "-" + std::to_string(t) + ".log") +
+        " & ";
   // Every task must succeed: the merge of their reports says so (status 0 only when complete).
-  line += "wait) && '" + fapc + "' batch-report merge '" + out.string() + "'-*.json > '" + out.string() + ".merge' 2>&1";
+  line +=
+      "wait) && '" + fapc + "' batch-report merge '" + out.string() + "'-*.json > '" + out.string() + ".merge' 2>&1";
   return timed(line, out.string() + ".merge");
 }
 
@@ -144,7 +149,8 @@ std::string difference(const fs::path& a, const fs::path& b) {
     if (bytes_of(entry.path()) != bytes_of(other)) return entry.path().string() + " differs from " + other.string();
   }
   std::size_t other_files = 0;
-  for (const auto& entry : fs::recursive_directory_iterator(b)) other_files += entry.is_regular_file() && !record(entry.path());
+  for (const auto& entry : fs::recursive_directory_iterator(b))
+    other_files += entry.is_regular_file() && !record(entry.path());
   if (files != other_files) return std::to_string(other_files) + " files against " + std::to_string(files);
   return {};
 }
@@ -187,7 +193,8 @@ int per_node(const std::string& fapc, const fs::path& work, std::size_t files, s
   figures("  1 array task:", speech_files, talk1);
   figures("  4 array tasks:", speech_files, talk4);
   const std::string speech_differs = difference(work / "speech1", work / "speech4");
-  std::cout << (speech_differs.empty() ? "  outputs of 1 and 4 tasks: identical\n" : "  outputs differ: " + speech_differs + "\n");
+  std::cout << (speech_differs.empty() ? "  outputs of 1 and 4 tasks: identical\n"
+                                       : "  outputs differ: " + speech_differs + "\n");
 
   // The AAC stage alone, both coders, on the same voice.
   const fs::path wav = work / "talk.wav";

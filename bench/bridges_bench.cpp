@@ -90,19 +90,21 @@ void fap_round_trips() {
       }
     }
   }
-  std::printf("FAP -> ARKit -> FAP and FAP -> AU -> FAP: %d animations of corpus/examples and corpus/fap, "
-              "%ld frames\n\n", files, frames);
-  std::printf("| FAP group | values | ARKit: mean error | ARKit: error / movement | ARKit: worst | "
-              "AU: mean error | AU: error / movement | AU: worst |\n|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "FAP -> ARKit -> FAP and FAP -> AU -> FAP: %d animations of corpus/examples and corpus/fap, "
+      "%ld frames\n\n",
+      files, frames);
+  std::printf(
+      "| FAP group | values | ARKit: mean error | ARKit: error / movement | ARKit: worst | "
+      "AU: mean error | AU: error / movement | AU: worst |\n|---|---|---|---|---|---|---|---|\n");
   for (const fapc::FapGroup& group : fapc::fap_groups()) {
     if (group.number == 1) continue;
     const GroupError& a = errors[0][group.number];
     const GroupError& u = errors[1][group.number];
     if (a.samples == 0) continue;
     std::printf("| %d %s | %.0f | %.1f | %.0f%% | %.0f | %.1f | %.0f%% | %.0f |\n", group.number,
-                std::string(group.name).c_str(), a.samples, a.abs_error / a.samples,
-                100 * a.abs_error / a.abs_movement, a.worst, u.abs_error / u.samples,
-                100 * u.abs_error / u.abs_movement, u.worst);
+                std::string(group.name).c_str(), a.samples, a.abs_error / a.samples, 100 * a.abs_error / a.abs_movement,
+                a.worst, u.abs_error / u.samples, 100 * u.abs_error / u.abs_movement, u.worst);
   }
 }
 

@@ -54,10 +54,11 @@ int main() {
   const double render_seconds = seconds_since(start);
   const double render_cpu = cpu_seconds() - cpu_start;
   const double frames = static_cast<double>(track.frame_count());
-  std::printf("render 640x480: %lld frames in %.2f s CPU (%.2f s wall) = %.0f frames/s per core "
-              "(%.1fx real time at 25 fps) [%08x]\n",
-              static_cast<long long>(track.frame_count()), render_cpu, render_seconds,
-              frames / render_cpu, frames / render_cpu / 25, checksum);
+  std::printf(
+      "render 640x480: %lld frames in %.2f s CPU (%.2f s wall) = %.0f frames/s per core "
+      "(%.1fx real time at 25 fps) [%08x]\n",
+      static_cast<long long>(track.frame_count()), render_cpu, render_seconds, frames / render_cpu,
+      frames / render_cpu / 25, checksum);
   start = std::chrono::steady_clock::now();
   cpu_start = cpu_seconds();
   const auto webm = fapc::face::encode_webm(track, fapc::face::VideoOptions{}, nullptr, "bench.webm");
@@ -67,8 +68,8 @@ int main() {
     std::printf("webm: %s\n", webm.error().message.c_str());
     return 1;
   }
-  std::printf("webm 640x480, 60 s animation: %.2f s CPU (%.2f s wall), %zu bytes\n", webm_cpu,
-              webm_seconds, webm->size());
+  std::printf("webm 640x480, 60 s animation: %.2f s CPU (%.2f s wall), %zu bytes\n", webm_cpu, webm_seconds,
+              webm->size());
   // The 3D head: building the mesh and its targets once (what the first .glb of a run pays), then
   // the 60 s animation as .glb.
   cpu_start = cpu_seconds();
@@ -83,8 +84,10 @@ int main() {
     std::printf("glb: %s\n", glb.error().message.c_str());
     return 1;
   }
-  std::printf("3D head and %zu morph targets built in %.3f s CPU; glb, 60 s animation: %.3f s CPU (%.3f s wall), "
-              "%zu bytes\n", targets, build_cpu, glb_cpu, glb_seconds, glb->size());
+  std::printf(
+      "3D head and %zu morph targets built in %.3f s CPU; glb, 60 s animation: %.3f s CPU (%.3f s wall), "
+      "%zu bytes\n",
+      targets, build_cpu, glb_cpu, glb_seconds, glb->size());
   // The same with --morphs arkit: the 52 shapes' targets, and one bounded least-squares fit a frame.
   cpu_start = cpu_seconds();
   fapc::head3d::GltfOptions arkit;

@@ -12,8 +12,7 @@ namespace {
 
 std::vector<std::string> load_corpus() {
   std::vector<std::string> texts;
-  for (const auto& entry :
-       std::filesystem::recursive_directory_iterator(FAPC_SOURCE_DIR "/corpus/fap")) {
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(FAPC_SOURCE_DIR "/corpus/fap")) {
     if (!entry.is_regular_file()) continue;
     std::ifstream in(entry.path(), std::ios::binary);
     texts.emplace_back(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());

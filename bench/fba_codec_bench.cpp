@@ -93,7 +93,8 @@ SymbolCost symbol_cost(const fapc::DecodedFba& decoded, int quant) {
     }
   }
   close_group();
-  for (std::size_t i = 0; i < fapc::kFapCount; ++i) cost.entropy += entropy_bits(intra_counts[i]) + entropy_bits(pred_counts[i]);
+  for (std::size_t i = 0; i < fapc::kFapCount; ++i)
+    cost.entropy += entropy_bits(intra_counts[i]) + entropy_bits(pred_counts[i]);
   return cost;
 }
 
@@ -204,8 +205,8 @@ Row measure(const std::string& name, double seconds) {
 }
 
 void print(const Row& r) {
-  std::printf("%-10s %6zu %5zu  %7.1f %7.1f %7.1f %7.1f  %5lld %5lld %5lld  %7.1f %8.1f  %9.0f %9.0f\n",
-              r.name.c_str(), r.frames, r.intra, r.bits[0], r.bits[1], r.bits[2], r.kept_bits, static_cast<long long>(r.max_error[0]),
+  std::printf("%-10s %6zu %5zu  %7.1f %7.1f %7.1f %7.1f  %5lld %5lld %5lld  %7.1f %8.1f  %9.0f %9.0f\n", r.name.c_str(),
+              r.frames, r.intra, r.bits[0], r.bits[1], r.bits[2], r.kept_bits, static_cast<long long>(r.max_error[0]),
               static_cast<long long>(r.max_error[1]), static_cast<long long>(r.max_error[2]), r.symbols.entropy,
               r.symbols.adaptive, r.encode_fps, r.decode_fps);
 }
@@ -214,13 +215,14 @@ void print(const Row& r) {
 
 int main(int argc, char** argv) {
   const double seconds = argc > 1 ? std::atof(argv[1]) : 0.1;
-  std::printf("FBA codec on the Xface emotion files, fitted ranges. bits: stream bits per frame (start, stuffing\n"
-              "and end codes included) at fap_quant 1, 2, 4, and at 1 with the input's masks kept (--masks keep);\n"
-              "intra: intra planes at fap_quant 1; err: largest |decoded - input|. At fap_quant 1:\n"
-              "entropy: order-0 entropy of the coded symbols (each FAP's intra and predictive symbols apart), a\n"
-              "lower bound for the arithmetic-coded part; adaptive: what the decoder's adaptive models, starting\n"
-              "flat over the fitted alphabets, cost for the predictive symbols. Speeds: frames per second in memory,\n"
-              "CPU time of one core, each file coded over and over.\n\n");
+  std::printf(
+      "FBA codec on the Xface emotion files, fitted ranges. bits: stream bits per frame (start, stuffing\n"
+      "and end codes included) at fap_quant 1, 2, 4, and at 1 with the input's masks kept (--masks keep);\n"
+      "intra: intra planes at fap_quant 1; err: largest |decoded - input|. At fap_quant 1:\n"
+      "entropy: order-0 entropy of the coded symbols (each FAP's intra and predictive symbols apart), a\n"
+      "lower bound for the arithmetic-coded part; adaptive: what the decoder's adaptive models, starting\n"
+      "flat over the fitted alphabets, cost for the predictive symbols. Speeds: frames per second in memory,\n"
+      "CPU time of one core, each file coded over and over.\n\n");
   std::printf("%-10s %6s %5s  %7s %7s %7s %7s  %5s %5s %5s  %7s %8s  %9s %9s\n", "file", "frames", "intra", "bits q1",
               "q2", "q4", "keep q1", "err1", "err2", "err4", "entropy", "adaptive", "enc fps", "dec fps");
   Row mean;

@@ -21,7 +21,6 @@ const char* const kBlock =
     "  { head_rot_x <in=0.5,value=5>; head_rot_x <left=-0.2,out=0.5,value=3,connect>; }\n"
     "  jaw <min=0,max=0.05,freq=2>; jaw <right,hold=0.5,value=0.05,overwrite>; ]\n";
 
-
 // Blocks in sequences of ten, those in sequences of a hundred: nesting as well as length.
 std::string nested_program(std::size_t actions) {
   const std::size_t blocks = std::max<std::size_t>(1, actions / 6);
@@ -50,8 +49,8 @@ long peak_megabytes() {
 
 int main(int argc, char** argv) {
   const std::size_t max_actions = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : 1000000;
-  std::printf("%10s %10s %12s %12s %12s %12s %10s\n", "actions", "source KB", "compile s",
-              "us/action", "clips", "render s", "peak MB");
+  std::printf("%10s %10s %12s %12s %12s %12s %10s\n", "actions", "source KB", "compile s", "us/action", "clips",
+              "render s", "peak MB");
   for (std::size_t n = 1000; n <= max_actions; n *= 10) {
     const std::string source = nested_program(n);
     const auto start = std::chrono::steady_clock::now();
@@ -67,9 +66,9 @@ int main(int argc, char** argv) {
     render.fps = 10;
     auto frames = fapc::render_frames(compiled->timeline, render);
     const double rendering = seconds_since(render_start);
-    std::printf("%10zu %10zu %12.3f %12.3f %12zu %12.3f %10ld\n", actions, source.size() / 1024,
-                compile, 1e6 * compile / static_cast<double>(actions),
-                compiled->timeline.clips.size(), rendering, peak_megabytes());
+    std::printf("%10zu %10zu %12.3f %12.3f %12zu %12.3f %10ld\n", actions, source.size() / 1024, compile,
+                1e6 * compile / static_cast<double>(actions), compiled->timeline.clips.size(), rendering,
+                peak_megabytes());
     std::fflush(stdout);
   }
   return 0;

@@ -43,10 +43,10 @@ namespace {
 
 struct Measure {
   bool ok = false;
-  double seconds = 0;    // of the timed part, measured in the child
-  double peak_mb = 0;    // the child's peak resident memory
+  double seconds = 0;      // of the timed part, measured in the child
+  double peak_mb = 0;      // the child's peak resident memory
   double cpu_seconds = 0;  // the child's CPU time, user and system, untimed parts included
-  std::string note;      // the child's error, if any
+  std::string note;        // the child's error, if any
 };
 
 // Runs `work` in a child process; `work` returns the seconds of its timed part (negative: failed,
@@ -67,14 +67,17 @@ Measure in_child(const std::function<double(std::string&)>& work) {
   ::close(pipe_fd[1]);
   std::string text;
   char buffer[4096];
-  for (ssize_t got; (got = ::read(pipe_fd[0], buffer, sizeof buffer)) > 0;) text.append(buffer, static_cast<std::size_t>(got));
+  for (ssize_t got; (got = ::read(pipe_fd[0], buffer, sizeof buffer)) > 0;)
+    text.append(buffer, static_cast<std::size_t>(got));
   ::close(pipe_fd[0]);
   int status = 0;
   rusage usage{};
   ::wait4(child, &status, 0, &usage);
   Measure m;
   m.peak_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;
-  const auto seconds_of = [](const timeval& t) { return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) / 1e6; };
+  const auto seconds_of = [](const timeval& t) {
+    return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) / 1e6;
+  };
   m.cpu_seconds = seconds_of(usage.ru_utime) + seconds_of(usage.ru_stime);
   if (!WIFEXITED(status) || text.empty()) {
     m.note = "child died";
@@ -139,7 +142,8 @@ double since(std::chrono::steady_clock::time_point start) {
 void write_long_fap(const fs::path& path, std::int64_t frames) {
   std::vector<fapc::FapFrame> real;
   std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(FAPC_SOURCE_DIR "/corpus/fap/bestdpf__xface-new")) files.push_back(entry.path());
+  for (const auto& entry : fs::directory_iterator(FAPC_SOURCE_DIR "/corpus/fap/bestdpf__xface-new"))
+    files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   for (const fs::path& file : files) {
     auto bytes = fapc::read_file_bytes(file.string());
@@ -274,8 +278,7 @@ struct Bench {
       }
     }
     for (const auto& [phase, points] : fitted)
-      if (points.size() >= 2)
-        std::printf("%-28s growth exponent %.2f\n", (name + " " + phase).c_str(), growth(points));
+      if (points.size() >= 2) std::printf("%-28s growth exponent %.2f\n", (name + " " + phase).c_str(), growth(points));
   }
 
   fs::path long_fap(std::int64_t frames) {
@@ -296,7 +299,8 @@ struct Bench {
       const fs::path input = long_fap(n);
       Measure m = in_child([&](std::string& note) { return load_case(input, note); });
       if (m.ok)
-        std::printf("  .fap of %.1f MB read at %.0f MB/s (%.0f MB/s of CPU)\n", static_cast<double>(fs::file_size(input)) / 1e6,
+        std::printf("  .fap of %.1f MB read at %.0f MB/s (%.0f MB/s of CPU)\n",
+                    static_cast<double>(fs::file_size(input)) / 1e6,
                     static_cast<double>(fs::file_size(input)) / 1e6 / m.seconds,
                     static_cast<double>(fs::file_size(input)) / 1e6 / m.cpu_seconds);
       return m;
@@ -304,7 +308,8 @@ struct Bench {
     for (const char* ext : {".fba", ".mp4", ".fap"})
       series(std::string(".fap -> ") + ext, frames, [&](std::int64_t n) {
         const fs::path input = long_fap(n);
-        return in_child([&](std::string& note) { return convert_case(input, folder / ("out" + std::string(ext)), note); });
+        return in_child(
+            [&](std::string& note) { return convert_case(input, folder / ("out" + std::string(ext)), note); });
       });
     // Decoding as a user does it, to a file: streamed, the frames never all in memory.
     series(".fba decode (-> .fap)", frames, [&](std::int64_t n) {
@@ -323,7 +328,8 @@ struct Bench {
     for (const char* ext : {".json", ".svg"})
       series(std::string("writer ") + ext + " (frames)", frames, [&](std::int64_t n) {
         const fs::path input = long_fap(n);
-        return in_child([&](std::string& note) { return writer_case(input, folder / ("out" + std::string(ext)), note); });
+        return in_child(
+            [&](std::string& note) { return writer_case(input, folder / ("out" + std::string(ext)), note); });
       });
 #ifdef FAPC_SCALE_SCRIPTS
     run_scripts();
@@ -350,48 +356,58 @@ struct Bench {
       };
       // The library's stages one after the other: the front end to its timeline (parse, expand,
       // schedule, lower), every frame rendered and held, the frames encoded.
-      phased_series(kind_name + " phase", sizes, [&](std::int64_t n) {
-        const fs::path script = script_of(n);
-        return phases_in_child([&](std::vector<Phase>& phases, std::string& note) {
-          fp::ConvertOptions options;
-          options.fps = 10;
-          options.render = false;
-          options.curves = false;
-          auto start = std::chrono::steady_clock::now();
-          auto lowered = fp::load(script.string(), options);
-          if (!lowered) return void(note = fapc::format_diagnostic(lowered.error()));
-          phases.push_back({"lower", since(start), own_peak_mb()});
-          start = std::chrono::steady_clock::now();
-          fapc::RenderOptions render;
-          render.fps = 10;
-          auto rendered = fapc::render_frames(*lowered->timeline, render);
-          if (!rendered) return phases.clear(), void(note = fapc::format_diagnostic(rendered.error()));
-          phases.push_back({"render", since(start), own_peak_mb()});
-          start = std::chrono::steady_clock::now();
-          auto encoded = fapc::encode_fba(rendered->frames, fapc::FbaEncodeOptions{});
-          if (!encoded) return phases.clear(), void(note = fapc::format_diagnostic(encoded.error()));
-          phases.push_back({"encode", since(start), own_peak_mb()});
-        });
-      }, "elements");
+      phased_series(
+          kind_name + " phase", sizes,
+          [&](std::int64_t n) {
+            const fs::path script = script_of(n);
+            return phases_in_child([&](std::vector<Phase>& phases, std::string& note) {
+              fp::ConvertOptions options;
+              options.fps = 10;
+              options.render = false;
+              options.curves = false;
+              auto start = std::chrono::steady_clock::now();
+              auto lowered = fp::load(script.string(), options);
+              if (!lowered) return void(note = fapc::format_diagnostic(lowered.error()));
+              phases.push_back({"lower", since(start), own_peak_mb()});
+              start = std::chrono::steady_clock::now();
+              fapc::RenderOptions render;
+              render.fps = 10;
+              auto rendered = fapc::render_frames(*lowered->timeline, render);
+              if (!rendered) return phases.clear(), void(note = fapc::format_diagnostic(rendered.error()));
+              phases.push_back({"render", since(start), own_peak_mb()});
+              start = std::chrono::steady_clock::now();
+              auto encoded = fapc::encode_fba(rendered->frames, fapc::FbaEncodeOptions{});
+              if (!encoded) return phases.clear(), void(note = fapc::format_diagnostic(encoded.error()));
+              phases.push_back({"encode", since(start), own_peak_mb()});
+            });
+          },
+          "elements");
       // The whole compile as `fapc compile x -o x.fba` runs it (frames streamed to the encoder).
-      series(kind_name + " -> .fba (10 fps)", sizes, [&](std::int64_t n) {
-        const fs::path script = script_of(n);
-        return in_child([&](std::string& note) {
-          fp::ConvertOptions options;
-          options.fps = 10;
-          const auto start = std::chrono::steady_clock::now();
-          const fp::ConvertResult r = fp::convert(script.string(), {{(folder / "script.fba").string(), ""}}, options);
-          if (!r.ok()) return note = fapc::format_diagnostic(*r.error), -1.0;
-          return since(start);
-        });
-      }, "elements");
+      series(
+          kind_name + " -> .fba (10 fps)", sizes,
+          [&](std::int64_t n) {
+            const fs::path script = script_of(n);
+            return in_child([&](std::string& note) {
+              fp::ConvertOptions options;
+              options.fps = 10;
+              const auto start = std::chrono::steady_clock::now();
+              const fp::ConvertResult r =
+                  fp::convert(script.string(), {{(folder / "script.fba").string(), ""}}, options);
+              if (!r.ok()) return note = fapc::format_diagnostic(*r.error), -1.0;
+              return since(start);
+            });
+          },
+          "elements");
       // The curves step of a script's compile (25 fps), and the curves JSON written from them:
       // the timeline compiled untimed, without frames.
       for (const bool json : {false, true})
-        series(kind_name + (json ? " curves -> .json" : " curves (25 fps)"), sizes, [&](std::int64_t n) {
-          const fs::path script = script_of(n);  // named by kind: xmto and xmto-to share an extension
-          return in_child([&](std::string& note) { return curves_case(script, json, note); });
-        }, "elements");
+        series(
+            kind_name + (json ? " curves -> .json" : " curves (25 fps)"), sizes,
+            [&](std::int64_t n) {
+              const fs::path script = script_of(n);  // named by kind: xmto and xmto-to share an extension
+              return in_child([&](std::string& note) { return curves_case(script, json, note); });
+            },
+            "elements");
     }
   }
 
@@ -421,9 +437,12 @@ int main(int argc, char** argv) {
   mallopt(M_MMAP_THRESHOLD, 256 * 1024);
   Bench bench;
   for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--max") && i + 1 < argc) bench.max_size = std::atoll(argv[++i]);
-    else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) bench.only = argv[++i];
-    else if (!std::strcmp(argv[i], "--folder") && i + 1 < argc) bench.folder = argv[++i];
+    if (!std::strcmp(argv[i], "--max") && i + 1 < argc)
+      bench.max_size = std::atoll(argv[++i]);
+    else if (!std::strcmp(argv[i], "--only") && i + 1 < argc)
+      bench.only = argv[++i];
+    else if (!std::strcmp(argv[i], "--folder") && i + 1 < argc)
+      bench.folder = argv[++i];
     else {
       std::fprintf(stderr, "usage: scale_bench [--max N] [--only SUBSTRING] [--folder DIR]\n");
       return 2;
@@ -431,10 +450,14 @@ int main(int argc, char** argv) {
   }
   const bool kept = !bench.folder.empty();
   char folder[] = "/tmp/fapc-scale-XXXXXX";
-  if (kept) fs::create_directories(bench.folder);
-  else if (::mkdtemp(folder)) bench.folder = folder;
-  else return 1;
-  std::printf("scale bench: one core, each case in its own process; times of the case's work, peak RSS of its process\n");
+  if (kept)
+    fs::create_directories(bench.folder);
+  else if (::mkdtemp(folder))
+    bench.folder = folder;
+  else
+    return 1;
+  std::printf(
+      "scale bench: one core, each case in its own process; times of the case's work, peak RSS of its process\n");
   bench.run();
   if (!kept) fs::remove_all(bench.folder);
   return 0;

@@ -62,12 +62,10 @@ std::string mimic(std::size_t elements) {
   grouped(
       block_count(elements), out, [](std::string& o) { o += "{\n"; }, [](std::string& o) { o += "}\n"; },
       [&](std::size_t, std::string& o) {
-        o += "[ jaw <min=0,max=" + num(r.between(0.02, 0.08)) + ",freq=" + num(r.between(2, 6)) +
-             ",duration=0.8>;\n";
-        o += "  head_rot_y <in=" + num(r.between(0.1, 0.3)) + ",hold=0.2,out=0.2,sin,value=" +
-             num(r.between(-10, 10)) + ">;\n";
-        o += "  eyelid_left ( 0 " + num(r.between(0.1, 0.4)) + " 0.6; 0 " + num(r.between(0.2, 0.9)) +
-             " 0; )\n";
+        o += "[ jaw <min=0,max=" + num(r.between(0.02, 0.08)) + ",freq=" + num(r.between(2, 6)) + ",duration=0.8>;\n";
+        o += "  head_rot_y <in=" + num(r.between(0.1, 0.3)) + ",hold=0.2,out=0.2,sin,value=" + num(r.between(-10, 10)) +
+             ">;\n";
+        o += "  eyelid_left ( 0 " + num(r.between(0.1, 0.4)) + " 0.6; 0 " + num(r.between(0.2, 0.9)) + " 0; )\n";
         o += "  { head_rot_x <in=0.1,hold=0.1,out=0.1,value=" + num(r.between(1, 5)) +
              ">; head_rot_x <in=0.1,out=0.1,value=" + num(r.between(-3, 0)) + ",connect>; }\n";
         o += "  nod;\n";
@@ -86,8 +84,7 @@ std::string fml(std::size_t elements) {
       "  </model>\n  <story>\n";
   int depth = 0;  // the groups of a hundred are actions, those of ten seqs
   grouped(
-      block_count(elements), out,
-      [&](std::string& o) { o += depth++ == 0 ? "  <action>\n" : "   <seq>\n"; },
+      block_count(elements), out, [&](std::string& o) { o += depth++ == 0 ? "  <action>\n" : "   <seq>\n"; },
       [&](std::string& o) { o += --depth == 0 ? "  </action>\n" : "   </seq>\n"; },
       [&](std::size_t i, std::string& o) {
         o += "    <par>\n";
@@ -116,8 +113,7 @@ std::string xmto(std::size_t elements, bool to_animations) {
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       "<XMT-O xmlns=\"urn:mpeg:mpeg4:xmto:schema:2002\">\n  <body>\n   <seq>\n";
   grouped(
-      block_count(elements), out, [](std::string& o) { o += "   <seq>\n"; },
-      [](std::string& o) { o += "   </seq>\n"; },
+      block_count(elements), out, [](std::string& o) { o += "   <seq>\n"; }, [](std::string& o) { o += "   </seq>\n"; },
       [&](std::size_t, std::string& o) {
         o += "    <par>\n";
         o += "      <animate attributeName=\"open_jaw\" values=\"0;" + num(r.between(100, 500)) +
@@ -141,8 +137,8 @@ std::string xmto(std::size_t elements, bool to_animations) {
                ";0;50\" calcMode=\"paced\" dur=\"0.8s\"/>\n";
         }
         o += "      <seq>\n        <set attributeName=\"viseme.PP\" to=\"63\" dur=\"0.2s\"/>\n"
-             "        <set attributeName=\"viseme.aa\" to=\"" + num(r.between(20, 63)) +
-             "\" dur=\"0.2s\"/>\n      </seq>\n";
+             "        <set attributeName=\"viseme.aa\" to=\"" +
+             num(r.between(20, 63)) + "\" dur=\"0.2s\"/>\n      </seq>\n";
         o += "      <animate attributeName=\"head_roll\" from=\"0\" to=\"" + num(r.between(50, 200)) +
              "\" dur=\"0.2s\" repeatCount=\"3\" accumulate=\"sum\"/>\n";
         o += "    </par>\n";
@@ -154,18 +150,19 @@ std::string xmto(std::size_t elements, bool to_animations) {
 // the whole document, solved in one pass), and the block's other behaviours are placed by sync
 // references to it.
 std::string bml(std::size_t elements) {
-  static constexpr const char* kLexemes[] = {"RAISE_BROWS", "LOWER_BROWS", "OPEN_MOUTH", "RAISE_MOUTH_CORNERS",
-                                             "CLOSE_EYES", "WIDEN_EYES", "OBLIQUE_BROWS", "LOWER_MOUTH_CORNERS"};
+  static constexpr const char* kLexemes[] = {"RAISE_BROWS", "LOWER_BROWS", "OPEN_MOUTH",    "RAISE_MOUTH_CORNERS",
+                                             "CLOSE_EYES",  "WIDEN_EYES",  "OBLIQUE_BROWS", "LOWER_MOUTH_CORNERS"};
   Numbers r(3);
-  std::string out = "<?xml version=\"1.0\"?>\n<bml xmlns=\"http://www.bml-initiative.org/bml/bml-1.0\" id=\"bml1\" "
-                    "characterId=\"agent\">\n";
+  std::string out =
+      "<?xml version=\"1.0\"?>\n<bml xmlns=\"http://www.bml-initiative.org/bml/bml-1.0\" id=\"bml1\" "
+      "characterId=\"agent\">\n";
   for (std::size_t i = 0; i < block_count(elements); ++i) {
     const std::string id = "l" + std::to_string(i);
     const auto at = [&](double offset) { return "\"" + id + ":start+" + num(offset) + "\""; };
     const auto lexeme = [&](std::size_t k) { return std::string(kLexemes[(i + k) % 8]); };
     out += "  <faceLexeme id=\"" + id + "\" lexeme=\"" + lexeme(0) + "\" amount=\"" + num(r.between(0.3, 1)) +
-           "\" start=" + (i == 0 ? std::string("\"0\"") : "\"l" + std::to_string(i - 1) + ":end\"") + " end=" + at(0.8) +
-           "/>\n";
+           "\" start=" + (i == 0 ? std::string("\"0\"") : "\"l" + std::to_string(i - 1) + ":end\"") +
+           " end=" + at(0.8) + "/>\n";
     static constexpr double kSpans[][2] = {{0.1, 0.3}, {0.2, 0.5}, {0.3, 0.7}};
     for (std::size_t k = 1; k <= 3; ++k)
       out += "  <faceLexeme id=\"" + id + "f" + std::to_string(k) + "\" lexeme=\"" + lexeme(k) + "\" amount=\"" +
@@ -186,22 +183,31 @@ std::string bml(std::size_t elements) {
 
 const char* name(ScriptKind kind) {
   switch (kind) {
-    case ScriptKind::mimic: return "mimic";
-    case ScriptKind::fml: return "fml";
-    case ScriptKind::xmto: return "xmto";
-    case ScriptKind::xmto_to: return "xmto-to";
-    case ScriptKind::bml: return "bml";
+    case ScriptKind::mimic:
+      return "mimic";
+    case ScriptKind::fml:
+      return "fml";
+    case ScriptKind::xmto:
+      return "xmto";
+    case ScriptKind::xmto_to:
+      return "xmto-to";
+    case ScriptKind::bml:
+      return "bml";
   }
   return "?";
 }
 
 const char* extension(ScriptKind kind) {
   switch (kind) {
-    case ScriptKind::mimic: return ".mimic";
-    case ScriptKind::fml: return ".fml";
+    case ScriptKind::mimic:
+      return ".mimic";
+    case ScriptKind::fml:
+      return ".fml";
     case ScriptKind::xmto:
-    case ScriptKind::xmto_to: return ".xmt";
-    case ScriptKind::bml: return ".bml";
+    case ScriptKind::xmto_to:
+      return ".xmt";
+    case ScriptKind::bml:
+      return ".bml";
   }
   return "";
 }
@@ -218,11 +224,16 @@ bool parse_script_kind(std::string_view text, ScriptKind& kind) {
 
 std::string generate_script(ScriptKind kind, std::size_t elements) {
   switch (kind) {
-    case ScriptKind::mimic: return mimic(elements);
-    case ScriptKind::fml: return fml(elements);
-    case ScriptKind::xmto: return xmto(elements, false);
-    case ScriptKind::xmto_to: return xmto(elements, true);
-    case ScriptKind::bml: return bml(elements);
+    case ScriptKind::mimic:
+      return mimic(elements);
+    case ScriptKind::fml:
+      return fml(elements);
+    case ScriptKind::xmto:
+      return xmto(elements, false);
+    case ScriptKind::xmto_to:
+      return xmto(elements, true);
+    case ScriptKind::bml:
+      return bml(elements);
   }
   return {};
 }

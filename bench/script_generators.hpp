@@ -31,8 +31,8 @@ namespace fapc::bench {
 enum class ScriptKind { mimic, fml, xmto, xmto_to, bml };
 
 // The kinds in a fixed order, for loops over every front end.
-inline constexpr ScriptKind kScriptKinds[] = {ScriptKind::mimic, ScriptKind::fml, ScriptKind::xmto,
-                                              ScriptKind::xmto_to, ScriptKind::bml};
+inline constexpr ScriptKind kScriptKinds[] = {ScriptKind::mimic, ScriptKind::fml, ScriptKind::xmto, ScriptKind::xmto_to,
+                                              ScriptKind::bml};
 
 const char* name(ScriptKind kind);       // "mimic", "fml", "xmto", "xmto-to", "bml"
 const char* extension(ScriptKind kind);  // ".mimic", ".fml", ".xmt", ".xmt", ".bml"

@@ -44,7 +44,8 @@ void measure(const char* language, const char* text) {
     }
     speech_seconds = spoken->duration;
   }
-  const auto path = std::filesystem::temp_directory_path() / ("fapc-speech-bench-" + std::to_string(::getpid()) + ".fml");
+  const auto path =
+      std::filesystem::temp_directory_path() / ("fapc-speech-bench-" + std::to_string(::getpid()) + ".fml");
   std::ofstream(path) << "<fml><story><talk lang=\"" << language << "\">" << text << "</talk></story></fml>\n";
   double best_load = 1e9;
   for (int run = 0; run < 5; ++run) {

@@ -7,13 +7,20 @@ namespace fapc {
 
 const char* error_kind_name(ErrorKind kind) {
   switch (kind) {
-    case ErrorKind::bad_input: return "bad_input";
-    case ErrorKind::truncated: return "truncated";
-    case ErrorKind::io: return "io";
-    case ErrorKind::usage: return "usage";
-    case ErrorKind::limit_exceeded: return "limit_exceeded";
-    case ErrorKind::verification_failed: return "verification_failed";
-    case ErrorKind::unsupported: return "unsupported";
+    case ErrorKind::bad_input:
+      return "bad_input";
+    case ErrorKind::truncated:
+      return "truncated";
+    case ErrorKind::io:
+      return "io";
+    case ErrorKind::usage:
+      return "usage";
+    case ErrorKind::limit_exceeded:
+      return "limit_exceeded";
+    case ErrorKind::verification_failed:
+      return "verification_failed";
+    case ErrorKind::unsupported:
+      return "unsupported";
   }
   return "bad_input";
 }

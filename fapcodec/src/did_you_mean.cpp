@@ -10,7 +10,7 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
 }
 
 std::size_t bounded_edit_distance(std::string_view a, std::string_view b, std::size_t bound) {
-  if (a.size() < b.size()) std::swap(a, b);  // b is the shorter: one row of it
+  if (a.size() < b.size()) std::swap(a, b);           // b is the shorter: one row of it
   if (a.size() - b.size() > bound) return bound + 1;  // that many insertions at least
   // Only cells within `bound` of the diagonal can hold a distance <= bound; the others are
   // taken as bound + 1. A row whose every cell passes the bound ends the search.

@@ -4,8 +4,8 @@
 namespace fapc {
 
 std::string FapFileFacts::variant() const {
-  if (!has_header) return millisecond_stamps ? "SEMAINE (no header, millisecond time stamps)"
-                                             : "SEMAINE (no header, frame indices)";
+  if (!has_header)
+    return millisecond_stamps ? "SEMAINE (no header, millisecond time stamps)" : "SEMAINE (no header, frame indices)";
   if (version == "2.0") return "VREng 2.0";
   if (mask_69_tokens) return "Greta (69-token masks)";
   if (comment_lines > 0) return "VREng (leading comment)";

@@ -58,17 +58,17 @@ constexpr long long kMaxFrameNumber = 1'000'000'000'000'000;
 
 // Field ranges of FAP 1 and FAP 2 (docs/fap-table.md section 4), in file order.
 constexpr int kVisemeMax[kVisemeFieldCount] = {14, 14, 63, 1};
-constexpr const char* kVisemeField[kVisemeFieldCount] = {"viseme_select1", "viseme_select2",
-                                                         "viseme_blend", "viseme_def"};
+constexpr const char* kVisemeField[kVisemeFieldCount] = {"viseme_select1", "viseme_select2", "viseme_blend",
+                                                         "viseme_def"};
 constexpr int kExpressionMax[kExpressionFieldCount] = {6, 63, 6, 63, 1, 1};
-constexpr const char* kExpressionField[kExpressionFieldCount] = {
-    "expression_select1", "expression_intensity1", "expression_select2",
-    "expression_intensity2", "init_face", "expression_def"};
+constexpr const char* kExpressionField[kExpressionFieldCount] = {"expression_select1", "expression_intensity1",
+                                                                 "expression_select2", "expression_intensity2",
+                                                                 "init_face",          "expression_def"};
 
 class Reader {
  public:
-  Reader(std::string_view text, const std::string& file, const FapReadOptions& options,
-         FapFrameSink sink = {}, std::function<void(std::size_t)> progress = {})
+  Reader(std::string_view text, const std::string& file, const FapReadOptions& options, FapFrameSink sink = {},
+         std::function<void(std::size_t)> progress = {})
       : lines_(text), file_(file), options_(options), sink_(std::move(sink)), progress_(std::move(progress)) {}
 
   Result<FapReadResult> run();
@@ -93,17 +93,14 @@ class Reader {
   void note_layout(const fapfile::IntegerLine& line);
   // A value line of integers for a mask without FAP 1/2: the frame, or false (nothing changed)
   // when the line needs the general reading (and perhaps a diagnostic).
-  bool read_plain_values(const fapfile::IntegerLine& line, const std::bitset<kFapCount>& mask,
-                         FapFrame& frame);
+  bool read_plain_values(const fapfile::IntegerLine& line, const std::bitset<kFapCount>& mask, FapFrame& frame);
   // A frame read: its number and line kept for placing the frames in time, the frame stored
   // or handed to the caller's sink.
   std::optional<Diagnostic> deliver(const FapFrame& frame, int line_number);
   std::optional<Diagnostic> read_mask(const Line& line, std::bitset<kFapCount>& mask);
-  std::optional<Diagnostic> read_values(const Line& line, const std::bitset<kFapCount>& mask,
-                                        FapFrame& frame);
-  std::optional<Diagnostic> read_value(const Line& line, const Token& token, long long low,
-                                       long long high, const char* field_name, int fap,
-                                       std::int32_t& value);
+  std::optional<Diagnostic> read_values(const Line& line, const std::bitset<kFapCount>& mask, FapFrame& frame);
+  std::optional<Diagnostic> read_value(const Line& line, const Token& token, long long low, long long high,
+                                       const char* field_name, int fap, std::int32_t& value);
   std::optional<Diagnostic> place_frames_in_time();
 
   fapfile::LineCursor lines_;
@@ -152,13 +149,11 @@ std::optional<Diagnostic> Reader::read_header(const Line& line) {
   // Frame rates are integers once read (docs/fap-files.md), so below 0.5 would round to 0.
   if (!fps || *fps < 0.5 || *fps > 1000)
     return error_at(codes::fap::bad_frame_rate, line, fps_token.column,
-                    "header frame rate must be a number from 1 to 1000, found '" +
-                        std::string(fps_token.text) + "'");
+                    "header frame rate must be a number from 1 to 1000, found '" + std::string(fps_token.text) + "'");
   const auto count = parse_integer(count_token.text);
   if (!count || *count < 0)
     return error_at(codes::fap::bad_frame_count, line, count_token.column,
-                    "header frame count must be a non-negative integer, found '" +
-                        std::string(count_token.text) + "'");
+                    "header frame count must be a non-negative integer, found '" + std::string(count_token.text) + "'");
   facts.header_fps = *fps;
   facts.header_fps_at = Location::text(file_, line.number, fps_token.column);
   facts.header_count = *count;
@@ -166,23 +161,22 @@ std::optional<Diagnostic> Reader::read_header(const Line& line) {
   // Room for the frames the header announces, as far as the text can hold them (a frame takes
   // two lines, the mask alone 136 bytes) and the limit allows: no copying as they are read.
   constexpr long long kLeastFrameBytes = 138;
-  const auto room = static_cast<std::size_t>(
-      std::min({*count, static_cast<long long>(lines_.text_size()) / kLeastFrameBytes + 1,
-                static_cast<long long>(options_.max_frames)}));
+  const auto room =
+      static_cast<std::size_t>(std::min({*count, static_cast<long long>(lines_.text_size()) / kLeastFrameBytes + 1,
+                                         static_cast<long long>(options_.max_frames)}));
   if (!sink_) out_.sequence.frames.reserve(room);
   numbers_.reserve(room);
   value_lines_.reserve(room);
   out_.sequence.name = facts.header_name;
   out_.sequence.fps = static_cast<int>(std::lround(*fps));
   if (std::floor(*fps) != *fps)
-    warn_at(codes::fap::fractional_fps, line, fps_token.column,
-            "frame rate " + std::string(fps_token.text) + " is not an integer; using " +
-                std::to_string(out_.sequence.fps));
+    warn_at(
+        codes::fap::fractional_fps, line, fps_token.column,
+        "frame rate " + std::string(fps_token.text) + " is not an integer; using " + std::to_string(out_.sequence.fps));
   if (facts.version == "2.0") {
     warn_at(codes::fap::vreng_v20, line, tokens.front().column,
-            options_.vreng_divide_v20
-                ? "version 2.0: values divided by 20 (VREng's convention, as asked)"
-                : "version 2.0: values kept as written (VREng divides them by 20)");
+            options_.vreng_divide_v20 ? "version 2.0: values divided by 20 (VREng's convention, as asked)"
+                                      : "version 2.0: values kept as written (VREng divides them by 20)");
   } else if (facts.version != "2.1") {
     warn_at(codes::fap::version, line, tokens.front().column,
             "version " + facts.version + " (2.1 expected); reading it as 2.1");
@@ -194,16 +188,14 @@ std::optional<Diagnostic> Reader::read_mask(const Line& line, std::bitset<kFapCo
   const auto& tokens = line.tokens;
   if (tokens.size() == 69 && tokens.back().text == "0") {
     if (!out_.facts.mask_69_tokens)  // once per file, without the (long) source line
-      out_.warnings.push_back(make_warning(codes::fap::mask_69_values,
-          Location::text(file_, line.number, tokens.back().column),
-          "mask lines have 69 values (Greta's writer); the 69th, always 0, is ignored"));
+      out_.warnings.push_back(
+          make_warning(codes::fap::mask_69_values, Location::text(file_, line.number, tokens.back().column),
+                       "mask lines have 69 values (Greta's writer); the 69th, always 0, is ignored"));
     out_.facts.mask_69_tokens = true;
   } else if (tokens.size() != 68) {
-    const int column = tokens.size() > 68 ? tokens[68].column
-                                          : static_cast<int>(line.text.size()) + 1;
+    const int column = tokens.size() > 68 ? tokens[68].column : static_cast<int>(line.text.size()) + 1;
     return error_at(codes::fap::mask_length, line, column,
-                    "mask line has " + std::to_string(tokens.size()) +
-                        " values; expected 68 (one 0 or 1 per FAP)");
+                    "mask line has " + std::to_string(tokens.size()) + " values; expected 68 (one 0 or 1 per FAP)");
   }
   mask.reset();
   for (std::size_t i = 0; i < kFapCount; ++i) {
@@ -211,21 +203,18 @@ std::optional<Diagnostic> Reader::read_mask(const Line& line, std::bitset<kFapCo
     if (t.text == "1") {
       mask.set(i);
     } else if (t.text != "0") {
-      return error_at(codes::fap::mask_value, line, t.column,
-                      "mask value for FAP " + std::to_string(i + 1) + " must be 0 or 1, found '" +
-                          std::string(t.text) + "'");
+      return error_at(
+          codes::fap::mask_value, line, t.column,
+          "mask value for FAP " + std::to_string(i + 1) + " must be 0 or 1, found '" + std::string(t.text) + "'");
     }
   }
   return std::nullopt;
 }
 
-std::optional<Diagnostic> Reader::read_value(const Line& line, const Token& token, long long low,
-                                             long long high, const char* field_name, int fap,
-                                             std::int32_t& value) {
+std::optional<Diagnostic> Reader::read_value(const Line& line, const Token& token, long long low, long long high,
+                                             const char* field_name, int fap, std::int32_t& value) {
   // Named lazily: building the name for every value would dominate the reading time.
-  const auto what = [&] {
-    return fap > 0 ? "value of FAP " + std::to_string(fap) : std::string(field_name);
-  };
+  const auto what = [&] { return fap > 0 ? "value of FAP " + std::to_string(fap) : std::string(field_name); };
   double number = 0;
   const bool scaled = options_.vreng_divide_v20 && out_.facts.version == "2.0" && fap > 0;
   if (const auto integer = parse_integer(token.text)) {
@@ -239,8 +228,7 @@ std::optional<Diagnostic> Reader::read_value(const Line& line, const Token& toke
     number = *real;
     if (!warned_float_)
       warn_at(codes::fap::value, line, token.column,
-              "value '" + std::string(token.text) +
-                  "' is not an integer; values are rounded half away from zero");
+              "value '" + std::string(token.text) + "' is not an integer; values are rounded half away from zero");
     warned_float_ = true;
     out_.facts.float_values = true;
   } else {
@@ -251,22 +239,20 @@ std::optional<Diagnostic> Reader::read_value(const Line& line, const Token& toke
   if (scaled) number /= 20;
   const double rounded = std::round(number);  // std::round: halves away from zero
   if (rounded < static_cast<double>(low) || rounded > static_cast<double>(high))
-    return error_at(codes::fap::value_out_of_range, line, token.column,
-                    what() + " " + std::string(token.text) + " is outside " +
-                        std::to_string(low) + ".." + std::to_string(high));
+    return error_at(
+        codes::fap::value_out_of_range, line, token.column,
+        what() + " " + std::string(token.text) + " is outside " + std::to_string(low) + ".." + std::to_string(high));
   value = static_cast<std::int32_t>(rounded);
   return std::nullopt;
 }
 
-std::optional<Diagnostic> Reader::read_values(const Line& line,
-                                              const std::bitset<kFapCount>& mask,
-                                              FapFrame& frame) {
+std::optional<Diagnostic> Reader::read_values(const Line& line, const std::bitset<kFapCount>& mask, FapFrame& frame) {
   const auto& tokens = line.tokens;
   const auto number = parse_integer(tokens.front().text);
   if (!number)
-    return error_at(codes::fap::bad_frame_number, line, tokens.front().column,
-                    "a value line must start with an integer frame number, found '" +
-                        std::string(tokens.front().text) + "'");
+    return error_at(
+        codes::fap::bad_frame_number, line, tokens.front().column,
+        "a value line must start with an integer frame number, found '" + std::string(tokens.front().text) + "'");
   // Bounded before any arithmetic on it (gaps, millisecond grids, renumbering): 10^15 is 31,000
   // years of millisecond stamps, and differences of such numbers cannot overflow.
   if (*number > kMaxFrameNumber || *number < -kMaxFrameNumber)
@@ -278,8 +264,7 @@ std::optional<Diagnostic> Reader::read_values(const Line& line,
   const bool fap1 = mask.test(0), fap2 = mask.test(1);
   const std::size_t low_level = mask.count() - (fap1 ? 1 : 0) - (fap2 ? 1 : 0);
   const std::size_t single = mask.count();
-  const std::size_t full = low_level + (fap1 ? kVisemeFieldCount : 0) +
-                           (fap2 ? kExpressionFieldCount : 0);
+  const std::size_t full = low_level + (fap1 ? kVisemeFieldCount : 0) + (fap2 ? kExpressionFieldCount : 0);
   const std::size_t given = tokens.size() - 1;
   bool full_fields = false;
   if (given == full) {
@@ -288,41 +273,35 @@ std::optional<Diagnostic> Reader::read_values(const Line& line,
   } else if (given == single) {
     out_.facts.fap12_single_values = true;
   } else {
-    const std::string expected =
-        full == single ? std::to_string(full)
-                       : std::to_string(full) + " (FAP 1 as 4 and FAP 2 as 6 values) or " +
-                             std::to_string(single) + " (one value each)";
-    const int column = given > full ? tokens[full + 1].column
-                                    : static_cast<int>(line.text.size()) + 1;
-    return error_at(codes::fap::value_count, line, column,
-                    "value line has " + std::to_string(given) +
-                        " values after the frame number; its mask needs " + expected);
+    const std::string expected = full == single ? std::to_string(full)
+                                                : std::to_string(full) + " (FAP 1 as 4 and FAP 2 as 6 values) or " +
+                                                      std::to_string(single) + " (one value each)";
+    const int column = given > full ? tokens[full + 1].column : static_cast<int>(line.text.size()) + 1;
+    return error_at(
+        codes::fap::value_count, line, column,
+        "value line has " + std::to_string(given) + " values after the frame number; its mask needs " + expected);
   }
   std::size_t next = 1;
   std::int32_t field = 0;
   if (fap1) {
-    int* fields[kVisemeFieldCount] = {&frame.viseme.select1, &frame.viseme.select2,
-                                      &frame.viseme.blend, &frame.viseme.def};
+    int* fields[kVisemeFieldCount] = {&frame.viseme.select1, &frame.viseme.select2, &frame.viseme.blend,
+                                      &frame.viseme.def};
     // A single viseme value is taken as viseme_select1 shown alone (blend 63): Greta's form.
     const int count = full_fields ? kVisemeFieldCount : 1;
     for (int k = 0; k < count; ++k) {
-      if (auto e = read_value(line, tokens[next++], 0, kVisemeMax[k], kVisemeField[k], 0,
-                                field))
-        return e;
+      if (auto e = read_value(line, tokens[next++], 0, kVisemeMax[k], kVisemeField[k], 0, field)) return e;
       *fields[k] = field;
     }
     if (!full_fields) frame.viseme.blend = 63;
   }
   if (fap2) {
-    int* fields[kExpressionFieldCount] = {&frame.expression.select1, &frame.expression.intensity1,
-                                          &frame.expression.select2, &frame.expression.intensity2,
+    int* fields[kExpressionFieldCount] = {&frame.expression.select1,   &frame.expression.intensity1,
+                                          &frame.expression.select2,   &frame.expression.intensity2,
                                           &frame.expression.init_face, &frame.expression.def};
     // A single expression value is taken as expression_select1 at full intensity.
     const int count = full_fields ? kExpressionFieldCount : 1;
     for (int k = 0; k < count; ++k) {
-      if (auto e = read_value(line, tokens[next++], 0, kExpressionMax[k], kExpressionField[k],
-                              0, field))
-        return e;
+      if (auto e = read_value(line, tokens[next++], 0, kExpressionMax[k], kExpressionField[k], 0, field)) return e;
       *fields[k] = field;
     }
     if (!full_fields) frame.expression.intensity1 = 63;
@@ -344,9 +323,8 @@ std::optional<Diagnostic> Reader::place_frames_in_time() {
     if (frames[i] <= frames[i - 1]) {
       const FrameLine line = frame_line(i);
       return error_at(codes::fap::frame_order, line, line.first_column,
-                      "frame number " + std::to_string(frames[i]) +
-                          " does not follow frame " + std::to_string(frames[i - 1]) +
-                          "; frame numbers must ascend");
+                      "frame number " + std::to_string(frames[i]) + " does not follow frame " +
+                          std::to_string(frames[i - 1]) + "; frame numbers must ascend");
     }
   if (frames.empty()) return std::nullopt;
 
@@ -367,14 +345,14 @@ std::optional<Diagnostic> Reader::place_frames_in_time() {
       if (offset % step != 0) {
         const FrameLine line = frame_line(i);
         return error_at(codes::fap::off_grid, line, line.first_column,
-                        "time stamp " + std::to_string(frames[i]) + " ms is not on the " +
-                            std::to_string(step) + " ms grid of the first frame");
+                        "time stamp " + std::to_string(frames[i]) + " ms is not on the " + std::to_string(step) +
+                            " ms grid of the first frame");
       }
       frames[i] = offset / step;
     }
     warn_file({"fap.no_header"}, "no header; frame numbers read as millisecond time stamps (" +
-              std::to_string(out_.sequence.fps) + " fps, first frame at " +
-              std::to_string(first) + " ms taken as time 0)");
+                                     std::to_string(out_.sequence.fps) + " fps, first frame at " +
+                                     std::to_string(first) + " ms taken as time 0)");
   } else if (!facts.has_header) {
     out_.sequence.fps = options_.headerless_fps;
     warn_file({"fap.no_header"}, "no header; assuming " + std::to_string(options_.headerless_fps) + " fps");
@@ -386,13 +364,11 @@ std::optional<Diagnostic> Reader::place_frames_in_time() {
       Limits limits;
       limits.max_frames = options_.max_frames;
       return limit_error(Location::text(file_, line.number, line.first_column),
-                         "frames " + std::to_string(frames.front()) + " to " +
-                             std::to_string(frames[i]) + " span " +
+                         "frames " + std::to_string(frames.front()) + " to " + std::to_string(frames[i]) + " span " +
                              std::to_string(frames[i] - frames.front() + 1) + " frames",
                          Limit::frames, limits);
     }
-  if (facts.has_header && frames.front() == 1 &&
-      frames.back() == static_cast<long long>(frames.size())) {
+  if (facts.has_header && frames.front() == 1 && frames.back() == static_cast<long long>(frames.size())) {
     facts.frames_from_one = true;
     for (std::int64_t& number : frames) --number;
     warn_file({"fap.numbered_from_1"}, "frames are numbered from 1; renumbered from 0");
@@ -405,8 +381,7 @@ std::optional<Diagnostic> Reader::place_frames_in_time() {
   for (std::size_t g = 0; g < after_gap.size(); ++g) {
     const std::size_t i = after_gap[g];
     warn_at(codes::fap::missing_frames, lines[g], lines[g].first_column,
-            "frames " + std::to_string(frames[i - 1] + 1) + " to " +
-                std::to_string(frames[i] - 1) + " are absent");
+            "frames " + std::to_string(frames[i - 1] + 1) + " to " + std::to_string(frames[i] - 1) + " are absent");
   }
   return std::nullopt;
 }
@@ -428,8 +403,7 @@ void Reader::note_layout(const fapfile::IntegerLine& line) {
   if (line.trailing_blank) out_.facts.trailing_spaces = true;
 }
 
-bool Reader::read_plain_values(const fapfile::IntegerLine& line, const std::bitset<kFapCount>& mask,
-                               FapFrame& frame) {
+bool Reader::read_plain_values(const fapfile::IntegerLine& line, const std::bitset<kFapCount>& mask, FapFrame& frame) {
   // FAP 1/2 fields, counts that do not match the mask and values out of range go the general way.
   if (mask.test(0) || mask.test(1) || static_cast<std::size_t>(line.count - 1) != mask.count()) return false;
   const long long number = line.values[0];
@@ -496,8 +470,8 @@ Result<FapReadResult> Reader::run() {
       expect = Expect::values;
       continue;
     }
-    if (expect == Expect::mask && fapfile::scan_integers(raw.text, integers, lines_.text_end()) && integers.count == 68 &&
-        integers.bits) {
+    if (expect == Expect::mask && fapfile::scan_integers(raw.text, integers, lines_.text_end()) &&
+        integers.count == 68 && integers.bits) {
       mask.reset();
       for (std::size_t i = 0; i < kFapCount; ++i) mask[i] = integers.values[i] != 0;
       note_layout(integers);
@@ -527,8 +501,7 @@ Result<FapReadResult> Reader::run() {
     if (line.trailing_blank) facts.trailing_spaces = true;
     if (expect == Expect::header) {
       expect = Expect::mask;
-      if (line.tokens.size() >= 4 && parse_number(line.tokens.front().text) &&
-          !is_mask_shaped(line)) {
+      if (line.tokens.size() >= 4 && parse_number(line.tokens.front().text) && !is_mask_shaped(line)) {
         if (auto e = read_header(line)) return *e;
         continue;
       }
@@ -562,8 +535,7 @@ Result<FapReadResult> Reader::run() {
   const auto frames = static_cast<long long>(numbers_.size());
   if (facts.has_header && facts.header_count != frames)
     warn_at(codes::fap::frame_count, header_count_at_, header_count_at_.first_column,
-            "header says " + std::to_string(facts.header_count) + " frames, file has " +
-                std::to_string(frames));
+            "header says " + std::to_string(facts.header_count) + " frames, file has " + std::to_string(frames));
   if (frames == 0) warn_file(codes::fap::no_frames, "file has no frames");
   if (out_.sequence.name.empty()) out_.sequence.name = file_;
   out_.value_lines = std::move(value_lines_);
@@ -572,8 +544,8 @@ Result<FapReadResult> Reader::run() {
 
 }  // namespace
 
-Result<FapReadResult> read_fap_text(std::string_view text, const std::string& file,
-                                    const FapReadOptions& options, const std::function<void(std::size_t)>& progress) {
+Result<FapReadResult> read_fap_text(std::string_view text, const std::string& file, const FapReadOptions& options,
+                                    const std::function<void(std::size_t)>& progress) {
   return Reader(text, file, options, {}, progress).run();
 }
 

@@ -13,15 +13,22 @@ namespace {
 constexpr std::array<FapInfo, kFapCount> kFaps{{
     {1, "viseme", "high level: blend of two visemes", Fapu::none, false, "", 1, 1, 0, 0},
     {2, "expression", "high level: blend of two expressions", Fapu::none, false, "", 1, 1, 0, 0},
-    {3, "open_jaw", "vertical jaw displacement (does not affect mouth opening)", Fapu::mns, false, "down", 2, 4, 1080, 360},
+    {3, "open_jaw", "vertical jaw displacement (does not affect mouth opening)", Fapu::mns, false, "down", 2, 4, 1080,
+     360},
     {4, "lower_t_midlip", "vertical top middle inner lip displacement", Fapu::mns, true, "down", 2, 2, 600, 180},
     {5, "raise_b_midlip", "vertical bottom middle inner lip displacement", Fapu::mns, true, "up", 2, 2, 1860, 600},
-    {6, "stretch_l_cornerlip", "horizontal displacement of left inner lip corner", Fapu::mw, true, "left", 2, 2, 600, 180},
-    {7, "stretch_r_cornerlip", "horizontal displacement of right inner lip corner", Fapu::mw, true, "right", 2, 2, 600, 180},
-    {8, "lower_t_lip_lm", "vertical displacement of midpoint between left corner and middle of top inner lip", Fapu::mns, true, "down", 2, 2, 600, 180},
-    {9, "lower_t_lip_rm", "vertical displacement of midpoint between right corner and middle of top inner lip", Fapu::mns, true, "down", 2, 2, 600, 180},
-    {10, "raise_b_lip_lm", "vertical displacement of midpoint between left corner and middle of bottom inner lip", Fapu::mns, true, "up", 2, 2, 1860, 600},
-    {11, "raise_b_lip_rm", "vertical displacement of midpoint between right corner and middle of bottom inner lip", Fapu::mns, true, "up", 2, 2, 1860, 600},
+    {6, "stretch_l_cornerlip", "horizontal displacement of left inner lip corner", Fapu::mw, true, "left", 2, 2, 600,
+     180},
+    {7, "stretch_r_cornerlip", "horizontal displacement of right inner lip corner", Fapu::mw, true, "right", 2, 2, 600,
+     180},
+    {8, "lower_t_lip_lm", "vertical displacement of midpoint between left corner and middle of top inner lip",
+     Fapu::mns, true, "down", 2, 2, 600, 180},
+    {9, "lower_t_lip_rm", "vertical displacement of midpoint between right corner and middle of top inner lip",
+     Fapu::mns, true, "down", 2, 2, 600, 180},
+    {10, "raise_b_lip_lm", "vertical displacement of midpoint between left corner and middle of bottom inner lip",
+     Fapu::mns, true, "up", 2, 2, 1860, 600},
+    {11, "raise_b_lip_rm", "vertical displacement of midpoint between right corner and middle of bottom inner lip",
+     Fapu::mns, true, "up", 2, 2, 1860, 600},
     {12, "raise_l_cornerlip", "vertical displacement of left inner lip corner", Fapu::mns, true, "up", 2, 2, 600, 180},
     {13, "raise_r_cornerlip", "vertical displacement of right inner lip corner", Fapu::mns, true, "up", 2, 2, 600, 180},
     {14, "thrust_jaw", "depth displacement of jaw", Fapu::mns, false, "forward", 2, 1, 600, 180},
@@ -63,14 +70,22 @@ constexpr std::array<FapInfo, kFapCount> kFaps{{
     {50, "head_roll", "head roll angle from top of spine", Fapu::au, true, "right", 7, 170, 1860, 600},
     {51, "lower_t_midlip_o", "vertical top middle outer lip displacement", Fapu::mns, true, "down", 8, 2, 600, 180},
     {52, "raise_b_midlip_o", "vertical bottom middle outer lip displacement", Fapu::mns, true, "up", 8, 2, 1860, 600},
-    {53, "stretch_l_cornerlip_o", "horizontal displacement of left outer lip corner", Fapu::mw, true, "left", 8, 2, 600, 180},
-    {54, "stretch_r_cornerlip_o", "horizontal displacement of right outer lip corner", Fapu::mw, true, "right", 8, 2, 600, 180},
-    {55, "lower_t_lip_lm_o", "vertical displacement of midpoint between left corner and middle of top outer lip", Fapu::mns, true, "down", 8, 2, 600, 180},
-    {56, "lower_t_lip_rm_o", "vertical displacement of midpoint between right corner and middle of top outer lip", Fapu::mns, true, "down", 8, 2, 600, 180},
-    {57, "raise_b_lip_lm_o", "vertical displacement of midpoint between left corner and middle of bottom outer lip", Fapu::mns, true, "up", 8, 2, 1860, 600},
-    {58, "raise_b_lip_rm_o", "vertical displacement of midpoint between right corner and middle of bottom outer lip", Fapu::mns, true, "up", 8, 2, 1860, 600},
-    {59, "raise_l_cornerlip_o", "vertical displacement of left outer lip corner", Fapu::mns, true, "up", 8, 2, 600, 180},
-    {60, "raise_r_cornerlip_o", "vertical displacement of right outer lip corner", Fapu::mns, true, "up", 8, 2, 600, 180},
+    {53, "stretch_l_cornerlip_o", "horizontal displacement of left outer lip corner", Fapu::mw, true, "left", 8, 2, 600,
+     180},
+    {54, "stretch_r_cornerlip_o", "horizontal displacement of right outer lip corner", Fapu::mw, true, "right", 8, 2,
+     600, 180},
+    {55, "lower_t_lip_lm_o", "vertical displacement of midpoint between left corner and middle of top outer lip",
+     Fapu::mns, true, "down", 8, 2, 600, 180},
+    {56, "lower_t_lip_rm_o", "vertical displacement of midpoint between right corner and middle of top outer lip",
+     Fapu::mns, true, "down", 8, 2, 600, 180},
+    {57, "raise_b_lip_lm_o", "vertical displacement of midpoint between left corner and middle of bottom outer lip",
+     Fapu::mns, true, "up", 8, 2, 1860, 600},
+    {58, "raise_b_lip_rm_o", "vertical displacement of midpoint between right corner and middle of bottom outer lip",
+     Fapu::mns, true, "up", 8, 2, 1860, 600},
+    {59, "raise_l_cornerlip_o", "vertical displacement of left outer lip corner", Fapu::mns, true, "up", 8, 2, 600,
+     180},
+    {60, "raise_r_cornerlip_o", "vertical displacement of right outer lip corner", Fapu::mns, true, "up", 8, 2, 600,
+     180},
     {61, "stretch_l_nose", "horizontal displacement of left side of nose", Fapu::ens, true, "left", 9, 1, 540, 120},
     {62, "stretch_r_nose", "horizontal displacement of right side of nose", Fapu::ens, true, "right", 9, 1, 540, 120},
     {63, "raise_nose", "vertical displacement of nose tip", Fapu::ens, true, "up", 9, 1, 680, 180},
@@ -104,11 +119,10 @@ constexpr std::array<FapGroup, kFapGroupCount> kGroups{{
     {10, 65, 68, "ears"},
 }};
 
-constexpr std::array<std::string_view, 15> kVisemes{
-    "none", "PP", "FF", "TH", "DD", "kk", "CH", "SS", "nn", "RR", "AA", "E", "ih", "oh", "ou"};
-constexpr std::array<std::string_view, 7> kExpressions{
-    "neutral", "joy", "sadness", "anger", "fear", "disgust", "surprise"};
-
+constexpr std::array<std::string_view, 15> kVisemes{"none", "PP", "FF", "TH", "DD", "kk", "CH", "SS",
+                                                    "nn",   "RR", "AA", "E",  "ih", "oh", "ou"};
+constexpr std::array<std::string_view, 7> kExpressions{"neutral", "joy",     "sadness", "anger",
+                                                       "fear",    "disgust", "surprise"};
 
 }  // namespace
 
@@ -137,8 +151,7 @@ const FapInfo* find_fap(std::string_view name) {
 const FapInfo* find_fap_by_name_or_number(std::string_view text) {
   if (const FapInfo* f = find_fap(text)) return f;
   std::string_view digits = text;
-  if (digits.size() > 3 && (digits.substr(0, 3) == "fap" || digits.substr(0, 3) == "FAP"))
-    digits.remove_prefix(3);
+  if (digits.size() > 3 && (digits.substr(0, 3) == "fap" || digits.substr(0, 3) == "FAP")) digits.remove_prefix(3);
   int number = 0;
   const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), number);
   if (ec != std::errc{} || end != digits.data() + digits.size()) return nullptr;
@@ -164,8 +177,7 @@ std::string_view viseme_name(int viseme) {
   return viseme >= 0 && viseme < 15 ? kVisemes[static_cast<std::size_t>(viseme)] : "?";
 }
 std::string_view expression_name(int expression) {
-  return expression >= 0 && expression < 7 ? kExpressions[static_cast<std::size_t>(expression)]
-                                           : "?";
+  return expression >= 0 && expression < 7 ? kExpressions[static_cast<std::size_t>(expression)] : "?";
 }
 
 }  // namespace fapc

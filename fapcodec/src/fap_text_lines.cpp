@@ -38,8 +38,8 @@ void tokenize(const RawLine& raw, Line& line) {
     }
     const char* const start = at;
     while (at != end && !is_blank(*at)) ++at;
-    line.tokens.push_back(Token{std::string_view(start, static_cast<std::size_t>(at - start)),
-                                static_cast<int>(start - begin) + 1});
+    line.tokens.push_back(
+        Token{std::string_view(start, static_cast<std::size_t>(at - start)), static_cast<int>(start - begin) + 1});
   }
   line.trailing_blank = !text.empty() && is_blank(text.back()) && !line.tokens.empty();
 }
@@ -98,7 +98,8 @@ bool scan_integers(std::string_view text, IntegerLine& line, const char* readabl
     const char* const digits = at + (negative ? 1 : 0);
     const char* p = digits;
     unsigned long long magnitude = 0;
-    for (unsigned digit; (digit = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9; ++p) magnitude = magnitude * 10 + digit;
+    for (unsigned digit; (digit = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9; ++p)
+      magnitude = magnitude * 10 + digit;
     // No digit, more than 18 (which could overflow), or something else in the token.
     if (p == digits || p - digits > 18 || (p != end && !is_blank(*p))) return false;
     bits = bits && p - at == 1 && magnitude <= 1;
@@ -114,7 +115,7 @@ bool scan_integers(std::string_view text, IntegerLine& line, const char* readabl
 }
 
 bool scan_plain_mask(std::string_view text, std::bitset<68>& mask, bool& trailing_blank) {
-  constexpr std::size_t kDigits = 68, kLength = 2 * kDigits - 1;  // "d d ... d"
+  constexpr std::size_t kDigits = 68, kLength = 2 * kDigits - 1;           // "d d ... d"
   if constexpr (std::endian::native != std::endian::little) return false;  // the words below are read little-endian
   if (text.size() < kLength) return false;
   for (std::size_t i = kLength; i < text.size(); ++i)

@@ -13,9 +13,9 @@ namespace {
 
 // What distinguishes the flavours, from each family's reader (docs/fap-files.md section 3).
 struct Layout {
-  bool header;          // `2.1 <name> <fps> <n>`; SEMAINE messages have none
-  int mask_tokens;      // 68, or 69 with a final 0 (Greta's Java writer and reader)
-  bool single_fap12;    // FAP 1 and FAP 2 as one value each instead of 4 and 6 fields
+  bool header;               // `2.1 <name> <fps> <n>`; SEMAINE messages have none
+  int mask_tokens;           // 68, or 69 with a final 0 (Greta's Java writer and reader)
+  bool single_fap12;         // FAP 1 and FAP 2 as one value each instead of 4 and 6 fields
   bool millisecond_numbers;  // frame numbers are times in ms, after a leading time line
 };
 
@@ -78,13 +78,17 @@ void append_frame(std::string& out, const FapFrame& frame, long long number, con
   put(number);
   if (frame.has(1)) {
     const VisemeFields& v = frame.viseme;
-    if (layout.single_fap12) put(v.select1);
-    else for (int x : {v.select1, v.select2, v.blend, v.def}) put(x);
+    if (layout.single_fap12)
+      put(v.select1);
+    else
+      for (int x : {v.select1, v.select2, v.blend, v.def}) put(x);
   }
   if (frame.has(2)) {
     const ExpressionFields& e = frame.expression;
-    if (layout.single_fap12) put(e.select1);
-    else for (int x : {e.select1, e.intensity1, e.select2, e.intensity2, e.init_face, e.def}) put(x);
+    if (layout.single_fap12)
+      put(e.select1);
+    else
+      for (int x : {e.select1, e.intensity1, e.select2, e.intensity2, e.init_face, e.def}) put(x);
   }
   for (int fap = 3; fap <= kFapCount; ++fap)
     if (frame.has(fap)) put(frame.value(fap));
@@ -106,14 +110,15 @@ std::optional<Diagnostic> check_rate(int fps, FapFlavour flavour, const Layout& 
 }
 
 std::optional<Diagnostic> check_frame(const FapFrame& frame, FapFlavour flavour, const Layout& layout) {
-  if (!layout.single_fap12 || ((!frame.has(1) || single_viseme(frame.viseme)) &&
-                               (!frame.has(2) || single_expression(frame.expression))))
+  if (!layout.single_fap12 ||
+      ((!frame.has(1) || single_viseme(frame.viseme)) && (!frame.has(2) || single_expression(frame.expression))))
     return std::nullopt;
   {
     const auto at = "frame " + std::to_string(frame.number) + ": ";
     if (frame.has(1) && !single_viseme(frame.viseme))
-      return cannot_carry(flavour, at + "FAP 1 is one value there (viseme_select1 shown alone, blend 63); this "
-                                        "viseme record needs the safe, xface or greta-cpp flavour, or FAP 1 masked off");
+      return cannot_carry(flavour, at +
+                                       "FAP 1 is one value there (viseme_select1 shown alone, blend 63); this "
+                                       "viseme record needs the safe, xface or greta-cpp flavour, or FAP 1 masked off");
     if (frame.has(2) && !single_expression(frame.expression))
       return cannot_carry(flavour, at + "FAP 2 is one value there (expression_select1 at intensity 63); this "
                                         "expression record needs the safe, xface or greta-cpp flavour, or FAP 2 masked "
@@ -196,7 +201,8 @@ void FapTextWriter::write_pending(std::int64_t next_number, std::string& out) {
   // Gaps are filled by repeating the frame before them: players read frame k at row k.
   const long long ms_per_frame = layout_of(options_.flavour).millisecond_numbers ? 1000 / fps_ : 0;
   for (long long n = frame.number - first_; n < next_number - first_; ++n)
-    append_frame(out, frame, layout_of(options_.flavour).millisecond_numbers ? (n + 1) * ms_per_frame : n, layout_of(options_.flavour), options_);
+    append_frame(out, frame, layout_of(options_.flavour).millisecond_numbers ? (n + 1) * ms_per_frame : n,
+                 layout_of(options_.flavour), options_);
 }
 
 namespace {

@@ -100,10 +100,11 @@ bool is_gzip(std::string_view bytes) {
 
 Result<std::string> gunzip(std::string_view bytes, const std::string& file, const Limits& limits) {
   // The most bytes this input may inflate to; checked before each chunk is appended.
-  const double by_ratio = std::max(static_cast<double>(kExpansionFloor),
-                                   limits.max_expansion * static_cast<double>(bytes.size()));
+  const double by_ratio =
+      std::max(static_cast<double>(kExpansionFloor), limits.max_expansion * static_cast<double>(bytes.size()));
   const bool ratio_binds = by_ratio < static_cast<double>(limits.max_decompressed_bytes);
-  const auto allowed = static_cast<std::size_t>(ratio_binds ? by_ratio : static_cast<double>(limits.max_decompressed_bytes));
+  const auto allowed =
+      static_cast<std::size_t>(ratio_binds ? by_ratio : static_cast<double>(limits.max_decompressed_bytes));
   z_stream z{};
   if (inflateInit2(&z, 15 + 32) != Z_OK)  // +32: accept gzip and zlib headers
     return make_error(codes::gzip::bad_data, Location::binary(file, 0), "cannot start the gzip decoder");
@@ -173,8 +174,7 @@ Result<std::string> read_file_bytes(const std::string& path, const Limits& limit
   std::size_t used = 0;
   bytes.resize(static_cast<std::size_t>(std::max<off_t>(info.st_size, 0)) + 1);
   for (;;) {
-    if (used == bytes.size())
-      bytes.resize(std::max(bytes.size() * 2, used + (std::size_t{1} << 20)));
+    if (used == bytes.size()) bytes.resize(std::max(bytes.size() * 2, used + (std::size_t{1} << 20)));
     const ssize_t got = ::read(file.get(), bytes.data() + used, bytes.size() - used);
     if (got == 0) break;
     if (got < 0) {
@@ -294,7 +294,8 @@ Result<int> open_stream(const std::string& path, const std::string& file) {
   struct stat info {};
   if (::fstat(out.get(), &info) != 0) return io_error(codes::io::cannot_create_output, path, "cannot open output");
   if (!S_ISCHR(info.st_mode) && !S_ISFIFO(info.st_mode))
-    return make_error(codes::io::output_changed, Location::whole_file(path), "is no longer a character device or a FIFO; nothing written");
+    return make_error(codes::io::output_changed, Location::whole_file(path),
+                      "is no longer a character device or a FIFO; nothing written");
   return out.release();
 }
 
@@ -303,7 +304,8 @@ Result<int> open_stream(const std::string& path, const std::string& file) {
 Status still_replaceable(const std::string& path, const std::string& file) {
   struct stat info {};
   if (::lstat(file.c_str(), &info) == 0 && !S_ISREG(info.st_mode))
-    return make_error(codes::io::output_changed, Location::whole_file(path), "is no longer a regular file; nothing written");
+    return make_error(codes::io::output_changed, Location::whole_file(path),
+                      "is no longer a regular file; nothing written");
   return ok_status();
 }
 
@@ -326,8 +328,7 @@ Result<AtomicFile> AtomicFile::create(const std::string& path) {
   if (fd < 0) return io_error(codes::io::cannot_create_output, path, "cannot create output");
   // A file replaced keeps its permissions: a private output stays private.
   struct stat existing {};
-  if (::stat(target->file.c_str(), &existing) == 0 && S_ISREG(existing.st_mode))
-    ::fchmod(fd, existing.st_mode & 0777);
+  if (::stat(target->file.c_str(), &existing) == 0 && S_ISREG(existing.st_mode)) ::fchmod(fd, existing.st_mode & 0777);
   std::FILE* file = ::fdopen(fd, "wb");
   if (!file) {
     ::close(fd);
@@ -338,7 +339,10 @@ Result<AtomicFile> AtomicFile::create(const std::string& path) {
 }
 
 AtomicFile::AtomicFile(AtomicFile&& other) noexcept
-    : path_(std::move(other.path_)), target_(std::move(other.target_)), temp_(std::move(other.temp_)), file_(other.file_) {
+    : path_(std::move(other.path_)),
+      target_(std::move(other.target_)),
+      temp_(std::move(other.temp_)),
+      file_(other.file_) {
   other.file_ = nullptr;
 }
 
@@ -445,7 +449,8 @@ Status ScratchFile::write(std::string_view bytes) {
 }
 
 Status ScratchFile::read_back(const std::function<Status(std::string_view)>& sink) {
-  if (!file_ || std::fflush(file_) != 0 || std::fseek(file_, 0, SEEK_SET) != 0) return io_error(codes::io::cannot_write_output, output_, "cannot write output");
+  if (!file_ || std::fflush(file_) != 0 || std::fseek(file_, 0, SEEK_SET) != 0)
+    return io_error(codes::io::cannot_write_output, output_, "cannot write output");
   std::string buffer(std::size_t{1} << 20, '\0');
   for (;;) {
     const std::size_t got = std::fread(buffer.data(), 1, buffer.size(), file_);

@@ -34,13 +34,14 @@ std::string shown(const std::string& folder) { return folder.empty() ? "." : fol
 Result<std::string> resolve_include(std::string_view name, const std::string& including_file,
                                     const IncludePolicy& policy, const Location& where) {
   const fs::path written{std::string(name)};
-  const fs::path base = policy.base_folder.empty() ? fs::path(including_file).parent_path()
-                                                   : fs::path(policy.base_folder);
+  const fs::path base =
+      policy.base_folder.empty() ? fs::path(including_file).parent_path() : fs::path(policy.base_folder);
   const fs::path joined = (written.is_absolute() ? written : base / written).lexically_normal();
   std::error_code error;
   const fs::path target = resolved(joined, error);
   if (error) {
-    return make_error(codes::include::unresolvable, where, "cannot resolve '" + std::string(name) + "': " + error.message());
+    return make_error(codes::include::unresolvable, where,
+                      "cannot resolve '" + std::string(name) + "': " + error.message());
   }
   std::vector<std::string> allowed = policy.allowed_folders;
   if (allowed.empty()) allowed.push_back(base.string());
@@ -53,8 +54,8 @@ Result<std::string> resolve_include(std::string_view name, const std::string& in
   for (const std::string& folder : allowed) folders += (folders.empty() ? "'" : ", '") + shown(folder) + "'";
   const char* how = written.is_absolute() ? "is an absolute path outside" : "leads outside";
   return make_error(codes::include::outside_allowed, where,
-                    "'" + std::string(name) + "' " + how + " the folders a script may include from (" +
-                        folders + "); --allow-include DIR allows another (docs/security.md)");
+                    "'" + std::string(name) + "' " + how + " the folders a script may include from (" + folders +
+                        "); --allow-include DIR allows another (docs/security.md)");
 }
 
 }  // namespace fapc

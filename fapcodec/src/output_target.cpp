@@ -48,7 +48,8 @@ Result<OutputTarget> output_target(const std::string& path) {
       char target[PATH_MAX];
       const ssize_t length = ::readlink(path.c_str(), target, sizeof target - 1);
       const std::string to = length > 0 ? std::string(target, static_cast<std::size_t>(length)) : std::string("?");
-      return refused(path, "is a symbolic link to '" + to + "', which does not exist (fapc creates no file through a link)");
+      return refused(path,
+                     "is a symbolic link to '" + to + "', which does not exist (fapc creates no file through a link)");
     }
     return OutputTarget{OutputTarget::Way::replace, path};
   }

@@ -43,8 +43,7 @@ TEST(AlgebraAnimation, DisjointAnimationsJoinWithNeutralFrames) {
   // frames.
   const Animation a = jaw(25, {10, 20});
   const Animation b = shifted(jaw(25, {30, 40}), 0.16);
-  const Result<Animation> joined =
-      overlap({{a, Mask::all(), 1}, {b, Mask::all(), 2}});
+  const Result<Animation> joined = overlap({{a, Mask::all(), 1}, {b, Mask::all(), 2}});
   ASSERT_TRUE(joined.ok());
   EXPECT_EQ(jaw_values(*joined), (Values{10, 20, 0, 0, 30, 40}));
 }

@@ -104,7 +104,8 @@ TEST(AlgebraLimits, MeetingOnTheHigherRateCountsAgainstTheLimit) {
 
 TEST(AlgebraLimits, AnOperandThatCannotBeReadIsReportedWhereTheExpressionNamesIt) {
   const OperandLoader missing = [](const std::string& name, int) -> Result<Value> {
-    return make_error(codes::io::cannot_open, Location::whole_file("folder/" + name), "cannot open file: No such file or directory");
+    return make_error(codes::io::cannot_open, Location::whole_file("folder/" + name),
+                      "cannot open file: No such file or directory");
   };
   const auto r = evaluate("0.5 * nothere.fap", missing);
   ASSERT_FALSE(r.ok());

@@ -111,10 +111,9 @@ TEST(AlgebraProperties, AmplifierDistributesOverTheSumUpToRounding) {
       differing += gap != 0;
     }
   }
-  EXPECT_LE(worst, 4);  // the bound for w <= 2
+  EXPECT_LE(worst, 4);      // the bound for w <= 2
   EXPECT_GT(differing, 0);  // rounding does break exact distributivity; docs/algebra.md says so
-  std::printf("amplifier over sum: worst gap %d, %ld FAP values differ in %d trials\n", worst,
-              differing, kTrials);
+  std::printf("amplifier over sum: worst gap %d, %ld FAP values differ in %d trials\n", worst, differing, kTrials);
   RecordProperty("worst_gap", worst);
   RecordProperty("differing_faps_per_2000_trials", static_cast<int>(differing));
 }
@@ -142,7 +141,7 @@ TEST(AlgebraProperties, ClosureAndRangeLimits) {
   // The smallest case, by hand: legal max 5 would give 6; with real ranges (multiples of 60 times
   // the quantiser step, all even) the halves meet at L/2 each: check the bound directly.
   FacialState edge;
-  edge.at(48) = find_fap(48)->legal_max() - 1;  // odd: 316199
+  edge.at(48) = find_fap(48)->legal_max() - 1;                        // odd: 316199
   EXPECT_EQ(sum(edge, edge, 0.5).at(48), find_fap(48)->legal_max());  // 158100 + 158100
 }
 

@@ -34,8 +34,10 @@ TEST(Aac, EncodedToneDecodesWithItsSilencesInPlace) {
   // Sound where the tone was, silence where it was not, to within 10 ms (220 samples) of each edge.
   for (const auto& [from, to, loud] : test::tone_segments(22050)) {
     const double rms = test::rms(*back, from + 220, to - 220);
-    if (loud) EXPECT_GT(rms, 5000.0) << from << ".." << to;
-    else EXPECT_LT(rms, 100.0) << from << ".." << to;
+    if (loud)
+      EXPECT_GT(rms, 5000.0) << from << ".." << to;
+    else
+      EXPECT_LT(rms, 100.0) << from << ".." << to;
   }
 }
 

@@ -31,8 +31,8 @@ inline AudioTrack tone_with_silences(int rate, double start = 0) {
   a.start = start;
   for (const auto& [from, to, loud] : tone_segments(rate))
     for (std::size_t k = from; k < to; ++k)
-      a.samples.push_back(loud ? static_cast<std::int16_t>(std::lround(
-                                     16000 * std::sin(2 * std::numbers::pi * 440.0 * double(k) / rate)))
+      a.samples.push_back(loud ? static_cast<std::int16_t>(
+                                     std::lround(16000 * std::sin(2 * std::numbers::pi * 440.0 * double(k) / rate)))
                                : std::int16_t{0});
   return a;
 }

@@ -23,8 +23,9 @@ constexpr double kMoved = 0.3;  // millimetres: well above rounding, well below 
 face::FacePose pose_of(const std::string& lexeme) {
   const fs::path dir = test::scratch_folder("bml-lexeme");
   const fs::path path = dir / (lexeme + ".bml");
-  std::ofstream(path) << "<bml xmlns=\"http://www.bml-initiative.org/bml/bml-1.0\" id=\"b\"><faceLexeme id=\"f\" lexeme=\""
-                      << lexeme << "\" start=\"0\"/></bml>\n";
+  std::ofstream(path)
+      << "<bml xmlns=\"http://www.bml-initiative.org/bml/bml-1.0\" id=\"b\"><faceLexeme id=\"f\" lexeme=\"" << lexeme
+      << "\" start=\"0\"/></bml>\n";
   pipeline::ConvertOptions options;
   options.fps = 25;
   Result<pipeline::Loaded> loaded = pipeline::load(path.string(), options);
@@ -61,9 +62,13 @@ TEST(BmlLexemeFace, RaiseBrowsLiftsBothBrows) {
   for (P p : {P::brow_l_inner, P::brow_r_inner, P::brow_l_outer, P::brow_r_outer}) EXPECT_GT(dy(pose, p), kMoved);
 }
 
-TEST(BmlLexemeFace, RaiseLeftBrowLiftsTheLeftOnly) { expect_one_side("RAISE_LEFT_BROW", P::brow_l_mid, P::brow_r_mid, 1); }
+TEST(BmlLexemeFace, RaiseLeftBrowLiftsTheLeftOnly) {
+  expect_one_side("RAISE_LEFT_BROW", P::brow_l_mid, P::brow_r_mid, 1);
+}
 
-TEST(BmlLexemeFace, RaiseRightBrowLiftsTheRightOnly) { expect_one_side("RAISE_RIGHT_BROW", P::brow_r_mid, P::brow_l_mid, 1); }
+TEST(BmlLexemeFace, RaiseRightBrowLiftsTheRightOnly) {
+  expect_one_side("RAISE_RIGHT_BROW", P::brow_r_mid, P::brow_l_mid, 1);
+}
 
 TEST(BmlLexemeFace, LowerBrowsBringsThemDownAndTogether) {
   const auto pose = pose_of("LOWER_BROWS");
@@ -73,9 +78,13 @@ TEST(BmlLexemeFace, LowerBrowsBringsThemDownAndTogether) {
   EXPECT_LT(dx(pose, P::brow_l_inner) - dx(pose, P::brow_r_inner), 0);
 }
 
-TEST(BmlLexemeFace, LowerLeftBrowLowersTheLeftOnly) { expect_one_side("LOWER_LEFT_BROW", P::brow_l_inner, P::brow_r_inner, -1); }
+TEST(BmlLexemeFace, LowerLeftBrowLowersTheLeftOnly) {
+  expect_one_side("LOWER_LEFT_BROW", P::brow_l_inner, P::brow_r_inner, -1);
+}
 
-TEST(BmlLexemeFace, LowerRightBrowLowersTheRightOnly) { expect_one_side("LOWER_RIGHT_BROW", P::brow_r_inner, P::brow_l_inner, -1); }
+TEST(BmlLexemeFace, LowerRightBrowLowersTheRightOnly) {
+  expect_one_side("LOWER_RIGHT_BROW", P::brow_r_inner, P::brow_l_inner, -1);
+}
 
 TEST(BmlLexemeFace, ObliqueBrowsRaiseTheInnerEndsAboveTheOuter) {
   const auto pose = pose_of("OBLIQUE_BROWS");
@@ -90,9 +99,13 @@ TEST(BmlLexemeFace, LowerMouthCornersPullsBothCornersDown) {
   EXPECT_LT(dy(pose, P::lip_r_corner_o), -kMoved);
 }
 
-TEST(BmlLexemeFace, LowerLeftMouthCornerPullsTheLeftDownOnly) { expect_one_side("LOWER_LEFT_MOUTH_CORNER", P::lip_l_corner_o, P::lip_r_corner_o, -1); }
+TEST(BmlLexemeFace, LowerLeftMouthCornerPullsTheLeftDownOnly) {
+  expect_one_side("LOWER_LEFT_MOUTH_CORNER", P::lip_l_corner_o, P::lip_r_corner_o, -1);
+}
 
-TEST(BmlLexemeFace, LowerRightMouthCornerPullsTheRightDownOnly) { expect_one_side("LOWER_RIGHT_MOUTH_CORNER", P::lip_r_corner_o, P::lip_l_corner_o, -1); }
+TEST(BmlLexemeFace, LowerRightMouthCornerPullsTheRightDownOnly) {
+  expect_one_side("LOWER_RIGHT_MOUTH_CORNER", P::lip_r_corner_o, P::lip_l_corner_o, -1);
+}
 
 TEST(BmlLexemeFace, RaiseMouthCornersLiftsBothCorners) {
   const auto pose = pose_of("RAISE_MOUTH_CORNERS");
@@ -100,9 +113,13 @@ TEST(BmlLexemeFace, RaiseMouthCornersLiftsBothCorners) {
   EXPECT_GT(dy(pose, P::lip_r_corner_o), kMoved);
 }
 
-TEST(BmlLexemeFace, RaiseLeftMouthCornerLiftsTheLeftOnly) { expect_one_side("RAISE_LEFT_MOUTH_CORNER", P::lip_l_corner_o, P::lip_r_corner_o, 1); }
+TEST(BmlLexemeFace, RaiseLeftMouthCornerLiftsTheLeftOnly) {
+  expect_one_side("RAISE_LEFT_MOUTH_CORNER", P::lip_l_corner_o, P::lip_r_corner_o, 1);
+}
 
-TEST(BmlLexemeFace, RaiseRightMouthCornerLiftsTheRightOnly) { expect_one_side("RAISE_RIGHT_MOUTH_CORNER", P::lip_r_corner_o, P::lip_l_corner_o, 1); }
+TEST(BmlLexemeFace, RaiseRightMouthCornerLiftsTheRightOnly) {
+  expect_one_side("RAISE_RIGHT_MOUTH_CORNER", P::lip_r_corner_o, P::lip_l_corner_o, 1);
+}
 
 TEST(BmlLexemeFace, OpenMouthDropsTheJawAndPartsTheLips) {
   const auto pose = pose_of("OPEN_MOUTH");

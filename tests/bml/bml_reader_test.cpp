@@ -9,7 +9,8 @@ namespace fapc::bml {
 namespace {
 
 std::string block(const std::string& body) {
-  return "<bml xmlns=\"http://www.bml-initiative.org/bml/bml-1.0\" id=\"bml1\" characterId=\"Alice\">\n" + body + "\n</bml>\n";
+  return "<bml xmlns=\"http://www.bml-initiative.org/bml/bml-1.0\" id=\"bml1\" characterId=\"Alice\">\n" + body +
+         "\n</bml>\n";
 }
 
 BmlDocument read_ok(const std::string& body) {
@@ -70,9 +71,12 @@ TEST(BmlReader, ABehaviourThatLastsNoTimeIsSaidAndNotDrawn) {
 
 TEST(BmlReader, RepetitionIsAWholeNumberFromOneToAHundred) {
   // 2.7e120 once went through an int conversion first (undefined; found by fuzzing).
-  for (const char* bad : {"2666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666", "0", "1.5", "101"}) {
+  for (const char* bad : {"26666666666666666666666666666666666666666666666666666666666666666666666666666666666666666666"
+                          "66666666666666666666666666666",
+                          "0", "1.5", "101"}) {
     const Diagnostic e = read_error(std::string(R"(<head id="n" lexeme="NOD" repetition=")") + bad + "\"/>");
-    EXPECT_NE(e.message.find("repetition must be a whole number from 1 to 100"), std::string::npos) << bad << ": " << e.message;
+    EXPECT_NE(e.message.find("repetition must be a whole number from 1 to 100"), std::string::npos)
+        << bad << ": " << e.message;
   }
 }
 
@@ -95,7 +99,8 @@ TEST(BmlReader, AContradictoryCycleNamesItsChain) {
 <head id="b" lexeme="NOD" start="c:start+1"/>
 <head id="c" lexeme="NOD" start="a:start"/>)");
   EXPECT_EQ(e.where.line, 4);
-  EXPECT_NE(e.message.find("a start=\"b:start+1\" (line 2), then b start=\"c:start+1\" (line 3)"), std::string::npos) << e.message;
+  EXPECT_NE(e.message.find("a start=\"b:start+1\" (line 2), then b start=\"c:start+1\" (line 3)"), std::string::npos)
+      << e.message;
 }
 
 TEST(BmlReader, UnknownBehaviourAndSyncPointAreErrorsAtTheReference) {

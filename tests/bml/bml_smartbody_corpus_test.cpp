@@ -34,7 +34,8 @@ TEST_P(BmlSmartBodyFile, CompilesWithItsRecordedTiming) {
   options.speech_engine = false;  // recorded speech needs none: were it asked, this would show
   const std::string output = (fs::temp_directory_path() / ("fapc-" + test::identifier(relative) + ".fap")).string();
   fs::remove(output);
-  const pipeline::ConvertResult result = pipeline::convert(test::corpus_dir() + "/" + relative, {{output, ""}}, options);
+  const pipeline::ConvertResult result =
+      pipeline::convert(test::corpus_dir() + "/" + relative, {{output, ""}}, options);
   ASSERT_TRUE(result.ok()) << result.error->message;
   EXPECT_TRUE(fs::is_regular_file(output));
   EXPECT_GT(result.frames.count, 0);
@@ -50,8 +51,7 @@ TEST_P(BmlSmartBodyFile, CompilesWithItsRecordedTiming) {
   fs::remove(output);
 }
 
-INSTANTIATE_TEST_SUITE_P(Files, BmlSmartBodyFile, testing::ValuesIn(corpus_files()),
-                         test::file_param_name);
+INSTANTIATE_TEST_SUITE_P(Files, BmlSmartBodyFile, testing::ValuesIn(corpus_files()), test::file_param_name);
 
 }  // namespace
 }  // namespace fapc

@@ -11,13 +11,13 @@
 #include <numbers>
 #include <sstream>
 
+#include "bml/smartbody_visemes.hpp"
 #include "fapc/bml/bml.hpp"
 #include "fapc/pipeline/convert.hpp"
 #include "fapc/pipeline/registry.hpp"
 #include "fapc/speech/codes.hpp"
 #include "fapc/transcoder/wav.hpp"
 #include "fapc/vocabulary/mapping_table.hpp"
-#include "bml/smartbody_visemes.hpp"
 #include "support/sync_to_word.hpp"
 #include "support/test_support.hpp"
 
@@ -26,9 +26,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path temp_dir() {
-  return test::scratch_folder("bml-smartbody");
-}
+fs::path temp_dir() { return test::scratch_folder("bml-smartbody"); }
 
 // NVBG's output: placeholder speech times (end="0.2" for 1.24 s of words), marks with their
 // recorded times, the audio by its stem, one lips row per viseme, FaceFX curves.
@@ -68,7 +66,8 @@ std::string write(const std::string& name, const std::string& text) {
 AudioTrack tone() {
   AudioTrack track;
   track.sample_rate = 16000;
-  for (int i = 0; i < 24000; ++i) track.samples.push_back(static_cast<std::int16_t>(8000 * std::sin(2 * std::numbers::pi * 200 * i / 16000.0)));
+  for (int i = 0; i < 24000; ++i)
+    track.samples.push_back(static_cast<std::int16_t>(8000 * std::sin(2 * std::numbers::pi * 200 * i / 16000.0)));
   return track;
 }
 
@@ -156,7 +155,8 @@ TEST(BmlSmartBody, TheRecordingBesideTheDocumentIsTheVoice) {
   ASSERT_GE(loaded->audio->samples.size(), 24000U);
   const double rate = loaded->audio->sample_rate;
   double energy = 0;
-  for (std::size_t i = 0; i < static_cast<std::size_t>(rate); ++i) energy += std::abs(double(loaded->audio->samples[i]));
+  for (std::size_t i = 0; i < static_cast<std::size_t>(rate); ++i)
+    energy += std::abs(double(loaded->audio->samples[i]));
   EXPECT_GT(energy / rate, 3000);  // the tone's mean level is 8000 * 2/pi
 
   // In an .mp4: its sound track, read back, is the tone (AAC keeps its level within a few %).
@@ -192,7 +192,8 @@ TEST(BmlSmartBody, ANodSyncedToARecordedMarkStartsWithTheWordInTheAudio) {
 <description level="1" type="audio/x-wav"><file ref="two"/></description></speech>
 <head id="n1" type="NOD" start="sp1:T2"/>
 </bml>
-)"), 48, 1);
+)"),
+                               48, 1);
 }
 
 TEST(BmlSmartBody, ARecordingIsBoundedAndMustBeAWav) {
@@ -229,17 +230,19 @@ TEST(BmlSmartBody, LipsMoveTheMouth) {
   const Result<pipeline::Loaded> loaded = pipeline::load(write("lips.bml", kRecorded), options);
   ASSERT_TRUE(loaded) << format_diagnostic(loaded.error());
   const auto& frames = loaded->frames.frames;
-  auto at = [&](double seconds) -> const FapFrame& { return frames.at(static_cast<std::size_t>(std::lround(seconds * 25))); };
+  auto at = [&](double seconds) -> const FapFrame& {
+    return frames.at(static_cast<std::size_t>(std::lround(seconds * 25)));
+  };
   auto strength = [](const FapFrame& f, int viseme) {
     if (!f.has(1)) return 0;
     if (f.viseme.select1 == viseme) return f.viseme.blend;
     if (f.viseme.select2 == viseme) return 63 - f.viseme.blend;
     return 0;
   };
-  EXPECT_EQ(strength(at(0.04), 14), 63);  // W: U, at full articulation
-  EXPECT_EQ(strength(at(0.32), 1), 63);   // BMP: p/b/m
+  EXPECT_EQ(strength(at(0.04), 14), 63);      // W: U, at full articulation
+  EXPECT_EQ(strength(at(0.32), 1), 63);       // BMP: p/b/m
   EXPECT_NEAR(strength(at(0.8), 10), 32, 1);  // Aa at articulation 0.5: A:, half
-  EXPECT_EQ(strength(at(0.48), 1), 0);    // between rows the mouth rests
+  EXPECT_EQ(strength(at(0.48), 1), 0);        // between rows the mouth rests
 }
 
 TEST(BmlSmartBody, AnUnknownVisemeIsSaidWhereItStands) {
@@ -254,7 +257,8 @@ TEST(BmlSmartBody, AnUnknownVisemeIsSaidWhereItStands) {
 TEST(BmlSmartBody, LipsWinOverSynthesisedVisemes) {
   // Without an engine the letter table gives the speech visemes: the lips row replaces them.
   const Result<BmlDocument> d = read_bml(R"(<bml><speech id="s"><text>hello there</text></speech>
-<lips viseme="BMP" start="0" end="0.5"/></bml>)", "w.bml");
+<lips viseme="BMP" start="0" end="0.5"/></bml>)",
+                                         "w.bml");
   ASSERT_TRUE(d) << format_diagnostic(d.error());
   EXPECT_EQ(count(d->warnings, "bml.lips_over_synthesis"), 1);
   ASSERT_EQ(d->timeline.clips.size(), 1U);
@@ -262,18 +266,21 @@ TEST(BmlSmartBody, LipsWinOverSynthesisedVisemes) {
 }
 
 TEST(BmlSmartBody, RecordedSpeechWithoutLipsSaysItsMouthIsStill) {
-  const Result<BmlDocument> d = read_bml(R"(<bml><speech id="s"><text><sync id="a" time="0"/>hi<sync id="b" time="0.4"/><emph>there</emph></text>
-<description type="audio/x-wav"><file ref="absent"/></description></speech></bml>)", (temp_dir() / "q.bml").string());
+  const Result<BmlDocument> d =
+      read_bml(R"(<bml><speech id="s"><text><sync id="a" time="0"/>hi<sync id="b" time="0.4"/><emph>there</emph></text>
+<description type="audio/x-wav"><file ref="absent"/></description></speech></bml>)",
+               (temp_dir() / "q.bml").string());
   ASSERT_TRUE(d) << format_diagnostic(d.error());
   EXPECT_EQ(count(d->warnings, "bml.recorded_speech_without_lips"), 1);
-  EXPECT_EQ(count(d->warnings, "bml.recorded_timing_wins"), 0);  // no placeholders here
+  EXPECT_EQ(count(d->warnings, "bml.recorded_timing_wins"), 0);   // no placeholders here
   EXPECT_EQ(count(d->warnings, "bml.speech_markup_skipped"), 1);  // emph: the recording is what is heard
 }
 
 TEST(BmlSmartBody, RecordedMarksOutOfOrderOrWithoutTimeAreErrors) {
   const std::string head = "<bml><speech id=\"s\"><text>";
   const std::string tail = "</text><description type=\"audio/x-wav\"><file ref=\"x\"/></description></speech></bml>";
-  const Result<BmlDocument> back = read_bml(head + "<sync id=\"a\" time=\"0.5\"/>hi<sync id=\"b\" time=\"0.2\"/>" + tail, "o.bml");
+  const Result<BmlDocument> back =
+      read_bml(head + "<sync id=\"a\" time=\"0.5\"/>hi<sync id=\"b\" time=\"0.2\"/>" + tail, "o.bml");
   ASSERT_FALSE(back);
   EXPECT_NE(back.error().message.find("comes before the mark before it"), std::string::npos) << back.error().message;
   const Result<BmlDocument> untimed = read_bml(head + "<sync id=\"a\"/>hi" + tail, "o.bml");
@@ -287,10 +294,13 @@ TEST(BmlSmartBody, RecordedMarksOutOfOrderOrWithoutTimeAreErrors) {
 }
 
 TEST(BmlSmartBody, FacsFaceAndTypedHeadTakeTheBml10Paths) {
-  const Result<BmlDocument> smartbody = read_bml(R"(<bml><face id="f" type="facs" au="12" amount="0.5" start="0" end="2"/>
-<head id="h" type="NOD" start="0"/></bml>)", "f.bml");
+  const Result<BmlDocument> smartbody =
+      read_bml(R"(<bml><face id="f" type="facs" au="12" amount="0.5" start="0" end="2"/>
+<head id="h" type="NOD" start="0"/></bml>)",
+               "f.bml");
   const Result<BmlDocument> bml10 = read_bml(R"(<bml><faceFacs id="f" au="12" amount="0.5" start="0" end="2"/>
-<head id="h" lexeme="NOD" start="0"/></bml>)", "f.bml");
+<head id="h" lexeme="NOD" start="0"/></bml>)",
+                                             "f.bml");
   ASSERT_TRUE(smartbody) << format_diagnostic(smartbody.error());
   ASSERT_TRUE(bml10);
   ASSERT_EQ(smartbody->timeline.clips.size(), bml10->timeline.clips.size());
@@ -319,7 +329,8 @@ TEST(BmlSmartBody, TheVisemeTableIsWellFormed) {
     ++rows;
   }
   EXPECT_EQ(rows, static_cast<int>(smartbody_viseme_names().size()));
-  for (const char* name : {"_", "Aa", "Ah", "BMP", "D", "Eh", "Er", "F", "H", "Ih", "Kg", "L", "Ow", "R", "Sh", "Th", "W", "Z"})
+  for (const char* name :
+       {"_", "Aa", "Ah", "BMP", "D", "Eh", "Er", "F", "H", "Ih", "Kg", "L", "Ow", "R", "Sh", "Th", "W", "Z"})
     EXPECT_TRUE(smartbody_viseme(name).has_value()) << name;
 }
 

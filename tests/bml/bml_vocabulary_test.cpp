@@ -42,11 +42,23 @@ TEST(BmlVocabulary, EveryRowIsWellFormedAndItsUnitIsMapped) {
 }
 
 TEST(BmlVocabulary, TheSeventeenLexemesOfBml10) {
-  const std::vector<std::string> expected = {
-      "OBLIQUE_BROWS", "RAISE_BROWS", "RAISE_LEFT_BROW", "RAISE_RIGHT_BROW", "LOWER_BROWS", "LOWER_LEFT_BROW",
-      "LOWER_RIGHT_BROW", "LOWER_MOUTH_CORNERS", "LOWER_LEFT_MOUTH_CORNER", "LOWER_RIGHT_MOUTH_CORNER",
-      "RAISE_MOUTH_CORNERS", "RAISE_LEFT_MOUTH_CORNER", "RAISE_RIGHT_MOUTH_CORNER", "OPEN_MOUTH", "OPEN_LIPS",
-      "WIDEN_EYES", "CLOSE_EYES"};
+  const std::vector<std::string> expected = {"OBLIQUE_BROWS",
+                                             "RAISE_BROWS",
+                                             "RAISE_LEFT_BROW",
+                                             "RAISE_RIGHT_BROW",
+                                             "LOWER_BROWS",
+                                             "LOWER_LEFT_BROW",
+                                             "LOWER_RIGHT_BROW",
+                                             "LOWER_MOUTH_CORNERS",
+                                             "LOWER_LEFT_MOUTH_CORNER",
+                                             "LOWER_RIGHT_MOUTH_CORNER",
+                                             "RAISE_MOUTH_CORNERS",
+                                             "RAISE_LEFT_MOUTH_CORNER",
+                                             "RAISE_RIGHT_MOUTH_CORNER",
+                                             "OPEN_MOUTH",
+                                             "OPEN_LIPS",
+                                             "WIDEN_EYES",
+                                             "CLOSE_EYES"};
   EXPECT_EQ(standard_lexemes(), expected);
   for (const std::string& lexeme : expected) {
     std::vector<int> lost;

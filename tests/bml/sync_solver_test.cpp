@@ -131,7 +131,8 @@ TEST(SyncSolver, AnAfterBetweenFixedTimesThatFailsIsUnmet) {
   after.a = {1, kStart};
   after.b = PointRef{0, kStart};
   after.label = 3;
-  const Solved s = solve({flexible(), flexible()}, {equal(0, kStart, std::nullopt, 5, 1), equal(1, kStart, std::nullopt, 2, 2), after});
+  const Solved s = solve({flexible(), flexible()},
+                         {equal(0, kStart, std::nullopt, 5, 1), equal(1, kStart, std::nullopt, 2, 2), after});
   ASSERT_TRUE(s.error);
   EXPECT_EQ(s.error->what, SolveError::What::unmet);
   EXPECT_EQ(s.error->label, 3);
@@ -143,7 +144,8 @@ double chain_seconds(std::uint32_t n) {
   std::vector<SolverBehaviour> behaviours(n, flexible());
   std::vector<Relation> relations;
   relations.reserve(n);
-  for (std::uint32_t i = 1; i < n; ++i) relations.push_back(equal(i, kStart, PointRef{i - 1, kEnd}, 0, static_cast<int>(i)));
+  for (std::uint32_t i = 1; i < n; ++i)
+    relations.push_back(equal(i, kStart, PointRef{i - 1, kEnd}, 0, static_cast<int>(i)));
   const auto t0 = std::chrono::steady_clock::now();
   const Solved s = solve(behaviours, relations);
   const auto t1 = std::chrono::steady_clock::now();

@@ -18,7 +18,8 @@ namespace fapc::test {
 inline std::map<std::string, std::string> outputs_under(const std::string& folder) {
   std::map<std::string, std::string> out;
   if (!std::filesystem::is_directory(folder)) return out;
-  for (auto it = std::filesystem::recursive_directory_iterator(folder); it != std::filesystem::recursive_directory_iterator(); ++it) {
+  for (auto it = std::filesystem::recursive_directory_iterator(folder);
+       it != std::filesystem::recursive_directory_iterator(); ++it) {
     if (it->path().filename() == ".fapc-batch") {
       it.disable_recursion_pending();
       continue;
@@ -36,8 +37,10 @@ inline std::string output_differences(const std::string& a, const std::string& b
   std::string out;
   for (const auto& [path, bytes] : left) {
     const auto other = right.find(path);
-    if (other == right.end()) out += "only in " + a + ": " + path + "\n";
-    else if (other->second != bytes) out += "differs: " + path + "\n";
+    if (other == right.end())
+      out += "only in " + a + ": " + path + "\n";
+    else if (other->second != bytes)
+      out += "differs: " + path + "\n";
   }
   for (const auto& [path, bytes] : right)
     if (!left.count(path)) out += "only in " + b + ": " + path + "\n";

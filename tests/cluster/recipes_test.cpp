@@ -38,8 +38,9 @@ TEST(ClusterRecipes, TheKubernetesJobsPodsTogetherConvertTheWholeBatch) {
   fs::create_directory_symlink(test::corpus_dir() + "/examples", tmp / "data/corpus");
   const std::string bin = fs::path(test::fapc_program()).parent_path().string();
   for (int index = 0; index < 4; ++index) {
-    const test::CommandRun pod = test::run_shell("cd '" + tmp / "data" + "' && PATH='" + bin + "':\"$PATH\" JOB_COMPLETION_INDEX=" +
-                                                 std::to_string(index) + " sh -c '" + command + "'");
+    const test::CommandRun pod =
+        test::run_shell("cd '" + tmp / "data" + "' && PATH='" + bin +
+                        "':\"$PATH\" JOB_COMPLETION_INDEX=" + std::to_string(index) + " sh -c '" + command + "'");
     ASSERT_EQ(pod.exit_status, 0) << "pod " << index << ": " << pod.err;
   }
   const test::CommandRun one = test::run_shell("cd '" + tmp / "data" + "' && '" + test::fapc_program() +

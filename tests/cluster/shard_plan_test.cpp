@@ -58,13 +58,15 @@ TEST(ShardPlan, EveryJobIsInExactlyOneShardWhateverTheOrder) {
       for (const BatchJob& job : mine) a.insert(job.input);
       for (const BatchJob& job : mine_shuffled) b.insert(job.input);
       EXPECT_EQ(a, b) << "shard " << index << "/" << count << " depends on the listing order";
-      for (const std::string& input : a) EXPECT_TRUE(shard_of.emplace(input, index).second) << input << " in two shards";
+      for (const std::string& input : a)
+        EXPECT_TRUE(shard_of.emplace(input, index).second) << input << " in two shards";
       smallest = std::min(smallest, a.size());
       largest = std::max(largest, a.size());
       // Within a shard, jobs keep the plan's order.
       for (std::size_t i = 1; i < mine.size(); ++i)
-        EXPECT_LT(std::find_if(jobs.begin(), jobs.end(), [&](const BatchJob& j) { return j.input == mine[i - 1].input; }),
-                  std::find_if(jobs.begin(), jobs.end(), [&](const BatchJob& j) { return j.input == mine[i].input; }));
+        EXPECT_LT(
+            std::find_if(jobs.begin(), jobs.end(), [&](const BatchJob& j) { return j.input == mine[i - 1].input; }),
+            std::find_if(jobs.begin(), jobs.end(), [&](const BatchJob& j) { return j.input == mine[i].input; }));
     }
     EXPECT_EQ(shard_of.size(), jobs.size()) << count << " shards lose jobs";
     EXPECT_LE(largest - smallest, 1u) << count << " shards are uneven";
@@ -92,7 +94,9 @@ TEST(ShardPlan, ShardFromTheSchedulersEnvironment) {
   auto from_one = shard({{"SLURM_ARRAY_TASK_ID", "1"}, {"SLURM_ARRAY_TASK_COUNT", "4"}, {"SLURM_ARRAY_TASK_MIN", "1"}});
   ASSERT_TRUE(from_one && *from_one);
   EXPECT_EQ((*from_one)->index, 0u);
-  auto stepped = shard({{"SLURM_ARRAY_TASK_ID", "4"}, {"SLURM_ARRAY_TASK_COUNT", "4"}, {"SLURM_ARRAY_TASK_MIN", "0"},
+  auto stepped = shard({{"SLURM_ARRAY_TASK_ID", "4"},
+                        {"SLURM_ARRAY_TASK_COUNT", "4"},
+                        {"SLURM_ARRAY_TASK_MIN", "0"},
                         {"SLURM_ARRAY_TASK_STEP", "2"}});
   ASSERT_TRUE(stepped && *stepped);
   EXPECT_EQ((*stepped)->index, 2u);
@@ -105,11 +109,11 @@ TEST(ShardPlan, ShardFromTheSchedulersEnvironment) {
   ASSERT_TRUE(pod && *pod);
   EXPECT_EQ((*pod)->index, 3u);
   EXPECT_EQ((*pod)->count, 5u);
-  EXPECT_FALSE(shard({{"JOB_COMPLETION_INDEX", "3"}}));         // the count is not in a pod's environment
-  EXPECT_FALSE(shard({{"JOB_COMPLETION_INDEX", "5"}}, 5));      // out of range
-  EXPECT_FALSE(shard({{"SLURM_ARRAY_TASK_ID", "x"}}));          // not a number
-  EXPECT_FALSE(shard({{"SLURM_ARRAY_TASK_ID", "1"}}));          // no count
-  EXPECT_FALSE(shard({}, 4));                                   // --shards without an index
+  EXPECT_FALSE(shard({{"JOB_COMPLETION_INDEX", "3"}}));     // the count is not in a pod's environment
+  EXPECT_FALSE(shard({{"JOB_COMPLETION_INDEX", "5"}}, 5));  // out of range
+  EXPECT_FALSE(shard({{"SLURM_ARRAY_TASK_ID", "x"}}));      // not a number
+  EXPECT_FALSE(shard({{"SLURM_ARRAY_TASK_ID", "1"}}));      // no count
+  EXPECT_FALSE(shard({}, 4));                               // --shards without an index
   EXPECT_EQ(shard({{"JOB_COMPLETION_INDEX", "1"}}).error().kind, ErrorKind::usage);
 }
 
@@ -123,7 +127,8 @@ TEST(CompletionRecords, AJobIsCompleteUntilItsInputOrAnOutputChanges) {
   };
   const pipeline::CompletionRecords records(tmp / "out", "--fps=25", {job});
   EXPECT_EQ(records.record_path(job), tmp / "out/.fapc-batch/sub/in.fba.done");
-  EXPECT_EQ(pipeline::CompletionRecords(tmp / "out/", "", {job}).record_path(job), tmp / "out/.fapc-batch/sub/in.fba.done")
+  EXPECT_EQ(pipeline::CompletionRecords(tmp / "out/", "", {job}).record_path(job),
+            tmp / "out/.fapc-batch/sub/in.fba.done")
       << "-o with a final slash";
   EXPECT_FALSE(records.complete(job));  // no record
   write_outputs();
@@ -181,17 +186,21 @@ TEST(CompletionRecords, PrepareRemovesOnlyThisJobsLeftovers) {
 // A shard's report as `fapc batch --report-json` writes it, reduced to what the merge reads.
 std::string report(std::size_t index, std::size_t count, std::size_t planned,
                    const std::vector<std::pair<std::string, std::string>>& jobs) {
-  nlohmann::ordered_json out = {{"schema_version", 1}, {"shard", {{"index", index}, {"count", count}}}, {"planned", planned}};
+  nlohmann::ordered_json out = {
+      {"schema_version", 1}, {"shard", {{"index", index}, {"count", count}}}, {"planned", planned}};
   out["jobs"] = nlohmann::ordered_json::array();
   for (const auto& [input, state] : jobs) {
     const bool ran = state == "converted" || state == "failed";
-    nlohmann::ordered_json job = {{"input", input},      {"ran", ran},
+    nlohmann::ordered_json job = {{"input", input},
+                                  {"ran", ran},
                                   {"up_to_date", state == "up_to_date"},
                                   {"ok", state == "converted" || state == "up_to_date"},
-                                  {"seconds", 0.5},      {"outputs", {"out/" + input + ".fba"}},
+                                  {"seconds", 0.5},
+                                  {"outputs", {"out/" + input + ".fba"}},
                                   {"written", nlohmann::ordered_json::array()}};
-    job["error"] = state == "failed" ? nlohmann::ordered_json{{"kind", "bad_input"}, {"text", input + ": error: bad <x>"}}
-                                     : nlohmann::ordered_json(nullptr);
+    job["error"] = state == "failed"
+                       ? nlohmann::ordered_json{{"kind", "bad_input"}, {"text", input + ": error: bad <x>"}}
+                       : nlohmann::ordered_json(nullptr);
     job["warnings"] = nlohmann::ordered_json::array();
     out["jobs"].push_back(job);
   }
@@ -229,8 +238,8 @@ TEST(MergeReports, EveryPlannedJobGetsItsBestResult) {
 }
 
 TEST(MergeReports, MissingShardsAndMismatchesAreSaid) {
-  auto merged = pipeline::merge_batch_reports({{"s0.json", report(0, 3, 3, {{"a", "converted"}})},
-                                               {"s2.json", report(2, 3, 3, {{"c", "converted"}})}});
+  auto merged = pipeline::merge_batch_reports(
+      {{"s0.json", report(0, 3, 3, {{"a", "converted"}})}, {"s2.json", report(2, 3, 3, {{"c", "converted"}})}});
   ASSERT_TRUE(merged);
   EXPECT_EQ(merged->missing_shards, std::vector<std::size_t>{1});
   EXPECT_EQ(merged->unnamed_without_result, 1u);

@@ -18,8 +18,8 @@ namespace fapc {
 namespace {
 
 namespace fs = std::filesystem;
-using test::TempFolder;
 using test::fapc_shell;
+using test::TempFolder;
 
 // The kinds every test here asks for: cheap ones, one of each writer family.
 const std::string kKinds = "--to fap,fba,json";
@@ -40,19 +40,22 @@ TEST(ShardedBatch, ThreeShardsGiveExactlyTheOutputsOfOneBatch) {
   std::size_t jobs = 0;
   for (int i = 0; i < 3; ++i) {
     const std::string report = tmp / ("shard-" + std::to_string(i) + ".json");
-    const test::CommandRun shard = fapc_shell("", "batch corpus/examples -o '" + tmp / "sharded" + "' " + kKinds +
-                                                      " --shard " + std::to_string(i) + "/3 --report-json '" + report + "'");
+    const test::CommandRun shard =
+        fapc_shell("", "batch corpus/examples -o '" + tmp / "sharded" + "' " + kKinds + " --shard " +
+                           std::to_string(i) + "/3 --report-json '" + report + "'");
     ASSERT_EQ(shard.exit_status, 0) << shard.err;
     const nlohmann::json json = read_json(report);
     EXPECT_EQ(json["shard"]["index"], i);
     EXPECT_EQ(json["shard"]["count"], 3);
-    for (const std::string& input : inputs_of(json)) EXPECT_TRUE(seen.insert(input).second) << input << " in two shards";
+    for (const std::string& input : inputs_of(json))
+      EXPECT_TRUE(seen.insert(input).second) << input << " in two shards";
     jobs += json["jobs"].size();
     EXPECT_GE(json["jobs"].size(), 1u);
   }
   const auto whole = test::outputs_under(tmp / "one");
   EXPECT_EQ(jobs * 3, whole.size()) << "three outputs per job, each written by one shard";
-  EXPECT_EQ(test::output_differences(tmp / "one", tmp / "sharded"), "") << "the shards' outputs differ from one batch's";
+  EXPECT_EQ(test::output_differences(tmp / "one", tmp / "sharded"), "")
+      << "the shards' outputs differ from one batch's";
 
   // The reports merge into one that matches the schema and names nothing missing.
   const test::CommandRun merged = fapc_shell(
@@ -90,7 +93,8 @@ TEST(ShardedBatch, TheShardComesFromTheSchedulersEnvironment) {
   EXPECT_EQ(shard_inputs("JOB_COMPLETION_INDEX=1", "--shards 3"), given);
   // --shard wins over the environment.
   EXPECT_EQ(shard_inputs("SLURM_ARRAY_TASK_ID=2 SLURM_ARRAY_TASK_COUNT=3", "--shard 1/3"), given);
-  const test::CommandRun no_count = fapc_shell("JOB_COMPLETION_INDEX=1", "batch corpus/examples/fap -o '" + tmp / "x" + "'");
+  const test::CommandRun no_count =
+      fapc_shell("JOB_COMPLETION_INDEX=1", "batch corpus/examples/fap -o '" + tmp / "x" + "'");
   EXPECT_EQ(no_count.exit_status, 2);
   EXPECT_NE(no_count.err.find("JOB_COMPLETION_INDEX is set: give --shards N"), std::string::npos) << no_count.err;
   EXPECT_FALSE(fs::exists(tmp / "x"));
@@ -102,7 +106,9 @@ TEST(ShardedBatch, TheShardComesFromTheSchedulersEnvironment) {
 TEST(ShardedBatch, FilesFromAListInAnyOrderPlanTheSameBatch) {
   const TempFolder tmp;
   ASSERT_EQ(fapc_shell("", "batch corpus/examples -o '" + tmp / "walked" + "' " + kKinds + " --report-json '" +
-                                tmp / "walked.json" + "'").exit_status, 0);
+                               tmp / "walked.json" + "'")
+                .exit_status,
+            0);
   // The planner's list: the walk's inputs, relative to the folder, in reverse order, on standard input.
   std::vector<std::string> listed;
   for (const std::string& input : inputs_of(read_json(tmp / "walked.json")))
@@ -114,9 +120,9 @@ TEST(ShardedBatch, FilesFromAListInAnyOrderPlanTheSameBatch) {
     for (const std::string& path : listed) list << path << '\n';
   }
   for (int i = 0; i < 3; ++i) {
-    const test::CommandRun run = fapc_shell("cat '" + tmp / "list.txt" + "' |",
-                                            "batch corpus/examples --files-from - -o '" + tmp / "listed" + "' " + kKinds +
-                                                " --shard " + std::to_string(i) + "/3");
+    const test::CommandRun run =
+        fapc_shell("cat '" + tmp / "list.txt" + "' |", "batch corpus/examples --files-from - -o '" + tmp / "listed" +
+                                                           "' " + kKinds + " --shard " + std::to_string(i) + "/3");
     ASSERT_EQ(run.exit_status, 0) << run.err;
   }
   EXPECT_EQ(test::output_differences(tmp / "walked", tmp / "listed"), "");
@@ -148,7 +154,8 @@ TEST(ResumedBatch, AReRunConvertsOnlyWhatIsNotFinished) {
   const test::CommandRun again = fapc_shell("", batch);
   EXPECT_EQ(again.exit_status, 0);
   EXPECT_EQ(counts(again.out), (std::vector<int>{0, 0, 0, 5})) << again.out;
-  EXPECT_NE(again.out.find(tmp / "in/joy.fap" + ": up to date -> " + tmp / "out/joy.fap"), std::string::npos) << again.out;
+  EXPECT_NE(again.out.find(tmp / "in/joy.fap" + ": up to date -> " + tmp / "out/joy.fap"), std::string::npos)
+      << again.out;
   EXPECT_EQ(fs::last_write_time(tmp / "out/joy.fba"), joy_time) << "an up-to-date output was rewritten";
   // An input changed, an output removed: those two jobs again.
   fs::last_write_time(tmp / "in/anger.fap", fs::last_write_time(tmp / "in/anger.fap") + std::chrono::seconds(10));
@@ -174,14 +181,17 @@ TEST(ResumedBatch, AKilledRunResumesWithoutRedoingFinishedJobs) {
   const std::string batch = "batch '" + tmp / "in" + "' -o '" + out + "' --to fap,fba,json,svg --jobs 1";
   // SIGKILL (no chance to clean up) once a few jobs have their completion records.
   const test::CommandRun killed = fapc_shell(
-      "", batch + " --report-json '" + tmp / "killed.json" + "' > /dev/null 2>&1 & pid=$!; for i in $(seq 1200); do "
-          "[ $(ls '" + records + "' 2>/dev/null | wc -l) -ge 3 ] && break; sleep 0.01; done; kill -KILL $pid; wait $pid");
+      "", batch + " --report-json '" + tmp / "killed.json" +
+              "' > /dev/null 2>&1 & pid=$!; for i in $(seq 1200); do "
+              "[ $(ls '" +
+              records + "' 2>/dev/null | wc -l) -ge 3 ] && break; sleep 0.01; done; kill -KILL $pid; wait $pid");
   EXPECT_EQ(killed.exit_status, 128 + 9) << "the run ended before it was killed: make it longer";
   std::size_t finished_before = 0;
   // A record being written when the kill came is a temporary file (".fapc-tmp-...-s104.fap.done"),
   // not a record: it does not count.
   for (const auto& entry : fs::directory_iterator(records))
-    finished_before += entry.path().extension() == ".done" && !entry.path().filename().string().starts_with(".fapc-tmp-");
+    finished_before +=
+        entry.path().extension() == ".done" && !entry.path().filename().string().starts_with(".fapc-tmp-");
   ASSERT_GE(finished_before, 3u);
   ASSERT_LT(finished_before, 120u);
   // The report written at the start names every job of the killed run as not run.
@@ -199,7 +209,8 @@ TEST(ResumedBatch, AKilledRunResumesWithoutRedoingFinishedJobs) {
   EXPECT_EQ(n[0] + n[3], 120);
   EXPECT_EQ(n[1] + n[2], 0);
   // Nothing lost, nothing twice, nothing left over: the outputs of one clean batch.
-  ASSERT_EQ(fapc_shell("", "batch '" + tmp / "in" + "' -o '" + tmp / "clean" + "' --to fap,fba,json,svg").exit_status, 0);
+  ASSERT_EQ(fapc_shell("", "batch '" + tmp / "in" + "' -o '" + tmp / "clean" + "' --to fap,fba,json,svg").exit_status,
+            0);
   const auto expected = test::outputs_under(tmp / "clean");
   EXPECT_EQ(expected.size(), 480u);
   const auto got = test::outputs_under(out);

@@ -28,8 +28,7 @@ struct Segment {
   int trailer_bits = 0;
 };
 
-std::vector<std::uint8_t> encode_segments(const std::vector<Segment>& segments,
-                                          std::vector<AdaptiveModel> models) {
+std::vector<std::uint8_t> encode_segments(const std::vector<Segment>& segments, std::vector<AdaptiveModel> models) {
   BitWriter out;
   ArithEncoder coder(out);
   for (const Segment& segment : segments) {
@@ -229,7 +228,8 @@ TEST(ArithCoder, RandomStreamsWithRandomModelsRoundTrip) {
         segment.symbols.push_back(c);
       }
       segment.trailer_bits = static_cast<int>(rng() % 33);
-      segment.trailer = segment.trailer_bits == 0 ? 0 : static_cast<std::uint32_t>(rng()) >> (32 - segment.trailer_bits);
+      segment.trailer =
+          segment.trailer_bits == 0 ? 0 : static_cast<std::uint32_t>(rng()) >> (32 - segment.trailer_bits);
     }
     const auto bytes = encode_segments(segments, models);
     expect_decodes(bytes, segments, models, bits_of(segments, models));

@@ -15,7 +15,8 @@ namespace fapc {
 namespace {
 
 Diagnostic at_column(std::string line, int column) {
-  return make_error(codes::fap::not_a_number, Location::text("in.mimic", 1, column), "unexpected character", std::move(line));
+  return make_error(codes::fap::not_a_number, Location::text("in.mimic", 1, column), "unexpected character",
+                    std::move(line));
 }
 
 // The rendered diagnostic's shown line and caret line.
@@ -54,8 +55,7 @@ TEST(CaretWindow, AShortLineIsShownWhole) {
   EXPECT_EQ(render_with_caret(at_column("main { jaw @ }", 12)),
             "in.mimic:1:12: error: unexpected character\nmain { jaw @ }\n           ^");
   // A tab before the column stays a tab under it.
-  EXPECT_EQ(render_with_caret(at_column("\tjaw @", 6)),
-            "in.mimic:1:6: error: unexpected character\n\tjaw @\n\t    ^");
+  EXPECT_EQ(render_with_caret(at_column("\tjaw @", 6)), "in.mimic:1:6: error: unexpected character\n\tjaw @\n\t    ^");
   // One past the end: the caret after the line.
   EXPECT_EQ(render_with_caret(at_column("jaw", 4)), "in.mimic:1:4: error: unexpected character\njaw\n   ^");
 }

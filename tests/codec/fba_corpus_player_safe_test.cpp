@@ -54,7 +54,8 @@ std::array<std::int64_t, kFapCount> largest_values(const FapSequence& sequence) 
 TEST(FbaCorpusPlayerSafe, EveryStreamIsReadTheSameByTheReferenceDecoder) {
   ASSERT_GE(test::all_good_corpus_fap_files().size(), 196u);
   const auto files = test::sweep_fap_files();
-  std::size_t streams = 0, refused = 0, start_codes = 0, fields = 0, values = 0, files_swept = 0, padded = 0, planes = 0;
+  std::size_t streams = 0, refused = 0, start_codes = 0, fields = 0, values = 0, files_swept = 0, padded = 0,
+              planes = 0;
   for (const std::string& path : files) {
     auto read = read_fap_text(test::read_text(path), path);
     ASSERT_TRUE(read.ok()) << path;
@@ -110,10 +111,11 @@ TEST(FbaCorpusPlayerSafe, EveryStreamIsReadTheSameByTheReferenceDecoder) {
       }
     }
   }
-  std::printf("swept %zu files: %zu streams (%zu refused as beyond the widest range), %zu start codes after the "
-              "object start code, %zu of %zu planes ended later by an empty skip count, %zu decoded blends and "
-              "intensities, %zu decoded FAP values\n",
-              files_swept, streams, refused, start_codes, padded, planes, fields, values);
+  std::printf(
+      "swept %zu files: %zu streams (%zu refused as beyond the widest range), %zu start codes after the "
+      "object start code, %zu of %zu planes ended later by an empty skip count, %zu decoded blends and "
+      "intensities, %zu decoded FAP values\n",
+      files_swept, streams, refused, start_codes, padded, planes, fields, values);
   RecordProperty("files", static_cast<int>(files_swept));
   RecordProperty("streams", static_cast<int>(streams));
   RecordProperty("refused", static_cast<int>(refused));

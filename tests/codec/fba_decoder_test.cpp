@@ -73,12 +73,12 @@ std::string error_of(const std::vector<std::uint8_t>& bytes) {
 TEST(FbaDecoder, FirstIntraPlaneWithoutListsUsesTheDefaultTable) {
   StreamBuilder b;
   b.plane(true, 1);
-  b.bits(0b00, 2);   // no frame rate, no time code
-  b.bits(0, 1);      // no skip
-  b.bits(1, 5);      // fap_quant 1
+  b.bits(0b00, 2);  // no frame rate, no time code
+  b.bits(0, 1);     // no skip
+  b.bits(1, 5);     // fap_quant 1
   b.face_masks(1, false, true);
-  b.bits(0b00, 2);   // gender, coding type
-  b.bits(0b0000, 4); // no range lists: FAP 3 gets +-1080 intra, +-360 predictive; FAP 63 +-720
+  b.bits(0b00, 2);                           // gender, coding type
+  b.bits(0b0000, 4);                         // no range lists: FAP 3 gets +-1080 intra, +-360 predictive; FAP 63 +-720
   b.coder.encode_uniform(2161, 100 + 1080);  // FAP 3 (QP 4): q 100 -> 400
   b.coder.encode_uniform(1441, 700 + 720);   // FAP 63 (QP 1): 700 needs 680 rounded up to 720
   b.coder.flush();
@@ -107,24 +107,24 @@ TEST(FbaDecoder, FirstIntraPlaneWithoutListsUsesTheDefaultTable) {
 TEST(FbaDecoder, TimeCodesSkipsAndFractionalRates) {
   StreamBuilder b;
   b.plane(true, 1);
-  b.bits(1, 1);       // is_frame_rate
-  b.bits(29, 8);      // 29
-  b.bits(15, 4);      // + 15/16
-  b.bits(1, 1);       // x 1000/1001: 29.9076 fps
-  b.bits(1, 1);       // is_time_code
-  b.bits(0, 5);       // 0 h
-  b.bits(0, 6);       // 0 min
-  b.bits(1, 1);       // marker
-  b.bits(2, 6);       // 2 s: frame round(2 x 29.9076) = 60
-  b.bits(1, 1);       // skip_frames
-  b.bits(15, 4);      // 15 ...
-  b.bits(1, 4);       // ... + 1 = 16 skipped
-  b.bits(3, 5);       // fap_quant 3
-  b.face_masks(2);    // type 10: listed like 01
+  b.bits(1, 1);     // is_frame_rate
+  b.bits(29, 8);    // 29
+  b.bits(15, 4);    // + 15/16
+  b.bits(1, 1);     // x 1000/1001: 29.9076 fps
+  b.bits(1, 1);     // is_time_code
+  b.bits(0, 5);     // 0 h
+  b.bits(0, 6);     // 0 min
+  b.bits(1, 1);     // marker
+  b.bits(2, 6);     // 2 s: frame round(2 x 29.9076) = 60
+  b.bits(1, 1);     // skip_frames
+  b.bits(15, 4);    // 15 ...
+  b.bits(1, 4);     // ... + 1 = 16 skipped
+  b.bits(3, 5);     // fap_quant 3
+  b.face_masks(2);  // type 10: listed like 01
   b.bits(0b00, 2);
   b.bits(0b1111, 4);
   for (const int v : {1, 0, 1, 1}) b.face_range_list(v);  // FAP 3: I 0..20, P -20..20 (60 / 3)
-  b.coder.encode_uniform(21, 10);  // q 10, step 12 -> 120
+  b.coder.encode_uniform(21, 10);                         // q 10, step 12 -> 120
   b.coder.flush();
   b.plane(false, 1);
   b.bits(0, 1);

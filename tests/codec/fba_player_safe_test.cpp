@@ -39,8 +39,8 @@ void stuff(Bits& bits) {
 // The stream as the encoder wrote it before issue 17: `plane` without its empty skip count
 // ("1 0000" back to "0") and restuffed. `stuffing_end`: where the stuffing after the plane ends
 // (the next start code).
-std::vector<std::uint8_t> without_padding(const std::vector<std::uint8_t>& bytes, const CodedPlane& plane,
-                                          bool aligned, std::size_t stuffing_end) {
+std::vector<std::uint8_t> without_padding(const std::vector<std::uint8_t>& bytes, const CodedPlane& plane, bool aligned,
+                                          std::size_t stuffing_end) {
   const test::SkipField skip = test::read_skip_field(bytes, plane.bit_offset, aligned);
   EXPECT_EQ(skip.flag, 1);
   EXPECT_EQ(skip.chunks, std::vector<int>{0});
@@ -189,7 +189,8 @@ TEST(FbaPlayerSafe, FapsInsideTheirLegalRangeStayInside) {
   struct Case {
     int fap, quant, value, expected;
   };
-  for (const Case c : {Case{4, 7, 1200, 1190}, Case{4, 7, -1200, -1190}, Case{18, 8, 420, 416}, Case{18, 8, -419, -416}}) {
+  for (const Case c :
+       {Case{4, 7, 1200, 1190}, Case{4, 7, -1200, -1190}, Case{18, 8, 420, 416}, Case{18, 8, -419, -416}}) {
     for (const bool predictive : {false, true}) {
       FapSequence input{"legal", 25, {}};
       for (int k = 0; k < 2; ++k) {
@@ -206,7 +207,8 @@ TEST(FbaPlayerSafe, FapsInsideTheirLegalRangeStayInside) {
       auto decoded = decode_fba(encoded->bytes);
       ASSERT_TRUE(decoded.ok());
       EXPECT_EQ(decoded->sequence.frames[1].value(c.fap), c.expected) << c.fap << " " << c.value;
-      EXPECT_LE(std::abs(decoded->sequence.frames[1].value(c.fap)), fap_table()[static_cast<std::size_t>(c.fap - 1)].legal_max());
+      EXPECT_LE(std::abs(decoded->sequence.frames[1].value(c.fap)),
+                fap_table()[static_cast<std::size_t>(c.fap - 1)].legal_max());
       EXPECT_TRUE(verify_fba(input, *encoded, options).ok());
     }
   }

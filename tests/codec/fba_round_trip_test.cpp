@@ -30,9 +30,12 @@ std::vector<std::array<std::int64_t, kFapCount>> shown(const FapSequence& sequen
       const bool paired = (fap >= 6 && fap <= 13) || (fap >= 19 && fap <= 42) || (fap >= 53 && fap <= 62) || fap >= 65;
       const bool lower = fap <= 13 ? fap % 2 == 0 : fap % 2 == 1;
       const int partner = !paired ? 0 : lower ? fap + 1 : fap - 1;
-      if (frame.has(fap)) now[i] = frame.value(fap);
-      else if (player == kHolds) now[i] = held[i];
-      else if (player == kPartner && partner != 0 && frame.has(partner)) now[i] = frame.value(partner);
+      if (frame.has(fap))
+        now[i] = frame.value(fap);
+      else if (player == kHolds)
+        now[i] = held[i];
+      else if (player == kPartner && partner != 0 && frame.has(partner))
+        now[i] = frame.value(partner);
     }
     frames.push_back(now);
   }

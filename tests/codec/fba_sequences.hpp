@@ -13,10 +13,10 @@ namespace fapc::test {
 
 struct SequenceShape {
   int frames = 40;
-  int quant = 1;            // values stay codable at this fap_quant
-  bool gaps = true;         // skip frames now and then
+  int quant = 1;     // values stay codable at this fap_quant
+  bool gaps = true;  // skip frames now and then
   bool mask_changes = true;
-  bool high_level = true;   // FAP 1 and FAP 2 sometimes
+  bool high_level = true;  // FAP 1 and FAP 2 sometimes
 };
 
 inline FapSequence random_sequence(std::mt19937& rng, const SequenceShape& shape) {

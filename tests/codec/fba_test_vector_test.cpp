@@ -82,7 +82,8 @@ TEST(FbaTestVector, DecodesToThePublishedValues) {
   const int faps[4] = {3, 4, 5, 48};
   for (int k = 0; k < 3; ++k) {
     EXPECT_EQ(frames[k].number, k);
-    for (int i = 0; i < 4; ++i) EXPECT_EQ(frames[k].value(faps[i]), expected[k][i]) << "frame " << k << " FAP " << faps[i];
+    for (int i = 0; i < 4; ++i)
+      EXPECT_EQ(frames[k].value(faps[i]), expected[k][i]) << "frame " << k << " FAP " << faps[i];
     EXPECT_EQ(frames[k].viseme, test_vector_frames().frames[k].viseme) << "frame " << k;
     EXPECT_FALSE(frames[k].has(2));
   }

@@ -19,7 +19,9 @@
 
 namespace fapc::test {
 
-inline int bit_of(const std::vector<std::uint8_t>& bytes, std::size_t at) { return (bytes[at / 8] >> (7 - at % 8)) & 1; }
+inline int bit_of(const std::vector<std::uint8_t>& bytes, std::size_t at) {
+  return (bytes[at / 8] >> (7 - at % 8)) & 1;
+}
 
 // For every byte-aligned 00 00 01 after the first four bytes, the number of zero bits before it.
 inline std::vector<std::size_t> zeros_before_start_codes(const std::vector<std::uint8_t>& bytes) {

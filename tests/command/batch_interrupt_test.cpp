@@ -19,18 +19,20 @@ TEST(BatchInterrupt, StopsCleanlyAndStillReports) {
   // Enough work that the signal comes long before the end: 400 copies of a 1,000-frame script.
   fs::copy_file(test::corpus_dir() + "/examples/mimic/smile.xpr", tmp / "in" / "smile.xpr");  // the script's
   for (int i = 0; i < 400; ++i)
-    fs::copy_file(test::corpus_dir() + "/examples/mimic/figure3.mimic", tmp / "in" / ("s" + std::to_string(i) + ".mimic"));
+    fs::copy_file(test::corpus_dir() + "/examples/mimic/figure3.mimic",
+                  tmp / "in" / ("s" + std::to_string(i) + ".mimic"));
   const std::string out = (tmp / "out").string(), report = (tmp / "report.xml").string();
-  const test::CommandRun run = test::run_shell(
-      "'" + test::fapc_program() + "' batch '" + (tmp / "in").string() + "' -o '" + out + "' --to fap,fba,mp4,svg --jobs 2 --report '" +
-      report + "' > '" + (tmp / "stdout").string() +
-      // The signal comes once the first input is done (its line printed), whatever the machine's load.
-      "' 2>&1 & pid=$!; for i in $(seq 600); do grep -q frames '" + (tmp / "stdout").string() +
-      "' && break; sleep 0.05; done; kill -INT $pid; wait $pid");
+  const test::CommandRun run =
+      test::run_shell("'" + test::fapc_program() + "' batch '" + (tmp / "in").string() + "' -o '" + out +
+                      "' --to fap,fba,mp4,svg --jobs 2 --report '" + report + "' > '" + (tmp / "stdout").string() +
+                      // The signal comes once the first input is done (its line printed), whatever the machine's load.
+                      "' 2>&1 & pid=$!; for i in $(seq 600); do grep -q frames '" + (tmp / "stdout").string() +
+                      "' && break; sleep 0.05; done; kill -INT $pid; wait $pid");
   EXPECT_EQ(run.exit_status, 1) << "an interrupted batch did not convert everything";
   const std::string summary = test::read_text((tmp / "stdout").string());
   std::smatch counts;
-  ASSERT_TRUE(std::regex_search(summary, counts, std::regex(R"((\d+) converted, (\d+) failed, (\d+) not run \(interrupted\))")))
+  ASSERT_TRUE(
+      std::regex_search(summary, counts, std::regex(R"((\d+) converted, (\d+) failed, (\d+) not run \(interrupted\))")))
       << summary.substr(summary.size() > 400 ? summary.size() - 400 : 0);
   EXPECT_GT(std::stoi(counts[3]), 0);
   EXPECT_EQ(counts[2], "0");

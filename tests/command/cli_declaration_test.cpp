@@ -53,7 +53,8 @@ TEST(CliDeclaration, ManPageIsCleanRoff) {
 
 TEST(CliDeclaration, CompletionScriptsParse) {
   const test::CommandRun bash = test::run_shell(
-      "'" + test::fapc_program() + "' help --bash-completion > completion.bash && "
+      "'" + test::fapc_program() +
+      "' help --bash-completion > completion.bash && "
       "bash -c 'source ./completion.bash && COMP_WORDS=(fapc comp) COMP_CWORD=1 && _fapc && echo ${COMPREPLY[@]} && "
       "COMP_WORDS=(fapc compile --ran) COMP_CWORD=2 && _fapc && echo ${COMPREPLY[@]} && "
       "COMP_WORDS=(fapc compile --ranges \"\") COMP_CWORD=3 && _fapc && echo ${COMPREPLY[@]} && "
@@ -61,9 +62,9 @@ TEST(CliDeclaration, CompletionScriptsParse) {
   EXPECT_EQ(bash.exit_status, 0) << bash.err;
   EXPECT_EQ(bash.out, "compile\n--ranges\nfit max\nmp4\n");
   if (test::run_shell("command -v zsh").exit_status == 0) {
-    const test::CommandRun zsh =
-        test::run_shell("'" + test::fapc_program() + "' help --zsh-completion > _fapc.zsh && zsh -n _fapc.zsh; "
-                        "status=$?; rm -f _fapc.zsh; exit $status");
+    const test::CommandRun zsh = test::run_shell("'" + test::fapc_program() +
+                                                 "' help --zsh-completion > _fapc.zsh && zsh -n _fapc.zsh; "
+                                                 "status=$?; rm -f _fapc.zsh; exit $status");
     EXPECT_EQ(zsh.exit_status, 0) << zsh.err;
   }
 }

@@ -63,9 +63,11 @@ TEST(DocExamples, EveryConsoleBlockRunsAsShown) {
     const fs::path folder = fs::path(test::binary_dir()) / "doc-examples" / fs::path(document).stem();
     fs::remove_all(folder);
     fs::create_directories(folder);
-    for (const char* shared : {"corpus", "docs"}) fs::create_directory_symlink(fs::path(test::source_dir()) / shared, folder / shared);
+    for (const char* shared : {"corpus", "docs"})
+      fs::create_directory_symlink(fs::path(test::source_dir()) / shared, folder / shared);
     for (const Example& example : examples) {
-      const std::string where = fs::relative(document, test::source_dir()).string() + ":" + std::to_string(example.line);
+      const std::string where =
+          fs::relative(document, test::source_dir()).string() + ":" + std::to_string(example.line);
       std::ofstream(folder / "example.sh") << example.command << '\n';
       const test::CommandRun result =
           test::run_shell("cd '" + folder.string() + "' && PATH='" + bin + "':\"$PATH\" sh example.sh");

@@ -28,7 +28,8 @@ std::string cell(const std::string& text) { return std::regex_replace(text, std:
 std::string listing() {
   std::string out;
   for (const pipeline::CodeTable& table : all_tables()) {
-    out += "\n### " + std::string(table.library) + "\n\n| code | | kind | what it means, what to do |\n|---|---|---|---|\n";
+    out += "\n### " + std::string(table.library) +
+           "\n\n| code | | kind | what it means, what to do |\n|---|---|---|---|\n";
     for (const CodeRow& row : table.rows) {
       const bool error = row.severity == Severity::error;
       out += "| `" + std::string(row.name) + "` | " + (error ? "error" : "warning") + " | " +
@@ -66,11 +67,11 @@ const std::regex& made_outside_a_table() {
 }
 
 TEST(ErrorCodes, TheScanFindsTheShapesItLooksFor) {
-  for (const std::string line : {"make_warning({\"fap.value\"}, at, m)", "WarningCode{\"bml.x\"}", "ErrorCode{ \"a.b\", k}",
-                                 "w.code = \"bml.x\";", "Diagnostic{Severity::error, at, m}"})
+  for (const std::string line : {"make_warning({\"fap.value\"}, at, m)", "WarningCode{\"bml.x\"}",
+                                 "ErrorCode{ \"a.b\", k}", "w.code = \"bml.x\";", "Diagnostic{Severity::error, at, m}"})
     EXPECT_TRUE(std::regex_search(line, made_outside_a_table())) << line;
-  for (const std::string line : {"make_warning(codes::fap::value, at, m)", "make_error(codes::io::cannot_open, at, m)",
-                                 "d.code = code.name;"})
+  for (const std::string line :
+       {"make_warning(codes::fap::value, at, m)", "make_error(codes::io::cannot_open, at, m)", "d.code = code.name;"})
     EXPECT_FALSE(std::regex_search(line, made_outside_a_table())) << line;
 }
 

@@ -27,8 +27,8 @@ TEST(GoldenOutputs, MimicExamples) {
 TEST(GoldenOutputs, FmlExamples) {
   // FML Figure 7 waits for its event: the golden is the "Bye" branch.
   const std::vector<std::pair<std::string, std::string>> examples = {
-      {"figure5", ""}, {"figure6", ""}, {"figure7", " --event user=1"}, {"figure8", ""}, {"hindawi-alg1", ""},
-      {"tour", ""}};
+      {"figure5", ""}, {"figure6", ""},      {"figure7", " --event user=1"},
+      {"figure8", ""}, {"hindawi-alg1", ""}, {"tour", ""}};
   EXPECT_EQ(test::files_under(test::corpus_dir() + "/fml", ".fml").size(), examples.size());
   for (const auto& [name, options] : examples) {
     const std::string input = "corpus/fml/" + name + ".fml";

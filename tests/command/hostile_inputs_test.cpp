@@ -101,7 +101,8 @@ TEST_F(HostileInputs, MimicMacrosThatDoubleAreRefused) {
   }
   write("double.mimic", program + "main { m40; }\n");
   refused("compile " + at("double.mimic") + " -o " + at("out.fap"),
-          "error: the program has too many actions with macros expanded: more than the limit of 4000000 runs", at("out.fap"));
+          "error: the program has too many actions with macros expanded: more than the limit of 4000000 runs",
+          at("out.fap"));
 }
 
 TEST_F(HostileInputs, FmlTemplateChainsDeeperThanTheLimit) {
@@ -111,7 +112,8 @@ TEST_F(HostileInputs, FmlTemplateChainsDeeperThanTheLimit) {
     model += "<template name=\"t" + std::to_string(i) + "\"><seq><behavior name=\"t" + std::to_string(i - 1) +
              "\"/></seq></template>";
   }
-  write("chain.fml", "<fml><model>" + model + "</model><story><action><behavior name=\"t19999\"/></action></story></fml>\n");
+  write("chain.fml",
+        "<fml><model>" + model + "</model><story><action><behavior name=\"t19999\"/></action></story></fml>\n");
   refused("compile " + at("chain.fml") + " -o " + at("out.fap"),
           "error: elements (with templates expanded) nested deeper than 256 levels (the depth limit)", at("out.fap"));
 }
@@ -133,25 +135,31 @@ TEST_F(HostileInputs, XmlElementsDeeperThanTheLimitInCompileAndValidate) {
 TEST_F(HostileInputs, ValidateTakesALongValuesList) {
   std::string values;
   for (int i = 0; i < 300000; ++i) values += (i ? ";" : "") + std::to_string(i % 300);
-  write("values.xmt", "<?xml version=\"1.0\"?>\n<XMT-O xmlns=\"urn:mpeg:mpeg4:xmto:schema:2002\">\n  <body>\n"
-                      "    <animate attributeName=\"open_jaw\" values=\"" + values + "\" dur=\"100s\"/>\n"
-                      "  </body>\n</XMT-O>\n");
+  write("values.xmt",
+        "<?xml version=\"1.0\"?>\n<XMT-O xmlns=\"urn:mpeg:mpeg4:xmto:schema:2002\">\n  <body>\n"
+        "    <animate attributeName=\"open_jaw\" values=\"" +
+            values +
+            "\" dur=\"100s\"/>\n"
+            "  </body>\n</XMT-O>\n");
   const test::CommandRun run = test::run_fapc("validate " + at("values.xmt"));
   EXPECT_EQ(run.exit_status, 0) << run.err;
   EXPECT_NE(run.out.find("valid XMT-Omega"), std::string::npos) << run.out;
 }
 
 TEST_F(HostileInputs, ValidateChecksTheFormOfNumberLists) {
-  write("bad.xmt", "<?xml version=\"1.0\"?>\n<XMT-O xmlns=\"urn:mpeg:mpeg4:xmto:schema:2002\">\n  <body>\n"
-                   "    <animate attributeName=\"open_jaw\" values=\"1;;2\" keyTimes=\"0;1e\" dur=\"1s\"/>\n"
-                   "  </body>\n</XMT-O>\n");
+  write("bad.xmt",
+        "<?xml version=\"1.0\"?>\n<XMT-O xmlns=\"urn:mpeg:mpeg4:xmto:schema:2002\">\n  <body>\n"
+        "    <animate attributeName=\"open_jaw\" values=\"1;;2\" keyTimes=\"0;1e\" dur=\"1s\"/>\n"
+        "  </body>\n</XMT-O>\n");
   const std::string err = refused("validate " + at("bad.xmt"),
                                   "bad.xmt:4:39: error: 'values': '1;;2' is not a list of numbers separated by ';'");
   EXPECT_NE(err.find("bad.xmt:4:53: error: 'keyTimes': '0;1e' is not a list of numbers separated by ';'"),
-            std::string::npos) << err;
-  write("good.xmt", "<?xml version=\"1.0\"?>\n<XMT-O xmlns=\"urn:mpeg:mpeg4:xmto:schema:2002\">\n  <body>\n"
-                    "    <animate attributeName=\"open_jaw\" values=\" +1.5e2 ; -.5;0.; \" keyTimes=\"0;0.5;1\" dur=\"1s\"/>\n"
-                    "  </body>\n</XMT-O>\n");
+            std::string::npos)
+      << err;
+  write("good.xmt",
+        "<?xml version=\"1.0\"?>\n<XMT-O xmlns=\"urn:mpeg:mpeg4:xmto:schema:2002\">\n  <body>\n"
+        "    <animate attributeName=\"open_jaw\" values=\" +1.5e2 ; -.5;0.; \" keyTimes=\"0;0.5;1\" dur=\"1s\"/>\n"
+        "  </body>\n</XMT-O>\n");
   EXPECT_EQ(test::run_fapc("validate " + at("good.xmt")).exit_status, 0);
 }
 
@@ -174,10 +182,10 @@ TEST_F(HostileInputs, CyclesAcrossFormats) {
   // An XMT-Omega document that places a .combine whose operand is the document again.
   write("doc.xmt", "<XMT-O><body><animation src=\"loop.combine\"/></body></XMT-O>\n");
   write("loop.combine", "doc.xmt\n");
-  refused("compile " + at("doc.xmt") + " -o " + at("out.fap"),
-          "loop.combine:1:1: error: include cycle: " + at("doc.xmt") + " -> " + at("loop.combine") + " -> " +
-              at("doc.xmt"),
-          at("out.fap"));
+  refused(
+      "compile " + at("doc.xmt") + " -o " + at("out.fap"),
+      "loop.combine:1:1: error: include cycle: " + at("doc.xmt") + " -> " + at("loop.combine") + " -> " + at("doc.xmt"),
+      at("out.fap"));
 }
 
 TEST_F(HostileInputs, IncludesNestedDeeperThanTheLimit) {
@@ -233,13 +241,13 @@ TEST_F(HostileInputs, EveryIncludeMechanismFollowsThePolicy) {
 
 TEST_F(HostileInputs, StandardInputIncludesFromTheWorkingFolder) {
   write("s/smile.xpr", "open_jaw 100\n");
-  const test::CommandRun run = test::run_shell(
-      "cd '" + at("s") + "' && echo 'defxpr e \"smile.xpr\" main { e <in=1,value=1>; }' | '" + test::fapc_program() +
-      "' compile - --from mimic -o out.fap");
+  const test::CommandRun run =
+      test::run_shell("cd '" + at("s") + "' && echo 'defxpr e \"smile.xpr\" main { e <in=1,value=1>; }' | '" +
+                      test::fapc_program() + "' compile - --from mimic -o out.fap");
   EXPECT_EQ(run.exit_status, 0) << run.err;
-  const test::CommandRun escape = test::run_shell(
-      "cd '" + at("s") + "' && echo 'defxpr e \"../x.xpr\" main { e <in=1,value=1>; }' | '" + test::fapc_program() +
-      "' compile - --from mimic -o out2.fap");
+  const test::CommandRun escape =
+      test::run_shell("cd '" + at("s") + "' && echo 'defxpr e \"../x.xpr\" main { e <in=1,value=1>; }' | '" +
+                      test::fapc_program() + "' compile - --from mimic -o out2.fap");
   EXPECT_EQ(escape.exit_status, 1);
   EXPECT_NE(escape.err.find("'../x.xpr' leads outside the folders a script may include from ('.')"), std::string::npos)
       << escape.err;

@@ -32,8 +32,10 @@ TEST(JsonContract, InfoOfEveryInputKindMatchesItsSchema) {
   // An .mp4 of fapc's own (the corpus's GPAC file carries planes fapc refuses).
   const std::string mp4 = test::binary_dir() + "/json-contract-joy.mp4";
   ASSERT_EQ(test::run_fapc("compile corpus/examples/fap/joy.fap -o '" + mp4 + "'").exit_status, 0);
-  std::vector<std::string> inputs = {mp4};  // (.combine: its operands lie outside its folder, which info does not allow)
-  for (const std::string dir : {"examples/fap", "examples/fml", "examples/mimic", "examples/xmto", "fba", "mp4", "xmto"})
+  std::vector<std::string> inputs = {
+      mp4};  // (.combine: its operands lie outside its folder, which info does not allow)
+  for (const std::string dir :
+       {"examples/fap", "examples/fml", "examples/mimic", "examples/xmto", "fba", "mp4", "xmto"})
     for (const std::string ext : {".fap", ".fba", ".mp4", ".fml", ".mimic", ".xmt"})
       for (const std::string& file : test::files_under(test::corpus_dir() + "/" + dir, ext))
         inputs.push_back(std::filesystem::relative(file, test::source_dir()).string());
@@ -80,8 +82,10 @@ TEST(JsonContract, BatchReportMatchesItsSchema) {
   auto folder = schemas();
   const std::string dir = test::binary_dir() + "/json-contract-batch";
   std::filesystem::remove_all(dir);
-  test::run_fapc("batch corpus/examples/fap corpus/fba-bad/truncated.fba -o '" + dir + "/out' --to fap,fba --keep-going "
-                 "--jobs 2 --report-json '" + dir + "/report.json'");
+  test::run_fapc("batch corpus/examples/fap corpus/fba-bad/truncated.fba -o '" + dir +
+                 "/out' --to fap,fba --keep-going "
+                 "--jobs 2 --report-json '" +
+                 dir + "/report.json'");
   const nlohmann::json report = nlohmann::json::parse(test::read_text(dir + "/report.json"));
   EXPECT_EQ(joined(folder.validate(report, "batch-report.schema.json")), "");
   EXPECT_EQ(report["totals"]["jobs"], 6);
@@ -113,12 +117,21 @@ TEST(JsonContract, EverySchemaKeyIsDocumented) {
 TEST(JsonContract, TheValidatorRejectsWhatItMust) {
   auto folder = schemas();
   nlohmann::json good = {{"schema_version", 1},
-                         {"error", {{"severity", "error"}, {"kind", "io"}, {"code", "io.cannot_open"}, {"file", "x"}, {"line", nullptr},
-                                    {"column", nullptr}, {"byte", 4}, {"message", "m"}, {"text", "t"}}}};
+                         {"error",
+                          {{"severity", "error"},
+                           {"kind", "io"},
+                           {"code", "io.cannot_open"},
+                           {"file", "x"},
+                           {"line", nullptr},
+                           {"column", nullptr},
+                           {"byte", 4},
+                           {"message", "m"},
+                           {"text", "t"}}}};
   EXPECT_EQ(joined(folder.validate(good, "error.schema.json")), "");
   auto bad = good;
   bad["error"].erase("message");
-  EXPECT_NE(joined(folder.validate(bad, "error.schema.json")).find("missing required key 'message'"), std::string::npos);
+  EXPECT_NE(joined(folder.validate(bad, "error.schema.json")).find("missing required key 'message'"),
+            std::string::npos);
   bad = good;
   bad["extra"] = 1;
   EXPECT_NE(joined(folder.validate(bad, "error.schema.json")).find("'extra' is not in the schema"), std::string::npos);
@@ -139,8 +152,10 @@ TEST(JsonContract, TheValidatorRejectsWhatItMust) {
   bad = good;
   bad["schema_version"] = 2;
   EXPECT_FALSE(folder.validate(bad, "error.schema.json").empty());
-  const nlohmann::json verify = {{"schema_version", 1}, {"files", {{{"file", "f"}, {"ok", true}, {"exit_status", 0},
-                                                                     {"error", 5}, {"warnings", nlohmann::json::array()}}}}};
+  const nlohmann::json verify = {
+      {"schema_version", 1},
+      {"files",
+       {{{"file", "f"}, {"ok", true}, {"exit_status", 0}, {"error", 5}, {"warnings", nlohmann::json::array()}}}}};
   EXPECT_NE(joined(folder.validate(verify, "verify.schema.json")).find("oneOf"), std::string::npos);
 }
 

@@ -19,9 +19,10 @@ bool has_type(const nlohmann::json& value, const std::string& type) {
   return false;
 }
 
-const std::set<std::string> kKnown = {"$schema", "$id", "title", "description", "$defs", "type", "enum", "const",
-                                      "properties", "required", "additionalProperties", "items", "minimum",
-                                      "maximum", "oneOf", "$ref"};
+const std::set<std::string> kKnown = {
+    "$schema", "$id",        "title",    "description",          "$defs", "type",    "enum",
+    "const",   "properties", "required", "additionalProperties", "items", "minimum", "maximum",
+    "oneOf",   "$ref"};
 
 }  // namespace
 
@@ -53,9 +54,9 @@ void SchemaFolder::check(const nlohmann::json& value, const nlohmann::json& sche
     return;
   }
   if (schema.contains("type")) {
-    const std::vector<std::string> types =
-        schema["type"].is_array() ? schema["type"].get<std::vector<std::string>>()
-                                  : std::vector<std::string>{schema["type"].get<std::string>()};
+    const std::vector<std::string> types = schema["type"].is_array()
+                                               ? schema["type"].get<std::vector<std::string>>()
+                                               : std::vector<std::string>{schema["type"].get<std::string>()};
     bool any = false;
     for (const std::string& type : types) any = any || has_type(value, type);
     if (!any) return problem("expected " + schema["type"].dump() + ", found " + value.dump());

@@ -34,8 +34,8 @@ std::vector<Writer> writers() {
   const std::string mimic = test::corpus_dir() + "/examples/mimic/figure3.mimic";
   const std::string xmto = test::corpus_dir() + "/examples/xmto/compose.xmt";
   return {
-      {"compile-fap", "compile " + joy + " -o", "fap"},          // streamed .fap to .fap
-      {"compile-fba", "compile " + joy + " -o", "fba"},          // streamed .fap to .fba
+      {"compile-fap", "compile " + joy + " -o", "fap"},  // streamed .fap to .fap
+      {"compile-fba", "compile " + joy + " -o", "fba"},  // streamed .fap to .fba
       {"compile-mp4", "compile " + joy + " -o", "mp4"},
       {"compile-curves", "compile " + mimic + " -o", "json"},
       {"compile-script-fap", "compile " + mimic + " -o", "fap"},  // a script rendered frame by frame
@@ -126,9 +126,9 @@ TEST_F(OutputTargets, EveryWriterWritesItsWholeOutputThroughAFifo) {
     const std::string file = at("reference/pipe." + (w.kind.empty() ? std::string("fba") : w.kind));
     ASSERT_EQ(test::run_fapc(w.command + " " + file + to(w)).exit_status, 0) << w.name;
     // The reader is started first and waited for; the writer opens the FIFO when its output is whole.
-    const test::CommandRun run = test::run_shell("cat " + at("pipe") + " > " + at("read") + " & reader=$!; " +
-                                                 test::fapc_program() + " " + w.command + " " + at("pipe") + to(w) +
-                                                 "; status=$?; wait $reader; exit $status");
+    const test::CommandRun run =
+        test::run_shell("cat " + at("pipe") + " > " + at("read") + " & reader=$!; " + test::fapc_program() + " " +
+                        w.command + " " + at("pipe") + to(w) + "; status=$?; wait $reader; exit $status");
     EXPECT_EQ(run.exit_status, 0) << w.name << "\n" << run.err;
     still_node("pipe", S_IFIFO);
     // A video or page of the same animation is the same bytes; a plot may differ only in a name.
@@ -147,9 +147,10 @@ TEST_F(OutputTargets, AFailedOutputWritesNothingToAFifo) {
   ASSERT_EQ(::mkfifo(at("pipe").c_str(), 0600), 0);
   std::ofstream(at("bad.fap")) << test::read_text(test::corpus_dir() + "/examples/fap/joy.fap") << "garbage\n";
   // The reader gives up after 3 s if nobody opens the FIFO (the expected outcome).
-  const test::CommandRun run = test::run_shell("timeout 3 cat " + at("pipe") + " > " + at("read") + " & reader=$!; " +
-                                               test::fapc_program() + " compile " + at("bad.fap") + " -o " + at("pipe") +
-                                               " --to fap; status=$?; kill $reader 2>/dev/null; wait $reader; exit $status");
+  const test::CommandRun run =
+      test::run_shell("timeout 3 cat " + at("pipe") + " > " + at("read") + " & reader=$!; " + test::fapc_program() +
+                      " compile " + at("bad.fap") + " -o " + at("pipe") +
+                      " --to fap; status=$?; kill $reader 2>/dev/null; wait $reader; exit $status");
   EXPECT_EQ(run.exit_status, 1) << run.err;
   EXPECT_EQ(test::read_text(at("read")), "");
   still_node("pipe", S_IFIFO);
@@ -160,9 +161,11 @@ TEST_F(OutputTargets, ADirectoryIsRefusedBeforeTheWork) {
   for (const Writer& w : writers()) {
     const test::CommandRun run = test::run_fapc(w.command + " " + at("folder") + to(w));
     EXPECT_EQ(run.exit_status, 1) << w.name;
-    EXPECT_NE(run.err.find(at("folder") + ": error: is a directory (an output is written to a file, a character device or a FIFO)"),
+    EXPECT_NE(run.err.find(at("folder") +
+                           ": error: is a directory (an output is written to a file, a character device or a FIFO)"),
               std::string::npos)
-        << w.name << "\n" << run.err;
+        << w.name << "\n"
+        << run.err;
     EXPECT_TRUE(fs::is_empty(dir / "folder")) << w.name;
   }
   nothing_left_beside();
@@ -188,7 +191,8 @@ TEST_F(OutputTargets, ASocketIsRefusedAndKept) {
   ASSERT_LT(path.size(), sizeof address.sun_path);
   path.copy(address.sun_path, path.size());
   ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
-  const test::CommandRun run = test::run_fapc("compile " + test::corpus_dir() + "/examples/fap/joy.fap -o " + path + " --to fap");
+  const test::CommandRun run =
+      test::run_fapc("compile " + test::corpus_dir() + "/examples/fap/joy.fap -o " + path + " --to fap");
   ::close(fd);
   EXPECT_EQ(run.exit_status, 1);
   EXPECT_NE(run.err.find(path + ": error: is a socket"), std::string::npos) << run.err;
@@ -209,15 +213,16 @@ TEST_F(OutputTargets, ALinkToAFileReplacesTheFileAndKeepsTheLink) {
   // The file replaced keeps its permissions: a private output stays private.
   EXPECT_EQ(fs::status(at("elsewhere/old.fap")).permissions() & fs::perms::all,
             fs::perms::owner_read | fs::perms::owner_write);
-  for (const auto& entry : fs::directory_iterator(dir / "elsewhere"))
-    EXPECT_EQ(entry.path().filename(), "old.fap");
+  for (const auto& entry : fs::directory_iterator(dir / "elsewhere")) EXPECT_EQ(entry.path().filename(), "old.fap");
 }
 
 TEST_F(OutputTargets, ALinkToNothingIsRefused) {
   fs::create_symlink("missing/x.fap", dir / "dangling.fap");
-  const test::CommandRun run = test::run_fapc("compile " + test::corpus_dir() + "/examples/fap/joy.fap -o " + at("dangling.fap"));
+  const test::CommandRun run =
+      test::run_fapc("compile " + test::corpus_dir() + "/examples/fap/joy.fap -o " + at("dangling.fap"));
   EXPECT_EQ(run.exit_status, 1);
-  EXPECT_NE(run.err.find("dangling.fap: error: is a symbolic link to 'missing/x.fap', which does not exist"), std::string::npos)
+  EXPECT_NE(run.err.find("dangling.fap: error: is a symbolic link to 'missing/x.fap', which does not exist"),
+            std::string::npos)
       << run.err;
   EXPECT_FALSE(fs::exists(dir / "missing"));
   EXPECT_TRUE(fs::is_symlink(dir / "dangling.fap"));

@@ -45,8 +45,8 @@ TEST(Pipes, ClosedReaderIsAnIoErrorNotADeath) {
 }
 
 TEST(Pipes, StandardInputCopyIsRemovedAfterSuccessAndFailure) {
-  const PipeRun ok = run_piped("compile - --from mimic -o - --to json", "corpus/cli/include-from-working-folder.mimic",
-                               "cat");
+  const PipeRun ok =
+      run_piped("compile - --from mimic -o - --to json", "corpus/cli/include-from-working-folder.mimic", "cat");
   EXPECT_EQ(ok.fapc_status, 0) << ok.err;
   EXPECT_FALSE(ok.temporary_left);
   const PipeRun bad = run_piped("compile - --from fba -o - --to json", "corpus/cli/README.md", "cat");

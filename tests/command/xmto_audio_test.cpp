@@ -65,7 +65,8 @@ TEST(XmtoAudioCommand, TheMp4HasTheFaceAndTheSound) {
 TEST(XmtoAudioCommand, ABadRecordingIsAnErrorAndNoFile) {
   TempDir tmp;
   const fs::path doc = tmp.path / "t.xmt";
-  test::run_shell("printf '<XMT-O>\\n<body>\\n<audio src=\"gone.wav\"/>\\n</body></XMT-O>\\n' > '" + doc.string() + "'");
+  test::run_shell("printf '<XMT-O>\\n<body>\\n<audio src=\"gone.wav\"/>\\n</body></XMT-O>\\n' > '" + doc.string() +
+                  "'");
   const std::string out = (tmp.path / "r.wav").string();
   const test::CommandRun run = test::run_fapc("compile '" + doc.string() + "' -o '" + out + "'");
   EXPECT_EQ(run.exit_status, 1);

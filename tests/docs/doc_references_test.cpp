@@ -102,8 +102,7 @@ DocsIndex index_docs(const fs::path& root) {
       if (line.starts_with("```")) in_code = !in_code;
       std::smatch m;
       if (!in_code && std::regex_match(line, m, kHeading)) index.headings[name].push_back(m[1]);
-      for (std::sregex_iterator it(line.begin(), line.end(), kBold), end; it != end; ++it)
-        ++index.bold_tags[(*it)[1]];
+      for (std::sregex_iterator it(line.begin(), line.end(), kBold), end; it != end; ++it) ++index.bold_tags[(*it)[1]];
     }
   }
   return index;
@@ -167,8 +166,7 @@ bool has_heading(const DocsIndex& docs, const std::string& page, const std::stri
 
 // Every problem in one file. `path` is relative to the repository; `data` files (inputs under a
 // corpus folder) are only checked for documents outside the repository.
-std::vector<Finding> check_file(const DocsIndex& docs, const std::string& path, const std::string& content,
-                                bool data) {
+std::vector<Finding> check_file(const DocsIndex& docs, const std::string& path, const std::string& content, bool data) {
   std::vector<Finding> findings;
   const Prose prose = prose_of(path, content);
   const std::string& text = prose.text;
@@ -218,7 +216,8 @@ std::vector<Finding> check_file(const DocsIndex& docs, const std::string& path, 
     const std::size_t at = it->position();
     // "14496-1 §7.2.6 and §7.2.2.3", "XML 1.0 §2.4": sections of a standard named just before.
     const std::string lead = text.substr(at >= 40 ? at - 40 : 0, at >= 40 ? 40 : at);
-    static const std::regex kStandard(R"re(\b(ISO|IEC|14496-[0-9]+|XML [0-9.]+|RFC [0-9]+|SMIL [0-9.]+|H\.26[0-9])\b)re");
+    static const std::regex kStandard(
+        R"re(\b(ISO|IEC|14496-[0-9]+|XML [0-9.]+|RFC [0-9]+|SMIL [0-9.]+|H\.26[0-9])\b)re");
     if (std::regex_search(lead, kStandard)) continue;
     // Already checked when it follows a page name directly.
     const std::string before = text.substr(at >= 6 ? at - 6 : 0, at >= 6 ? 6 : at);
@@ -245,20 +244,22 @@ std::vector<Finding> check_file(const DocsIndex& docs, const std::string& path, 
     const auto found = docs.bold_tags.find(tag);
     const int definitions = found == docs.bold_tags.end() ? 0 : found->second;
     if (definitions != 1)
-      report(it->position(), "tag " + tag + " is defined " + std::to_string(definitions) +
-                                 " times in docs/ (as **" + tag + "**); it must be defined once");
+      report(it->position(), "tag " + tag + " is defined " + std::to_string(definitions) + " times in docs/ (as **" +
+                                 tag + "**); it must be defined once");
   }
 
   // 3. Tables, figures and definitions of the papers: say whose ("Mimic Table 1", "FML Figure 5",
   //    "Algebra definition 4"), and each must be described in docs/.
-  static const std::regex kItem(R"re(\b(Tables?|Figures?|Figs?\.|[Dd]efinitions?)\s+([0-9]+(?:(?:\s*,\s*|\s+and\s+|\s+to\s+|\s*-\s*)[0-9]+)*))re");
+  static const std::regex kItem(
+      R"re(\b(Tables?|Figures?|Figs?\.|[Dd]efinitions?)\s+([0-9]+(?:(?:\s*,\s*|\s+and\s+|\s+to\s+|\s*-\s*)[0-9]+)*))re");
   static const std::regex kPaperBefore(R"re((Mimic|FML|Algebra)\s+$)re");
   for (std::sregex_iterator it(text.begin(), text.end(), kItem), end; it != end; ++it) {
     const std::size_t at = it->position();
     const std::string before = text.substr(at >= 12 ? at - 12 : 0, at >= 12 ? 12 : at);
     std::smatch paper;
     if (!std::regex_search(before, paper, kPaperBefore)) {
-      report(at, "'" + (*it)[0].str() + "' of which paper? Write 'Mimic " + (*it)[1].str() + "', 'FML ...' or 'Algebra ...'");
+      report(at, "'" + (*it)[0].str() + "' of which paper? Write 'Mimic " + (*it)[1].str() +
+                     "', 'FML ...' or 'Algebra ...'");
       continue;
     }
     std::string kind = (*it)[1];
@@ -268,7 +269,8 @@ std::vector<Finding> check_file(const DocsIndex& docs, const std::string& path, 
     const std::string list = (*it)[2];
     std::vector<int> numbers;
     static const std::regex kNumber(R"re([0-9]+)re");
-    for (std::sregex_iterator n(list.begin(), list.end(), kNumber), nend; n != nend; ++n) numbers.push_back(std::stoi((*n)[0]));
+    for (std::sregex_iterator n(list.begin(), list.end(), kNumber), nend; n != nend; ++n)
+      numbers.push_back(std::stoi((*n)[0]));
     const bool range = list.find("to") != std::string::npos || list.find('-') != std::string::npos;
     if (range && numbers.size() == 2) {
       const int first = numbers[0], last = numbers[1];
@@ -288,7 +290,8 @@ std::vector<Finding> check_file(const DocsIndex& docs, const std::string& path, 
 // The files a reader of the code reads: sources, build scripts, tests and docs, and the inputs
 // under corpus folders (whose comments must not send readers outside either).
 std::vector<std::pair<std::string, bool>> files_to_check(const fs::path& root) {
-  static const std::set<std::string> kText = {".cpp", ".hpp", ".h", ".cmake", ".md", ".test", ".txt", ".xsd", ".in", ".dict"};
+  static const std::set<std::string> kText = {".cpp",  ".hpp", ".h",   ".cmake", ".md",
+                                              ".test", ".txt", ".xsd", ".in",    ".dict"};
   static const std::set<std::string> kData = {".md", ".xmt", ".fml", ".mimic", ".xpr", ".combine", ".profile"};
   std::vector<std::pair<std::string, bool>> files;  // path relative to root, data?
   for (const char* top : {"fapcodec", "transcoder", "xmt", "tools", "tests", "bench", "cmake", "docs", "corpus"}) {

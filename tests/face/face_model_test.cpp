@@ -54,12 +54,18 @@ TEST(FapMotion, DirectionsAgreeWithThePositiveMotionColumn) {
     const std::string word(info.positive_motion);
     const int* d = m.direction;
     if (m.action == FapAction::translation) {
-      if (word == "up") EXPECT_EQ(d[1], 1) << info.name;
-      else if (word == "down") EXPECT_EQ(d[1], -1) << info.name;
-      else if (word == "left") EXPECT_EQ(d[0], 1) << info.name;
-      else if (word == "right") EXPECT_EQ(d[0], -1) << info.name;
-      else if (word == "forward") EXPECT_EQ(d[2], 1) << info.name;
-      else ADD_FAILURE() << info.name << ": " << word;
+      if (word == "up")
+        EXPECT_EQ(d[1], 1) << info.name;
+      else if (word == "down")
+        EXPECT_EQ(d[1], -1) << info.name;
+      else if (word == "left")
+        EXPECT_EQ(d[0], 1) << info.name;
+      else if (word == "right")
+        EXPECT_EQ(d[0], -1) << info.name;
+      else if (word == "forward")
+        EXPECT_EQ(d[2], 1) << info.name;
+      else
+        ADD_FAILURE() << info.name << ": " << word;
       EXPECT_EQ(std::abs(d[0]) + std::abs(d[1]) + std::abs(d[2]), 1) << info.name;
     } else if (m.action == FapAction::rotation) {
       EXPECT_EQ(info.unit, Fapu::au) << info.name;

@@ -4,9 +4,9 @@
 
 #include <cmath>
 
+#include "face/face_test_support.hpp"
 #include "fapc/face/face_pose.hpp"
 #include "fapc/face/face_track.hpp"
-#include "face/face_test_support.hpp"
 
 namespace fapc::face {
 namespace {

@@ -26,9 +26,7 @@ Image render_values(std::initializer_list<std::pair<int, double>> values, int w 
 
 TEST(FaceRender, Neutral) { expect_golden_image("golden/face/neutral.png", render_values({})); }
 
-TEST(FaceRender, Blink) {
-  expect_golden_image("golden/face/blink.png", render_values({{19, 1024}, {20, 1024}}));
-}
+TEST(FaceRender, Blink) { expect_golden_image("golden/face/blink.png", render_values({{19, 1024}, {20, 1024}})); }
 
 TEST(FaceRender, HeadTurn) {
   // 0.5 rad to the face's left, a little down and tilted right.
@@ -37,8 +35,7 @@ TEST(FaceRender, HeadTurn) {
 
 TEST(FaceRender, OpenJawAtItsMaximum) {
   // Tall picture: the chin at open_jaw's legal maximum drops 4.2 mouth-nose separations.
-  expect_golden_image("golden/face/open-jaw-max.png",
-                      render_values({{3, find_fap(3)->legal_max()}}, 240, 480));
+  expect_golden_image("golden/face/open-jaw-max.png", render_values({{3, find_fap(3)->legal_max()}}, 240, 480));
 }
 
 // Every group of FAPs 2..10 at both ends of its legal range: a sheet of 18 cells, group 2 at
@@ -94,7 +91,8 @@ TEST(FaceRender, FaceFitsThePictureAtAnyHeadRotation) {
   // At the extremes of the rotation range, no face pixel reaches the picture's edge rows above
   // the neck: the framing radius holds every rotated point.
   const int max = find_fap(49)->legal_max();
-  for (const auto& values : {std::pair{48, max}, std::pair{48, -max / 2}, std::pair{49, max / 2}, std::pair{50, max / 2}}) {
+  for (const auto& values :
+       {std::pair{48, max}, std::pair{48, -max / 2}, std::pair{49, max / 2}, std::pair{50, max / 2}}) {
     const Image image = render_values({values}, 320, 240);
     const std::uint32_t background = image.at(0, 0);
     for (int x = 0; x < image.width; ++x) EXPECT_EQ(image.at(x, 0), background) << "top row, x " << x;
@@ -121,8 +119,8 @@ TEST(FaceRender, BadPictureOptionsAreRefused) {
 
 TEST(FaceRender, Figure3ProgramAsAContactSheet) {
   const std::string out = test::binary_dir() + "/face-figure3-sheet.png";
-  const test::CommandRun run = test::run_fapc("render corpus/examples/mimic/figure3.mimic -o " + out +
-                                              " --sheet 12 --size 320x240");
+  const test::CommandRun run =
+      test::run_fapc("render corpus/examples/mimic/figure3.mimic -o " + out + " --sheet 12 --size 320x240");
   ASSERT_EQ(run.exit_status, 0) << run.err;
   Result<Image> sheet = decode_png(test::read_text(out), out);
   ASSERT_TRUE(sheet);

@@ -25,8 +25,8 @@ void expect_golden_image(const std::string& path, const face::Image& actual) {
   Result<face::Image> golden = face::decode_png(read_text(full), full);
   ASSERT_TRUE(golden) << golden.error().message;
   const face::ImageDifference d = face::compare_images(*golden, actual, kChannelTolerance);
-  ASSERT_TRUE(d.same_size) << path << ": golden " << golden->width << "x" << golden->height
-                           << ", rendered " << actual.width << "x" << actual.height;
+  ASSERT_TRUE(d.same_size) << path << ": golden " << golden->width << "x" << golden->height << ", rendered "
+                           << actual.width << "x" << actual.height;
   EXPECT_LE(double(d.pixels_over_tolerance), kPixelShare * double(actual.pixels.size()))
       << path << ": " << d.pixels_over_tolerance << " pixels differ by more than " << kChannelTolerance;
   EXPECT_LE(d.mean_channel_difference, kMeanTolerance) << path;

@@ -16,12 +16,14 @@ namespace {
 // figure3.mimic lasts 40 s: 1000 frames at 25 fps.
 TEST(FaceVideo, WebmDecodesWithTheRightFrameCountAndDuration) {
   const std::string out = test::binary_dir() + "/face-figure3.webm";
-  const test::CommandRun run = test::run_fapc("render corpus/examples/mimic/figure3.mimic -o " + out + " --size 320x240");
+  const test::CommandRun run =
+      test::run_fapc("render corpus/examples/mimic/figure3.mimic -o " + out + " --size 320x240");
   ASSERT_EQ(run.exit_status, 0) << run.err;
   EXPECT_EQ(run.err, "");  // libav's own logging stays quiet
   const test::CommandRun probe = test::run_shell(
       "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
-      "stream=codec_name,width,height,nb_read_frames:format=duration -of json " + out);
+      "stream=codec_name,width,height,nb_read_frames:format=duration -of json " +
+      out);
   ASSERT_EQ(probe.exit_status, 0) << probe.err;
   const auto facts = nlohmann::json::parse(probe.out);
   const auto& stream = facts["streams"][0];
@@ -37,16 +39,17 @@ TEST(FaceVideo, WebmDecodesWithTheRightFrameCountAndDuration) {
 
 TEST(FaceVideo, FrameRateOptionResamplesTheAnimation) {
   const std::string out = test::binary_dir() + "/face-figure3-10fps.webm";
-  ASSERT_EQ(test::run_fapc("render corpus/examples/mimic/figure3.mimic -o " + out +
-                           " --size 160x120 --frame-rate 10").exit_status, 0);
+  ASSERT_EQ(test::run_fapc("render corpus/examples/mimic/figure3.mimic -o " + out + " --size 160x120 --frame-rate 10")
+                .exit_status,
+            0);
   const test::CommandRun probe = test::run_shell(
       "ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 " + out);
   EXPECT_EQ(probe.out, "400\n");
 }
 
 TEST(FaceVideo, OddSizesAreRefusedForVideo) {
-  const test::CommandRun run = test::run_fapc("render corpus/examples/mimic/figure3.mimic -o " +
-                                              test::binary_dir() + "/odd.webm --size 321x240");
+  const test::CommandRun run = test::run_fapc("render corpus/examples/mimic/figure3.mimic -o " + test::binary_dir() +
+                                              "/odd.webm --size 321x240");
   EXPECT_EQ(run.exit_status, 2);  // a usage error (ErrorKind::usage), docs/cli.md
   EXPECT_NE(run.err.find("even sides"), std::string::npos) << run.err;
 }
@@ -61,11 +64,13 @@ TEST(FacePreviewPage, ChromiumShowsTheFrameAndTheCursorAtTheSeekedTime) {
   // Frame 272 (10.88 s), seeking into its middle so rounding cannot land on a neighbour.
   const int frame = 272;
   const double seek = (frame + 0.5) / 25;
-  ASSERT_EQ(test::run_fapc("render corpus/examples/mimic/figure3.mimic -o " + dir + "/expected.png --size 320x240 --frame " +
-                           std::to_string(frame)).exit_status, 0);
-  const test::CommandRun shot = test::run_shell(
-      "python3 " + test::source_dir() + "/tests/face/browser_screenshot.py chromium 'file://" + page + "#t=" +
-      std::to_string(seek) + "' " + dir + "/shot.png 0 0 320 240");
+  ASSERT_EQ(test::run_fapc("render corpus/examples/mimic/figure3.mimic -o " + dir +
+                           "/expected.png --size 320x240 --frame " + std::to_string(frame))
+                .exit_status,
+            0);
+  const test::CommandRun shot =
+      test::run_shell("python3 " + test::source_dir() + "/tests/face/browser_screenshot.py chromium 'file://" + page +
+                      "#t=" + std::to_string(seek) + "' " + dir + "/shot.png 0 0 320 240");
   ASSERT_EQ(shot.exit_status, 0) << shot.err << shot.out;
   const auto state = nlohmann::json::parse(shot.out);
   EXPECT_NEAR(std::stod(state["data"]["cursorTime"].get<std::string>()), frame / 25.0, 1e-9);
@@ -82,7 +87,10 @@ TEST(FacePreviewPage, ChromiumShowsTheFrameAndTheCursorAtTheSeekedTime) {
   EXPECT_LE(d.mean_channel_difference, 3.0);
   EXPECT_LE(double(d.pixels_over_tolerance), 0.01 * double(expected->pixels.size()));
   // And not some other frame: the neutral face (frame 0) differs clearly from this one.
-  ASSERT_EQ(test::run_fapc("render corpus/examples/mimic/figure3.mimic -o " + dir + "/frame0.png --size 320x240 --frame 0").exit_status, 0);
+  ASSERT_EQ(
+      test::run_fapc("render corpus/examples/mimic/figure3.mimic -o " + dir + "/frame0.png --size 320x240 --frame 0")
+          .exit_status,
+      0);
   Result<Image> first = decode_png(test::read_text(dir + "/frame0.png"), "frame0.png");
   ASSERT_TRUE(first);
   EXPECT_GT(compare_images(*first, *seen, 48).pixels_over_tolerance, d.pixels_over_tolerance * 3 + 200);

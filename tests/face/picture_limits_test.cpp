@@ -61,7 +61,8 @@ TEST(PictureLimits, AVideoTooLargeInAllIsRefusedBeforeAnyPictureIsEncoded) {
       << webm.error().message;
   EXPECT_NE(webm.error().message.find("(--max-video-pixels N raises it)"), std::string::npos) << webm.error().message;
   // So is a picture larger than the limit, whatever the length.
-  webm = encode_webm(FaceTrack(test::constant_sequence(3, 100, 2)), VideoOptions{7680, 4320, 0, {}, {}}, nullptr, "big.webm");
+  webm = encode_webm(FaceTrack(test::constant_sequence(3, 100, 2)), VideoOptions{7680, 4320, 0, {}, {}}, nullptr,
+                     "big.webm");
   ASSERT_FALSE(webm);
   EXPECT_NE(webm.error().message.find("(--max-frame-pixels N raises it)"), std::string::npos) << webm.error().message;
 }

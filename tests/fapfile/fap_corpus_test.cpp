@@ -7,9 +7,7 @@
 namespace fapc {
 namespace {
 
-std::vector<std::string> corpus_files() {
-  return test::files_under(test::corpus_dir() + "/fap", ".fap");
-}
+std::vector<std::string> corpus_files() { return test::files_under(test::corpus_dir() + "/fap", ".fap"); }
 
 TEST(FapCorpus, EveryFileIsRead) {
   const auto files = corpus_files();

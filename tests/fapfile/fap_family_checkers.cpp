@@ -58,18 +58,22 @@ std::optional<long long> integer(const std::string& token) {
 }
 
 struct Form {
-  bool header;           // `2.1 <name> <fps> <n>`
-  std::size_t mask_tokens;  // 68, or 69 with the last 0
-  bool single_fap12;     // FAP 1 and FAP 2 one value each
+  bool header;               // `2.1 <name> <fps> <n>`
+  std::size_t mask_tokens;   // 68, or 69 with the last 0
+  bool single_fap12;         // FAP 1 and FAP 2 one value each
   bool millisecond_numbers;  // SEMAINE: a leading time line, then stamps on one step
 };
 
 Form form_of(Family family) {
   switch (family) {
-    case Family::greta_java: return {true, 69, true, false};  // 3.3: its writer's 69 slots; one value for FAP 1/2
-    case Family::vreng: return {true, 68, true, false};       // 3.6: at most 68 mask bits; plain single values
-    case Family::semaine: return {false, 68, true, true};     // 3.5 and ReadFapBuffer (3.4): one value each
-    default: return {true, 68, false, false};                 // 3.1, 3.4 ReadFapFile, 5: 4 and 6 fields
+    case Family::greta_java:
+      return {true, 69, true, false};  // 3.3: its writer's 69 slots; one value for FAP 1/2
+    case Family::vreng:
+      return {true, 68, true, false};  // 3.6: at most 68 mask bits; plain single values
+    case Family::semaine:
+      return {false, 68, true, true};  // 3.5 and ReadFapBuffer (3.4): one value each
+    default:
+      return {true, 68, false, false};  // 3.1, 3.4 ReadFapFile, 5: 4 and 6 fields
   }
 }
 
@@ -95,11 +99,14 @@ std::string check_header(const std::string& line, Seen& seen, long long& count) 
 std::string read_pair(const std::string& mask_line, const std::string& value_line, const Form& form, SeenFrame& frame) {
   // Every family writes, and VREng needs, single spaces with the trailing one real files have.
   const auto mask = single_spaced(mask_line, true);
-  if (!mask || mask->size() != form.mask_tokens) return "a mask line is not " + std::to_string(form.mask_tokens) + " single-spaced tokens and a space";
+  if (!mask || mask->size() != form.mask_tokens)
+    return "a mask line is not " + std::to_string(form.mask_tokens) + " single-spaced tokens and a space";
   for (std::size_t i = 0; i < mask->size(); ++i) {
     if ((*mask)[i] != "0" && (*mask)[i] != "1") return "a mask token is not 0 or 1";
-    if (i < 68) frame.mask.set(i, (*mask)[i] == "1");
-    else if ((*mask)[i] != "0") return "the 69th mask token is not 0";
+    if (i < 68)
+      frame.mask.set(i, (*mask)[i] == "1");
+    else if ((*mask)[i] != "0")
+      return "the 69th mask token is not 0";
   }
   const auto values = single_spaced(value_line, true);
   if (!values) return "a value line is not single-spaced tokens and a space";

@@ -23,20 +23,17 @@ struct FlavourCase {
 };
 
 const FlavourCase kCases[] = {
-    {FapFlavour::safe, test::Family::safe, false},
-    {FapFlavour::xface, test::Family::xface, false},
-    {FapFlavour::greta_cpp, test::Family::greta_cpp, false},
-    {FapFlavour::greta_java, test::Family::greta_java, true},
-    {FapFlavour::vreng, test::Family::vreng, true},
-    {FapFlavour::semaine, test::Family::semaine, true},
+    {FapFlavour::safe, test::Family::safe, false},           {FapFlavour::xface, test::Family::xface, false},
+    {FapFlavour::greta_cpp, test::Family::greta_cpp, false}, {FapFlavour::greta_java, test::Family::greta_java, true},
+    {FapFlavour::vreng, test::Family::vreng, true},          {FapFlavour::semaine, test::Family::semaine, true},
 };
 
 // What one value of FAP 1 / FAP 2 stands for (fap-files.md: Greta's form, one select shown alone).
 bool single_value_form(const FapFrame& f) {
   const bool viseme = !f.has(1) || (f.viseme.select2 == 0 && f.viseme.blend == 63 && f.viseme.def == 0);
-  const bool expression = !f.has(2) || (f.expression.intensity1 == 63 && f.expression.select2 == 0 &&
-                                        f.expression.intensity2 == 0 && f.expression.init_face == 0 &&
-                                        f.expression.def == 0);
+  const bool expression =
+      !f.has(2) || (f.expression.intensity1 == 63 && f.expression.select2 == 0 && f.expression.intensity2 == 0 &&
+                    f.expression.init_face == 0 && f.expression.def == 0);
   return viseme && expression;
 }
 
@@ -52,19 +49,22 @@ std::string differs(const test::SeenFrame& seen, const FapFrame& f, bool single)
   for (std::size_t i = 0; i < 68; ++i)
     if (seen.mask.test(i) != f.mask.test(i)) return "mask bit " + std::to_string(i + 1);
   if (f.has(1)) {
-    const std::vector<long long> want = single ? std::vector<long long>{f.viseme.select1}
-                                               : std::vector<long long>{f.viseme.select1, f.viseme.select2, f.viseme.blend, f.viseme.def};
+    const std::vector<long long> want =
+        single ? std::vector<long long>{f.viseme.select1}
+               : std::vector<long long>{f.viseme.select1, f.viseme.select2, f.viseme.blend, f.viseme.def};
     if (seen.fap1 != want) return "FAP 1";
   }
   if (f.has(2)) {
     const ExpressionFields& e = f.expression;
-    const std::vector<long long> want = single ? std::vector<long long>{e.select1}
-                                               : std::vector<long long>{e.select1, e.intensity1, e.select2, e.intensity2, e.init_face, e.def};
+    const std::vector<long long> want =
+        single ? std::vector<long long>{e.select1}
+               : std::vector<long long>{e.select1, e.intensity1, e.select2, e.intensity2, e.init_face, e.def};
     if (seen.fap2 != want) return "FAP 2";
   }
   std::size_t k = 0;
   for (int fap = 3; fap <= kFapCount; ++fap)
-    if (f.has(fap) && (k >= seen.values.size() || seen.values[k++] != f.value(fap))) return "FAP " + std::to_string(fap);
+    if (f.has(fap) && (k >= seen.values.size() || seen.values[k++] != f.value(fap)))
+      return "FAP " + std::to_string(fap);
   return {};
 }
 
@@ -98,7 +98,8 @@ TEST(FapFlavour, EveryCorpusFileSatisfiesEachFamilysChecker) {
       const long long frames = input.frames.empty() ? 0 : input.frames.back().number - input.frames.front().number + 1;
       ASSERT_EQ(static_cast<long long>(seen.frames.size()), frames) << label;
       for (long long j = 0; j < frames; ++j)
-        ASSERT_EQ(differs(seen.frames[static_cast<std::size_t>(j)], frame_at(input, j), c.single_fap12), "") << label << " frame " << j;
+        ASSERT_EQ(differs(seen.frames[static_cast<std::size_t>(j)], frame_at(input, j), c.single_fap12), "")
+            << label << " frame " << j;
       if (seen.fps != 0 && frames > 1) {
         EXPECT_EQ(seen.fps, input.fps) << label;
       }
@@ -108,7 +109,8 @@ TEST(FapFlavour, EveryCorpusFileSatisfiesEachFamilysChecker) {
       ASSERT_TRUE(again.ok()) << label << ": " << format_diagnostic(again.error());
       ASSERT_EQ(static_cast<long long>(again->sequence.frames.size()), frames) << label;
       for (long long j = 0; j < frames; ++j)
-        EXPECT_TRUE(again->sequence.frames[static_cast<std::size_t>(j)].same_content(frame_at(input, j))) << label << " frame " << j;
+        EXPECT_TRUE(again->sequence.frames[static_cast<std::size_t>(j)].same_content(frame_at(input, j)))
+            << label << " frame " << j;
       if (frames > 1) {
         EXPECT_EQ(again->sequence.fps, input.fps) << label;
       }

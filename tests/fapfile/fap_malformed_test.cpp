@@ -17,9 +17,9 @@ std::string mask_with(std::initializer_list<int> on, int tokens = 68) {
   return out;
 }
 
-const std::string kJaw = mask_with({3});            // FAP 3 only; 135 characters
-const std::string kJawHead = mask_with({3, 48});    // FAPs 3 and 48
-const std::string kViseme = mask_with({1, 3});      // FAP 1 and FAP 3
+const std::string kJaw = mask_with({3});          // FAP 3 only; 135 characters
+const std::string kJawHead = mask_with({3, 48});  // FAPs 3 and 48
+const std::string kViseme = mask_with({1, 3});    // FAP 1 and FAP 3
 
 struct BadCase {
   const char* name;

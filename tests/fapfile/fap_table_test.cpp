@@ -37,8 +37,8 @@ TEST(FapTable, KnownRows) {
   EXPECT_EQ(jaw->intra_range, 1080);
   EXPECT_EQ(jaw->predictive_range, 360);
   EXPECT_EQ(jaw->legal_max(), 4320);
-  EXPECT_EQ(find_fap(63)->legal_max(), 720);      // 680 rounded up to 720 by the decoder
-  EXPECT_EQ(find_fap(48)->legal_max(), 316200);   // 1860 x 170
+  EXPECT_EQ(find_fap(63)->legal_max(), 720);     // 680 rounded up to 720 by the decoder
+  EXPECT_EQ(find_fap(48)->legal_max(), 316200);  // 1860 x 170
   EXPECT_EQ(find_fap(47)->quant_step, 512);
   EXPECT_EQ(find_fap(23)->unit, Fapu::au);
   EXPECT_EQ(find_fap(68)->name, "pull_r_ear");

@@ -23,8 +23,9 @@ TEST(FapVariants, CommentsAroundTheHeaderAndNoActiveFap) {
   EXPECT_TRUE(r.sequence.frames[0].mask.none());
   ASSERT_EQ(r.warnings.size(), 1u);
   EXPECT_EQ(format_diagnostic(r.warnings[0]),
-            test::corpus_dir() + "/fap-variants/v05-comments-around-header.fap:3:1: warning: "
-            "comment line after the header (Xface and Greta's Java reader cannot read it)");
+            test::corpus_dir() +
+                "/fap-variants/v05-comments-around-header.fap:3:1: warning: "
+                "comment line after the header (Xface and Greta's Java reader cannot read it)");
 }
 
 TEST(FapVariants, VisemeAndExpressionWithAllTheirFields) {
@@ -37,8 +38,7 @@ TEST(FapVariants, VisemeAndExpressionWithAllTheirFields) {
   EXPECT_EQ(f.expression, (ExpressionFields{3, 63, 6, 20, 1, 0}));
   EXPECT_EQ(f.value(3), -45);
   // Written back in the same 4/6 form.
-  EXPECT_NE(write_fap_text(r.sequence).find("\n1 10 11 32 1 3 63 6 20 1 0 -45 \n"),
-            std::string::npos);
+  EXPECT_NE(write_fap_text(r.sequence).find("\n1 10 11 32 1 3 63 6 20 1 0 -45 \n"), std::string::npos);
 }
 
 TEST(FapVariants, Vreng20WithTabsFramesFromOneAndCrlf) {

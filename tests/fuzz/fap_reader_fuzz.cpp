@@ -14,8 +14,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // Gap filling in the writer could blow up on huge frame-number jumps; keep the check bounded.
   // (The span is computed without overflow: frame numbers may be anywhere in int64.)
   std::int64_t span = 0;
-  if (!frames.empty() && (__builtin_sub_overflow(frames.back().number, frames.front().number, &span) ||
-                          span > 100000 || span < -100000))
+  if (!frames.empty() &&
+      (__builtin_sub_overflow(frames.back().number, frames.front().number, &span) || span > 100000 || span < -100000))
     return 0;
   auto again = fapc::read_fap_text(fapc::write_fap_text(read->sequence), "again.fap");
   if (!again.ok()) std::abort();

@@ -25,8 +25,8 @@
 
 namespace {
 
-constexpr std::array<const char*, 8> kInputExtensions = {".fap", ".fap.gz", ".fba", ".mp4",
-                                                         ".mimic", ".fml", ".xmt", ".combine"};
+constexpr std::array<const char*, 8> kInputExtensions = {".fap",   ".fap.gz", ".fba", ".mp4",
+                                                         ".mimic", ".fml",    ".xmt", ".combine"};
 // Writing is linear in the frames; past this the fuzzer would spend its time encoding and drawing
 // faces (the picture and video writers: about a millisecond a frame under the sanitizers, so a
 // 36-byte script of 10^4 frames took past the 10 s a fuzzer allows an input).

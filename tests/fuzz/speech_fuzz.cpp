@@ -31,7 +31,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto read = fapc::xmt::read_fml(text, "fuzz.fml", options);
   if (read.ok()) {
     auto mixed = fapc::mix_audio(read->timeline.audio, 1e6, options.speech_limits);
-    if (mixed.ok() && *mixed && static_cast<std::int64_t>((*mixed)->samples.size()) > options.speech_limits.max_audio_samples)
+    if (mixed.ok() && *mixed &&
+        static_cast<std::int64_t>((*mixed)->samples.size()) > options.speech_limits.max_audio_samples)
       std::abort();
     if (!mixed.ok() && mixed.error().kind != fapc::ErrorKind::limit_exceeded) std::abort();
   }

@@ -16,7 +16,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
   auto clip = fapc::read_wav(bytes, "fuzz.wav");
   if (!clip.ok()) {
-    if (clip.error().where.byte_offset < 0 || clip.error().where.byte_offset > static_cast<std::int64_t>(size)) std::abort();
+    if (clip.error().where.byte_offset < 0 || clip.error().where.byte_offset > static_cast<std::int64_t>(size))
+      std::abort();
     return 0;
   }
   if (clip->sample_rate < 1 || clip->sample_rate > 384000 || clip->samples.size() > size / 2) std::abort();

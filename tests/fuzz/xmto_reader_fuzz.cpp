@@ -24,7 +24,8 @@ fapc::Timeline included() {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   fapc::xmt::XmtoOptions options;
-  options.load_animation = [](const std::string&, const fapc::Location&)
-      -> fapc::Result<fapc::xmt::IncludedAnimation> { return fapc::xmt::IncludedAnimation{included(), {}}; };
+  options.load_animation = [](const std::string&, const fapc::Location&) -> fapc::Result<fapc::xmt::IncludedAnimation> {
+    return fapc::xmt::IncludedAnimation{included(), {}};
+  };
   return fapc::fuzz::check_timeline_read(fapc::xmt::read_xmto(text, "fuzz.xmt", options));
 }

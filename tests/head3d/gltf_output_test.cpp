@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <sstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/face/face_pose.hpp"
@@ -52,7 +52,9 @@ Vec3 world(const nlohmann::json& pose, int v) {
   return Vec3{p[0].get<double>() * 1000, p[1].get<double>() * 1000, p[2].get<double>() * 1000};
 }
 
-double distance(Vec3 a, Vec3 b) { return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z)); }
+double distance(Vec3 a, Vec3 b) {
+  return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));
+}
 
 TEST(GltfOutput, Figure3ValidatesAndTurnsAndClosesTheEyeWhereTheProgramSays) {
   const std::string glb = out_dir() + "/f3.glb", fap = out_dir() + "/f3.fap";
@@ -69,7 +71,7 @@ TEST(GltfOutput, Figure3ValidatesAndTurnsAndClosesTheEyeWhereTheProgramSays) {
   // At 10 s the program has turned the head (head_rot_y, head_rot_x held from 5 to 15 s) and the
   // left eyelid is at 0.8 (6 s + 3 s in, held 2 s); at 0 s nothing has moved.
   const std::vector<int> points = {vertex_of(P::nose_tip), vertex_of(P::lid_t_l), vertex_of(P::lid_b_l),
-                                   vertex_of(P::lid_t_r), vertex_of(P::lid_b_r), vertex_of(P::chin_bottom)};
+                                   vertex_of(P::lid_t_r),  vertex_of(P::lid_b_r), vertex_of(P::chin_bottom)};
   for (const double t : {0.0, 10.0, 12.0}) {
     const nlohmann::json pose = importer_pose(glb, t, points);
     const face::FacePose face_pose = face::pose_face(track.at_time(t));
@@ -86,12 +88,14 @@ TEST(GltfOutput, Figure3ValidatesAndTurnsAndClosesTheEyeWhereTheProgramSays) {
     // The lids' openings, top to bottom (a distance, so the head's rotation does not enter):
     // the 2D face's 3.1-3.3 and 3.2-3.4 within 0.5 mm.
     EXPECT_NEAR(distance(world(pose, points[1]), world(pose, points[2])),
-                distance(face_pose.at(P::lid_t_l), face_pose.at(P::lid_b_l)), 0.5) << t;
+                distance(face_pose.at(P::lid_t_l), face_pose.at(P::lid_b_l)), 0.5)
+        << t;
     EXPECT_NEAR(distance(world(pose, points[3]), world(pose, points[4])),
-                distance(face_pose.at(P::lid_t_r), face_pose.at(P::lid_b_r)), 0.5) << t;
+                distance(face_pose.at(P::lid_t_r), face_pose.at(P::lid_b_r)), 0.5)
+        << t;
     EXPECT_LT(distance(world(pose, points[5]), face_pose.at(P::chin_bottom)), 1.0) << t;
     if (t == 10.0) {
-      EXPECT_GT(std::abs(face_pose.head.m[0][2]), 0.2);  // turned
+      EXPECT_GT(std::abs(face_pose.head.m[0][2]), 0.2);                            // turned
       EXPECT_LT(distance(face_pose.at(P::lid_t_l), face_pose.at(P::lid_b_l)), 4);  // nearly closed
     }
   }
@@ -123,7 +127,8 @@ TEST(GltfOutput, WeightsAreTheFramesValuesOver1024) {
   int checked = 0;
   for (const MorphTarget& target : morph_targets()) {
     if (target.fap == 0) continue;
-    EXPECT_NEAR(pose["weights"][target.name].get<double>(), paired[static_cast<std::size_t>(target.fap - 1)] / 1024, 1e-6)
+    EXPECT_NEAR(pose["weights"][target.name].get<double>(), paired[static_cast<std::size_t>(target.fap - 1)] / 1024,
+                1e-6)
         << target.name;
     if (paired[static_cast<std::size_t>(target.fap - 1)] != 0) ++checked;
   }
@@ -154,7 +159,8 @@ TEST(GltfOutput, ArkitMorphsValidateAndFollowTheVocabularyTable) {
     // The left lid's opening (figure3 closes that eye to 0.8 at 10 s) within 0.5 mm of the 2D face's.
     const face::FacePose face_pose = face::pose_face(track.at_time(t));
     EXPECT_NEAR(distance(world(pose, lids[0]), world(pose, lids[1])),
-                distance(face_pose.at(P::lid_t_l), face_pose.at(P::lid_b_l)), 0.5) << t;
+                distance(face_pose.at(P::lid_t_l), face_pose.at(P::lid_b_l)), 0.5)
+        << t;
   }
 
   // jawOpen is open_jaw's target times its amount / 1024 (its one row of the table).
@@ -188,15 +194,16 @@ TEST(GltfOutput, BlenderImportsTheHeadItsShapeKeysAndTheAnimation) {
     ASSERT_EQ(test::run_fapc("compile corpus/examples/mimic/figure3.mimic -o " + glb + (arkit ? " --morphs arkit" : ""))
                   .exit_status,
               0);
-    const test::CommandRun run = test::run_shell("blender -b --factory-startup --python-exit-code 1 --python " +
-                                                 test::source_dir() + "/tests/head3d/blender_import.py -- " + glb +
-                                                 " 0 10 12");
+    const test::CommandRun run =
+        test::run_shell("blender -b --factory-startup --python-exit-code 1 --python " + test::source_dir() +
+                        "/tests/head3d/blender_import.py -- " + glb + " 0 10 12");
     ASSERT_EQ(run.exit_status, 0) << run.err;
     const std::size_t at = run.out.find("BLENDER-IMPORT ");
     ASSERT_NE(at, std::string::npos) << run.out;
     const auto blender = nlohmann::json::parse(run.out.substr(at + 15, run.out.find('\n', at) - at - 15));
     for (const char* name : {"head", "eye_l", "eye_r"})
-      EXPECT_NE(std::find(blender["objects"].begin(), blender["objects"].end(), name), blender["objects"].end()) << name;
+      EXPECT_NE(std::find(blender["objects"].begin(), blender["objects"].end(), name), blender["objects"].end())
+          << name;
     // Blender keeps a vertex per primitive that uses it: at least the mesh's own.
     EXPECT_GE(blender["vertices"].get<std::size_t>(), head_mesh().positions.size());
     std::vector<std::string> names;
@@ -207,11 +214,13 @@ TEST(GltfOutput, BlenderImportsTheHeadItsShapeKeysAndTheAnimation) {
       const nlohmann::json ours = importer_pose(glb, t, {});
       for (const std::string node : {"head", "eye_l", "eye_r"}) {
         double dot = 0;  // q and -q are the same rotation
-        for (int i = 0; i < 4; ++i) dot += pose["rotations"][node][i].get<double>() * ours["rotations"][node][i].get<double>();
+        for (int i = 0; i < 4; ++i)
+          dot += pose["rotations"][node][i].get<double>() * ours["rotations"][node][i].get<double>();
         EXPECT_NEAR(std::abs(dot), 1.0, 1e-5) << node << " at " << t;
       }
       for (const std::string& name : names)
-        EXPECT_NEAR(pose["weights"][name].get<double>(), ours["weights"][name].get<double>(), 1e-4) << name << " at " << t;
+        EXPECT_NEAR(pose["weights"][name].get<double>(), ours["weights"][name].get<double>(), 1e-4)
+            << name << " at " << t;
     }
   }
 }

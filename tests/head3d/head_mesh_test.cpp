@@ -15,7 +15,9 @@ namespace {
 
 using face::P;
 
-double distance(Vec3 a, Vec3 b) { return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z)); }
+double distance(Vec3 a, Vec3 b) {
+  return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));
+}
 int vertex_of(P p) { return head_mesh().feature_vertex[static_cast<std::size_t>(p)]; }
 
 std::vector<double> weights_for(std::initializer_list<std::pair<int, double>> values) {
@@ -58,7 +60,8 @@ TEST(HeadMorphs, OpenJawMovesTheChinByValueTimesMns) {
   const Vec3 rest = head_mesh().positions[static_cast<std::size_t>(vertex_of(P::chin_bottom))];
   const Vec3 open = p[static_cast<std::size_t>(vertex_of(P::chin_bottom))];
   EXPECT_NEAR(rest.y - open.y, 4320 * face::fapus().mns0 / 1024, 1e-3);
-  const auto lower = static_cast<std::size_t>(vertex_of(P::lip_b_mid_i)), upper = static_cast<std::size_t>(vertex_of(P::lip_t_mid_i));
+  const auto lower = static_cast<std::size_t>(vertex_of(P::lip_b_mid_i)),
+             upper = static_cast<std::size_t>(vertex_of(P::lip_t_mid_i));
   EXPECT_NEAR(head_mesh().positions[lower].y - p[lower].y, 84.375, 0.5);
   EXPECT_NEAR(p[upper].y, head_mesh().positions[upper].y, 1e-9);
   // The lips part: the inner lips, one vertex each at rest, are 84 mm apart.
@@ -71,7 +74,8 @@ TEST(HeadMorphs, OpenJawMovesTheChinByValueTimesMns) {
 // vertex stays outside the eyeball.
 TEST(HeadMorphs, ABlinkClosesTheLidOverTheEyeball) {
   const std::vector<Vec3> p = morphed_positions(weights_for({{19, 1024}}));
-  const auto top = static_cast<std::size_t>(vertex_of(P::lid_t_l)), bottom = static_cast<std::size_t>(vertex_of(P::lid_b_l));
+  const auto top = static_cast<std::size_t>(vertex_of(P::lid_t_l)),
+             bottom = static_cast<std::size_t>(vertex_of(P::lid_b_l));
   EXPECT_NEAR(p[top].y, p[bottom].y, 0.5);  // the middle vertex is the column nearest the middle
   EXPECT_GT(head_mesh().positions[top].y - head_mesh().positions[bottom].y, 10);
   const auto other = static_cast<std::size_t>(vertex_of(P::lid_t_r));
@@ -89,12 +93,16 @@ TEST(HeadMorphs, EveryFapTargetMovesItsPointByValueTimesFapu) {
     if (v < 0) continue;
     std::vector<double> w(morph_targets().size());
     w[static_cast<std::size_t>(&t - morph_targets().data())] = 1;
-    const Vec3 moved = morphed_positions(w)[static_cast<std::size_t>(v)] - head_mesh().positions[static_cast<std::size_t>(v)];
+    const Vec3 moved =
+        morphed_positions(w)[static_cast<std::size_t>(v)] - head_mesh().positions[static_cast<std::size_t>(v)];
     const Vec3 expected = kTargetUnits * own.mm_per_unit;
-    const bool lid = own.point == P::lid_t_l || own.point == P::lid_t_r || own.point == P::lid_b_l || own.point == P::lid_b_r;
+    const bool lid =
+        own.point == P::lid_t_l || own.point == P::lid_t_r || own.point == P::lid_b_l || own.point == P::lid_b_r;
     // Lids also move forward, over the eyeball; compare along the FAP's direction for them.
-    if (lid) EXPECT_NEAR(moved.y, expected.y, 0.05 * std::abs(expected.y) + 0.05) << t.name;
-    else EXPECT_LT(distance(moved, expected), 0.05 * distance(expected, {}) + 0.05) << t.name;
+    if (lid)
+      EXPECT_NEAR(moved.y, expected.y, 0.05 * std::abs(expected.y) + 0.05) << t.name;
+    else
+      EXPECT_LT(distance(moved, expected), 0.05 * distance(expected, {}) + 0.05) << t.name;
   }
 }
 
@@ -110,10 +118,13 @@ TEST(HeadMorphs, AVisemeIsItsDisplacementSet) {
   const std::vector<Vec3> by_viseme = morphed_positions(head_frames(seq).at(0).weights);
   std::vector<std::pair<int, double>> set;
   const auto& aa = face::viseme_displacements(10);
-  const std::vector<Vec3> by_faps = morphed_positions(weights_for({{3, aa[2]}, {4, aa[3]}, {5, aa[4]}, {51, aa[50]}, {52, aa[51]}}));
-  for (std::size_t v = 0; v < by_faps.size(); ++v) ASSERT_LT(distance(by_viseme[v], by_faps[v]), 0.01) << v;  // targets leave out moves under 1e-3 mm
+  const std::vector<Vec3> by_faps =
+      morphed_positions(weights_for({{3, aa[2]}, {4, aa[3]}, {5, aa[4]}, {51, aa[50]}, {52, aa[51]}}));
+  for (std::size_t v = 0; v < by_faps.size(); ++v)
+    ASSERT_LT(distance(by_viseme[v], by_faps[v]), 0.01) << v;  // targets leave out moves under 1e-3 mm
   EXPECT_GT(distance(by_viseme[static_cast<std::size_t>(vertex_of(P::chin_bottom))],
-                     head_mesh().positions[static_cast<std::size_t>(vertex_of(P::chin_bottom))]), 10);
+                     head_mesh().positions[static_cast<std::size_t>(vertex_of(P::chin_bottom))]),
+            10);
 }
 
 }  // namespace

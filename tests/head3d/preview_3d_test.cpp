@@ -55,8 +55,9 @@ std::string page_path() {
     const std::string dir = test::binary_dir() + "/head3d-page";
     std::filesystem::create_directories(dir);
     std::ofstream(dir + "/three.fap") << write_fap_text(three_frames());
-    const test::CommandRun run = test::run_fapc("render " + dir + "/three.fap -o " + dir + "/three.html --view both --size " +
-                                                std::to_string(kWidth) + "x" + std::to_string(kHeight));
+    const test::CommandRun run =
+        test::run_fapc("render " + dir + "/three.fap -o " + dir + "/three.html --view both --size " +
+                       std::to_string(kWidth) + "x" + std::to_string(kHeight));
     EXPECT_EQ(run.exit_status, 0) << run.err;
     return dir + "/three.html";
   }();
@@ -70,9 +71,9 @@ Shot take_screenshot(int frame) {
   layout.width = kWidth;
   layout.view = face::PreviewView::both;
   const test::CommandRun run = test::run_shell(
-      "python3 " + test::source_dir() + "/tests/face/browser_screenshot.py chromium 'file://" + page_path() + "#t=" +
-      std::to_string((frame + 0.5) / kFps) + "' " + out + " " + std::to_string(face::head3d_left(layout)) + " 0 " +
-      std::to_string(kWidth) + " " + std::to_string(kHeight));
+      "python3 " + test::source_dir() + "/tests/face/browser_screenshot.py chromium 'file://" + page_path() +
+      "#t=" + std::to_string((frame + 0.5) / kFps) + "' " + out + " " + std::to_string(face::head3d_left(layout)) +
+      " 0 " + std::to_string(kWidth) + " " + std::to_string(kHeight));
   Shot shot;
   EXPECT_EQ(run.exit_status, 0) << run.err << run.out;
   if (run.exit_status != 0) return shot;
@@ -224,16 +225,17 @@ TEST(Preview3d, Figure3TurnsTheHeadAndClosesTheEyeWhereTheProgramSays) {
   const std::string dir = test::binary_dir() + "/head3d-page";
   std::filesystem::create_directories(dir);
   const std::string page = dir + "/figure3.html", glb = dir + "/figure3.glb";
-  ASSERT_EQ(test::run_fapc("render corpus/examples/mimic/figure3.mimic -o " + page + " --view 3d --size 160x120").exit_status,
-            0);
+  ASSERT_EQ(
+      test::run_fapc("render corpus/examples/mimic/figure3.mimic -o " + page + " --view 3d --size 160x120").exit_status,
+      0);
   ASSERT_EQ(test::run_fapc("compile corpus/examples/mimic/figure3.mimic -o " + glb).exit_status, 0);
-  const test::CommandRun shot = test::run_shell("python3 " + test::source_dir() +
-                                                "/tests/face/browser_screenshot.py chromium 'file://" + page +
-                                                "#t=10.02' " + dir + "/figure3.png 0 0 160 120 'fapcHead3d.pose()'");
+  const test::CommandRun shot =
+      test::run_shell("python3 " + test::source_dir() + "/tests/face/browser_screenshot.py chromium 'file://" + page +
+                      "#t=10.02' " + dir + "/figure3.png 0 0 160 120 'fapcHead3d.pose()'");
   ASSERT_EQ(shot.exit_status, 0) << shot.err << shot.out;
   const auto seen = nlohmann::json::parse(shot.out)["value"];
-  const test::CommandRun read = test::run_shell("python3 " + test::source_dir() + "/tests/head3d/gltf_pose.py " + glb +
-                                                " --time 10");
+  const test::CommandRun read =
+      test::run_shell("python3 " + test::source_dir() + "/tests/head3d/gltf_pose.py " + glb + " --time 10");
   ASSERT_EQ(read.exit_status, 0) << read.err;
   const auto file = nlohmann::json::parse(read.out);
   for (const std::string node : {"head", "eye_l", "eye_r"}) {
@@ -241,7 +243,7 @@ TEST(Preview3d, Figure3TurnsTheHeadAndClosesTheEyeWhereTheProgramSays) {
     for (int i = 0; i < 4; ++i) dot += seen[node][i].get<double>() * file["rotations"][node][i].get<double>();
     EXPECT_NEAR(std::abs(dot), 1.0, 1e-5) << node;
   }
-  EXPECT_LT(std::abs(seen["head"][3].get<double>()), 0.99);  // turned
+  EXPECT_LT(std::abs(seen["head"][3].get<double>()), 0.99);                   // turned
   EXPECT_NEAR(seen["weights"]["close_t_l_eyelid"].get<double>(), 0.8, 1e-3);  // 0.8 closed (819 / 1024)
   ASSERT_EQ(seen["weights"].size(), file["weights"].size());
   for (const auto& [name, weight] : file["weights"].items())

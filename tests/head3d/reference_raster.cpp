@@ -58,7 +58,7 @@ class Rasteriser {
     const V d = sub(p, eye_);
     const double z = -dot(d, back_);  // distance in front of the camera
     Projected out;
-    if (z <= 0.01) return out;        // the camera's near plane
+    if (z <= 0.01) return out;  // the camera's near plane
     const double ndc_x = focal_ / aspect_ * dot(d, right_) / z, ndc_y = focal_ * dot(d, up_) / z;
     out.x = (ndc_x + 1) / 2 * image_.width;
     out.y = (1 - ndc_y) / 2 * image_.height;
@@ -115,7 +115,8 @@ void draw_parts(Rasteriser& r, const std::vector<Part>& parts, const std::vector
 std::vector<V> scene_vertices(const HeadFrame& frame) {
   const V pivot = metres(face::neutral(face::P::spine_top));
   std::vector<V> out;
-  for (const Vec3& p : morphed_positions(frame.weights)) out.push_back(add(pivot, rotate(frame.head, sub(metres(p), pivot))));
+  for (const Vec3& p : morphed_positions(frame.weights))
+    out.push_back(add(pivot, rotate(frame.head, sub(metres(p), pivot))));
   for (int e = 0; e < 2; ++e) {
     const V centre = sub(metres(eyeball_centre(e)), pivot);
     for (const Vec3& p : eyeball_mesh().positions)

@@ -9,13 +9,12 @@
 namespace fapc::intent {
 namespace {
 
-Result<IntentDocument> read(const std::string& body) {
-  return read_apml("<apml>\n" + body + "\n</apml>\n", "t.xml");
-}
+Result<IntentDocument> read(const std::string& body) { return read_apml("<apml>\n" + body + "\n</apml>\n", "t.xml"); }
 
 // Where a BML speech of the same text puts a mark before word `before`.
 double word_time(const std::string& text_with_mark) {
-  const auto bml = bml::read_bml("<bml id=\"b\"><speech id=\"s\"><text>" + text_with_mark + "</text></speech></bml>", "t.bml");
+  const auto bml =
+      bml::read_bml("<bml id=\"b\"><speech id=\"s\"><text>" + text_with_mark + "</text></speech></bml>", "t.bml");
   EXPECT_TRUE(bml) << bml.error().message;
   return bml->marks.at(0).time;
 }
@@ -34,7 +33,8 @@ const Intention* find(const IntentDocument& d, const std::string& type) {
 }
 
 TEST(ApmlReader, AnIntentionStartsOnItsFirstWordAndEndsWithTheNextWord) {
-  const auto d = read(R"(<performative type="announce">Whatever works for <emphasis x-pitchaccent="Hstar">you</emphasis> today</performative>)");
+  const auto d = read(
+      R"(<performative type="announce">Whatever works for <emphasis x-pitchaccent="Hstar">you</emphasis> today</performative>)");
   ASSERT_TRUE(d) << d.error().message;
   const Intention* e = find(*d, "emphasis");
   ASSERT_NE(e, nullptr);
@@ -48,7 +48,8 @@ TEST(ApmlReader, AnIntentionStartsOnItsFirstWordAndEndsWithTheNextWord) {
 }
 
 TEST(ApmlReader, AttributesAddIntentionsWithTheirIntensity) {
-  const auto d = read(R"(<rheme affect="sadness" intensity="0.4">so <emphasis x-pitchaccent="Hstar" deictic="self">me</emphasis></rheme>)");
+  const auto d = read(
+      R"(<rheme affect="sadness" intensity="0.4">so <emphasis x-pitchaccent="Hstar" deictic="self">me</emphasis></rheme>)");
   ASSERT_TRUE(d) << d.error().message;
   const Intention* affect = find(*d, "affect");
   ASSERT_NE(affect, nullptr);

@@ -87,8 +87,9 @@ TEST(FmlApmlReader, AnIntentionDrawsWhatTheSameBmlBehaviourDraws) {
   options.lexicon = &lexicon;
   const auto d = read(R"(<emphasis id="x" start="1" end="3"/>)", options);
   ASSERT_TRUE(d) << d.error().message;
-  const auto b = bml::read_bml(R"(<bml id="b"><faceLexeme id="f" lexeme="RAISE_BROWS" amount="0.6" start="1" ready="1.4" relax="2.6" end="3"/></bml>)",
-                               "t.bml");
+  const auto b = bml::read_bml(
+      R"(<bml id="b"><faceLexeme id="f" lexeme="RAISE_BROWS" amount="0.6" start="1" ready="1.4" relax="2.6" end="3"/></bml>)",
+      "t.bml");
   ASSERT_TRUE(b) << b.error().message;
   std::vector<const Clip*> mine;
   for (const Clip& c : d->timeline.clips)

@@ -76,8 +76,7 @@ TEST_P(IntentCorpus, CompilesOrIsRefusedForARealDefect) {
   EXPECT_FALSE(fs::exists(output)) << "no partial output";
 }
 
-INSTANTIATE_TEST_SUITE_P(Files, IntentCorpus, testing::ValuesIn(corpus_files()),
-                         test::file_param_name);
+INSTANTIATE_TEST_SUITE_P(Files, IntentCorpus, testing::ValuesIn(corpus_files()), test::file_param_name);
 
 }  // namespace
 }  // namespace fapc

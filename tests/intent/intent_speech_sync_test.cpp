@@ -37,15 +37,18 @@ void expect_synced(const std::string& name, const std::string& document, int fap
 
 TEST(IntentSpeechSync, AnFmlApmlIntentionOnAMarkStartsWithTheMarkedWord) {
   // performative inform: a nod (head_pitch, FAP 48) from the span's start (data/intentions.tsv).
-  expect_synced("sync.xml", R"(<fml-apml><bml><speech id="s1"><tm id="tm1"/>Good morning to you. <tm id="tm2"/>Look at this.<tm id="tm3"/></speech></bml>
+  expect_synced(
+      "sync.xml",
+      R"(<fml-apml><bml><speech id="s1"><tm id="tm1"/>Good morning to you. <tm id="tm2"/>Look at this.<tm id="tm3"/></speech></bml>
 <fml><performative id="p1" type="inform" start="s1:tm2" end="s1:tm3" importance="1"/></fml></fml-apml>
 )",
-                48, 1);
+      48, 1);
 }
 
 TEST(IntentSpeechSync, AnApmlEmphasisStartsWithItsWord) {
   // emphasis: the brows rise (raise_l_i_eyebrow, FAP 31) from the span's start.
-  expect_synced("sync-apml.xml", R"(<apml>Good morning to you. <emphasis x-pitchaccent="Hstar">Look</emphasis> at this.</apml>
+  expect_synced("sync-apml.xml",
+                R"(<apml>Good morning to you. <emphasis x-pitchaccent="Hstar">Look</emphasis> at this.</apml>
 )",
                 31, 1);
 }

@@ -99,13 +99,15 @@ class LexiconRowShows : public testing::TestWithParam<std::size_t> {};
 
 TEST_P(LexiconRowShows, InTheFramesDuringItsSpan) {
   const LexiconRow& row = vocabulary::bundled_behaviour_lexicon().rows[GetParam()];
-  SCOPED_TRACE("intentions.tsv line " + std::to_string(row.line) + ": " + row.intention + " " + row.value + " " + row.name);
+  SCOPED_TRACE("intentions.tsv line " + std::to_string(row.line) + ": " + row.intention + " " + row.value + " " +
+               row.name);
   const std::string tag = "row" + std::to_string(row.line);
-  const std::string lexicon = test::write_temp(tag + ".tsv", "intention\tvalue\tbehaviour\tname\tamount\tstart\tready\trelax\tend\treason\n" +
-                                                                 row_text(row) + "\n");
+  const std::string lexicon =
+      test::write_temp(tag + ".tsv", "intention\tvalue\tbehaviour\tname\tamount\tstart\tready\trelax\tend\treason\n" +
+                                         row_text(row) + "\n");
   const std::string value = row.value == "*" ? "anyvalue" : row.value;
-  const std::string doc = test::write_temp(tag + ".xml", "<fml-apml><fml><" + row.intention + " id=\"i\" type=\"" + value +
-                                                             "\" start=\"1\" end=\"3\"/></fml></fml-apml>\n");
+  const std::string doc = test::write_temp(tag + ".xml", "<fml-apml><fml><" + row.intention + " id=\"i\" type=\"" +
+                                                             value + "\" start=\"1\" end=\"3\"/></fml></fml-apml>\n");
   Result<pipeline::Loaded> loaded = test::load_at_25(doc, lexicon);
   ASSERT_TRUE(loaded) << loaded.error().message;
   const auto [fap, sign] = expected_motion(row);

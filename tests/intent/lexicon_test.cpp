@@ -24,14 +24,15 @@ TEST(BehaviourLexicon, TheBundledTableReadsWhole) {
   }
   EXPECT_EQ(lexicon.rows.size() + 1, lines);
   EXPECT_GT(lexicon.rows.size(), 50u);
-  for (const char* intention : {"emotion", "performative", "emphasis", "deictic", "certainty", "turntaking", "backchannel",
-                                "belief-relation", "boundary", "theme", "rheme"})
+  for (const char* intention : {"emotion", "performative", "emphasis", "deictic", "certainty", "turntaking",
+                                "backchannel", "belief-relation", "boundary", "theme", "rheme"})
     EXPECT_TRUE(lexicon.knows(intention)) << intention;
 }
 
 TEST(BehaviourLexicon, ValuesMatchWithoutCaseThenStarThenAffectAsEmotion) {
-  const auto lexicon = parse("emotion\tjoy\tau\t12\t1\t0\t0.2\t0.8\t1\tsmile\n"
-                             "emphasis\t*\tlexeme\tRAISE_BROWS\t0.5\t0\t0.2\t0.8\t1\tbrows\n");
+  const auto lexicon = parse(
+      "emotion\tjoy\tau\t12\t1\t0\t0.2\t0.8\t1\tsmile\n"
+      "emphasis\t*\tlexeme\tRAISE_BROWS\t0.5\t0\t0.2\t0.8\t1\tbrows\n");
   ASSERT_TRUE(lexicon) << lexicon.error().message;
   EXPECT_EQ(lexicon->rows_for("emotion", "JOY").size(), 1u);
   EXPECT_EQ(lexicon->rows_for("emphasis", "Hstar").size(), 1u);
@@ -43,8 +44,9 @@ TEST(BehaviourLexicon, ValuesMatchWithoutCaseThenStarThenAffectAsEmotion) {
 }
 
 TEST(BehaviourLexicon, AUserLexiconExtendsFapcsOwnAndReplacesWhatItNames) {
-  auto mine = parse("emotion\tjoy\tlexeme\tRAISE_MOUTH_CORNERS\t1\t0\t0.2\t0.8\t1\ta plain smile\n"
-                    "wink\t*\tau\tL46\t1\t0\t0.2\t0.8\t1\tone eye\n");
+  auto mine = parse(
+      "emotion\tjoy\tlexeme\tRAISE_MOUTH_CORNERS\t1\t0\t0.2\t0.8\t1\ta plain smile\n"
+      "wink\t*\tau\tL46\t1\t0\t0.2\t0.8\t1\tone eye\n");
   ASSERT_TRUE(mine) << mine.error().message;
   mine->base = &bundled_behaviour_lexicon();
   ASSERT_EQ(mine->rows_for("emotion", "joy").size(), 1u);
@@ -56,8 +58,9 @@ TEST(BehaviourLexicon, AUserLexiconExtendsFapcsOwnAndReplacesWhatItNames) {
 }
 
 TEST(BehaviourLexicon, OneSidedUnitsAndRepeatedHeadLexemes) {
-  const auto lexicon = parse("a\tb\tau\tL12\t1\t0\t0.2\t0.8\t1\tleft corner\n"
-                             "a\tb\thead\tNOD*3\t1\t0\t0.2\t0.8\t1\tthree nods\n");
+  const auto lexicon = parse(
+      "a\tb\tau\tL12\t1\t0\t0.2\t0.8\t1\tleft corner\n"
+      "a\tb\thead\tNOD*3\t1\t0\t0.2\t0.8\t1\tthree nods\n");
   ASSERT_TRUE(lexicon) << lexicon.error().message;
   EXPECT_EQ(lexicon->rows[0].side, 'L');
   EXPECT_EQ(lexicon->rows[1].name, "NOD");

@@ -45,8 +45,9 @@ TEST(MimicErrorOrder, MainTooBigWinsOverAnEarlierCheck) {
   const std::string too_many =
       ": error: the program has too many actions with macros expanded: more than the limit of ";
   // Nodes counted in source order: main, jw, jaw, the parallel, and its jaw is the fifth.
-  EXPECT_EQ(first_line(error_with_runs("main { jw <hold=1,value=1>; jaw <hold=1,value=1>; [ jaw <hold=1,value=1>; ] }", 3)),
-            "t.mimic:1:53" + too_many + "3 runs (--max-runs N raises it)");
+  EXPECT_EQ(
+      first_line(error_with_runs("main { jw <hold=1,value=1>; jaw <hold=1,value=1>; [ jaw <hold=1,value=1>; ] }", 3)),
+      "t.mimic:1:53" + too_many + "3 runs (--max-runs N raises it)");
   // Over the check of an unused macro's body too.
   EXPECT_EQ(first_line(error_with_runs("def m { jw <hold=1,value=1>; } main { jaw <hold=1,value=1>; "
                                        "jaw <hold=1,value=1>; jaw <hold=1,value=1>; }",

@@ -28,8 +28,7 @@ std::vector<Case> read_cases() {
 TEST(MimicRejected, EveryProgramFailsWithItsDiagnostic) {
   const std::vector<Case> cases = read_cases();
   ASSERT_GE(cases.size(), 40u);
-  const std::map<std::string, std::string> files{
-      {"s.xpr", "# s\nraise_l_cornerlip 100\nsmyle 3\n"}};
+  const std::map<std::string, std::string> files{{"s.xpr", "# s\nraise_l_cornerlip 100\nsmyle 3\n"}};
   for (const Case& c : cases) {
     // render_with_caret ends without a newline after the caret; the file has one.
     EXPECT_EQ(test::error_of(c.source, files) + "\n", c.expected) << c.source;

@@ -24,11 +24,11 @@ TEST(MimicSemantics, SequenceChainsAndFadePhases) {
   // Fade 1: [0, 4) rising over 1 s to 0.5, holding 2 s, falling over 1 s. Fade 2: [4, 6).
   const Timeline t = timeline_of("main { jaw <in=1,hold=2,out=1,value=0.5>; jaw <in=2,value=1>; }");
   EXPECT_EQ(spans(t), (Spans{{0, 4}, {4, 6}}));
-  EXPECT_DOUBLE_EQ(at(t, "jaw", 0.5), 0.25);  // linear, half way up
-  EXPECT_DOUBLE_EQ(at(t, "jaw", 2), 0.5);     // plateau
+  EXPECT_DOUBLE_EQ(at(t, "jaw", 0.5), 0.25);    // linear, half way up
+  EXPECT_DOUBLE_EQ(at(t, "jaw", 2), 0.5);       // plateau
   EXPECT_DOUBLE_EQ(at(t, "jaw", 3.25), 0.375);  // a quarter into the fall: 0.5 - 0.5/4
-  EXPECT_DOUBLE_EQ(at(t, "jaw", 5), 0.5);     // second fade half way up
-  EXPECT_DOUBLE_EQ(at(t, "jaw", 6.5), 0);     // after everything: neutral
+  EXPECT_DOUBLE_EQ(at(t, "jaw", 5), 0.5);       // second fade half way up
+  EXPECT_DOUBLE_EQ(at(t, "jaw", 6.5), 0);       // after everything: neutral
 }
 
 TEST(MimicSemantics, FadingFunctionsAtExactFractions) {
@@ -36,18 +36,16 @@ TEST(MimicSemantics, FadingFunctionsAtExactFractions) {
   const double q = (1 - std::cos(std::numbers::pi / 4)) / 2;
   EXPECT_NEAR(at(timeline_of("main { jaw <in=4,value=2,sin>; }"), "jaw", 1), 2 * q, 1e-12);
   EXPECT_NEAR(at(timeline_of("main { jaw <in=4,value=2,sin>; }"), "jaw", 2), 1, 1e-12);
-  EXPECT_NEAR(at(timeline_of("main { jaw <in=4,value=2,log>; }"), "jaw", 2),
-              2 * std::log(5.5) / std::log(10.0), 1e-12);
-  EXPECT_NEAR(at(timeline_of("main { jaw <in=4,value=2,exp>; }"), "jaw", 1),
-              2 * (std::pow(10.0, 0.25) - 1) / 9, 1e-12);
+  EXPECT_NEAR(at(timeline_of("main { jaw <in=4,value=2,log>; }"), "jaw", 2), 2 * std::log(5.5) / std::log(10.0), 1e-12);
+  EXPECT_NEAR(at(timeline_of("main { jaw <in=4,value=2,exp>; }"), "jaw", 1), 2 * (std::pow(10.0, 0.25) - 1) / 9, 1e-12);
   // The fall mirrors the rise: value + (0 - value) f(u); with exp at u = 1/2: 2 - 2 (sqrt 10 - 1)/9.
-  EXPECT_NEAR(at(timeline_of("main { jaw <out=4,value=2,exp>; }"), "jaw", 2),
-              2 - 2 * (std::sqrt(10.0) - 1) / 9, 1e-12);
+  EXPECT_NEAR(at(timeline_of("main { jaw <out=4,value=2,exp>; }"), "jaw", 2), 2 - 2 * (std::sqrt(10.0) - 1) / 9, 1e-12);
 }
 
 TEST(MimicSemantics, LeftShiftsAndNegativeLeftOverlaps) {
-  const Timeline t = timeline_of("main { jaw <in=2,value=1>; head_rot_x <left=-1,in=2,value=1>; "
-                                 "jaw <left=3,in=1,value=1>; }");
+  const Timeline t = timeline_of(
+      "main { jaw <in=2,value=1>; head_rot_x <left=-1,in=2,value=1>; "
+      "jaw <left=3,in=1,value=1>; }");
   // Second starts at 2 - 1 = 1; third at its predecessor's end 3, plus 3.
   EXPECT_EQ(spans(t), (Spans{{0, 2}, {1, 3}, {6, 7}}));
 }
@@ -86,17 +84,21 @@ TEST(MimicSemantics, BlendPrecedence) {
   // add: 0.25 + 0.5; average: (0.25 + 0.5 + 0.75) / 3; overwrite beats both, the later begin wins.
   EXPECT_DOUBLE_EQ(at(timeline_of("main [ jaw <hold=2,value=0.25>; jaw <hold=2,value=0.5>; ]"), "jaw", 1), 0.75);
   EXPECT_DOUBLE_EQ(at(timeline_of("main [ jaw <hold=2,value=0.25>; jaw <hold=2,value=0.5,average>; "
-                                  "jaw <hold=2,value=0.75>; ]"), "jaw", 1), 0.5);
-  const Timeline o = timeline_of("main [ jaw <hold=4,value=0.25,overwrite>; jaw <left=1,hold=2,value=0.5,overwrite>; "
-                                 "jaw <hold=4,value=0.75,average>; ]");
+                                  "jaw <hold=2,value=0.75>; ]"),
+                      "jaw", 1),
+                   0.5);
+  const Timeline o = timeline_of(
+      "main [ jaw <hold=4,value=0.25,overwrite>; jaw <left=1,hold=2,value=0.5,overwrite>; "
+      "jaw <hold=4,value=0.75,average>; ]");
   EXPECT_DOUBLE_EQ(at(o, "jaw", 0.5), 0.25);
   EXPECT_DOUBLE_EQ(at(o, "jaw", 2), 0.5);
   EXPECT_DOUBLE_EQ(at(o, "jaw", 3.5), 0.25);
 }
 
 TEST(MimicSemantics, GroupAndMainBlendApplyToClipsWithoutTheirOwn) {
-  const Timeline t = timeline_of("main <average> { <overwrite> [ jaw <hold=1,value=1>; jaw <hold=1,value=2,add>; ] "
-                                 "jaw <hold=1,value=3>; }");
+  const Timeline t = timeline_of(
+      "main <average> { <overwrite> [ jaw <hold=1,value=1>; jaw <hold=1,value=2,add>; ] "
+      "jaw <hold=1,value=3>; }");
   ASSERT_EQ(t.clips.size(), 3u);
   EXPECT_EQ(t.clips[0].blend, BlendMode::overwrite);
   EXPECT_EQ(t.clips[1].blend, BlendMode::add);
@@ -117,8 +119,9 @@ TEST(MimicSemantics, ConnectEndsAtTheNextClipsValueAtItsBegin) {
 }
 
 TEST(MimicSemantics, MacrosExpandWhereUsedWithTheirParameters) {
-  const Timeline t = timeline_of("def blink { eyelid_left <in=0.5,out=0.5,value=1>; } "
-                                 "main { blink; blink <left=1,overwrite>; }");
+  const Timeline t = timeline_of(
+      "def blink { eyelid_left <in=0.5,out=0.5,value=1>; } "
+      "main { blink; blink <left=1,overwrite>; }");
   EXPECT_EQ(spans(t), (Spans{{0, 1}, {2, 3}}));
   EXPECT_EQ(t.clips[1].blend, BlendMode::overwrite);
 }
@@ -159,10 +162,10 @@ TEST(MimicSemantics, Table2ProgramSchedulesAsWorkedOutByHand) {
   std::map<int, std::pair<double, double>> by_line;
   for (const Clip& c : t.clips) by_line[c.source.line] = {c.begin, c.end};
   const std::map<int, std::pair<double, double>> expected{
-      {3, {0, 132}},    {5, {0, 30}},     {6, {30, 35}},     {9, {35, 72}},    {11, {50, 60}},
-      {13, {45, 65}},   {15, {72, 97}},   {17, {97, 122}},   {19, {107, 117}}, {21, {122, 132}},
+      {3, {0, 132}},    {5, {0, 30}},       {6, {30, 35}},    {9, {35, 72}},    {11, {50, 60}},
+      {13, {45, 65}},   {15, {72, 97}},     {17, {97, 122}},  {19, {107, 117}}, {21, {122, 132}},
       {28, {132, 152}}, {29, {132.1, 152}}, {33, {152, 262}}, {35, {152, 182}}, {36, {182, 187}},
-      {38, {197, 212}}, {39, {212, 237}}, {40, {237, 262}},  {42, {162, 252}}};
+      {38, {197, 212}}, {39, {212, 237}},   {40, {237, 262}}, {42, {162, 252}}};
   EXPECT_EQ(by_line, expected);
   // connect: line 5 ends at line 6's first value 0.2; line 17 at line 21's min 0.05.
   EXPECT_DOUBLE_EQ(TimelineEvaluator(t).value_at("jaw", 30, true), 0.2);

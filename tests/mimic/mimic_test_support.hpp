@@ -13,8 +13,7 @@
 
 namespace fapc::test {
 
-inline Result<MimicProgram> compile(const std::string& source,
-                                    const std::map<std::string, std::string>& files = {}) {
+inline Result<MimicProgram> compile(const std::string& source, const std::map<std::string, std::string>& files = {}) {
   MimicOptions options;
   options.read_file = [files](const std::string& path) -> Result<std::string> {
     const auto found = files.find(path);
@@ -25,16 +24,14 @@ inline Result<MimicProgram> compile(const std::string& source,
 }
 
 // The timeline of a program that must compile.
-inline Timeline timeline_of(const std::string& source,
-                            const std::map<std::string, std::string>& files = {}) {
+inline Timeline timeline_of(const std::string& source, const std::map<std::string, std::string>& files = {}) {
   Result<MimicProgram> program = compile(source, files);
   EXPECT_TRUE(program.ok()) << (program.ok() ? "" : format_diagnostic(program.error()));
   return program.ok() ? program->timeline : Timeline{};
 }
 
 // The diagnostic of a program that must fail, with its caret lines.
-inline std::string error_of(const std::string& source,
-                            const std::map<std::string, std::string>& files = {}) {
+inline std::string error_of(const std::string& source, const std::map<std::string, std::string>& files = {}) {
   Result<MimicProgram> program = compile(source, files);
   EXPECT_FALSE(program.ok()) << "compiled: " << source;
   return program.ok() ? std::string() : render_with_caret(program.error());

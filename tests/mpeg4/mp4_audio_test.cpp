@@ -27,7 +27,8 @@ std::string bit_string(const Bytes& bytes) {
 Bytes from_bits(std::string bits) {
   while (bits.size() % 8) bits += '0';
   Bytes out;
-  for (std::size_t i = 0; i < bits.size(); i += 8) out.push_back(static_cast<std::uint8_t>(std::stoi(bits.substr(i, 8), nullptr, 2)));
+  for (std::size_t i = 0; i < bits.size(); i += 8)
+    out.push_back(static_cast<std::uint8_t>(std::stoi(bits.substr(i, 8), nullptr, 2)));
   return out;
 }
 
@@ -39,8 +40,8 @@ AudioTrackInput hand_made_audio(int units = 12, std::uint32_t delay_ms = 0) {
   a.decoder_specific_info = kAsc22050;
   a.sample_rate = 22050;
   for (int i = 0; i < units; ++i) a.samples.push_back(Bytes{0x21, static_cast<std::uint8_t>(i), 0x00, 0x07});
-  a.media_start = 1024;                   // the encoder's priming
-  a.length = 22050 / 2;                   // half a second of sound
+  a.media_start = 1024;  // the encoder's priming
+  a.length = 22050 / 2;  // half a second of sound
   a.delay_ms = delay_ms;
   return a;
 }
@@ -53,13 +54,33 @@ TEST(Mp4Audio, SceneGainsSound2DWithAudioSourceNamingTheAudioOd) {
   const std::string bits = bit_string(*plain);
   const std::size_t group_end = bits.rfind('1');
   // By hand: MFURL = reserved 0, list 1, [not end 0, isOD 1, OD ID 11 in 10 bits], end 1.
-  const std::string url = "0" "1" "0" "1" "0000001011" "1";
+  const std::string url =
+      "0"
+      "1"
+      "0"
+      "1"
+      "0000001011"
+      "1";
   // AudioSource as SFAudioNode (3-bit codes, AudioSource = 6): not USE, 110, not DEF; 8 fields so
   // 3-bit indexes; list mode (a mask would cost 8 bits, the list 1 + 4 + 1); field 1 (url); end.
-  const std::string source = "0" "110" "0" "0" "0" "001" + url + "1";
+  const std::string source =
+      "0"
+      "110"
+      "0"
+      "0"
+      "0"
+      "001" +
+      url + "1";
   // Sound2D as SF3DNode (6-bit codes, Sound2D = 40): not USE, 101000, not DEF; 4 fields so 2-bit
   // indexes; list mode (4 mask bits are not fewer than 1 + 3); field 2 (source); end.
-  const std::string sound = "0" "101000" "0" "0" "0" "10" + source + "1";
+  const std::string sound =
+      "0"
+      "101000"
+      "0"
+      "0"
+      "0"
+      "10" +
+      source + "1";
   const std::string expected = bits.substr(0, group_end) + "0" + sound + "1" + "00";
   auto with = encode_scene_replace(with_sound(face_scene(), kAudioObjectDescriptorId), BifsConfig{});
   ASSERT_TRUE(with.ok()) << with.error().message;
@@ -74,8 +95,8 @@ TEST(Mp4Audio, SceneGainsSound2DWithAudioSourceNamingTheAudioOd) {
 TEST(Mp4Audio, ObjectDescriptorUpdateDeclaresBothStreams) {
   // ObjectDescriptorUpdate (01), 16 bytes: MP4_OD (11) of 6 bytes each. 02 9F = OD ID 10, no URL,
   // reserved 11111; 02 DF = OD ID 11 likewise; ES_ID_Ref (0F) 2 bytes: index 1, then index 2.
-  const Bytes expected = {0x01, 0x10, 0x11, 0x06, 0x02, 0x9F, 0x0F, 0x02, 0x00, 0x01,
-                          0x11, 0x06, 0x02, 0xDF, 0x0F, 0x02, 0x00, 0x02};
+  const Bytes expected = {0x01, 0x10, 0x11, 0x06, 0x02, 0x9F, 0x0F, 0x02, 0x00,
+                          0x01, 0x11, 0x06, 0x02, 0xDF, 0x0F, 0x02, 0x00, 0x02};
   const AudioTrackInput audio = hand_made_audio();
   auto mp4 = read_mp4(*write_mp4(test::hand_made_track(), &audio), "t.mp4");
   ASSERT_TRUE(mp4.ok()) << format_diagnostic(mp4.error());

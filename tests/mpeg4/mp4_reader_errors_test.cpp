@@ -61,7 +61,8 @@ TEST(Mp4ReaderErrors, TableCountsThatDoNotAddUp) {
   Bytes file = written();
   const std::size_t stts = last_box(file, "stts");
   put_u32(file, stts + 16, 9);  // 9 of the 10 samples
-  EXPECT_EQ(error_of(file), "f.mp4: byte " + std::to_string(stts) + ": error: track 10: 'stts' describes 9 samples, 'stsz' 10");
+  EXPECT_EQ(error_of(file),
+            "f.mp4: byte " + std::to_string(stts) + ": error: track 10: 'stts' describes 9 samples, 'stsz' 10");
 }
 
 TEST(Mp4ReaderErrors, SyncSampleOutOfRange) {
@@ -97,8 +98,9 @@ TEST(Mp4ReaderErrors, OdReferenceBeyondMpod) {
   ASSERT_TRUE(mp4.ok());
   auto ods = read_object_descriptors(*mp4);
   ASSERT_FALSE(ods.ok());
-  EXPECT_EQ(format_diagnostic(ods.error()), "f.mp4: byte " + std::to_string(at) +
-                                                ": error: object descriptor 10 refers to stream 2 of the OD track's 1 'mpod' references");
+  EXPECT_EQ(format_diagnostic(ods.error()),
+            "f.mp4: byte " + std::to_string(at) +
+                ": error: object descriptor 10 refers to stream 2 of the OD track's 1 'mpod' references");
 }
 
 TEST(Mp4ReaderErrors, NoFbaTrackInAFileWithoutOne) {
@@ -119,8 +121,9 @@ TEST(BifsErrors, NodesOutsideTheSubsetAreNamed) {
   scene.fields[0].value = std::vector<SceneNode>{SceneNode{"Transform", {}, {}}};
   auto au = encode_scene_replace(scene, BifsConfig{});
   ASSERT_FALSE(au.ok());
-  EXPECT_EQ(au.error().message,
-            "BIFS encoding: cannot code node Transform as SF3DNode (in Group.children): not in the BIFS subset fapc writes");
+  EXPECT_EQ(
+      au.error().message,
+      "BIFS encoding: cannot code node Transform as SF3DNode (in Group.children): not in the BIFS subset fapc writes");
 }
 
 TEST(BifsErrors, TooManyDefNamesForTheNodeIdBits) {

@@ -17,9 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool have_program(const std::string& name) {
-  return fapc::test::run_shell("command -v " + name).exit_status == 0;
-}
+bool have_program(const std::string& name) { return fapc::test::run_shell("command -v " + name).exit_status == 0; }
 
 // The lines of `text` that do not start with `ignored_prefix`.
 std::string lines_without(const std::string& text, const std::string& ignored_prefix) {
@@ -68,8 +66,7 @@ void check_with_outside_readers(const std::string& path) {
   EXPECT_NE(stream.find("profile=Simple Face Animation Profile\n"), std::string::npos) << stream;
   // ffmpeg names the profile from the high nibble of 0x63 and reports the low nibble as the level.
   EXPECT_NE(stream.find("level=3\n"), std::string::npos) << stream;
-  EXPECT_NE(stream.find("nb_frames=" + std::to_string(fba->samples.size()) + "\n"), std::string::npos)
-      << stream;
+  EXPECT_NE(stream.find("nb_frames=" + std::to_string(fba->samples.size()) + "\n"), std::string::npos) << stream;
   EXPECT_NE(stream.find("extradata_size=14\n"), std::string::npos) << stream;
 
   const auto info = fapc::test::run_shell("mediainfo --Details=1 '" + path + "'");
@@ -107,8 +104,8 @@ TEST(OutsideReaders, AcceptTheMp4OfEveryBundledExample) {
     if (extension == ".md" || extension == ".xpr" || extension == ".pho") continue;
     const std::string output = (folder / (std::to_string(checked) + ".mp4")).string();
     // As in the main job (batch over the folder): an example may include from the whole folder.
-    const auto run = fapc::test::run_fapc("compile '" + input + "' -o '" + output +
-                                          "' --verify --allow-include corpus/examples");
+    const auto run =
+        fapc::test::run_fapc("compile '" + input + "' -o '" + output + "' --verify --allow-include corpus/examples");
     ASSERT_EQ(run.exit_status, 0) << input << ": " << run.err;
     check_with_outside_readers(output);
     ++checked;

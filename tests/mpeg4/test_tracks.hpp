@@ -8,15 +8,20 @@
 
 namespace fapc::xmt::test {
 
-inline FbaTrackInput hand_made_track(int samples = 10, std::uint32_t timescale = 25,
-                                     int intra_every = 5) {
+inline FbaTrackInput hand_made_track(int samples = 10, std::uint32_t timescale = 25, int intra_every = 5) {
   FbaTrackInput t;
   t.decoder_specific_info = fba_decoder_specific_info();
   t.timescale = timescale;
   for (int i = 0; i < samples; ++i) {
     FbaSample s;
-    s.bytes = {0x00, 0x00, 0x01, kFbaObjectPlaneStartCode, static_cast<std::uint8_t>(i), 0x55,
-               static_cast<std::uint8_t>(0x80 | i), 0x7F};
+    s.bytes = {0x00,
+               0x00,
+               0x01,
+               kFbaObjectPlaneStartCode,
+               static_cast<std::uint8_t>(i),
+               0x55,
+               static_cast<std::uint8_t>(0x80 | i),
+               0x7F};
     s.sync = i % intra_every == 0;
     s.duration = 1;
     t.samples.push_back(std::move(s));

@@ -99,8 +99,10 @@ TEST(AudioOutputs, Mp4RoundTripGivesTheVoiceBack) {
   EXPECT_NEAR(back->audio->duration(), 4.02, 0.001);
   for (const auto& [from, to, loud] : test::tone_segments(kRate)) {
     const double rms = test::rms(back->audio->samples, from + 220, to - 220);
-    if (loud) EXPECT_GT(rms, 5000.0) << from;
-    else EXPECT_LT(rms, 100.0) << from;
+    if (loud)
+      EXPECT_GT(rms, 5000.0) << from;
+    else
+      EXPECT_LT(rms, 100.0) << from;
   }
   const auto probe = test::run_shell("ffprobe -v error -show_streams '" + path + "' 2>/dev/null");
   EXPECT_EQ(probe_field(probe.out, "audio", "start_time"), "0.300000");
@@ -127,8 +129,7 @@ TEST(AudioOutputs, InfoReportsTheAudioAndVerifyChecksItsSpan) {
   const VerifyResult failed = verify(bad, ConvertOptions{});
   ASSERT_FALSE(failed.ok());
   EXPECT_EQ(failed.error->kind, ErrorKind::verification_failed);
-  EXPECT_NE(failed.error->message.find("the audio track ends at 6.320 s, the face track at 4.320 s"),
-            std::string::npos)
+  EXPECT_NE(failed.error->message.find("the audio track ends at 6.320 s, the face track at 4.320 s"), std::string::npos)
       << failed.error->message;
 }
 
@@ -158,7 +159,8 @@ TEST(AudioOutputs, XmtaDeclaresTheAudioStreamAndPlaysItInTheScene) {
   test::TempFolder dir;
   const std::string path = write(face_with_voice(), dir / "voice.xmt");
   const std::string xmt = test::read_text(path);
-  EXPECT_NE(xmt.find("<DecoderConfigDescriptor streamType=\"5\" objectTypeIndication=\"64\">"), std::string::npos) << xmt;
+  EXPECT_NE(xmt.find("<DecoderConfigDescriptor streamType=\"5\" objectTypeIndication=\"64\">"), std::string::npos)
+      << xmt;
   EXPECT_NE(xmt.find("src=\"data:application/octet-string,%13%88%56%E5%00\""), std::string::npos);
   EXPECT_NE(xmt.find("<StreamSource url=\"voice.mp4#11\"/>"), std::string::npos);
   EXPECT_NE(xmt.find("<AudioSource url=\"&quot;od:11&quot;\"/>"), std::string::npos);

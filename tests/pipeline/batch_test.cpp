@@ -80,7 +80,8 @@ TEST(BatchPlan, FilesUnderTheOutputFolderAreNeverInputs) {
 
 TEST(BatchRun, FailuresAreCountedAndTheOthersRunWithKeepGoing) {
   const test::TempFolder tmp;
-  for (const char* name : {"a", "b", "c", "d", "e", "f"}) copy_example("fap/joy.fap", tmp / (std::string("in/") + name + ".fap"));
+  for (const char* name : {"a", "b", "c", "d", "e", "f"})
+    copy_example("fap/joy.fap", tmp / (std::string("in/") + name + ".fap"));
   ASSERT_TRUE(write_file_atomic(tmp / "in/c.fap", "not a fap file"));
   auto jobs = pipeline::plan_batch({tmp / "in"}, tmp / "out", {"fap", "fba"});
   ASSERT_TRUE(jobs);

@@ -29,7 +29,8 @@ TEST(BridgesCorpus, EveryTrackerFileConvertsToFapMp4AndWebm) {
   options.picture.height = 48;
   for (const std::string& file : files) {
     SCOPED_TRACE(file);
-    const std::vector<pipeline::OutputRequest> outputs = {{tmp / "a.fap", ""}, {tmp / "a.mp4", ""}, {tmp / "a.webm", ""}};
+    const std::vector<pipeline::OutputRequest> outputs = {
+        {tmp / "a.fap", ""}, {tmp / "a.mp4", ""}, {tmp / "a.webm", ""}};
     const pipeline::ConvertResult result = pipeline::convert(file, outputs, options);
     ASSERT_TRUE(result.ok()) << format_diagnostic(*result.error);
     EXPECT_EQ(result.written.size(), 3u);

@@ -68,9 +68,9 @@ TEST(OpenFaceCsv, UntrustedRowsHoldTheLastTrackedFaceWithAWarning) {
   auto loaded = load_text(tmp, "a.csv",
                           "frame, face_id, timestamp, confidence, success, AU26_r\n"
                           "1, 0, 0, 0.9, 1, 5\n"
-                          "2, 0, 0.04, 0.9, 0, 0\n"      // lost by the tracker
-                          "3, 0, 0.08, 0.2, 1, 0\n"      // too unsure
-                          "3, 1, 0.08, 0.9, 1, 1\n"      // another face
+                          "2, 0, 0.04, 0.9, 0, 0\n"  // lost by the tracker
+                          "3, 0, 0.08, 0.2, 1, 0\n"  // too unsure
+                          "3, 1, 0.08, 0.9, 1, 1\n"  // another face
                           "4, 0, 0.12, 0.9, 1, 0\n");
   ASSERT_TRUE(loaded.ok()) << format_diagnostic(loaded.error());
   ASSERT_EQ(loaded->frames.frames.size(), 4u);
@@ -94,8 +94,8 @@ TEST(OpenFaceCsv, GazeAnglesAndVectorsTurnTheEyes) {
   EXPECT_EQ(angles->frames.frames[0].value(24), 20000);
   EXPECT_EQ(angles->frames.frames[0].value(25), -10000);
   // 1.x: eye 0 (the face's right eye) looks straight at the camera, eye 1 to the image's right.
-  auto vectors = load_text(tmp, "b.csv",
-                           "timestamp,gaze_0_x,gaze_0_y,gaze_0_z,gaze_1_x,gaze_1_y,gaze_1_z\n0,0,0,-1,0.6,0,-0.8\n");
+  auto vectors =
+      load_text(tmp, "b.csv", "timestamp,gaze_0_x,gaze_0_y,gaze_0_z,gaze_1_x,gaze_1_y,gaze_1_z\n0,0,0,-1,0.6,0,-0.8\n");
   ASSERT_TRUE(vectors.ok()) << format_diagnostic(vectors.error());
   EXPECT_EQ(vectors->frames.frames[0].value(24), 0);
   EXPECT_EQ(vectors->frames.frames[0].value(23), std::lround(std::atan2(0.6, 0.8) * 1e5));
@@ -109,8 +109,8 @@ TEST(ArkitCsv, LiveLinkFaceTakesAndMediaPipeNamesReadTheSame) {
                        "10:00:00:58.000,3,0.5,1,0.1\n"
                        "10:00:01:00.000,3,0.5,1,0.1\n");
   ASSERT_TRUE(llf.ok()) << format_diagnostic(llf.error());
-  ASSERT_EQ(llf->frames.frames.size(), 1u);  // 1/30 s: one frame at 25 fps
-  EXPECT_EQ(llf->frames.frames[0].value(3), 430);     // half of jawOpen's 860
+  ASSERT_EQ(llf->frames.frames.size(), 1u);        // 1/30 s: one frame at 25 fps
+  EXPECT_EQ(llf->frames.frames[0].value(3), 430);  // half of jawOpen's 860
   EXPECT_EQ(llf->frames.frames[0].value(19), 1024);
   EXPECT_EQ(llf->frames.frames[0].value(23), -10000);  // the angle column, not the shapes
   auto mediapipe = load_text(tmp, "b.csv", "timestamp_ms,_neutral,jawOpen,eyeBlinkLeft\n0,0.9,0.5,1\n80,0.9,0.5,1\n");

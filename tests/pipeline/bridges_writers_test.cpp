@@ -17,7 +17,8 @@ bool has_code(const Diagnostics& warnings, const std::string& code) {
 }
 
 // The OpenXR / Oculus names in FAP 1's order, written out here from that set's documentation.
-const char* const kOpenXr[] = {"sil", "PP", "FF", "TH", "DD", "kk", "CH", "SS", "nn", "RR", "aa", "E", "ih", "oh", "ou"};
+const char* const kOpenXr[] = {"sil", "PP", "FF", "TH", "DD", "kk", "CH", "SS",
+                               "nn",  "RR", "aa", "E",  "ih", "oh", "ou"};
 
 TEST(BridgeWriters, TheSpeakingExamplesVisemeTrackNamesItsFap1StreamFrameByFrame) {
   const test::TempFolder tmp;
@@ -47,12 +48,13 @@ TEST(BridgeWriters, TheSpeakingExamplesVisemeTrackNamesItsFap1StreamFrameByFrame
   }
   EXPECT_GT(checked, 100);
   EXPECT_GT(__builtin_popcount(static_cast<unsigned>(distinct_mask)), 6);  // speech, not a held mouth
-  EXPECT_TRUE(has_code(result.warnings, "visemes.faps_lost"));  // the smile's FAPs are not visemes
+  EXPECT_TRUE(has_code(result.warnings, "visemes.faps_lost"));             // the smile's FAPs are not visemes
 }
 
 TEST(BridgeWriters, ArkitCsvReadsBackToTheFapsItCarries) {
   const test::TempFolder tmp;
-  const std::string take = test::corpus_dir() + "/arkit/JMTechArt__Pipeline-Examples/MySlate_3_Jason_Millers_iPhone.csv";
+  const std::string take =
+      test::corpus_dir() + "/arkit/JMTechArt__Pipeline-Examples/MySlate_3_Jason_Millers_iPhone.csv";
   auto original = pipeline::load(take, {});
   ASSERT_TRUE(original.ok());
   const pipeline::ConvertResult written = pipeline::convert(take, {{tmp / "t.arkit.csv", ""}}, {});

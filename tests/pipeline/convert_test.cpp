@@ -47,7 +47,8 @@ TEST(Convert, StrictTurnsWarningsIntoAnErrorAndWritesNothing) {
   ConvertOptions options;
   options.strict = true;
   // greta-lips.fap gives one warning (the main-job test's summary line).
-  const auto result = pipeline::convert(test::corpus_dir() + "/examples/fap/greta-lips.fap", {{tmp / "g.fap", ""}}, options);
+  const auto result =
+      pipeline::convert(test::corpus_dir() + "/examples/fap/greta-lips.fap", {{tmp / "g.fap", ""}}, options);
   ASSERT_FALSE(result.ok());
   EXPECT_EQ(result.error->kind, ErrorKind::bad_input);
   EXPECT_EQ(result.warnings.size(), 1u);

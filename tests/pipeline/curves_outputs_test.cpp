@@ -24,8 +24,8 @@ std::string printf_number(double v) {
 
 // The curves JSON as docs/cli.md describes it, written the slow and obvious way.
 std::string reference_json(const Curves& curves) {
-  std::string out = "{\n \"fps\": " + std::to_string(curves.fps) + ",\n \"duration\": " +
-                    printf_number(curves.duration) + ",\n \"curves\": {";
+  std::string out = "{\n \"fps\": " + std::to_string(curves.fps) +
+                    ",\n \"duration\": " + printf_number(curves.duration) + ",\n \"curves\": {";
   const char* separator = "\n";
   for (const auto& [name, points] : curves.curves) {
     out += separator + std::string("  \"") + name + "\": [";
@@ -91,9 +91,29 @@ TEST(CurvesJson, ScriptNumbersPrintAsPrintfTenDigits) {
   curves.fps = 25;
   curves.duration = 1234.5678901234;
   auto& edges = curves.curves["edges"];
-  for (const double v : {0.0, -0.0, 1.0, -1.0, 100000.0, 9999999999.0, 10000000000.0, 12345678901.0, -9999999999.0,
-                         0.1, 1.0 / 3, 2.0 / 3, 1e-4, 1e-5, 1.5e-5, 123456.789012345, 0.000123456789012, 1e300,
-                         -2.5e-300, 4.9e-324, 1e16, 99999.999995, 0.99999999995})
+  for (const double v : {0.0,
+                         -0.0,
+                         1.0,
+                         -1.0,
+                         100000.0,
+                         9999999999.0,
+                         10000000000.0,
+                         12345678901.0,
+                         -9999999999.0,
+                         0.1,
+                         1.0 / 3,
+                         2.0 / 3,
+                         1e-4,
+                         1e-5,
+                         1.5e-5,
+                         123456.789012345,
+                         0.000123456789012,
+                         1e300,
+                         -2.5e-300,
+                         4.9e-324,
+                         1e16,
+                         99999.999995,
+                         0.99999999995})
     edges.emplace_back(v, -v);
   std::mt19937_64 random(1919);
   auto& spread = curves.curves["spread"];

@@ -30,8 +30,8 @@ TEST(NoWordingDecisions, TheScanFindsTheShapesItLooksFor) {
   for (const std::string line : {"if (d.message.find(\"ends\") != npos)", "e.message.rfind(\"verification\", 0) == 0",
                                  "if (error->message == \"x\")", "d.message.starts_with(kAction)"})
     EXPECT_TRUE(std::regex_search(line, kWordingDecision)) << line;
-  for (const std::string line : {"d.message = name + ' ' + d.message;", "d.message += \" (hint)\";",
-                                 "return make_error(where, message);"})
+  for (const std::string line :
+       {"d.message = name + ' ' + d.message;", "d.message += \" (hint)\";", "return make_error(where, message);"})
     EXPECT_FALSE(std::regex_search(line, kWordingDecision)) << line;
 }
 

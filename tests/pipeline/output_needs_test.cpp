@@ -116,8 +116,8 @@ TEST(OutputNeeds, CurveOutputsOfScriptsMatchTheWholeLoad) {
   for (const std::string& input : test::corpus_scripts()) {
     ++scripts;
     for (const ConvertOptions& options : settings) {
-      const std::vector<pipeline::OutputRequest> outputs = {{tmp / "x.json", ""}, {tmp / "x.svg", ""},
-                                                            {tmp / "x.timeline", ""}};
+      const std::vector<pipeline::OutputRequest> outputs = {
+          {tmp / "x.json", ""}, {tmp / "x.svg", ""}, {tmp / "x.timeline", ""}};
       ConvertOptions everything = options;  // frames and curves, as before outputs said what they read
       everything.frames = true;
       everything.curves = true;

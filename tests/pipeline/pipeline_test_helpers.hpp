@@ -56,9 +56,9 @@ inline LoadedWay load_then_write(const std::string& input, const std::vector<pip
   out.warnings = loaded->warnings;
   out.frames = loaded->frames.frames.size();
   if (options.strict && !loaded->warnings.empty()) {
-    out.error = make_error(codes::output::strict_warnings, Location::whole_file(input),
-                           std::to_string(loaded->warnings.size()) +
-                               " warning(s) treated as errors (--strict); nothing written");
+    out.error = make_error(
+        codes::output::strict_warnings, Location::whole_file(input),
+        std::to_string(loaded->warnings.size()) + " warning(s) treated as errors (--strict); nothing written");
     return out;
   }
   for (const auto& request : outputs) {
@@ -101,8 +101,10 @@ inline void expect_as_loaded(const pipeline::ConvertResult& result, const Loaded
   for (std::size_t w = 0; w < expected.warnings.size(); ++w)
     EXPECT_EQ(format_diagnostic(result.warnings[w]), format_diagnostic(expected.warnings[w]));
   for (std::size_t i = 0; i < outputs.size(); ++i) {
-    if (i < expected.bytes.size()) EXPECT_EQ(read_text(outputs[i].path), expected.bytes[i]) << outputs[i].path;
-    else EXPECT_FALSE(std::filesystem::exists(outputs[i].path)) << outputs[i].path;
+    if (i < expected.bytes.size())
+      EXPECT_EQ(read_text(outputs[i].path), expected.bytes[i]) << outputs[i].path;
+    else
+      EXPECT_FALSE(std::filesystem::exists(outputs[i].path)) << outputs[i].path;
   }
 }
 

@@ -36,10 +36,12 @@ TEST(Registry, ByKindName) {
 
 TEST(Registry, AnEntryAddedToARegistryIsFoundByItsExtension) {
   pipeline::Registry registry;
-  registry.add(pipeline::OutputFormat{"shout", {".shout"}, [](const pipeline::Loaded& loaded, const std::string&,
-                                                            const pipeline::ConvertOptions&) -> Result<std::string> {
-                                        return std::to_string(loaded.frames.frames.size()) + " FRAMES\n";
-                                      }});
+  registry.add(pipeline::OutputFormat{
+      "shout",
+      {".shout"},
+      [](const pipeline::Loaded& loaded, const std::string&, const pipeline::ConvertOptions&) -> Result<std::string> {
+        return std::to_string(loaded.frames.frames.size()) + " FRAMES\n";
+      }});
   const pipeline::OutputFormat* writer = registry.output_for("x.shout");
   ASSERT_NE(writer, nullptr);
   pipeline::Loaded loaded;

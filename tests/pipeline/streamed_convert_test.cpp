@@ -38,7 +38,7 @@ std::vector<ConvertOptions> settings() {
   all[2].fap_flavour = FapFlavour::greta_java;
   all[3].fap_flavour = FapFlavour::semaine;
   all[4].limits.max_frames = 50;  // some corpus files are longer
-  all[5].verify = true;  // each stream decoded and compared with the frames on the tape
+  all[5].verify = true;           // each stream decoded and compared with the frames on the tape
   all[5].quant = 3;
   return all;
 }

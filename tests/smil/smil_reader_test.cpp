@@ -9,7 +9,9 @@
 namespace fapc::smil {
 namespace {
 
-Result<SmilDocument> read(const std::string& text, SmilOptions options = {}) { return read_smil(text, "t.smil", options); }
+Result<SmilDocument> read(const std::string& text, SmilOptions options = {}) {
+  return read_smil(text, "t.smil", options);
+}
 
 void expect_error(const std::string& text, int line, int column, const std::string& says, SmilOptions options = {}) {
   SCOPED_TRACE(text);
@@ -119,7 +121,8 @@ TEST(SmilReader, SystemLanguageChoosesTheVoice) {
   SmilOptions options;
   options.speech.synthesize = speech::engine();
   const auto doc = read(R"(<seq><par system-language="italian"><speech>Buongiorno a tutti.</speech></par>
-<speech system-language="en">Good morning.</speech></seq>)", options);
+<speech system-language="en">Good morning.</speech></seq>)",
+                        options);
   ASSERT_TRUE(doc) << format_diagnostic(doc.error());
   EXPECT_EQ(doc->languages, (std::vector<std::string>{"it", "en"}));
   ASSERT_EQ(doc->timeline.audio.size(), 2u);
@@ -128,19 +131,23 @@ TEST(SmilReader, SystemLanguageChoosesTheVoice) {
 
 TEST(SmilReader, ErrorsArePlaced) {
   expect_error("<smil/>", 1, 1, "not a SMIL-Agent par or seq");
-  expect_error("<par>\n  <speech-animation affect=\"Sad\" content-id=\"x\"/>\n</par>", 2, 34, "content-id 'x' names no speech");
-  expect_error("<par><speech id=\"s\">Hi <mark id=\"a\"/>there</speech>\n<action content-id=\"s\" content-begin=\"b\"/></par>", 2, 24,
-               "content-begin 'b' is no mark of speech 's'");
+  expect_error("<par>\n  <speech-animation affect=\"Sad\" content-id=\"x\"/>\n</par>", 2, 34,
+               "content-id 'x' names no speech");
+  expect_error(
+      "<par><speech id=\"s\">Hi <mark id=\"a\"/>there</speech>\n<action content-id=\"s\" content-begin=\"b\"/></par>",
+      2, 24, "content-begin 'b' is no mark of speech 's'");
   expect_error("<par><action content-end=\"b\"/></par>", 1, 14, "needs content-id");
-  expect_error("<par><speech id=\"s\"><mark id=\"a\"/>Hi <mark id=\"b\"/>there</speech>\n"
-               "<action content-id=\"s\" content-begin=\"b\" content-end=\"a\"/></par>",
-               2, 1, "content-end comes before");
+  expect_error(
+      "<par><speech id=\"s\"><mark id=\"a\"/>Hi <mark id=\"b\"/>there</speech>\n"
+      "<action content-id=\"s\" content-begin=\"b\" content-end=\"a\"/></par>",
+      2, 1, "content-end comes before");
   expect_error("<seq><action dur=\"soon\"/></seq>", 1, 14, "dur 'soon' is not a time");
   expect_error("<seq><action fill=\"sometimes\"/></seq>", 1, 14, "fill 'sometimes'");
   expect_error("<seq><action intensity=\"2\"/></seq>", 1, 14, "intensity '2' is not a number from 0 to 1");
   expect_error("<seq repeat=\"-1\"/>", 1, 6, "repeat '-1'");
   expect_error("<seq>\n<speech id=\"s\"/></seq>", 2, 1, "speech has no text");
-  expect_error("<seq><speech id=\"s\">a</speech>\n<speech id=\"s\">b</speech></seq>", 2, 9, "a second speech with id 's'");
+  expect_error("<seq><speech id=\"s\">a</speech>\n<speech id=\"s\">b</speech></seq>", 2, 9,
+               "a second speech with id 's'");
   expect_error("<seq><speech>a <mark/> b</speech></seq>", 1, 16, "a mark needs an id");
   expect_error("<seq><speech file=\"../../etc/passwd\"/></seq>", 1, 14, "");
   expect_error("<seq><par>", 1, 11, "");  // not well formed

@@ -11,8 +11,8 @@ namespace {
 
 TEST(EngineMessages, OneWarningPerDistinctLineAtThePlace) {
   const Location at = Location::text("talk.fml", 4, 9);
-  const Diagnostics out = speech::engine_message_warnings(
-      "espeak: No envelope\nespeak: No envelope\r\n\nBad \x01intonation data\n", 0, at);
+  const Diagnostics out =
+      speech::engine_message_warnings("espeak: No envelope\nespeak: No envelope\r\n\nBad \x01intonation data\n", 0, at);
   ASSERT_EQ(out.size(), 2u);
   for (const Diagnostic& d : out) {
     EXPECT_EQ(d.severity, Severity::warning);
@@ -46,7 +46,8 @@ TEST(EngineMessages, TheEnginesOwnMessageBecomesAWarningNotAPrint) {
   EXPECT_EQ(printed, "");
   bool reported = false;
   for (const Diagnostic& d : spoken->warnings)
-    if (d.code == "speech.engine_message" && d.message.find("Full dictionary is not installed for 'be'") != std::string::npos)
+    if (d.code == "speech.engine_message" &&
+        d.message.find("Full dictionary is not installed for 'be'") != std::string::npos)
       reported = d.where.line == 2 && d.where.column == 3;
   EXPECT_TRUE(reported) << "no placed warning for the engine's message";
   EXPECT_FALSE(spoken->audio.samples.empty());

@@ -20,9 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scratch() {
-  return test::scratch_folder("hostile-speech");
-}
+fs::path scratch() { return test::scratch_folder("hostile-speech"); }
 
 std::string write_file(const std::string& name, const std::string& text) {
   const fs::path path = scratch() / name;
@@ -59,8 +57,10 @@ TEST(SpeakableText, NeutralisesTheShapesThatCrashTheEngine) {
   EXPECT_EQ(speakable_text("x\xD6\x8By"), "x y");
   EXPECT_EQ(speakable_text("x\xED\xA0\x80y\xC0\xAFz\xFFw\x80v"), "x y z w v");
   // Honest text is left as it was, in any script.
-  EXPECT_EQ(speakable_text("Peter bought a map. Was it 3.5 km - or more?"), "Peter bought a map. Was it 3.5 km - or more?");
-  EXPECT_EQ(speakable_text("\xD5\xA2\xD5\xA1\xD6\x80\xD6\x87 \xD9\x85\xD8\xB1\xD8\xAD\xD8\xA8\xD8\xA7\xD8\x8C \xF0\x9F\x98\x80"),
+  EXPECT_EQ(speakable_text("Peter bought a map. Was it 3.5 km - or more?"),
+            "Peter bought a map. Was it 3.5 km - or more?");
+  EXPECT_EQ(speakable_text(
+                "\xD5\xA2\xD5\xA1\xD6\x80\xD6\x87 \xD9\x85\xD8\xB1\xD8\xAD\xD8\xA8\xD8\xA7\xD8\x8C \xF0\x9F\x98\x80"),
             "\xD5\xA2\xD5\xA1\xD6\x80\xD6\x87 \xD9\x85\xD8\xB1\xD8\xAD\xD8\xA8\xD8\xA7\xD8\x8C \xF0\x9F\x98\x80");
 }
 
@@ -77,7 +77,8 @@ TEST(SpeakableText, PiecesAreBoundedAndEndAtSentences) {
   }
   EXPECT_EQ(joined, speech::speakable_text(text));
   // No space at all: cut at character boundaries.
-  for (const std::string& piece : speech::speakable_pieces(repeated("ab", 2000))) EXPECT_LE(piece.size(), speech::kMaxPieceBytes);
+  for (const std::string& piece : speech::speakable_pieces(repeated("ab", 2000)))
+    EXPECT_LE(piece.size(), speech::kMaxPieceBytes);
 }
 
 // Each of these aborted or crashed eSpeak NG 1.51 (and so the whole process) before the text was
@@ -131,10 +132,11 @@ TEST(SpeechEngine, MbrolaVoicesAreRefusedAndRunNothing) {
   write_file("bin/mbrola", "#!/bin/sh\ntouch '" + mark.string() + "'\nexit 1\n");
   fs::permissions(bin / "mbrola", fs::perms::owner_all);
   for (const std::string lang : {"mb-en1", "MB-fr1", "mb-de2"}) {
-    const std::string fml = write_file("mbrola.fml", "<fml><story><talk lang=\"" + lang + "\">Hello</talk></story></fml>\n");
+    const std::string fml =
+        write_file("mbrola.fml", "<fml><story><talk lang=\"" + lang + "\">Hello</talk></story></fml>\n");
     const fs::path out = scratch() / "mbrola.wav";
-    const test::CommandRun run =
-        test::run_shell("PATH='" + bin.string() + "':$PATH '" + test::fapc_program() + "' compile '" + fml + "' -o '" + out.string() + "'");
+    const test::CommandRun run = test::run_shell("PATH='" + bin.string() + "':$PATH '" + test::fapc_program() +
+                                                 "' compile '" + fml + "' -o '" + out.string() + "'");
     EXPECT_EQ(run.exit_status, 1) << lang;
     EXPECT_NE(run.err.find("mbrola.fml:1:"), std::string::npos) << run.err;  // at the talk's lang
     EXPECT_NE(run.err.find("error: '" + lang + "' is an MBROLA voice"), std::string::npos) << run.err;
@@ -144,7 +146,8 @@ TEST(SpeechEngine, MbrolaVoicesAreRefusedAndRunNothing) {
   }
 }
 
-pipeline::ConvertResult convert_to(const std::string& input, const std::string& output, const pipeline::ConvertOptions& options) {
+pipeline::ConvertResult convert_to(const std::string& input, const std::string& output,
+                                   const pipeline::ConvertOptions& options) {
   fs::remove(output);
   return pipeline::convert(input, {pipeline::OutputRequest{output, ""}}, options);
 }
@@ -169,14 +172,16 @@ void expect_speech_seconds_refused(const pipeline::ConvertResult& result, const 
   ASSERT_FALSE(result.ok());
   EXPECT_EQ(result.error->kind, ErrorKind::limit_exceeded);
   EXPECT_NE(result.error->message.find(how), std::string::npos) << result.error->message;
-  EXPECT_NE(result.error->message.find("(--max-speech-seconds N raises it)"), std::string::npos) << result.error->message;
+  EXPECT_NE(result.error->message.find("(--max-speech-seconds N raises it)"), std::string::npos)
+      << result.error->message;
 }
 
 TEST(SpeechLimits, SpeechEstimatedLongerThanTheLimitIsRefusedBeforeSynthesis) {
   pipeline::ConvertOptions options;
   options.limits.max_speech_seconds = 60;
   // 4,000 letters: at least 167 s at the fastest honest rate; 200 short talks the same.
-  for (const std::string& story : {"<talk>" + repeated("Hello there. ", 400) + "</talk>", "<seq>" + repeated("<talk>Hello there</talk>", 400) + "</seq>"}) {
+  for (const std::string& story : {"<talk>" + repeated("Hello there. ", 400) + "</talk>",
+                                   "<seq>" + repeated("<talk>Hello there</talk>", 400) + "</seq>"}) {
     const std::string fml = write_file("estimate.fml", "<fml><story>" + story + "</story></fml>\n");
     expect_speech_seconds_refused(convert_to(fml, (scratch() / "estimate.wav").string(), options), "at least");
   }
@@ -187,8 +192,9 @@ TEST(SpeechLimits, TalksRepeatedByATemplateCountAsTheyAreSpoken) {
   pipeline::ConvertOptions options;
   options.limits.max_speech_seconds = 20;
   // One talk in the text, spoken 100 times (about 0.8 s each): only the reader's count sees it.
-  const std::string fml = write_file("many.fml", "<fml><model><template name=\"t\"><talk>Hello there</talk></template></model><story><seq>" +
-                                                     repeated("<behavior name=\"t\"/>", 100) + "</seq></story></fml>\n");
+  const std::string fml = write_file(
+      "many.fml", "<fml><model><template name=\"t\"><talk>Hello there</talk></template></model><story><seq>" +
+                      repeated("<behavior name=\"t\"/>", 100) + "</seq></story></fml>\n");
   expect_speech_seconds_refused(convert_to(fml, (scratch() / "many.wav").string(), options), "speech of this document");
   options.limits.max_speech_seconds = 1000;
   const pipeline::ConvertResult spoken = convert_to(fml, (scratch() / "many.wav").string(), options);
@@ -211,7 +217,8 @@ TEST(AudioLimits, MixingRatesOrFarApartClipsIsCheckedBeforeAllocating) {
   ASSERT_FALSE(mixed);
   EXPECT_EQ(mixed.error().kind, ErrorKind::limit_exceeded);
   EXPECT_EQ(mixed.error().where.line, 4);  // the clip that reaches furthest
-  EXPECT_NE(mixed.error().message.find("(--max-audio-samples N raises it)"), std::string::npos) << mixed.error().message;
+  EXPECT_NE(mixed.error().message.find("(--max-audio-samples N raises it)"), std::string::npos)
+      << mixed.error().message;
   // Two clips 40,000 s apart at 22,050 Hz.
   const std::vector<AudioClip> apart = {tone(0, 22050, 100, 100, 3), tone(40000, 22050, 100, 100, 7)};
   mixed = mix_audio(apart, 1e9);
@@ -250,7 +257,8 @@ TEST(AudioLimits, ALateTalkToWavIsRefusedUpFront) {
   const pipeline::ConvertResult result = convert_to(fml, out, options);
   ASSERT_FALSE(result.ok());
   EXPECT_EQ(result.error->kind, ErrorKind::limit_exceeded);
-  EXPECT_NE(result.error->message.find("(--max-audio-samples N raises it)"), std::string::npos) << result.error->message;
+  EXPECT_NE(result.error->message.find("(--max-audio-samples N raises it)"), std::string::npos)
+      << result.error->message;
   EXPECT_FALSE(fs::exists(out));
 }
 

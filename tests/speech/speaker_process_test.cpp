@@ -85,7 +85,8 @@ TEST(SpeakerProcess, EndsWhenThisProcessEnds) {
   if (child == 0) {
     ::close(ends[0]);
     const SpeakerWork work{nullptr, echo};
-    const bool answered = start_speaker(work, false) == SpeakerStart::started && ask_speaker(work, "y", 10, 10).output == "y";
+    const bool answered =
+        start_speaker(work, false) == SpeakerStart::started && ask_speaker(work, "y", 10, 10).output == "y";
     ::_exit(answered ? 0 : 1);
   }
   ::close(ends[1]);

@@ -14,8 +14,8 @@
 #include "fapc/pipeline/convert.hpp"
 #include "fapc/pipeline/registry.hpp"
 #include "fapc/speech/engine.hpp"
-#include "support/test_support.hpp"
 #include "fapc/speech/phoneme_visemes.hpp"
+#include "support/test_support.hpp"
 
 namespace fapc {
 namespace {
@@ -56,14 +56,17 @@ TEST(SpeechTable, VisemesOfTheEnginesMnemonics) {
 TEST(SpeechEngine, EveryPhonemeOfThreeLanguagesHasAViseme) {
   if (!speech::available()) GTEST_SKIP() << "built without the speech engine";
   const std::pair<const char*, const char*> texts[] = {
-      {"en", "The quick brown fox jumps over the lazy dog. She sells sea shells. How now brown cow? "
-             "I thought the weather was rather pleasant, although the judge's vision was blurry. Boy, poor, "
-             "tour, hair, near, cure, bird, father, cat, cot, caught, put, boot, butter, button, little."},
+      {"en",
+       "The quick brown fox jumps over the lazy dog. She sells sea shells. How now brown cow? "
+       "I thought the weather was rather pleasant, although the judge's vision was blurry. Boy, poor, "
+       "tour, hair, near, cure, bird, father, cat, cot, caught, put, boot, butter, button, little."},
       {"en-us", "Water, butter, better, car, poor, tour, hair. Peter Piper picked a peck."},
-      {"fr", "Portez ce vieux whisky au juge blond qui fume. Le cœur, deux œufs, la peur, une rue, huit, "
-             "oui, fille, agneau, rouge, chat, gens, feu, neuf, thé, mère, tu, loup, champignon, brun."},
-      {"de", "Victor jagt zwölf Boxkämpfer quer über den großen Sylter Deich. Ach, Pfeffer, Zeit, Mädchen, "
-             "schön, Bücher, Hütte, Bäume, Leute, Haus, Stadt, ruhig, Ring, Vater, Obst, Uhr, Öl, lang."},
+      {"fr",
+       "Portez ce vieux whisky au juge blond qui fume. Le cœur, deux œufs, la peur, une rue, huit, "
+       "oui, fille, agneau, rouge, chat, gens, feu, neuf, thé, mère, tu, loup, champignon, brun."},
+      {"de",
+       "Victor jagt zwölf Boxkämpfer quer über den großen Sylter Deich. Ach, Pfeffer, Zeit, Mädchen, "
+       "schön, Bücher, Hütte, Bäume, Leute, Haus, Stadt, ruhig, Ring, Vater, Obst, Uhr, Öl, lang."},
   };
   for (const auto& [language, text] : texts) {
     SpeechRequest request;
@@ -149,8 +152,10 @@ TEST(SpeechFallback, WithoutTheEngineTheLetterTableWarns) {
 
 TEST(SpeechWav, NoAudioIsAnErrorAndNoFile) {
   const std::string input = test::corpus_dir() + "/examples/fap/joy.fap";
-  const std::string output = (fs::temp_directory_path() / ("fapc-no-audio-" + std::to_string(::getpid()) + ".wav")).string();
-  pipeline::ConvertResult result = pipeline::convert(input, {pipeline::OutputRequest{output, ""}}, pipeline::ConvertOptions{});
+  const std::string output =
+      (fs::temp_directory_path() / ("fapc-no-audio-" + std::to_string(::getpid()) + ".wav")).string();
+  pipeline::ConvertResult result =
+      pipeline::convert(input, {pipeline::OutputRequest{output, ""}}, pipeline::ConvertOptions{});
   EXPECT_FALSE(result.ok());
   EXPECT_FALSE(fs::exists(output));
 }

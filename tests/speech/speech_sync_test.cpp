@@ -94,8 +94,9 @@ void expect_in_sync(const std::string& name, const std::string& talks) { expect_
 
 TEST(SpeechSync, MouthOpensAndClosesWithTheVoiceEnglish) {
   if (!speech::available()) GTEST_SKIP() << "built without the speech engine";
-  expect_in_sync("english.fml", "<talk>Hello, my name is Alice. I live in a small town.</talk>"
-                                "<wait duration=\"0.5\"/><talk>Good morning to you.</talk>");
+  expect_in_sync("english.fml",
+                 "<talk>Hello, my name is Alice. I live in a small town.</talk>"
+                 "<wait duration=\"0.5\"/><talk>Good morning to you.</talk>");
 }
 
 TEST(SpeechSync, MouthOpensAndClosesWithTheVoiceFrench) {

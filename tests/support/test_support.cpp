@@ -49,8 +49,7 @@ void expect_golden(const std::string& path, const std::string& actual) {
     return;
   }
   if (!fs::exists(full)) {
-    ADD_FAILURE() << "golden file " << path
-                  << " is missing; run the tests with FAPC_REGENERATE_GOLDEN=1 to create it";
+    ADD_FAILURE() << "golden file " << path << " is missing; run the tests with FAPC_REGENERATE_GOLDEN=1 to create it";
     return;
   }
   EXPECT_EQ(read_text(full), actual) << "golden file " << path << " differs";
@@ -89,9 +88,9 @@ std::string scratch_folder(const std::string& name) {
 
 CommandRun run_shell(const std::string& command) {
   static int counter = 0;
-  const std::string stem = (fs::temp_directory_path() / ("fapc-test-" + std::to_string(::getpid()) +
-                                                         "-" + std::to_string(counter++)))
-                               .string();
+  const std::string stem =
+      (fs::temp_directory_path() / ("fapc-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++)))
+          .string();
   const std::string full = "{ " + command + " ; } >'" + stem + ".out' 2>'" + stem + ".err'";
   const int status = std::system(full.c_str());
   CommandRun run;

@@ -6,9 +6,9 @@
 
 namespace fapc::test {
 
-std::string source_dir();  // the project's top folder
-std::string binary_dir();  // the build folder
-std::string corpus_dir();  // source_dir() + "/corpus"
+std::string source_dir();    // the project's top folder
+std::string binary_dir();    // the build folder
+std::string corpus_dir();    // source_dir() + "/corpus"
 std::string fapc_program();  // the built fapc program
 
 std::string read_text(const std::string& path);  // bytes as they are; fails the test if missing

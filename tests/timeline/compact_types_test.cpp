@@ -18,8 +18,8 @@ TEST(OptionalSeconds, HoldsEveryDoubleNaNIncludedAndConvertsBothWays) {
   EXPECT_FALSE(none.has_value());
   EXPECT_EQ(none.value_or(4), 4);
   EXPECT_THROW((void)none.value(), std::bad_optional_access);
-  for (const double v : {0.0, -0.0, 1e-320, -3.5, std::numeric_limits<double>::infinity(),
-                         std::numeric_limits<double>::quiet_NaN()}) {
+  for (const double v :
+       {0.0, -0.0, 1e-320, -3.5, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()}) {
     const OptionalSeconds some = v;
     ASSERT_TRUE(some.has_value()) << v;
     EXPECT_EQ(std::signbit(*some), std::signbit(v));

@@ -6,8 +6,8 @@ namespace fapc {
 namespace {
 
 TEST(Profile, DefaultCoversThePapersNames) {
-  for (const char* name : {"jaw", "eyelid_left", "eyelid_right", "head_rot_x", "head_rot_y",
-                           "head_rot_z", "lookat_x", "lookat_y"}) {
+  for (const char* name :
+       {"jaw", "eyelid_left", "eyelid_right", "head_rot_x", "head_rot_y", "head_rot_z", "lookat_x", "lookat_y"}) {
     EXPECT_FALSE(resolve_target(name, default_profile()).empty()) << name;
   }
   EXPECT_EQ(resolve_target("jaw", default_profile()), (std::vector<FapContribution>{{3, 1024}}));

@@ -8,10 +8,9 @@
 namespace fapc {
 namespace {
 
-Clip clip(std::string target, double begin, double end, Curve curve,
-          BlendMode blend = BlendMode::add, Fill fill = Fill::remove, int line = 1) {
-  return Clip{std::move(target), begin, end, 0, std::move(curve), blend, fill,
-              Location::text("t.mimic", line, 3)};
+Clip clip(std::string target, double begin, double end, Curve curve, BlendMode blend = BlendMode::add,
+          Fill fill = Fill::remove, int line = 1) {
+  return Clip{std::move(target), begin, end, 0, std::move(curve), blend, fill, Location::text("t.mimic", line, 3)};
 }
 
 TEST(Curve, FadingFunctionsAtExactFractions) {
@@ -68,15 +67,14 @@ TEST(Blend, AddIsTheDefaultAndNeutralIsZero) {
   const TimelineEvaluator e(t);
   EXPECT_DOUBLE_EQ(e.value_at("jaw", 1), 1);
   EXPECT_DOUBLE_EQ(e.value_at("jaw", 3), 3);
-  EXPECT_DOUBLE_EQ(e.value_at("jaw", 4), 2);  // [begin, end): the first clip is gone at 4
+  EXPECT_DOUBLE_EQ(e.value_at("jaw", 4), 2);        // [begin, end): the first clip is gone at 4
   EXPECT_DOUBLE_EQ(e.value_at("jaw", 4, true), 3);  // but its left limit counts
   EXPECT_DOUBLE_EQ(e.value_at("jaw", 7), 0);
   EXPECT_DOUBLE_EQ(e.value_at("eyelid_left", 1), 0);
 }
 
 TEST(Blend, AverageOfAllActiveClips) {
-  Timeline t{{clip("jaw", 0, 4, Curve::constant(1)),
-              clip("jaw", 0, 4, Curve::constant(2), BlendMode::average),
+  Timeline t{{clip("jaw", 0, 4, Curve::constant(1)), clip("jaw", 0, 4, Curve::constant(2), BlendMode::average),
               clip("jaw", 0, 4, Curve::constant(6))},
              {}};
   EXPECT_DOUBLE_EQ(TimelineEvaluator(t).value_at("jaw", 1), 3);
@@ -108,8 +106,7 @@ TEST(Render, FramesRoundHalvesAwayFromZeroAndSpanTheMask) {
   // 1 fps, end 5 s: frames 0..4 at whole seconds (exact in binary). open_jaw ramps 0 -> 10 over
   // [0, 4): 2.5 per frame. raise_b_midlip is -2.5 on [1, 2) and 1 on [3, 4), neutral between.
   Timeline t{{clip("open_jaw", 0, 4, Curve::ramp(0, 10, 4, Interpolation::linear)),
-              clip("raise_b_midlip", 1, 2, Curve::constant(-2.5)),
-              clip("raise_b_midlip", 3, 4, Curve::constant(1)),
+              clip("raise_b_midlip", 1, 2, Curve::constant(-2.5)), clip("raise_b_midlip", 3, 4, Curve::constant(1)),
               clip("head_yaw", 4, 5, Curve::constant(0))},
              {}};
   RenderOptions options;
@@ -118,9 +115,9 @@ TEST(Render, FramesRoundHalvesAwayFromZeroAndSpanTheMask) {
   ASSERT_TRUE(r.ok());
   const auto& frames = r->frames.frames;
   ASSERT_EQ(frames.size(), 5u);
-  EXPECT_EQ(frames[1].value(3), 3);   // 2.5 -> 3
+  EXPECT_EQ(frames[1].value(3), 3);  // 2.5 -> 3
   EXPECT_EQ(frames[2].value(3), 5);
-  EXPECT_EQ(frames[3].value(3), 8);   // 7.5 -> 8
+  EXPECT_EQ(frames[3].value(3), 8);  // 7.5 -> 8
   EXPECT_FALSE(frames[4].has(3));
   EXPECT_FALSE(frames[0].has(5));
   EXPECT_EQ(frames[1].value(5), -3);  // -2.5 -> -3
@@ -164,10 +161,10 @@ TEST(Render, UnknownTargetIsAnErrorAtItsFirstClip) {
 }
 
 TEST(Render, VisemeAndExpressionWeightsFillTheirTwoSlots) {
-  Timeline t{{clip("viseme.PP", 0, 1, Curve::constant(42)), clip("viseme.FF", 0, 1, Curve::constant(21)),
-              clip("expression.joy", 0, 1, Curve::constant(50)),
-              clip("expression.surprise", 0, 1, Curve::constant(10))},
-             {}};
+  Timeline t{
+      {clip("viseme.PP", 0, 1, Curve::constant(42)), clip("viseme.FF", 0, 1, Curve::constant(21)),
+       clip("expression.joy", 0, 1, Curve::constant(50)), clip("expression.surprise", 0, 1, Curve::constant(10))},
+      {}};
   const auto r = render_frames(t, RenderOptions{});
   ASSERT_TRUE(r.ok());
   const FapFrame& f = r->frames.frames[0];
@@ -179,8 +176,7 @@ TEST(Render, VisemeAndExpressionWeightsFillTheirTwoSlots) {
 
 TEST(Curves, ThinnedListKeepsKeysAndJumps) {
   // A linear ramp sampled at 25 fps thins to its two ends; the clip's end is a jump to neutral.
-  Timeline t{{clip("jaw", 1, 3, Curve::ramp(0, 2, 2, Interpolation::linear)),
-              clip("jaw", 5, 6, Curve::constant(1))},
+  Timeline t{{clip("jaw", 1, 3, Curve::ramp(0, 2, 2, Interpolation::linear)), clip("jaw", 5, 6, Curve::constant(1))},
              {}};
   const Curves c = render_curves(t, CurveOptions{});
   using P = std::vector<std::pair<double, double>>;

@@ -66,16 +66,28 @@ TEST(ThinPoints, KeepsWhatThePointByPointRuleKeeps) {
     const int n = 2 + static_cast<int>(random() % 1500);
     for (int i = 0; i < n; ++i) {
       switch (random() % (round % 2 == 0 ? 12 : 300)) {  // odd rounds: long held stretches
-        case 0: v += static_cast<double>(random() % 100) / 10; break;    // a step
-        case 1: v = std::sin(t); break;                                  // a curve
-        case 2: points.emplace_back(t, v); v += 1; break;                // a jump: two points at t
-        case 3: if (round % 7 == 0) v = (random() % 2) ? inf : nan; break;  // what no curve should hold
-        case 4: if (round % 7 == 0) v = 0; break;
-        case 5:                                                          // a dip below a held value
+        case 0:
+          v += static_cast<double>(random() % 100) / 10;
+          break;  // a step
+        case 1:
+          v = std::sin(t);
+          break;  // a curve
+        case 2:
+          points.emplace_back(t, v);
+          v += 1;
+          break;  // a jump: two points at t
+        case 3:
+          if (round % 7 == 0) v = (random() % 2) ? inf : nan;
+          break;  // what no curve should hold
+        case 4:
+          if (round % 7 == 0) v = 0;
+          break;
+        case 5:  // a dip below a held value
           points.emplace_back(t, v - (random() % 2 ? 1e-8 : 0.3));
           t += 0.04;
           break;
-        default: break;                                                  // held
+        default:
+          break;  // held
       }
       if (round % 5 == 0) v += 1e-9 * static_cast<double>(random() % 3);  // nearly held
       points.emplace_back(t, v);
@@ -84,7 +96,8 @@ TEST(ThinPoints, KeepsWhatThePointByPointRuleKeeps) {
     for (const double tolerance : {0.0, 1e-6, 0.01}) {
       Points thinned = points;
       thin_points(thinned, tolerance);
-      ASSERT_TRUE(same(thinned, thin_by_the_rule(points, tolerance))) << "round " << round << ", tolerance " << tolerance;
+      ASSERT_TRUE(same(thinned, thin_by_the_rule(points, tolerance)))
+          << "round " << round << ", tolerance " << tolerance;
     }
   }
 }

@@ -13,8 +13,8 @@ namespace {
 
 TEST(TimelineFromFrames, RenderingAtTheSameRateGivesTheFramesBack) {
   int checked = 0;
-  for (const std::string name : {"fap/copperdong__Xface/joy.fap", "fap/copperdong__Xface/anger.fap",
-                                 "examples/fap/greta-lips.fap"}) {
+  for (const std::string name :
+       {"fap/copperdong__Xface/joy.fap", "fap/copperdong__Xface/anger.fap", "examples/fap/greta-lips.fap"}) {
     const std::string path = test::corpus_dir() + "/" + name;
     auto read = read_fap_text(test::read_text(path), path);
     ASSERT_TRUE(read.ok()) << name;
@@ -32,8 +32,7 @@ TEST(TimelineFromFrames, RenderingAtTheSameRateGivesTheFramesBack) {
         ASSERT_EQ(a.has(fap), b.has(fap)) << name << " frame " << k << " fap " << fap;
         if (!a.has(fap)) continue;
         const int limit = find_fap(fap)->legal_max();  // rendering clamps; the input may not
-        ASSERT_EQ(std::clamp(a.value(fap), -limit, limit), b.value(fap))
-            << name << " frame " << k << " fap " << fap;
+        ASSERT_EQ(std::clamp(a.value(fap), -limit, limit), b.value(fap)) << name << " frame " << k << " fap " << fap;
       }
       if (a.has(2)) {
         ASSERT_EQ(a.expression.select1, b.expression.select1);

@@ -2,8 +2,8 @@
 // with reviewed goldens under corpus/golden/timeline/<kind>/ (FAPC_REGENERATE_GOLDEN=1 rewrites
 // them; review with `git diff corpus/`). Script front ends (Mimic, FML, XMT-Omega, FML-APML, APML,
 // SMIL-Agent) go through the program, `fapc compile X -o - --to timeline`, so XMT-Omega's
-// `animation src` reaches every registered reader. Frame inputs (.fap, .fba, .mp4) have no timeline of their own: their frames
-// are lifted with timeline_from_frames(), the form an XMT-Omega include gives them.
+// `animation src` reaches every registered reader. Frame inputs (.fap, .fba, .mp4) have no timeline of their own: their
+// frames are lifted with timeline_from_frames(), the form an XMT-Omega include gives them.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -49,8 +49,8 @@ TEST(ReaderTimelines, Mimic) {
 }
 
 TEST(ReaderTimelines, Fml) {
-  for (const char* input : {"corpus/examples/fml/figure8.fml", "corpus/examples/fml/tour.fml",
-                            "corpus/examples/xmto/parts/smile.fml"})
+  for (const char* input :
+       {"corpus/examples/fml/figure8.fml", "corpus/examples/fml/tour.fml", "corpus/examples/xmto/parts/smile.fml"})
     expect_program_dump("fml", input);
 }
 
@@ -72,8 +72,8 @@ TEST(ReaderTimelines, Apml) {
 
 // SMIL-Agent (docs/smil.md): speech with marks, affects and actions.
 TEST(ReaderTimelines, SmilAgent) {
-  for (const char* input : {"corpus/smil/bestdpf__xface-new/Faps/withMarks.smil",
-                            "corpus/smil/bestdpf__xface-new/Faps/actionOnlySeq.smil"})
+  for (const char* input :
+       {"corpus/smil/bestdpf__xface-new/Faps/withMarks.smil", "corpus/smil/bestdpf__xface-new/Faps/actionOnlySeq.smil"})
     expect_program_dump("smil", input);
 }
 

@@ -17,23 +17,23 @@ namespace fapc::vocabulary {
 namespace {
 
 TEST(VocabularyTables, BundledTablesParse) {
-  for (const auto& [name, kind] : {std::pair{"au_faps.tsv", TableKind::action_units},
-                                   std::pair{"arkit_faps.tsv", TableKind::arkit_shapes}}) {
+  for (const auto& [name, kind] :
+       {std::pair{"au_faps.tsv", TableKind::action_units}, std::pair{"arkit_faps.tsv", TableKind::arkit_shapes}}) {
     Result<MappingTable> parsed = parse_mapping_table(bundled_table_text(name), name, kind);
     ASSERT_TRUE(parsed.ok()) << format_diagnostic(parsed.error());
     EXPECT_FALSE(parsed->rows.empty());
   }
   Result<std::vector<VisemeRow>> visemes = parse_viseme_table(bundled_table_text("visemes.tsv"), "visemes.tsv");
   ASSERT_TRUE(visemes.ok()) << format_diagnostic(visemes.error());
-  EXPECT_EQ(action_unit_table().rows.size(), parse_mapping_table(bundled_table_text("au_faps.tsv"), "x",
-                                                                 TableKind::action_units)->rows.size());
+  EXPECT_EQ(action_unit_table().rows.size(),
+            parse_mapping_table(bundled_table_text("au_faps.tsv"), "x", TableKind::action_units)->rows.size());
 }
 
 // The 17 intensities OpenFace 2.0 writes (AUxx_r), and the head and eye units a BML script names.
 TEST(VocabularyTables, ActionUnitsCoverOpenFaceAndHeadAndEyes) {
   const MappingTable& table = action_unit_table();
-  for (int au : {1, 2, 4, 5, 6, 7, 9, 10, 12, 14, 15, 17, 20, 23, 25, 26, 45, 28, 51, 52, 53, 54, 55, 56, 61, 62,
-                 63, 64}) {
+  for (int au :
+       {1, 2, 4, 5, 6, 7, 9, 10, 12, 14, 15, 17, 20, 23, 25, 26, 45, 28, 51, 52, 53, 54, 55, 56, 61, 62, 63, 64}) {
     EXPECT_TRUE(table.has_key(std::to_string(au))) << "AU" << au;
     EXPECT_FALSE(table.is_lost(std::to_string(au))) << "AU" << au;
   }

@@ -85,7 +85,7 @@ TEST(StreamedDocument, SaysWhenTheTextMustBeReadWhole) {
   ASSERT_TRUE(XmlDocument::parse(warned, "t.xml").ok());
   EXPECT_EQ(XmlDocument::parse(warned, "t.xml")->warnings().size(), 1u);
   EXPECT_FALSE(faithful(warned));
-  EXPECT_FALSE(faithful("<a><par><x/></par>"));                  // not well-formed at the end
+  EXPECT_FALSE(faithful("<a><par><x/></par>"));  // not well-formed at the end
   EXPECT_FALSE(faithful("<a><par><x/></par></a><b/>"));
 }
 

@@ -14,8 +14,9 @@ constexpr double kDegree = 1745.3292519943295;
 
 TEST(FmlMoves, ExprRampsItsExpressionWeightFromTheCurrentValue) {
   // smile 80 % = 50.4 over 1 s, then smile 50 % = 31.5 from 50.4; type 3 is anger.
-  const auto doc = read_ok(in_action("<expr type=\"smile\" val=\"80\"/><expr type=\"joy\" val=\"50\" duration=\"2s\"/>"
-                                     "<expr type=\"3\"/>"));
+  const auto doc =
+      read_ok(in_action("<expr type=\"smile\" val=\"80\"/><expr type=\"joy\" val=\"50\" duration=\"2s\"/>"
+                        "<expr type=\"3\"/>"));
   ASSERT_EQ(doc.timeline.clips.size(), 3u);
   EXPECT_EQ(doc.timeline.clips[0].target, "expression.joy");
   EXPECT_EQ(keys(doc.timeline.clips[0]), (Keys{{0, 0}, {1, 50.4}}));
@@ -29,14 +30,15 @@ TEST(FmlMoves, ExprRampsItsExpressionWeightFromTheCurrentValue) {
 }
 
 TEST(FmlMoves, NormalReturnsEveryExpressionToZero) {
-  const auto doc = read_ok(in_action("<par><expr type=\"smile\" val=\"80\"/><expr type=\"anger\" val=\"50\" duration=\"2s\"/></par>"
-                                     "<expr type=\"normal\" duration=\"0.5s\"/>"));
+  const auto doc =
+      read_ok(in_action("<par><expr type=\"smile\" val=\"80\"/><expr type=\"anger\" val=\"50\" duration=\"2s\"/></par>"
+                        "<expr type=\"normal\" duration=\"0.5s\"/>"));
   ASSERT_EQ(doc.timeline.clips.size(), 4u);
   // The par ends at 2; at 2 joy holds 50.4, anger has reached 31.5.
   expect_spans(doc.timeline, Spans{{"expression.joy", 0, 1},
-                                        {"expression.anger", 0, 2},
-                                        {"expression.anger", 2, 2.5},
-                                        {"expression.joy", 2, 2.5}});
+                                   {"expression.anger", 0, 2},
+                                   {"expression.anger", 2, 2.5},
+                                   {"expression.joy", 2, 2.5}});
   EXPECT_EQ(keys(doc.timeline.clips[2]), (Keys{{0, 31.5}, {0.5, 0}}));
   EXPECT_EQ(keys(doc.timeline.clips[3]), (Keys{{0, 50.4}, {0.5, 0}}));
 }
@@ -50,8 +52,9 @@ TEST(FmlMoves, ExprOutsideZeroToHundredIsClampedWithAWarning) {
 
 TEST(FmlMoves, HdmvTurnsTheHeadInAngleUnitsWithinTheModelsRange) {
   // yaw 30 within left 60: 30 degrees. pitch (1) -20 with up 10: -10. roll 5: no range, 5.
-  const auto doc = read_ok(in_action("<hdmv type=\"yaw\" val=\"30\"/><hdmv type=\"1\" val=\"-20\"/><hdmv dir=\"roll\" val=\"5\"/>",
-                                     "<range type=\"left\" val=\"60\"/><range type=\"up\" val=\"10\"/>"));
+  const auto doc =
+      read_ok(in_action("<hdmv type=\"yaw\" val=\"30\"/><hdmv type=\"1\" val=\"-20\"/><hdmv dir=\"roll\" val=\"5\"/>",
+                        "<range type=\"left\" val=\"60\"/><range type=\"up\" val=\"10\"/>"));
   ASSERT_EQ(doc.timeline.clips.size(), 3u);
   expect_spans(doc.timeline, Spans{{"head_yaw", 0, 1}, {"head_pitch", 1, 2}, {"head_roll", 2, 3}});
   EXPECT_DOUBLE_EQ(doc.timeline.clips[0].curve.keys.back().value, 30 * kDegree);
@@ -68,7 +71,8 @@ TEST(FmlMoves, AnUnknownHeadMovementWaitsInItsPlace) {
   const auto doc = read_ok(in_action("<hdmv type=\"surprise\"/><fap type=\"3\" val=\"5\"/>"));
   expect_spans(doc.timeline, Spans{{"open_jaw", 1, 2}});
   EXPECT_EQ(messages(doc.warnings),
-            (std::vector<std::string>{"t.fml:3:22: warning: head movement type 'surprise' is not yaw, pitch, roll or 0-2: it waits"}));
+            (std::vector<std::string>{
+                "t.fml:3:22: warning: head movement type 'surprise' is not yaw, pitch, roll or 0-2: it waits"}));
 }
 
 TEST(FmlMoves, FapTakesANumberOrAName) {
@@ -82,12 +86,14 @@ TEST(FmlMoves, ParamGoesThroughTheProfile) {
   const auto doc = read_ok(in_action("<param type=\"eye-wink\"/><param type=\"jaw\" val=\"0.5\"/>"));
   expect_spans(doc.timeline, Spans{{"jaw", 1, 2}});
   ASSERT_EQ(doc.warnings.size(), 1u);
-  EXPECT_NE(doc.warnings[0].message.find("unknown animation parameter 'eye-wink'"), std::string::npos) << doc.warnings[0].message;
+  EXPECT_NE(doc.warnings[0].message.find("unknown animation parameter 'eye-wink'"), std::string::npos)
+      << doc.warnings[0].message;
   Profile wink;
   wink.parameters["eye-wink"] = {{19, 1000}, {21, 1000}};
   FmlOptions options;
   options.profile = &wink;
-  EXPECT_EQ(spans(read_ok(in_action("<param type=\"eye-wink\" val=\"1\"/>"), options).timeline), (Spans{{"eye-wink", 0, 1}}));
+  EXPECT_EQ(spans(read_ok(in_action("<param type=\"eye-wink\" val=\"1\"/>"), options).timeline),
+            (Spans{{"eye-wink", 0, 1}}));
 }
 
 // The letter table's and the .pho file's own timing, without the coarticulation's overlaps.
@@ -102,7 +108,10 @@ TEST(FmlMoves, TalkSaysOneVisemePerLetterGroupAtTwelvePerSecond) {
   // Seven slots of 1/12 s: ih [0, 1), PP [4, 5), oh [5, 6), PP [6, 7) in twelfths.
   const auto doc = read_ok(in_action("<talk>Hi, Bob</talk>"), exact_spans());
   const double s = 1.0 / 12;
-  expect_spans(doc.timeline, Spans{{"viseme.ih", 0, s}, {"viseme.PP", 4 * s, 5 * s}, {"viseme.oh", 5 * s, 6 * s}, {"viseme.PP", 6 * s, 7 * s}});
+  expect_spans(
+      doc.timeline,
+      Spans{
+          {"viseme.ih", 0, s}, {"viseme.PP", 4 * s, 5 * s}, {"viseme.oh", 5 * s, 6 * s}, {"viseme.PP", 6 * s, 7 * s}});
   EXPECT_DOUBLE_EQ(doc.timeline.explicit_end.value_or(0), 7 * s);
   EXPECT_EQ(doc.timeline.clips[0].curve.value_at(s / 2), 63);
 }
@@ -131,8 +140,9 @@ TEST(FmlMoves, UnknownPhonemesAreSilentWithOneWarningEach) {
   options.read_file = [](const std::string&) -> Result<std::string> { return std::string("Y 100\np 50\nY 100\n"); };
   const auto doc = read_ok(in_action("<talk file=\"x.pho\"/>"), options);
   expect_spans(doc.timeline, Spans{{"viseme.PP", 0.1, 0.15}});
-  EXPECT_EQ(messages(doc.warnings),
-            (std::vector<std::string>{"x.pho:1:1: warning: phoneme 'Y' has no MPEG-4 viseme and is treated as silence"}));
+  EXPECT_EQ(
+      messages(doc.warnings),
+      (std::vector<std::string>{"x.pho:1:1: warning: phoneme 'Y' has no MPEG-4 viseme and is treated as silence"}));
 }
 
 TEST(FmlMoves, NeighbouringVisemesCrossFadeAndSilenceReturnsToNeutral) {

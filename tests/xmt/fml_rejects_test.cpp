@@ -24,7 +24,8 @@ const std::map<std::string, std::string>& expected_errors() {
        "h\n"
        " ^"},
       {"bad-range.fml",
-       "bad-range.fml:2:17: error: range type 'sideways' is not a direction (left, right, up, down, roll-left, roll-right) or an axis (0 yaw, 1 pitch, 2 roll)\n"
+       "bad-range.fml:2:17: error: range type 'sideways' is not a direction (left, right, up, down, roll-left, "
+       "roll-right) or an axis (0 yaw, 1 pitch, 2 roll)\n"
        "  <model><range type=\"sideways\" val=\"30\"/></model>\n"
        "                ^"},
       {"bad-repeat.fml",
@@ -44,7 +45,8 @@ const std::map<std::string, std::string>& expected_errors() {
        "  <story><action><fap type=\"open_jaw\" val=\"100\" begin=\"2s\" end=\"1s\"/></action></story>\n"
        "                                                           ^"},
       {"excl-undeclared-event.fml",
-       "excl-undeclared-event.fml:2:24: error: event 'answer' is not declared in the model (<event name=\"answer\" val=\"-1\"/>)\n"
+       "excl-undeclared-event.fml:2:24: error: event 'answer' is not declared in the model (<event name=\"answer\" "
+       "val=\"-1\"/>)\n"
        "  <story><action><excl ev_name=\"answer\"><talk ev_val=\"0\">Yes</talk></excl></action></story>\n"
        "                       ^"},
       {"excl-without-event.fml",
@@ -64,7 +66,9 @@ const std::map<std::string, std::string>& expected_errors() {
        "<model><event name=“kbd”/></model>\n"
        "                   ^"},
       {"indefinite-without-end.fml",
-       "indefinite-without-end.fml:2:10: error: action repeats indefinitely and nothing around it ends: give it or a parent an end (repeat=\"indefinite\" and unset loop events need an end: a container's duration or end, or --duration)\n"
+       "indefinite-without-end.fml:2:10: error: action repeats indefinitely and nothing around it ends: give it or a "
+       "parent an end (repeat=\"indefinite\" and unset loop events need an end: a container's duration or end, or "
+       "--duration)\n"
        "  <story><action repeat=\"indefinite\"><expr type=\"smile\" val=\"50\"/></action></story>\n"
        "         ^"},
       {"missing-pho.fml",
@@ -101,7 +105,8 @@ const std::map<std::string, std::string>& expected_errors() {
        "  <story><action><wait duration=\"1s\"/></action></story>\n"
        "  ^"},
       {"unknown-fap.fml",
-       "unknown-fap.fml:2:23: error: 'open_jow' is not a FAP number (3-68) or name; did you mean open_jaw, shift_jaw, head_yaw?\n"
+       "unknown-fap.fml:2:23: error: 'open_jow' is not a FAP number (3-68) or name; did you mean open_jaw, shift_jaw, "
+       "head_yaw?\n"
        "  <story><action><fap type=\"open_jow\" val=\"100\"/></action></story>\n"
        "                      ^"},
       {"unknown-template.fml",
@@ -158,7 +163,8 @@ TEST(FmlRejects, NeighbouringFormatsAreNamedNotMisread) {
 }
 
 TEST(FmlRejects, TheInnerFmlOfFmlApmlIsRecognised) {
-  const auto read = read_fml("<fml>\n<performative id=\"p1\" type=\"greet\" start=\"0\" end=\"1\"/>\n</fml>\n", "i.xml");
+  const auto read =
+      read_fml("<fml>\n<performative id=\"p1\" type=\"greet\" start=\"0\" end=\"1\"/>\n</fml>\n", "i.xml");
   ASSERT_FALSE(read.ok());
   EXPECT_EQ(format_diagnostic(read.error()),
             "i.xml:1:1: error: this is the fml part of a Greta FML-APML document, not FML (the Arya-DiPaola "

@@ -36,7 +36,9 @@ std::string first_problem(const std::string& text) {
 Result<FmlDocument> read(const std::string& text) {
   FmlOptions options;
   options.duration = 10;
-  options.read_file = [](const std::string&) -> Result<std::string> { return std::string("h 50\n@ 80\nl 60\n@U 120\n"); };
+  options.read_file = [](const std::string&) -> Result<std::string> {
+    return std::string("h 50\n@ 80\nl 60\n@U 120\n");
+  };
   return read_fml(text, "s.fml", options);
 }
 
@@ -63,7 +65,8 @@ const std::string kVariants = with_model(
     "<seq repeat=\"indefinite\" duration=\"2.5min\"><param type=\"smile\" val=\"3\"/><talk file=\"hi.pho\"/></seq>\n"
     "<wait begin=\"250ms\" end=\"1h\" repeat=\"2.5\"/>");
 const std::string kForeignAttributes =
-    "<fml xmlns:x=\"urn:example:x\" x:note=\"a\">\n<story xml:lang=\"en\">\n<talk x:voice=\"b\">Hi</talk>\n</story>\n</fml>\n";
+    "<fml xmlns:x=\"urn:example:x\" x:note=\"a\">\n<story xml:lang=\"en\">\n<talk "
+    "x:voice=\"b\">Hi</talk>\n</story>\n</fml>\n";
 
 TEST(FmlSchema, VariantsAndForeignAttributesAreValidAndRead) {
   for (const std::string& text : {kVariants, kForeignAttributes}) {
@@ -75,8 +78,8 @@ TEST(FmlSchema, VariantsAndForeignAttributesAreValidAndRead) {
 
 struct Rejected {
   std::string text;
-  std::string problem;     // Xerces-C's first problem
-  bool reader_is_silent;   // true when the reader neither fails nor warns (see the cases)
+  std::string problem;    // Xerces-C's first problem
+  bool reader_is_silent;  // true when the reader neither fails nor warns (see the cases)
 };
 
 const std::vector<Rejected>& rejected() {

@@ -5,8 +5,8 @@
 #include <regex>
 
 #include "fapc/mpeg4/scene.hpp"
-#include "fapc/xml/xml_validation.hpp"
 #include "fapc/mpeg4/xmta_writer.hpp"
+#include "fapc/xml/xml_validation.hpp"
 #include "support/test_support.hpp"
 
 namespace fapc::xmt {
@@ -82,8 +82,7 @@ TEST(XmlValidation, VisemeSelectOutOfRange) {
 }
 
 TEST(XmlValidation, MalformedXmlHasALineAndColumn) {
-  EXPECT_EQ(problems(edited("</Body>", "</Bdy>")),
-            "doc.xmt:13:3: error: expected end of tag 'Body'\n");
+  EXPECT_EQ(problems(edited("</Body>", "</Bdy>")), "doc.xmt:13:3: error: expected end of tag 'Body'\n");
 }
 
 TEST(XmlValidation, DocumentsWithoutASchemaAreAnError) {
@@ -100,8 +99,9 @@ TEST(XmlValidation, NothingOutsideTheDocumentIsRead) {
   // An external DTD and an external entity naming a local file: neither is read (the entity
   // expands to nothing) and the document is judged on its own content.
   std::string text = kDocument;
-  text.insert(text.find("<XMT-A"), "<!DOCTYPE XMT-A SYSTEM \"http://example.invalid/x.dtd\" "
-                                   "[<!ENTITY secret SYSTEM \"file:///etc/hostname\">]>\n");
+  text.insert(text.find("<XMT-A"),
+              "<!DOCTYPE XMT-A SYSTEM \"http://example.invalid/x.dtd\" "
+              "[<!ENTITY secret SYSTEM \"file:///etc/hostname\">]>\n");
   text.insert(text.find("<Body>") + 6, "&secret;");
   EXPECT_EQ(problems(text), "");
 }

@@ -4,8 +4,8 @@
 
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/codec/file_io.hpp"
-#include "fapc/xml/xml_validation.hpp"
 #include "fapc/mpeg4/xmta_writer.hpp"
+#include "fapc/xml/xml_validation.hpp"
 #include "support/test_support.hpp"
 
 namespace fapc::xmt {
@@ -95,8 +95,9 @@ TEST(XmtaWriter, FirstFrameAfterZeroStartsFromAnEmptyFace) {
   seq.frames = {f};
   const std::string text = write_xmta_commands(seq);
   EXPECT_NE(text.find("<FAP DEF=\"PARAMS\">"), std::string::npos) << text;
-  EXPECT_NE(text.find("<par begin=\"0.033333\">\n      <Replace atNode=\"PARAMS\" atField=\"head_pitch\" value=\"-300\"/>"),
-            std::string::npos)
+  EXPECT_NE(
+      text.find("<par begin=\"0.033333\">\n      <Replace atNode=\"PARAMS\" atField=\"head_pitch\" value=\"-300\"/>"),
+      std::string::npos)
       << text;
 }
 

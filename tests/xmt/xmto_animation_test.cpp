@@ -53,7 +53,8 @@ TEST(XmtoAnimation, PlacedAtTheElementsBeginWithAPathRelativeToTheDocument) {
   const auto doc = read(R"(<animation src="sub/a.fap" begin="2s"/>)", recorder);
   ASSERT_TRUE(doc.ok()) << format_diagnostic(doc.error());
   EXPECT_EQ(recorder.paths, std::vector<std::string>{"dir/sub/a.fap"});
-  EXPECT_EQ(format_diagnostic(make_error(codes::xmto::bad_time, recorder.places.at(0), "here")), "dir/t.xmt:3:12: error: here");
+  EXPECT_EQ(format_diagnostic(make_error(codes::xmto::bad_time, recorder.places.at(0), "here")),
+            "dir/t.xmt:3:12: error: here");
   EXPECT_EQ(spans(doc->timeline), (Spans{{"open_jaw", 2, 3}}));
   EXPECT_EQ(doc->timeline.explicit_end, 3.5);  // the included input's own end, shifted
   EXPECT_EQ(doc->included, std::vector<std::string>{"dir/sub/a.fap"});
@@ -65,9 +66,10 @@ TEST(XmtoAnimation, RefAndFileUrlsAndAbsolutePaths) {
   Recorder recorder;
   XmtoOptions options = recorder.options();
   options.includes.allowed_folders = {"dir", "/abs"};  // an absolute path needs its folder allowed
-  const auto doc = read_xmto(document(R"(<animation ref="b.fap"/><animation src="file:c.fap"/><animation src="/abs/d.fap"/>)"
-                                      R"(<animation src="e.fap" ref="ignored.fap"/>)"),
-                             "dir/t.xmt", options);
+  const auto doc =
+      read_xmto(document(R"(<animation ref="b.fap"/><animation src="file:c.fap"/><animation src="/abs/d.fap"/>)"
+                         R"(<animation src="e.fap" ref="ignored.fap"/>)"),
+                "dir/t.xmt", options);
   ASSERT_TRUE(doc.ok()) << format_diagnostic(doc.error());
   EXPECT_EQ(recorder.paths, (std::vector<std::string>{"dir/b.fap", "dir/c.fap", "/abs/d.fap", "dir/e.fap"}));
   // The element's own warning comes before the warnings of what it included.
@@ -111,8 +113,8 @@ TEST(XmtoAnimation, RepeatsEveryIntrinsicDuration) {
 
 TEST(XmtoAnimation, FillFreezeFreezesTheIncludedClips) {
   Recorder recorder;
-  const auto doc = read(R"(<animation src="a.fap" fill="freeze"/><set attributeName="head_yaw" to="1" dur="1s"/>)",
-                        recorder);
+  const auto doc =
+      read(R"(<animation src="a.fap" fill="freeze"/><set attributeName="head_yaw" to="1" dur="1s"/>)", recorder);
   ASSERT_TRUE(doc.ok());
   EXPECT_EQ(doc->timeline.clips.at(0).fill, Fill::freeze);
   EXPECT_DOUBLE_EQ(test::value_at(doc->timeline, "open_jaw", 2), 10);
@@ -121,8 +123,9 @@ TEST(XmtoAnimation, FillFreezeFreezesTheIncludedClips) {
 TEST(XmtoAnimation, ToAnimationStartsFromTheIncludedValue) {
   // At 0.5 s the included ramp is at 5; the to-animation goes from 5 to 0 over 0.5 s.
   Recorder recorder;
-  const auto doc = read(R"(<par><animation src="a.fap"/><animate attributeName="open_jaw" to="0" begin="0.5s" dur="0.5s"/></par>)",
-                        recorder);
+  const auto doc =
+      read(R"(<par><animation src="a.fap"/><animate attributeName="open_jaw" to="0" begin="0.5s" dur="0.5s"/></par>)",
+           recorder);
   ASSERT_TRUE(doc.ok());
   EXPECT_DOUBLE_EQ(test::value_at(doc->timeline, "open_jaw", 0.75), 2.5);
 }

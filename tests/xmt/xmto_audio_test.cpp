@@ -48,8 +48,8 @@ TEST(XmtoAudio, ThePhoBesideItGivesVisemesAtItsTimes) {
   ASSERT_TRUE(doc.ok()) << format_diagnostic(doc.error());
   EXPECT_DOUBLE_EQ(test::value_at(doc->timeline, "viseme.PP", 1.055), 63);
   EXPECT_DOUBLE_EQ(test::value_at(doc->timeline, "viseme.PP", 1.20), 63);
-  EXPECT_DOUBLE_EQ(test::value_at(doc->timeline, "viseme.PP", 1.13), 0);   // the a between them
-  EXPECT_DOUBLE_EQ(test::value_at(doc->timeline, "viseme.PP", 0.9), 0);    // before the recording
+  EXPECT_DOUBLE_EQ(test::value_at(doc->timeline, "viseme.PP", 1.13), 0);  // the a between them
+  EXPECT_DOUBLE_EQ(test::value_at(doc->timeline, "viseme.PP", 0.9), 0);   // before the recording
   int pp = 0;
   for (const Clip& clip : doc->timeline.clips)
     if (clip.target == "viseme.PP") {

@@ -7,9 +7,9 @@
 
 #include <filesystem>
 
-#include "fapc/speech/engine.hpp"
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/codec/fba.hpp"
+#include "fapc/speech/engine.hpp"
 #include "fapc/transcoder/timeline_from_frames.hpp"
 #include "fapc/xmto/xmto.hpp"
 #include "support/test_support.hpp"
@@ -80,14 +80,40 @@ TEST(XmtoCorpus, TimelinesMatchTheirGoldens) {
 // The corpus uses every element and attribute the reader supports.
 TEST(XmtoCorpus, UsesEverySupportedElementAndAttribute) {
   std::string all;
-  for (const std::string& path : test::files_under(test::corpus_dir() + "/xmto", ".xmt"))
-    all += test::read_text(path);
-  for (const char* needle :
-       {"<head>", "<meta ", "<body>", "<par", "<seq", "<excl", "<animate ", "<set ", "<animation ",
-        " begin=", " dur=", " end=", " repeatCount=", " repeatDur=", " fill=", " attributeName=",
-        "<audio ", " from=", " to=", " by=", " values=", " keyTimes=", "calcMode=\"linear\"",
-        "calcMode=\"discrete\"", "calcMode=\"paced\"", "additive=\"sum\"", "additive=\"replace\"",
-        "accumulate=\"sum\"", " src=", " ref=", "viseme.", "expression.", "repeatCount=\"indefinite\""}) {
+  for (const std::string& path : test::files_under(test::corpus_dir() + "/xmto", ".xmt")) all += test::read_text(path);
+  for (const char* needle : {"<head>",
+                             "<meta ",
+                             "<body>",
+                             "<par",
+                             "<seq",
+                             "<excl",
+                             "<animate ",
+                             "<set ",
+                             "<animation ",
+                             " begin=",
+                             " dur=",
+                             " end=",
+                             " repeatCount=",
+                             " repeatDur=",
+                             " fill=",
+                             " attributeName=",
+                             "<audio ",
+                             " from=",
+                             " to=",
+                             " by=",
+                             " values=",
+                             " keyTimes=",
+                             "calcMode=\"linear\"",
+                             "calcMode=\"discrete\"",
+                             "calcMode=\"paced\"",
+                             "additive=\"sum\"",
+                             "additive=\"replace\"",
+                             "accumulate=\"sum\"",
+                             " src=",
+                             " ref=",
+                             "viseme.",
+                             "expression.",
+                             "repeatCount=\"indefinite\""}) {
     EXPECT_NE(all.find(needle), std::string::npos) << needle;
   }
 }

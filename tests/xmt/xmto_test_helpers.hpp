@@ -15,8 +15,8 @@ namespace fapc::xmt::test {
 // A whole document around `body_content` (the body's children), laid out one line per part so
 // that the first child is on line 3.
 inline std::string document(const std::string& body_content, const std::string& body_attributes = "") {
-  return "<?xml version=\"1.0\"?>\n<XMT-O xmlns=\"urn:mpeg:mpeg4:xmto:schema:2002\"><body" +
-         body_attributes + ">\n" + body_content + "\n</body></XMT-O>\n";
+  return "<?xml version=\"1.0\"?>\n<XMT-O xmlns=\"urn:mpeg:mpeg4:xmto:schema:2002\"><body" + body_attributes + ">\n" +
+         body_content + "\n</body></XMT-O>\n";
 }
 
 inline XmtoDocument read_ok(const std::string& text, const XmtoOptions& options = {}) {

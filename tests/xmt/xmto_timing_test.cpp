@@ -28,15 +28,15 @@ TEST(XmtoClock, ValuesOfEveryForm) {
   EXPECT_EQ(parse_clock_value("1.5min"), 90);
   EXPECT_EQ(parse_clock_value("2h"), 7200);
   EXPECT_EQ(parse_clock_value("00:00:03.5"), 3.5);
-  EXPECT_EQ(parse_clock_value("1:02:03"), 3723);   // hours need not have two digits
-  EXPECT_EQ(parse_clock_value("01:30"), 90);       // partial clock: minutes and seconds
+  EXPECT_EQ(parse_clock_value("1:02:03"), 3723);  // hours need not have two digits
+  EXPECT_EQ(parse_clock_value("01:30"), 90);      // partial clock: minutes and seconds
   EXPECT_EQ(parse_clock_value("02:30.25"), 150.25);
-  EXPECT_EQ(parse_clock_value(" 4s "), 4);         // SMIL allows surrounding white space
+  EXPECT_EQ(parse_clock_value(" 4s "), 4);  // SMIL allows surrounding white space
 }
 
 TEST(XmtoClock, RejectsWhatSmilDoesNotAllow) {
-  for (const char* bad : {"", "s", "3x", ".5s", "5.", "3 s", "1:60", "00:1:00", "1:00:60", "-3s",
-                          "+3s", "1e3", "inf", "nan", "3ss", "1.5:00", "indefinite", "1:2:3:4"}) {
+  for (const char* bad : {"", "s", "3x", ".5s", "5.", "3 s", "1:60", "00:1:00", "1:00:60", "-3s", "+3s", "1e3", "inf",
+                          "nan", "3ss", "1.5:00", "indefinite", "1:2:3:4"}) {
     EXPECT_FALSE(parse_clock_value(bad).has_value()) << bad;
   }
 }
@@ -54,8 +54,8 @@ TEST(XmtoTiming, BeginInASeqCountsFromThePreviousEnd) {
 }
 
 TEST(XmtoTiming, BeginInAParCountsFromTheParStart) {
-  const auto doc = read_ok(document("<par begin=\"1s\">" + jaw("dur=\"2s\" begin=\"0.5s\"") +
-                                    jaw("dur=\"1s\"") + "</par>"));
+  const auto doc =
+      read_ok(document("<par begin=\"1s\">" + jaw("dur=\"2s\" begin=\"0.5s\"") + jaw("dur=\"1s\"") + "</par>"));
   EXPECT_EQ(spans(doc.timeline), (Spans{{"open_jaw", 1.5, 3.5}, {"open_jaw", 1, 2}}));
   EXPECT_EQ(doc.timeline.explicit_end, 3.5);
 }
@@ -69,8 +69,8 @@ TEST(XmtoTiming, EndAloneSetsTheActiveDuration) {
 TEST(XmtoTiming, EndOnlyShortensDur) {
   // SMIL: active duration = min(dur, end - begin). dur 2, end 5: [0, 2), no repeat.
   // dur 4, begin 1, end 3: min(4, 2) = 2: [1, 3).
-  const auto doc = read_ok(document("<par>" + jaw("dur=\"2s\" end=\"5s\"") +
-                                    jaw("dur=\"4s\" begin=\"1s\" end=\"3s\"") + "</par>"));
+  const auto doc =
+      read_ok(document("<par>" + jaw("dur=\"2s\" end=\"5s\"") + jaw("dur=\"4s\" begin=\"1s\" end=\"3s\"") + "</par>"));
   EXPECT_EQ(spans(doc.timeline), (Spans{{"open_jaw", 0, 2}, {"open_jaw", 1, 3}}));
 }
 
@@ -88,16 +88,14 @@ TEST(XmtoTiming, RepeatCountAndRepeatDurTakeTheShorter) {
   // 3 x 2 s = 6 s against 5 s: 5 s. 2 x 2 s = 4 s against 5 s: 4 s.
   const auto doc = read_ok(document("<par>" + jaw("dur=\"2s\" repeatCount=\"3\" repeatDur=\"5s\"") +
                                     jaw("dur=\"2s\" repeatCount=\"2\" repeatDur=\"5s\"") + "</par>"));
-  EXPECT_EQ(spans(doc.timeline), (Spans{{"open_jaw", 0, 2},
-                                        {"open_jaw", 2, 4},
-                                        {"open_jaw", 4, 5},
-                                        {"open_jaw", 0, 2},
-                                        {"open_jaw", 2, 4}}));
+  EXPECT_EQ(
+      spans(doc.timeline),
+      (Spans{{"open_jaw", 0, 2}, {"open_jaw", 2, 4}, {"open_jaw", 4, 5}, {"open_jaw", 0, 2}, {"open_jaw", 2, 4}}));
 }
 
 TEST(XmtoTiming, EndCapsAnIndefiniteRepeat) {
-  const auto doc = read_ok(document("<par>" + jaw("dur=\"1s\" begin=\"0.5s\" end=\"2.75s\" repeatCount=\"indefinite\"") +
-                                    "</par>"));
+  const auto doc =
+      read_ok(document("<par>" + jaw("dur=\"1s\" begin=\"0.5s\" end=\"2.75s\" repeatCount=\"indefinite\"") + "</par>"));
   EXPECT_EQ(spans(doc.timeline), (Spans{{"open_jaw", 0.5, 1.5}, {"open_jaw", 1.5, 2.5}, {"open_jaw", 2.5, 2.75}}));
 }
 
@@ -126,31 +124,30 @@ TEST(XmtoTiming, OpenEndedAnimateStretchesToTheParEnd) {
 }
 
 TEST(XmtoTiming, GroupDurCutsItsChildren) {
-  const auto doc = read_ok(document("<par dur=\"1.5s\">" + jaw("dur=\"2s\"") + jaw("dur=\"1s\" begin=\"2s\"") + "</par>"));
+  const auto doc =
+      read_ok(document("<par dur=\"1.5s\">" + jaw("dur=\"2s\"") + jaw("dur=\"1s\" begin=\"2s\"") + "</par>"));
   // The second child would begin after the par has ended: it never plays.
   EXPECT_EQ(spans(doc.timeline), (Spans{{"open_jaw", 0, 1.5}}));
 }
 
 TEST(XmtoTiming, GroupEndAloneDoesNotRepeatIt) {
   // The par's children last 1 s; end 3 s keeps it active (its child frozen) but repeats nothing.
-  const auto doc = read_ok(document("<par end=\"3s\" fill=\"freeze\">" + jaw("dur=\"1s\"") + "</par>" +
-                                    jaw("dur=\"1s\"")));
+  const auto doc =
+      read_ok(document("<par end=\"3s\" fill=\"freeze\">" + jaw("dur=\"1s\"") + "</par>" + jaw("dur=\"1s\"")));
   EXPECT_EQ(spans(doc.timeline), (Spans{{"open_jaw", 0, 1}, {"open_jaw", 3, 4}}));
 }
 
 TEST(XmtoTiming, RepeatedSeqRepeatsItsChildren) {
   // The seq lasts 1 + 0.25 + 1 = 2.25 s; the second run starts at 2.25.
-  const auto doc = read_ok(document("<seq repeatCount=\"2\">" + jaw("dur=\"1s\"") +
-                                    jaw("dur=\"1s\" begin=\"0.25s\"") + "</seq>"));
-  EXPECT_EQ(spans(doc.timeline), (Spans{{"open_jaw", 0, 1},
-                                        {"open_jaw", 2.25, 3.25},
-                                        {"open_jaw", 1.25, 2.25},
-                                        {"open_jaw", 3.5, 4.5}}));
+  const auto doc =
+      read_ok(document("<seq repeatCount=\"2\">" + jaw("dur=\"1s\"") + jaw("dur=\"1s\" begin=\"0.25s\"") + "</seq>"));
+  EXPECT_EQ(spans(doc.timeline),
+            (Spans{{"open_jaw", 0, 1}, {"open_jaw", 2.25, 3.25}, {"open_jaw", 1.25, 2.25}, {"open_jaw", 3.5, 4.5}}));
 }
 
 TEST(XmtoTiming, ExclLetsTheLaterChildCutTheEarlier) {
-  const auto doc = read_ok(document("<excl>" + jaw("dur=\"3s\" begin=\"0s\"") + jaw("dur=\"3s\" begin=\"1s\"") +
-                                    "</excl>"));
+  const auto doc =
+      read_ok(document("<excl>" + jaw("dur=\"3s\" begin=\"0s\"") + jaw("dur=\"3s\" begin=\"1s\"") + "</excl>"));
   EXPECT_EQ(spans(doc.timeline), (Spans{{"open_jaw", 0, 1}, {"open_jaw", 1, 4}}));
 }
 
@@ -163,8 +160,8 @@ TEST(XmtoTiming, ExclChildWithoutBeginNeverPlays) {
 }
 
 TEST(XmtoTiming, IndefiniteBeginAndEndBeforeBeginNeverPlay) {
-  const auto doc = read_ok(document("<par>" + jaw("dur=\"1s\" begin=\"indefinite\"") +
-                                    jaw("begin=\"2s\" end=\"1s\"") + jaw("dur=\"1s\"") + "</par>"));
+  const auto doc = read_ok(document("<par>" + jaw("dur=\"1s\" begin=\"indefinite\"") + jaw("begin=\"2s\" end=\"1s\"") +
+                                    jaw("dur=\"1s\"") + "</par>"));
   EXPECT_EQ(spans(doc.timeline), (Spans{{"open_jaw", 0, 1}}));
   EXPECT_EQ(doc.warnings.size(), 2u);
 }
@@ -180,8 +177,8 @@ TEST(XmtoTiming, NegativeBeginInsideALaterParIsFine) {
 }
 
 TEST(XmtoTiming, FillFreezeIsInheritedFromTheContainer) {
-  const auto doc = read_ok(document("<par fill=\"freeze\">" + jaw("dur=\"1s\"") + jaw("dur=\"1s\" fill=\"remove\"") +
-                                    "</par>"));
+  const auto doc =
+      read_ok(document("<par fill=\"freeze\">" + jaw("dur=\"1s\"") + jaw("dur=\"1s\" fill=\"remove\"") + "</par>"));
   ASSERT_EQ(doc.timeline.clips.size(), 2u);
   EXPECT_EQ(doc.timeline.clips[0].fill, Fill::freeze);
   EXPECT_EQ(doc.timeline.clips[1].fill, Fill::remove);

@@ -90,8 +90,8 @@ std::string unknown_option_message(const std::string& command, const std::string
   while (!bare.empty() && bare.front() == '-') bare.erase(bare.begin());
   if (const OptionSpec* elsewhere = bare.size() == 1 ? find_short_option(bare[0]) : find_option(bare)) {
     if (!elsewhere->applies_to(command))
-      return message + " (--" + std::string(elsewhere->name) + " is an option of " +
-             std::string(elsewhere->commands) + ", not " + command + ")";
+      return message + " (--" + std::string(elsewhere->name) + " is an option of " + std::string(elsewhere->commands) +
+             ", not " + command + ")";
   }
   std::vector<std::string> candidates;
   for (const OptionSpec* o : options_of(command)) candidates.push_back("--" + std::string(o->name));
@@ -116,7 +116,7 @@ int Args::integer(const std::string& name, int fallback, int low, int high) {
   const auto [end, ec] = std::from_chars(text->data(), text->data() + text->size(), parsed);
   if (ec != std::errc{} || end != text->data() + text->size() || parsed < low || parsed > high) {
     fail(codes::cli::bad_option_value, "--" + name + " takes an integer from " + std::to_string(low) + " to " +
-         std::to_string(high) + ", not '" + *text + "'");
+                                           std::to_string(high) + ", not '" + *text + "'");
     return fallback;
   }
   return parsed;
@@ -129,8 +129,7 @@ std::optional<double> Args::decimal(const std::string& name, double low, double 
   const auto [end, ec] = std::from_chars(text->data(), text->data() + text->size(), parsed);
   if (ec != std::errc{} || end != text->data() + text->size() || !(parsed >= low && parsed <= high)) {
     std::ostringstream message;
-    message << "--" << name << " takes a number from " << low << " to " << high << ", not '"
-            << *text << "'";
+    message << "--" << name << " takes a number from " << low << " to " << high << ", not '" << *text << "'";
     fail(codes::cli::bad_option_value, message.str());
     return std::nullopt;
   }

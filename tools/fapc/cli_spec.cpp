@@ -72,18 +72,18 @@ const std::vector<OptionSpec> kOptions = {
      "compile encode decode combine plot render batch", false, VC::file},
     {"from", 0, "KIND", "read the input as this kind whatever its name; needed for - (standard input)",
      "compile encode decode verify info plot render", false, VC::input_kinds},
-    {"to", 0, "KIND", "write this output kind whatever the output's name; needed for -o -; batch takes a "
+    {"to", 0, "KIND",
+     "write this output kind whatever the output's name; needed for -o -; batch takes a "
      "comma-separated list (default fap)",
      "compile decode combine plot render batch", false, VC::output_kinds},
     // Scripts.
     {"fps", 0, "N", "frames per second of the frames made from a script (default 25)", FAPC_CONVERTERS},
-    {"profile", 0, "FILE", "the profile that maps script targets to FAPs (docs/profiles.md)", FAPC_CONVERTERS,
-     false, VC::file},
+    {"profile", 0, "FILE", "the profile that maps script targets to FAPs (docs/profiles.md)", FAPC_CONVERTERS, false,
+     VC::file},
     {"lexicon", 0, "FILE", "the behaviour lexicon FML-APML and APML intentions are read by (docs/intentions.md)",
      FAPC_CONVERTERS, false, VC::file},
     {"event", 0, "NAME=VALUE", "set an FML event (excl branches, loops; docs/fml.md)", FAPC_CONVERTERS, true},
-    {"duration", 0, "S", "end what the source leaves open (indefinite repeats) after S seconds",
-     FAPC_CONVERTERS},
+    {"duration", 0, "S", "end what the source leaves open (indefinite repeats) after S seconds", FAPC_CONVERTERS},
     {"speech-rate", 0, "N", "words per minute of FML talk speech, 80 to 450 (default 175; docs/speech.md)",
      FAPC_CONVERTERS},
     {"voice", 0, "LANG[+VARIANT]", "the speech engine's voice for FML talk text without its own (docs/speech.md)",
@@ -111,8 +111,8 @@ const std::vector<OptionSpec> kOptions = {
     {"time", 0, "T", "the time (seconds) of the frame a .png shows", FAPC_CONVERTERS},
     {"sheet", 0, "N", "a .png contact sheet of N frames", FAPC_CONVERTERS},
     {"points", 0, "", "mark and number the feature points on a .png", FAPC_CONVERTERS},
-    {"view", 0, "2d|3d|both", "what a .html page shows: the 2D face, the 3D head or both (default 2d)",
-     FAPC_CONVERTERS, false, VC::words, "2d 3d both"},
+    {"view", 0, "2d|3d|both", "what a .html page shows: the 2D face, the 3D head or both (default 2d)", FAPC_CONVERTERS,
+     false, VC::words, "2d 3d both"},
     {"morphs", 0, "faps|arkit", "the morph targets of .glb/.gltf outputs: one per FAP or ARKit's 52 shapes",
      FAPC_CONVERTERS, false, VC::words, "faps arkit"},
     // One subcommand each.
@@ -138,10 +138,14 @@ const std::vector<OptionSpec> kOptions = {
      FAPC_READERS},
     {"max-expansion", 0, "F", "refuse scripts that expand more than F times (default 100)", FAPC_READERS},
     // A batch over several machines (docs/cluster.md).
-    {"files-from", 0, "LIST", "convert the files LIST names, one a line, relative to the one folder INPUT "
-     "(default the current folder); - reads standard input", "batch", false, VC::file},
-    {"shard", 0, "I/N", "convert shard I of N (counted from 0) of the planned jobs; default from "
-     "SLURM_ARRAY_TASK_ID or JOB_COMPLETION_INDEX", "batch"},
+    {"files-from", 0, "LIST",
+     "convert the files LIST names, one a line, relative to the one folder INPUT "
+     "(default the current folder); - reads standard input",
+     "batch", false, VC::file},
+    {"shard", 0, "I/N",
+     "convert shard I of N (counted from 0) of the planned jobs; default from "
+     "SLURM_ARRAY_TASK_ID or JOB_COMPLETION_INDEX",
+     "batch"},
     {"shards", 0, "N", "the shard count, for an index from SLURM_ARRAY_TASK_ID or JOB_COMPLETION_INDEX", "batch"},
     {"force", 0, "", "convert every input, also those a completion record says are up to date", "batch"},
     {"max-audio-samples", 0, "N", "refuse voice tracks of more samples (default 2^27)", FAPC_READERS},
@@ -196,10 +200,8 @@ std::string with_kinds(std::string_view declared) {
   const auto streams = fp::inputs_where([](const fp::InputFormat& f) { return bool(f.verify_stream); });
   const auto pictures = fp::outputs_where([](const fp::OutputFormat& f) { return f.picture; });
   const std::pair<std::string, std::string> names[] = {
-      {"{inputs}", fp::extension_list(fp::inputs_where())},
-      {"{outputs}", fp::extension_list(fp::outputs_where())},
-      {"{streams}", operands_of(streams, "IN.")},
-      {"{stream extensions}", fp::extension_list(streams)},
+      {"{inputs}", fp::extension_list(fp::inputs_where())}, {"{outputs}", fp::extension_list(fp::outputs_where())},
+      {"{streams}", operands_of(streams, "IN.")},           {"{stream extensions}", fp::extension_list(streams)},
       {"{pictures}", operands_of(pictures, "OUT.")},
   };
   std::string text(declared);

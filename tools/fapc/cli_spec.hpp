@@ -15,13 +15,13 @@ enum class ValueCompletion { none, file, folder, words, input_kinds, output_kind
 
 struct OptionSpec {
   std::string_view name{};        // the long form without "--": "fps"
-  char short_name = 0;          // 'o' for -o; 0: none
+  char short_name = 0;            // 'o' for -o; 0: none
   std::string_view value_name{};  // "N", "FILE"; empty: a flag without value
   std::string_view help{};        // one sentence, no final full stop
   std::string_view commands{};    // the subcommands it applies to, space-separated; "*": all
-  bool repeatable = false;      // each use adds a value (--event, --allow-include)
+  bool repeatable = false;        // each use adds a value (--event, --allow-include)
   ValueCompletion completion = ValueCompletion::none;
-  std::string_view words{};       // the values for ValueCompletion::words, space-separated
+  std::string_view words{};  // the values for ValueCompletion::words, space-separated
 
   bool takes_value() const { return !value_name.empty(); }
   bool applies_to(std::string_view command) const;

@@ -54,7 +54,9 @@ Result<std::vector<std::string>> read_list(const std::string& list) {
   std::ifstream file;
   if (list != "-") {
     file.open(list, std::ios::binary);
-    if (!file) return make_error(codes::cli::files_from_unreadable, Location::whole_file(list), "cannot open the --files-from list");
+    if (!file)
+      return make_error(codes::cli::files_from_unreadable, Location::whole_file(list),
+                        "cannot open the --files-from list");
   }
   std::istream& in = list == "-" ? std::cin : file;
   std::vector<std::string> paths;
@@ -66,8 +68,9 @@ Result<std::vector<std::string>> read_list(const std::string& list) {
 }
 
 // The options that change no output's bytes: a re-run that differs only in these resumes.
-const std::set<std::string_view> kRunOnlyOptions = {"jobs", "report", "report-json", "keep-going", "shard", "shards",
-                                                    "files-from", "force", "quiet", "verbose", "output", "help"};
+const std::set<std::string_view> kRunOnlyOptions = {"jobs",  "report",  "report-json", "keep-going",
+                                                    "shard", "shards",  "files-from",  "force",
+                                                    "quiet", "verbose", "output",      "help"};
 
 // The options of a command line that decide the outputs' bytes, as one line in a fixed order
 // ("--fps=30 --points"), whatever order and spelling (-oX, --opt X, --opt=X) they were given in:
@@ -84,11 +87,15 @@ std::string output_settings(const std::vector<std::string>& argv) {
     if (!option) continue;
     std::string value;
     if (option->takes_value()) {
-      if (long_form && arg.find('=') != std::string::npos) value = arg.substr(arg.find('=') + 1);
-      else if (!long_form && arg.size() > 2) value = arg.substr(2);
-      else if (i + 1 < argv.size()) value = argv[++i];
+      if (long_form && arg.find('=') != std::string::npos)
+        value = arg.substr(arg.find('=') + 1);
+      else if (!long_form && arg.size() > 2)
+        value = arg.substr(2);
+      else if (i + 1 < argv.size())
+        value = argv[++i];
     }
-    if (!kRunOnlyOptions.count(option->name)) given.emplace_back(option->name, "--" + std::string(option->name) + "=" + value);
+    if (!kRunOnlyOptions.count(option->name))
+      given.emplace_back(option->name, "--" + std::string(option->name) + "=" + value);
   }
   // By option; a repeated option's values keep their order (two --event in turn may differ).
   std::stable_sort(given.begin(), given.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -143,8 +150,8 @@ int run_batch(const std::vector<std::string>& argv) {
   if (inputs.empty()) return usage_error("batch", codes::cli::operands, "expected at least one INPUT");
   auto shard = chosen_shard(args);
   if (!shard) return usage_error("batch", shard.error());
-  auto planned = pipeline::plan_batch(inputs, *out_dir, split_list(args.value("to").value_or("fap")),
-                                      listed ? &*listed : nullptr);
+  auto planned =
+      pipeline::plan_batch(inputs, *out_dir, split_list(args.value("to").value_or("fap")), listed ? &*listed : nullptr);
   if (!planned) {
     // A usage error about a named path is reported as a diagnostic on that path.
     if (planned.error().where.file.empty()) return usage_error("batch", planned.error());
@@ -163,12 +170,12 @@ int run_batch(const std::vector<std::string>& argv) {
   };
   // Written first with every job not run, so that a task killed before its end still names its
   // jobs to `fapc batch-report merge`; replaced at the end.
-  if (auto written = write_report(args.value("report-json"), json_report(std::vector<pipeline::BatchOutcome>(jobs.size())));
+  if (auto written =
+          write_report(args.value("report-json"), json_report(std::vector<pipeline::BatchOutcome>(jobs.size())));
       !written)
     return report_outcome({}, written.error());
 
-  const pipeline::CompletionRecords records(*out_dir, output_settings(argv) + " (" + version_text() + ")",
-                                            jobs);
+  const pipeline::CompletionRecords records(*out_dir, output_settings(argv) + " (" + version_text() + ")", jobs);
   pipeline::BatchRunOptions run;
   run.threads = threads;
   run.keep_going = args.flag("keep-going");
@@ -190,7 +197,8 @@ int run_batch(const std::vector<std::string>& argv) {
     };
   struct sigaction action {};
   action.sa_handler = on_interrupt;
-  struct sigaction old_int {}, old_term {};
+  struct sigaction old_int {
+  }, old_term{};
   ::sigaction(SIGINT, &action, &old_int);
   ::sigaction(SIGTERM, &action, &old_term);
   const std::vector<pipeline::BatchOutcome> outcomes = pipeline::run_batch(jobs, options, run);

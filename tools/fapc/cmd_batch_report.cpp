@@ -20,7 +20,8 @@ int run_batch_report(const std::vector<std::string>& argv) {
   const std::vector<std::string>& operands = args.positionals();
   if (operands.empty() || operands.front() != "merge")
     return usage_error("batch-report", codes::cli::operands, "expected merge REPORT.json... (the one action so far)");
-  if (operands.size() < 2) return usage_error("batch-report", codes::cli::operands, "expected at least one REPORT.json to merge");
+  if (operands.size() < 2)
+    return usage_error("batch-report", codes::cli::operands, "expected at least one REPORT.json to merge");
   std::vector<pipeline::ReportText> reports;
   for (std::size_t i = 1; i < operands.size(); ++i) {
     auto text = read_file_bytes(operands[i]);
@@ -34,10 +35,10 @@ int run_batch_report(const std::vector<std::string>& argv) {
   for (const std::string& input : merged->no_result) std::cout << "no result: " << input << '\n';
   for (const std::size_t index : merged->missing_shards)
     std::cout << "no report: shard " << index << "/" << merged->report["merged"]["shards"].get<std::size_t>() << '\n';
-  std::cout << reports.size() << " reports, " << totals["jobs"].get<std::size_t>() << " jobs planned: "
-            << totals["converted"].get<std::size_t>() << " converted, " << totals["up_to_date"].get<std::size_t>()
-            << " up to date, " << totals["failed"].get<std::size_t>() << " failed, "
-            << totals["not_run"].get<std::size_t>() << " with no result\n";
+  std::cout << reports.size() << " reports, " << totals["jobs"].get<std::size_t>()
+            << " jobs planned: " << totals["converted"].get<std::size_t>() << " converted, "
+            << totals["up_to_date"].get<std::size_t>() << " up to date, " << totals["failed"].get<std::size_t>()
+            << " failed, " << totals["not_run"].get<std::size_t>() << " with no result\n";
   int status = merged->complete() ? kExitOk : kExitBadInput;
   if (const auto path = args.value("report-json"))
     if (auto written = write_file_atomic(*path, merged->report.dump(2) + "\n"); !written)

@@ -43,7 +43,8 @@ int run_combine(const std::vector<std::string>& argv) {
   Args args("combine", argv);
   const ConvertOptions options = convert_options(args);
   if (!args.ok()) return usage_error("combine", args);
-  if (args.positionals().size() != 1) return usage_error("combine", codes::cli::operands, "expected one EXPRESSION (quote it)");
+  if (args.positionals().size() != 1)
+    return usage_error("combine", codes::cli::operands, "expected one EXPRESSION (quote it)");
   const bool states = args.flag("states");
   const auto output = args.value("output");
   if (!states && !output) return usage_error("combine", codes::cli::missing_output, "missing -o OUTPUT (or --states)");

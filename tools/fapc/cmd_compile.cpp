@@ -21,7 +21,8 @@ int run_compile(const std::vector<std::string>& argv) {
   if (!args.ok()) return usage_error("compile", args);
   std::string input = args.positionals().front();
   StandardInputCopy copy;
-  if (const auto error = resolve_input(args, input, options, copy)) return usage_error("compile", codes::cli::standard_input, *error);
+  if (const auto error = resolve_input(args, input, options, copy))
+    return usage_error("compile", codes::cli::standard_input, *error);
   return convert_one(args.positionals().front(), input, *output, to, options);
 }
 

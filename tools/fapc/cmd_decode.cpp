@@ -22,13 +22,15 @@ int run_decode(const std::vector<std::string>& argv) {
   const std::string to = output_kind(args, *output, "fap");
   std::string input = args.positionals().front();
   StandardInputCopy copy;
-  if (const auto error = resolve_input(args, input, options, copy)) return usage_error("decode", codes::cli::standard_input, *error);
+  if (const auto error = resolve_input(args, input, options, copy))
+    return usage_error("decode", codes::cli::standard_input, *error);
   const pipeline::InputFormat* format = pipeline::reader_for(input, options);
   if (format && !format->verify_stream)
-    return usage_error("decode", codes::cli::input_kind, "decode reads FBA streams (" +
-                                     pipeline::extension_list(pipeline::inputs_where(
-                                         [](const pipeline::InputFormat& f) { return bool(f.verify_stream); })) +
-                                     "); use compile for '" + args.positionals().front() + "'");
+    return usage_error("decode", codes::cli::input_kind,
+                       "decode reads FBA streams (" +
+                           pipeline::extension_list(pipeline::inputs_where(
+                               [](const pipeline::InputFormat& f) { return bool(f.verify_stream); })) +
+                           "); use compile for '" + args.positionals().front() + "'");
   // Without --to the output's extension decides, as it always has; -o - writes .fap text.
   return convert_one(args.positionals().front(), input, *output, args.value("to") || *output == "-" ? to : "", options);
 }

@@ -23,7 +23,8 @@ int run_encode(const std::vector<std::string>& argv) {
   if (auto writable = check_output_path(*output); !writable) return report_outcome({}, writable.error());
   std::string input = args.positionals().front();
   StandardInputCopy copy;
-  if (const auto error = resolve_input(args, input, options, copy)) return usage_error("encode", codes::cli::standard_input, *error);
+  if (const auto error = resolve_input(args, input, options, copy))
+    return usage_error("encode", codes::cli::standard_input, *error);
 
   auto loaded = pipeline::load(input, options);
   if (!loaded) return report_outcome({}, loaded.error());

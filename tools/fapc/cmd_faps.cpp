@@ -37,7 +37,8 @@ int run_faps(const std::vector<std::string>& argv) {
     return kExitOk;
   }
   std::cout << std::left << std::setw(4) << "FAP" << std::setw(26) << "name" << std::setw(7) << "unit" << std::setw(7)
-            << "group" << std::setw(5) << "dir" << std::setw(16) << "legal range" << "step  positive motion\n";
+            << "group" << std::setw(5) << "dir" << std::setw(16) << "legal range"
+            << "step  positive motion\n";
   for (const FapInfo& f : fap_table()) {
     // Symmetric even for unidirectional FAPs, as the reference codec treats them (docs/fap-table.md).
     const std::string range =

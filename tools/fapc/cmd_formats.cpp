@@ -42,7 +42,8 @@ int run_formats(const std::vector<std::string>& argv) {
   if (!args.positionals().empty()) return usage_error("formats", codes::cli::operands, "takes no operands");
   const pipeline::Registry& registry = pipeline::formats();
   if (args.flag("json")) {
-    nlohmann::ordered_json out = {{"inputs", nlohmann::ordered_json::array()}, {"outputs", nlohmann::ordered_json::array()}};
+    nlohmann::ordered_json out = {{"inputs", nlohmann::ordered_json::array()},
+                                  {"outputs", nlohmann::ordered_json::array()}};
     for (const auto& f : registry.inputs()) out["inputs"].push_back(format_json(f));
     for (const auto& f : registry.outputs()) out["outputs"].push_back(format_json(f));
     std::cout << out.dump(2) << '\n';

@@ -28,7 +28,8 @@ int run_help(const std::vector<std::string>& argv) {
   if (!command) {
     std::vector<std::string> names;
     for (const CommandSpec& c : command_specs()) names.emplace_back(c.name);
-    return usage_error("help", codes::cli::unknown_command, "unknown command '" + name + "'" + did_you_mean(name, names));
+    return usage_error("help", codes::cli::unknown_command,
+                       "unknown command '" + name + "'" + did_you_mean(name, names));
   }
   print_command_help(*command, std::cout);
   return kExitOk;

@@ -28,12 +28,14 @@ int run_plot(const std::vector<std::string>& argv) {
   const std::string to = output_kind(args, *output, *output == "-" ? "svg" : "");
   pipeline::PlotKind kind{};
   if (!pipeline::plot_kind_for(to.empty() ? *output : "x." + to, kind))
-    return usage_error("plot", codes::cli::output_kind, "the output must be .svg, .png, .pdf or .csv: '" + (to.empty() ? *output : to) + "'");
+    return usage_error("plot", codes::cli::output_kind,
+                       "the output must be .svg, .png, .pdf or .csv: '" + (to.empty() ? *output : to) + "'");
   // An output that cannot be written is refused before the work (it is checked again when written).
   if (auto writable = check_output_path(*output); !writable) return report_outcome({}, writable.error());
   std::string input = args.positionals().front();
   StandardInputCopy copy;
-  if (const auto error = resolve_input(args, input, options, copy)) return usage_error("plot", codes::cli::standard_input, *error);
+  if (const auto error = resolve_input(args, input, options, copy))
+    return usage_error("plot", codes::cli::standard_input, *error);
 
   // A .csv is the frames as a table; the other plots draw a script's curves, or the frames of an
   // input without a timeline (which always has them).

@@ -26,7 +26,8 @@ int run_verify(const std::vector<std::string>& argv) {
   StandardInputCopy copy;
   for (const std::string& path : args.positionals()) {
     std::string input = path;
-    if (const auto error = resolve_input(args, input, options, copy)) return usage_error("verify", codes::cli::standard_input, *error);
+    if (const auto error = resolve_input(args, input, options, copy))
+      return usage_error("verify", codes::cli::standard_input, *error);
     const pipeline::VerifyResult verified = pipeline::verify(input, options);
     const int file_status = report_outcome(verified.warnings, verified.error);
     status = worse_status(status, file_status);

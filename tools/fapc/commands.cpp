@@ -13,9 +13,7 @@ std::map<std::string, Command>& command_table() {
 
 }  // namespace
 
-RegisterCommand::RegisterCommand(std::string name, CommandFn run) {
-  command_table()[name] = Command{name, run};
-}
+RegisterCommand::RegisterCommand(std::string name, CommandFn run) { command_table()[name] = Command{name, run}; }
 
 const std::map<std::string, Command>& commands() { return command_table(); }
 

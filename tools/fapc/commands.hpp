@@ -19,13 +19,16 @@ inline constexpr int kExitVerifyFailed = 3;
 // The exit status an error of this kind ends the program with.
 constexpr int exit_status(ErrorKind kind) {
   switch (kind) {
-    case ErrorKind::usage: return kExitUsage;
-    case ErrorKind::verification_failed: return kExitVerifyFailed;
+    case ErrorKind::usage:
+      return kExitUsage;
+    case ErrorKind::verification_failed:
+      return kExitVerifyFailed;
     case ErrorKind::bad_input:
     case ErrorKind::truncated:
     case ErrorKind::io:
     case ErrorKind::limit_exceeded:
-    case ErrorKind::unsupported: return kExitBadInput;
+    case ErrorKind::unsupported:
+      return kExitBadInput;
   }
   return kExitBadInput;
 }

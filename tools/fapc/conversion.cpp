@@ -30,8 +30,8 @@ void ConversionWatch::tell_done(const std::string& input, const pipeline::Conver
   tell(message + " in " + timing);
 }
 
-int convert_one(const std::string& named, const std::string& input, const std::string& output,
-                const std::string& to, pipeline::ConvertOptions& options) {
+int convert_one(const std::string& named, const std::string& input, const std::string& output, const std::string& to,
+                pipeline::ConvertOptions& options) {
   const ConversionWatch watch(options);
   const pipeline::ConvertResult result = pipeline::convert(input, {{output, to}}, options);
   const int status = report_outcome(result.warnings, result.error);

@@ -27,7 +27,7 @@ class ConversionWatch {
 // Converts `input` (the operand as resolved: a copy of standard input is a temporary file) to
 // one output with the watch around it, reports the diagnostics, writes standard output for -o -.
 // `named` is the operand as the user gave it. Returns the exit status.
-int convert_one(const std::string& named, const std::string& input, const std::string& output,
-                const std::string& to, pipeline::ConvertOptions& options);
+int convert_one(const std::string& named, const std::string& input, const std::string& output, const std::string& to,
+                pipeline::ConvertOptions& options);
 
 }  // namespace fapc::cli

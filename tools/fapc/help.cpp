@@ -102,8 +102,8 @@ void print_overview(std::ostream& out) {
 void print_command_help(const CommandSpec& command, std::ostream& out) {
   std::string summary(command.summary);
   if (!summary.empty()) summary[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(summary[0])));
-  out << "usage: " << usage_line(command) << "\n\n" << wrap(summary, 0, 0) << "."
-      << wrap(command.details, 0, summary.size() + 2) << "\n\noptions:\n";
+  out << "usage: " << usage_line(command) << "\n\n"
+      << wrap(summary, 0, 0) << "." << wrap(command.details, 0, summary.size() + 2) << "\n\noptions:\n";
   for (const OptionSpec* o : options_of(command.name)) {
     std::string label = (o->short_name ? "  " : "      ") + o->label();
     if (o->repeatable) label += "...";
@@ -134,7 +134,8 @@ std::string man_page() {
       << "\n.SH COMMANDS\n";
   for (const CommandSpec& c : command_specs()) {
     out << ".SS \"fapc " << c.name << (c.operands.empty() ? "" : " ") << roff(c.operands) << "\"\n"
-        << roff(c.summary) << ".\n" << roff(c.details) << "\n.PP\nOptions:";
+        << roff(c.summary) << ".\n"
+        << roff(c.details) << "\n.PP\nOptions:";
     bool first = true;
     for (const OptionSpec* o : options_of(c.name)) {
       if (o->commands == "*") continue;
@@ -211,9 +212,12 @@ std::string zsh_completion() {
       if (o->takes_value()) {
         const std::string words = words_of(o->completion, o->words);
         action = ":" + zsh_escape(o->value_name) + ":";
-        if (!words.empty()) action += "(" + words + ")";
-        else if (o->completion == ValueCompletion::file) action += "_files";
-        else if (o->completion == ValueCompletion::folder) action += "_files -/";
+        if (!words.empty())
+          action += "(" + words + ")";
+        else if (o->completion == ValueCompletion::file)
+          action += "_files";
+        else if (o->completion == ValueCompletion::folder)
+          action += "_files -/";
       }
       const std::string repeat = o->repeatable ? "*" : "";
       out << " \\\n        ";
@@ -243,7 +247,8 @@ std::string markdown_tables() {
   out << "\n| Option | Subcommands | Meaning |\n|---|---|---|\n";
   for (const OptionSpec& o : option_specs()) {
     std::string label = o.label();
-    for (std::size_t at = label.find('|'); at != std::string::npos; at = label.find('|', at + 2)) label.replace(at, 1, "\\|");
+    for (std::size_t at = label.find('|'); at != std::string::npos; at = label.find('|', at + 2))
+      label.replace(at, 1, "\\|");
     out << "| `" << label << "`" << (o.repeatable ? " (repeatable)" : "") << " | "
         << (o.commands == "*" ? std::string("all") : std::string(o.commands)) << " | " << o.help << " |\n";
   }

@@ -50,8 +50,8 @@ int main(int argc, char** argv) {
   mallopt(M_MMAP_THRESHOLD, 256 * 1024);
   std::vector<std::string> args(argv + 1, argv + argc);
   // -q and -v may come before the subcommand too.
-  while (!args.empty() && (args.front() == "-q" || args.front() == "--quiet" || args.front() == "-v" ||
-                           args.front() == "--verbose")) {
+  while (!args.empty() &&
+         (args.front() == "-q" || args.front() == "--quiet" || args.front() == "-v" || args.front() == "--verbose")) {
     set_verbosity(args.front() == "-q" || args.front() == "--quiet" ? Verbosity::quiet : Verbosity::verbose);
     args.erase(args.begin());
   }

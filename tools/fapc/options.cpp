@@ -42,7 +42,8 @@ ConvertOptions convert_options(Args& args) {
     const auto value = args.value(name);
     if (!value) return true;
     if (*value != first && *value != second) {
-      args.fail(codes::cli::bad_option_value, std::string("--") + name + " takes " + first + " or " + second + ", not '" + *value + "'");
+      args.fail(codes::cli::bad_option_value,
+                std::string("--") + name + " takes " + first + " or " + second + ", not '" + *value + "'");
       return false;
     }
     into = *value;
@@ -53,8 +54,8 @@ ConvertOptions convert_options(Args& args) {
   if (const auto size = args.value("size")) {
     int w = 0, h = 0;
     char x = 0, rest = 0;
-    if (std::sscanf(size->c_str(), "%d%c%d%c", &w, &x, &h, &rest) != 3 || x != 'x' || w < 16 ||
-        h < 16 || w > 7680 || h > 7680) {
+    if (std::sscanf(size->c_str(), "%d%c%d%c", &w, &x, &h, &rest) != 3 || x != 'x' || w < 16 || h < 16 || w > 7680 ||
+        h > 7680) {
       args.fail(codes::cli::bad_option_value, "--size takes WIDTHxHEIGHT, each 16 to 7680 pixels, not '" + *size + "'");
       return options;
     }
@@ -81,7 +82,8 @@ ConvertOptions convert_options(Args& args) {
       std::vector<std::string> names;
       std::istringstream all(fap_flavour_names());
       for (std::string name; std::getline(all, name, '|');) names.push_back(name);
-      args.fail(codes::cli::bad_option_value, "--fap-flavour takes " + fap_flavour_names() + ", not '" + *flavour + "'" + did_you_mean(*flavour, names));
+      args.fail(codes::cli::bad_option_value, "--fap-flavour takes " + fap_flavour_names() + ", not '" + *flavour +
+                                                  "'" + did_you_mean(*flavour, names));
     }
     options.fap_flavour = known.value_or(FapFlavour::safe);
   }

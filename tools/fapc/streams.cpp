@@ -35,8 +35,7 @@ std::string StandardInputCopy::path() {
 std::optional<std::string> resolve_input(Args& args, std::string& operand, pipeline::ConvertOptions& options,
                                          StandardInputCopy& copy) {
   if (const auto from = args.value("from")) {
-    if (!pipeline::formats().input_named(*from))
-      return pipeline::unknown_kind_message(*from, false);
+    if (!pipeline::formats().input_named(*from)) return pipeline::unknown_kind_message(*from, false);
     options.input_kind = *from;
   }
   if (operand != "-") return std::nullopt;
@@ -62,9 +61,9 @@ bool write_standard_output(const std::string& bytes) {
   std::cout.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   std::cout.flush();
   if (std::cout) return true;
-  report(make_error(codes::cli::standard_output_closed, Location::whole_file("<standard output>"),
-                    std::string("cannot write: ") + std::strerror(errno ? errno : EPIPE) +
-                        " (the reading end of the pipe closed)"));
+  report(make_error(
+      codes::cli::standard_output_closed, Location::whole_file("<standard output>"),
+      std::string("cannot write: ") + std::strerror(errno ? errno : EPIPE) + " (the reading end of the pipe closed)"));
   return false;
 }
 

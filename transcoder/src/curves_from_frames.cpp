@@ -14,8 +14,7 @@ Curves curves_from_frames(const FapSequence& sequence) {
   std::array<Points*, kFapCount + 1> list{};
   const auto points_of = [&](int fap) -> Points& {
     Points*& points = list[static_cast<std::size_t>(fap)];
-    if (!points)
-      points = &out.curves[fap == 1 ? "viseme" : fap == 2 ? "expression" : std::string(find_fap(fap)->name)];
+    if (!points) points = &out.curves[fap == 1 ? "viseme" : fap == 2 ? "expression" : std::string(find_fap(fap)->name)];
     return *points;
   };
   for (const FapFrame& frame : sequence.frames) {

@@ -26,7 +26,8 @@ void AdaptiveModel::rescale() {
     sums_[k] = static_cast<std::int16_t>(sums_[k + 1] + (frequency + 1) / 2);
   }
   total_ = sums_[0];
-  for (int j = 0; j <= middle_; ++j) sums_[static_cast<std::size_t>(j)] = static_cast<std::int16_t>(sums_[static_cast<std::size_t>(j)] - total_);
+  for (int j = 0; j <= middle_; ++j)
+    sums_[static_cast<std::size_t>(j)] = static_cast<std::int16_t>(sums_[static_cast<std::size_t>(j)] - total_);
 }
 
 }  // namespace fapc::fba

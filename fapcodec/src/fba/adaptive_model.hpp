@@ -34,9 +34,7 @@ class AdaptiveModel {
 
   int symbols() const { return symbols_; }
   std::int32_t total() const { return total_; }
-  std::int32_t cum(int j) const {
-    return sums_[static_cast<std::size_t>(j)] + (j <= middle_ ? total_ : 0);
-  }
+  std::int32_t cum(int j) const { return sums_[static_cast<std::size_t>(j)] + (j <= middle_ ? total_ : 0); }
 
   // The symbol s with cum[s+1] <= target < cum[s], for 0 <= target < total().
   int find(std::int32_t target) const { return find_scaled(target + 1, 1); }

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "fba/adaptive_model.hpp"
-#include "fba/reciprocal.hpp"
 #include "fba/bit_reader.hpp"
+#include "fba/reciprocal.hpp"
 
 namespace fapc::fba {
 
@@ -117,7 +117,8 @@ class ArithDecoder {
     r.high = (static_cast<std::int32_t>(high) - kCoderHalf) * scale + kCoderHalf + scale - 1;
     const std::uint32_t bits = get_coded_bits(r, a + b);
     const auto code = static_cast<std::int32_t>(((static_cast<std::uint32_t>(r.code) << a) | (bits >> b)) & 0xFFFF);
-    r.code = (code - kCoderHalf) * scale + kCoderHalf + static_cast<std::int32_t>(bits & static_cast<std::uint32_t>(scale - 1));
+    r.code = (code - kCoderHalf) * scale + kCoderHalf +
+             static_cast<std::int32_t>(bits & static_cast<std::uint32_t>(scale - 1));
   }
   // `count` (0..31) coded bits as a number, first bit highest, stuffing bits removed.
   std::uint32_t get_coded_bits(Registers& r, int count) {

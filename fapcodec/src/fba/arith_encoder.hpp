@@ -8,8 +8,8 @@
 #include <cstdint>
 
 #include "fba/adaptive_model.hpp"
-#include "fba/reciprocal.hpp"
 #include "fba/bit_writer.hpp"
+#include "fba/reciprocal.hpp"
 
 namespace fapc::fba {
 

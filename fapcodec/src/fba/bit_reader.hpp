@@ -15,8 +15,7 @@ namespace fapc::fba {
 
 class BitReader {
  public:
-  explicit BitReader(std::span<const std::uint8_t> data)
-      : data_(data), size_bits_(data.size() * 8) {}
+  explicit BitReader(std::span<const std::uint8_t> data) : data_(data), size_bits_(data.size() * 8) {}
 
   int read_bit() {
     const std::size_t at = position_++;

@@ -14,8 +14,7 @@
 namespace fapc::fba {
 
 struct DecodeContext {
-  DecodeContext(std::span<const std::uint8_t> bytes, std::string file_name)
-      : in(bytes), file(std::move(file_name)) {}
+  DecodeContext(std::span<const std::uint8_t> bytes, std::string file_name) : in(bytes), file(std::move(file_name)) {}
   DecodeContext(const DecodeContext&) = delete;
   DecodeContext& operator=(const DecodeContext&) = delete;
 

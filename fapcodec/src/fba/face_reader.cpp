@@ -123,7 +123,9 @@ Status FaceReader::read_values(bool intra, FapFrame& frame) {
     });
   }
   if (auto status = c_.finish_segment("FAP"); !status) return status;
-  if (overflow) return c_.error_at(codes::fba::value_overflow, segment_byte, "a decoded FAP value overflows 32 bits (corrupt stream?)");
+  if (overflow)
+    return c_.error_at(codes::fba::value_overflow, segment_byte,
+                       "a decoded FAP value overflows 32 bits (corrupt stream?)");
   return ok_status();
 }
 

@@ -38,8 +38,7 @@ void FaceState::reset_models() {
   }
   for (int field = 0; field < kCodedFieldCount; ++field) {
     const int fap = field < kVisemeFields ? 1 : 2;
-    if (mask.test(index(fap)))
-      field_pred_models[static_cast<std::size_t>(field)].reset(2 * field_limit(field) + 1);
+    if (mask.test(index(fap))) field_pred_models[static_cast<std::size_t>(field)].reset(2 * field_limit(field) + 1);
   }
 }
 

@@ -37,9 +37,7 @@ struct FaceState {
 
   // fap_quant as the range lists divide by it (1 when fap_quant is 0).
   int range_scaler() const { return fap_quant == 0 ? 1 : fap_quant; }
-  std::int64_t step(int fap) const {
-    return static_cast<std::int64_t>(fap_table()[index(fap)].quant_step) * fap_quant;
-  }
+  std::int64_t step(int fap) const { return static_cast<std::int64_t>(fap_table()[index(fap)].quant_step) * fap_quant; }
   std::int32_t intra_min(int fap) const { return range[kIntraMin][index(fap)]; }
   std::int32_t intra_max(int fap) const { return range[kIntraMax][index(fap)]; }
   std::int32_t pred_min(int fap) const { return range[kPredMin][index(fap)]; }

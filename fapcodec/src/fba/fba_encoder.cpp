@@ -47,13 +47,15 @@ Status check_fields(const FbaEncodeOptions& options, const FapFrame& f) {
   };
   for (const Field& field : fields)
     if (field.present && (field.value < 0 || field.value > field.high))
-      return input_error(codes::fba::field_out_of_range, options, f, field.fap, outside(field.name, field.value, field.high));
+      return input_error(codes::fba::field_out_of_range, options, f, field.fap,
+                         outside(field.name, field.value, field.high));
   return ok_status();
 }
 
 Status check_options(const FbaEncodeOptions& options) {
   if (options.quant < 0 || options.quant > fba::kMaxFapQuant)
-    return make_error(codes::fba::bad_quant, Location{}, "fap_quant must be 0..31, not " + std::to_string(options.quant));
+    return make_error(codes::fba::bad_quant, Location{},
+                      "fap_quant must be 0..31, not " + std::to_string(options.quant));
   if (options.intra_period < 0)
     return make_error(codes::fba::bad_intra_period, Location{}, "the intra period must not be negative");
   return ok_status();
@@ -61,15 +63,17 @@ Status check_options(const FbaEncodeOptions& options) {
 
 Status check_rate(int fps) {
   if (fps < 1 || fps >= (1 << fba::kFrameRateBits))
-    return make_error(codes::fba::frame_rate_not_codable, Location{}, "frame rate " + std::to_string(fps) +
-                                      " cannot be coded (the stream carries 1 to 255 frames per second)");
+    return make_error(
+        codes::fba::frame_rate_not_codable, Location{},
+        "frame rate " + std::to_string(fps) + " cannot be coded (the stream carries 1 to 255 frames per second)");
   return ok_status();
 }
 
 }  // namespace
 
 struct FbaEncoder::State {
-  explicit State(const FbaEncodeOptions& chosen) : options(chosen), setup(check_options(chosen)), planner(window, chosen) {
+  explicit State(const FbaEncodeOptions& chosen)
+      : options(chosen), setup(check_options(chosen)), planner(window, chosen) {
     if (chosen.masks == FbaMaskMode::fit) masks.emplace(chosen.quant);
   }
 
@@ -116,14 +120,15 @@ Status FbaEncoder::check(const FapFrame& frame) {
   if (!s.setup) return s.setup;
   if (s.checked == 0) s.first_number = frame.number;
   if (s.checked > 0) {
-    if (frame.number - s.previous_number - 1 < 0) return input_error(codes::fba::frames_not_ascending, s.options, frame, 0, "frame numbers must ascend");
+    if (frame.number - s.previous_number - 1 < 0)
+      return input_error(codes::fba::frames_not_ascending, s.options, frame, 0, "frame numbers must ascend");
     // Gaps cost 4 bits per 15 skipped frames; the span bounds them all.
     if (frame.number - s.first_number >= s.options.max_frames) {
       Limits limits;
       limits.max_frames = s.options.max_frames;
-      return limit_error(Location{}, "frames " + std::to_string(s.first_number) + " to " +
-                                         std::to_string(frame.number) + " span " +
-                                         std::to_string(frame.number - s.first_number + 1) + " frames",
+      return limit_error(Location{},
+                         "frames " + std::to_string(s.first_number) + " to " + std::to_string(frame.number) + " span " +
+                             std::to_string(frame.number - s.first_number + 1) + " frames",
                          Limit::frames, limits);
     }
   }
@@ -139,7 +144,8 @@ Status FbaEncoder::add(const FapFrame& frame) {
   if (!s.setup) return s.setup;
   if (!s.writer) return make_error(codes::fba::encoder_misuse, Location{}, "FbaEncoder: a frame added before start()");
   if (s.added >= s.checked)
-    return make_error(codes::fba::encoder_misuse, Location{}, "FbaEncoder: a frame added that the first pass did not check");
+    return make_error(codes::fba::encoder_misuse, Location{},
+                      "FbaEncoder: a frame added that the first pass did not check");
   if (s.masks && !s.fitter) s.fitter.emplace(std::move(*s.masks).finish());
   if (s.added == 0) s.writer->reserve(s.checked);  // a plane a frame
   ++s.added;
@@ -158,7 +164,8 @@ Result<EncodedFba> FbaEncoder::finish() {
   if (!s.setup) return s.setup.error();
   if (!s.writer) return make_error(codes::fba::encoder_misuse, Location{}, "FbaEncoder: finished before start()");
   if (s.added != s.checked)
-    return make_error(codes::fba::encoder_misuse, Location{}, "FbaEncoder: the second pass added fewer frames than the first checked");
+    return make_error(codes::fba::encoder_misuse, Location{},
+                      "FbaEncoder: the second pass added fewer frames than the first checked");
   if (auto status = s.write_groups(true); !status) return status.error();
   return s.writer->finish();
 }

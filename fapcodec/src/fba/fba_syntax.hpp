@@ -64,12 +64,11 @@ inline constexpr std::array<int, kCodedFieldCount> kFieldLimit{14, 14, -1, 6, -1
 
 // Body data, parsed only (docs/fba-bitstream.md section 5.8, appendix A).
 inline constexpr int kBapGroupCount = 24;
-inline constexpr std::array<int, kBapGroupCount> kBapGroupSizes{
-    3, 4, 4, 6, 6, 5, 5, 7, 7, 12, 15, 18, 18, 12, 16, 16, 13, 13, 6, 22, 22, 22, 22, 22};
+inline constexpr std::array<int, kBapGroupCount> kBapGroupSizes{3,  4,  4,  6,  6,  5,  5, 7,  7,  12, 15, 18,
+                                                                18, 12, 16, 16, 13, 13, 6, 22, 22, 22, 22, 22};
 inline constexpr int kBapCount = 296;
 inline constexpr int kBapQuantBits = 5;
-inline constexpr std::array<int, 32> kBapPredScale{0,  1,  2,  3,  5,  7,  9,  11, 14, 17, 20,
-                                                   23, 27, 31, 35, 39, 43, 47, 52, 57, 62, 67,
-                                                   72, 77, 82, 88, 94, 100, 106, 113, 120, 127};
+inline constexpr std::array<int, 32> kBapPredScale{0,  1,  2,  3,  5,  7,  9,  11, 14, 17, 20, 23,  27,  31,  35,  39,
+                                                   43, 47, 52, 57, 62, 67, 72, 77, 82, 88, 94, 100, 106, 113, 120, 127};
 
 }  // namespace fapc::fba

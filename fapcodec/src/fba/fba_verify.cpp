@@ -51,9 +51,10 @@ class FrameChecks {
   // An empty text when the frames agree, else what differs.
   std::string compare(const FapFrame& in, const FapFrame& out) {
     if (!first_number_) first_number_ = in.number;
-    if (out.number != in.number - *first_number_) return at_frame(in) + "decoded as frame " + std::to_string(out.number);
-    const bool masks_differ = options_.masks == FbaMaskMode::keep ? out.mask != in.mask
-                                                                  : out.has(1) != in.has(1) || out.has(2) != in.has(2);
+    if (out.number != in.number - *first_number_)
+      return at_frame(in) + "decoded as frame " + std::to_string(out.number);
+    const bool masks_differ =
+        options_.masks == FbaMaskMode::keep ? out.mask != in.mask : out.has(1) != in.has(1) || out.has(2) != in.has(2);
     if (masks_differ) return at_frame(in) + "the mask differs";
     if (auto differs = compare_fields(in, out, options_.quant); !differs.empty()) return at_frame(in) + differs;
     held_in_.advance(in);
@@ -104,13 +105,17 @@ Status verify_fba(std::size_t count, int fps, const FbaInputFrames& next, const 
       if (auto status = again.check(out); !status) again_error = status.error();
     return ok_status();
   });
-  if (!decoded) return failure(codes::verify::fba_does_not_decode, file, "the stream does not decode: " + format_diagnostic(decoded.error()));
+  if (!decoded)
+    return failure(codes::verify::fba_does_not_decode, file,
+                   "the stream does not decode: " + format_diagnostic(decoded.error()));
   if (decoded_frames != count)
-    return failure(codes::verify::fba_differs, file, std::to_string(decoded_frames) + " frames decoded, " + std::to_string(count) + " encoded");
+    return failure(codes::verify::fba_differs, file,
+                   std::to_string(decoded_frames) + " frames decoded, " + std::to_string(count) + " encoded");
   // The rate travels in intra planes, so a stream without planes has none.
   if (count > 0 && decoded->sequence.fps != fps)
-    return failure(codes::verify::fba_differs, file, "frame rate " + std::to_string(decoded->sequence.fps) + " decoded, " + std::to_string(fps) +
-                             " encoded");
+    return failure(
+        codes::verify::fba_differs, file,
+        "frame rate " + std::to_string(decoded->sequence.fps) + " decoded, " + std::to_string(fps) + " encoded");
   if (!first_difference.empty()) return failure(codes::verify::fba_differs, file, first_difference);
   // Second decoding: the frames coded again (as encode_fba would: the rate first, then every
   // frame checked, then added), and the bytes compared.
@@ -124,14 +129,17 @@ Status verify_fba(std::size_t count, int fps, const FbaInputFrames& next, const 
       if (auto status = again.add(out); !status) again_error = status.error();
     return ok_status();
   });
-  if (!redecoded) return failure(codes::verify::fba_does_not_decode, file, "the stream does not decode: " + format_diagnostic(redecoded.error()));
+  if (!redecoded)
+    return failure(codes::verify::fba_does_not_decode, file,
+                   "the stream does not decode: " + format_diagnostic(redecoded.error()));
   if (again_error) return not_again(*again_error);
   auto bytes = again.finish();
   if (!bytes) return not_again(bytes.error());
   if (bytes->bytes != encoded.bytes) {
     std::size_t at = 0;
     while (at < bytes->bytes.size() && at < encoded.bytes.size() && bytes->bytes[at] == encoded.bytes[at]) ++at;
-    return failure(codes::verify::fba_differs, file, "re-encoding the decoded frames gives different bytes from byte " + std::to_string(at));
+    return failure(codes::verify::fba_differs, file,
+                   "re-encoding the decoded frames gives different bytes from byte " + std::to_string(at));
   }
   return ok_status();
 }
@@ -139,8 +147,8 @@ Status verify_fba(std::size_t count, int fps, const FbaInputFrames& next, const 
 Status verify_fba(const FapSequence& input, const EncodedFba& encoded, const FbaEncodeOptions& options,
                   const std::string& file) {
   std::size_t k = 0;
-  return verify_fba(input.frames.size(), input.fps, [&]() -> const FapFrame& { return input.frames[k++]; }, encoded,
-                    options, file);
+  return verify_fba(
+      input.frames.size(), input.fps, [&]() -> const FapFrame& { return input.frames[k++]; }, encoded, options, file);
 }
 
 }  // namespace fapc

@@ -25,8 +25,8 @@ void FrameWindow::push_back(const FapFrame& frame) {
     for (std::size_t i = kFirstValueSlot; i < kFapCount; ++i)
       if (frame.mask.test(i)) m.slot[i] = static_cast<std::uint8_t>(m.values++);
   }
-  frames_.push_back(Entry{frame.number, static_cast<std::uint32_t>(masks_.size() - 1),
-                          static_cast<std::uint32_t>(pool_.size())});
+  frames_.push_back(
+      Entry{frame.number, static_cast<std::uint32_t>(masks_.size() - 1), static_cast<std::uint32_t>(pool_.size())});
   for (std::size_t i = kFirstValueSlot; i < kFapCount; ++i)
     if (frame.mask.test(i)) pool_.push_back(frame.values[i]);
   if (frame.has(1)) {

@@ -12,14 +12,11 @@ namespace fapc::fba {
 namespace {
 
 std::array<int, kCodedFieldCount> coded_fields(const FrameWindow::View& f) {
-  return {f.viseme.select1,     f.viseme.select2,        f.viseme.blend,
-          f.expression.select1, f.expression.intensity1, f.expression.select2,
-          f.expression.intensity2};
+  return {f.viseme.select1,        f.viseme.select2,     f.viseme.blend,         f.expression.select1,
+          f.expression.intensity1, f.expression.select2, f.expression.intensity2};
 }
 
-bool field_masked(const std::bitset<kFapCount>& mask, int field) {
-  return mask.test(field < kVisemeFields ? 0 : 1);
-}
+bool field_masked(const std::bitset<kFapCount>& mask, int field) { return mask.test(field < kVisemeFields ? 0 : 1); }
 
 }  // namespace
 
@@ -82,8 +79,7 @@ void GopPlanner::choose_levels(Gop& gop, std::size_t frames) {
   column_.resize(frames);
   levels_.resize(frames);
   for (std::size_t j = 0; j < n; ++j) {
-    for (std::size_t t = 0; t < frames; ++t)
-      column_[t] = rules_[j].options(frames_.masked_values(gop.first + t)[j]);
+    for (std::size_t t = 0; t < frames; ++t) column_[t] = rules_[j].options(frames_.masked_values(gop.first + t)[j]);
     chooser_.choose(column_, limit_, quant_.range_scaler(), levels_);
     gop.symbols[j] = static_cast<std::int16_t>(levels_[0]);
     for (std::size_t t = 1; t < frames; ++t)

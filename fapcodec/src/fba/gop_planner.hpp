@@ -63,16 +63,16 @@ class GopPlanner {
 
   const FrameWindow& frames_;  // the window
   FbaEncodeOptions options_;
-  std::optional<Gop> current_;  // the group being scanned; begun, not complete
-  std::size_t scan_ = 0;        // the next frame of the window to scan
-  FaceState quant_;  // only fap_quant, steps and field limits are used
-  std::int32_t limit_;  // the largest |q| any range can carry: 31 * 60 / scaler
-  const std::size_t next_ = 0;  // groups start at the window's first frame
-  std::vector<LevelRule> rules_;       // of the group's FAPs, in coding order
-  std::vector<std::int64_t> bounds_;   // and the value differences whose levels surely fit
+  std::optional<Gop> current_;                            // the group being scanned; begun, not complete
+  std::size_t scan_ = 0;                                  // the next frame of the window to scan
+  FaceState quant_;                                       // only fap_quant, steps and field limits are used
+  std::int32_t limit_;                                    // the largest |q| any range can carry: 31 * 60 / scaler
+  const std::size_t next_ = 0;                            // groups start at the window's first frame
+  std::vector<LevelRule> rules_;                          // of the group's FAPs, in coding order
+  std::vector<std::int64_t> bounds_;                      // and the value differences whose levels surely fit
   std::vector<std::int64_t> nearest_, previous_nearest_;  // nearest levels of two frames
-  std::vector<LevelOptions> column_;  // one FAP's choices over the group
-  std::vector<std::int64_t> levels_;  // and its chosen levels
+  std::vector<LevelOptions> column_;                      // one FAP's choices over the group
+  std::vector<std::int64_t> levels_;                      // and its chosen levels
   LevelChooser chooser_;
   std::array<std::int32_t, kCodedFieldCount> recon_fields_{};
 };

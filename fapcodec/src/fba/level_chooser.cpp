@@ -124,8 +124,10 @@ bool LevelChooser::replan(std::span<const LevelOptions> options, std::int64_t li
   price_.assign(counts_.size() + 2 * kReach, unseen);
   for (std::size_t i = 0; i < price_.size(); ++i) {
     const std::int64_t d = static_cast<std::int64_t>(i) - kReach + low_;
-    if (d > limit || d < -limit) price_[i] = kInfinite;
-    else if (i >= kReach && i - kReach < counts_.size()) price_[i] = log_total - logs_.half_more(counts_[i - kReach]);
+    if (d > limit || d < -limit)
+      price_[i] = kInfinite;
+    else if (i >= kReach && i - kReach < counts_.size())
+      price_[i] = log_total - logs_.half_more(counts_[i - kReach]);
   }
   const auto price = [&](std::int64_t d) { return price_[static_cast<std::size_t>(d - low_ + kReach)]; };
 

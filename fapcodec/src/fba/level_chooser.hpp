@@ -64,14 +64,14 @@ class LevelChooser {
   bool replan(std::span<const LevelOptions> options, std::int64_t limit, std::span<std::int64_t> levels);
 
   int scaler_ = 1;
-  std::int64_t low_ = 0;               // counts_[d - low_] is how often difference d occurs
+  std::int64_t low_ = 0;  // counts_[d - low_] is how often difference d occurs
   std::vector<std::uint32_t> counts_;
   std::int64_t fixed_low_ = 0, fixed_high_ = 0;  // count_fixed's, as low_ and counts_
   std::vector<std::uint32_t> fixed_counts_;
-  std::vector<double> price_;          // the bits each difference costs under the current counts
-  std::vector<std::uint8_t> from_;     // Viterbi back pointers: 2 per step
-  std::vector<std::int64_t> trial_;    // a plan: read and written only at the steps' frames and frame 0
-  std::vector<std::size_t> steps_;     // the frames whose step from the previous one can change
+  std::vector<double> price_;        // the bits each difference costs under the current counts
+  std::vector<std::uint8_t> from_;   // Viterbi back pointers: 2 per step
+  std::vector<std::int64_t> trial_;  // a plan: read and written only at the steps' frames and frame 0
+  std::vector<std::size_t> steps_;   // the frames whose step from the previous one can change
   std::int64_t alphabet_ = 1;
   CountLogs logs_;
 };

@@ -18,7 +18,10 @@ namespace fapc::fba {
 class LevelRule {
  public:
   LevelRule(std::int64_t step, std::int64_t legal)
-      : step_(step), half_(step / 2), legal_(legal), cap_(largest_legal_level(legal, step)),
+      : step_(step),
+        half_(step / 2),
+        legal_(legal),
+        cap_(largest_legal_level(legal, step)),
         even_(step % 2 == 0 && step != 0),
         reciprocal_(step >= 2 ? std::numeric_limits<std::uint64_t>::max() / static_cast<std::uint64_t>(step) + 1 : 0) {}
 

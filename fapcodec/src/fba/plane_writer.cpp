@@ -67,8 +67,7 @@ void PlaneWriter::write_temporal_header(bool intra, std::int64_t skip) {
   skip_flag_at_ = out_.bit_count();
   out_.put_bit(skip > 0 ? 1 : 0);
   if (skip == 0) return;
-  for (; skip >= kSkipChunkContinues; skip -= kSkipChunkContinues)
-    out_.put_bits(kSkipChunkContinues, kSkipChunkBits);
+  for (; skip >= kSkipChunkContinues; skip -= kSkipChunkContinues) out_.put_bits(kSkipChunkContinues, kSkipChunkBits);
   out_.put_bits(static_cast<std::uint32_t>(skip), kSkipChunkBits);
 }
 
@@ -81,9 +80,9 @@ void PlaneWriter::write_intra_face_header(const Gop& gop) {
     out_.put_bit(1);  // marker
     // Whole or empty groups need no mask bits.
     const MaskType type = options_.list_every_mask ? kMaskListed
-                          : masked == 0           ? kMaskNone
-                          : masked == size        ? kMaskAll
-                                                  : kMaskListed;
+                          : masked == 0            ? kMaskNone
+                          : masked == size         ? kMaskAll
+                                                   : kMaskListed;
     out_.put_bits(type, kMaskTypeBits);
     if (type == kMaskListed)
       for (int fap = group.first_fap; fap <= group.last_fap; ++fap) out_.put_bit(gop.mask.test(FaceState::index(fap)));

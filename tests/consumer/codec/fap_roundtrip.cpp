@@ -28,8 +28,8 @@ int main(int argc, char** argv) {
   if (!fap) return fail(fap.error());
 
   fapc::FbaEncodeOptions options;
-  options.quant = 0;                            // lossless
-  options.masks = fapc::FbaMaskMode::keep;      // every frame keeps its own mask
+  options.quant = 0;                        // lossless
+  options.masks = fapc::FbaMaskMode::keep;  // every frame keeps its own mask
   const auto encoded = fapc::encode_fba(fap->sequence, options);
   if (!encoded) return fail(encoded.error());
   const std::string bytes(encoded->bytes.begin(), encoded->bytes.end());

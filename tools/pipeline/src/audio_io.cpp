@@ -14,8 +14,9 @@ Result<std::optional<xmt::AudioTrackInput>> pack_audio_track(const AudioTrack& a
   const double face_end = std::round((face_seconds - audio.start) * audio.sample_rate);
   if (face_end > static_cast<double>(limits.max_audio_samples))
     return limit_error(Location::whole_file(where),
-                       "the voice track would run to the face's end, " + std::to_string(static_cast<std::int64_t>(face_end)) +
-                           " samples at " + std::to_string(audio.sample_rate) + " Hz",
+                       "the voice track would run to the face's end, " +
+                           std::to_string(static_cast<std::int64_t>(face_end)) + " samples at " +
+                           std::to_string(audio.sample_rate) + " Hz",
                        Limit::audio_samples, limits);
   if (face_end > static_cast<double>(length)) length = static_cast<std::size_t>(std::llround(face_end));
   // Sound before the face's time 0 has nowhere to play: it is cut (the edit list skips it).
@@ -40,7 +41,8 @@ Result<AudioTrack> unpack_audio_track(const xmt::AudioTrackInput& track, const s
                                       const Limits& limits) {
   const Location at = Location::whole_file(where);
   if (static_cast<double>(track.length) > static_cast<double>(limits.max_audio_samples))
-    return limit_error(at, "the audio track holds " + std::to_string(track.length) + " samples", Limit::audio_samples, limits);
+    return limit_error(at, "the audio track holds " + std::to_string(track.length) + " samples", Limit::audio_samples,
+                       limits);
   if (static_cast<double>(track.length) * 2 > static_cast<double>(limits.max_decompressed_bytes))
     return limit_error(at, "the audio track decodes to " + std::to_string(track.length * 2) + " bytes",
                        Limit::decompressed_bytes, limits);

@@ -22,9 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-Diagnostic usage(ErrorCode code, const std::string& message) {
-  return make_error(code, Location{}, message);
-}
+Diagnostic usage(ErrorCode code, const std::string& message) { return make_error(code, Location{}, message); }
 
 std::string without_input_extension(const std::string& path) {
   if (const InputFormat* format = formats().input_for(path))
@@ -51,10 +49,12 @@ Result<std::vector<std::string>> listed_files(const std::string& base, const fs:
     fs::path relative = fs::path(entry).lexically_normal();
     if (relative.is_absolute()) {
       const fs::path canonical = fs::weakly_canonical(relative);
-      if (!contains(canonical_base, canonical)) return usage(codes::batch::listed_outside, "listed file " + entry + " is not inside " + base);
+      if (!contains(canonical_base, canonical))
+        return usage(codes::batch::listed_outside, "listed file " + entry + " is not inside " + base);
       relative = canonical.lexically_relative(canonical_base);
     }
-    if (relative.empty() || *relative.begin() == "..") return usage(codes::batch::listed_outside, "listed file " + entry + " is not inside " + base);
+    if (relative.empty() || *relative.begin() == "..")
+      return usage(codes::batch::listed_outside, "listed file " + entry + " is not inside " + base);
     std::error_code ec;
     if (!fs::is_regular_file(fs::path(base) / relative, ec))
       return usage(codes::batch::listed_outside, "listed file " + entry + " is not a file under " + base);
@@ -68,7 +68,8 @@ Result<std::vector<std::string>> listed_files(const std::string& base, const fs:
 }  // namespace
 
 Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs, const std::string& out_dir,
-                                         const std::vector<std::string>& kinds, const std::vector<std::string>* listed) {
+                                         const std::vector<std::string>& kinds,
+                                         const std::vector<std::string>* listed) {
   std::vector<const OutputFormat*> writers;
   for (const std::string& kind : kinds) {
     const OutputFormat* writer = formats().output_named(kind);
@@ -78,7 +79,8 @@ Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs,
   if (kinds.empty()) return usage(codes::batch::no_output_kind, "no output kind in --to");
   std::error_code ec;
   if (listed && (inputs.size() != 1 || !fs::is_directory(inputs.front(), ec)))
-    return usage(codes::batch::files_from_folder, "--files-from takes one folder INPUT, the one its paths are relative to (none: the current folder)");
+    return usage(codes::batch::files_from_folder,
+                 "--files-from takes one folder INPUT, the one its paths are relative to (none: the current folder)");
   // Checked here, not by the command line, so every caller gets it: the error names the file.
   if (fs::exists(out_dir, ec) && !fs::is_directory(out_dir, ec))
     return make_error(codes::batch::output_not_folder, Location::whole_file(out_dir),
@@ -93,7 +95,8 @@ Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs,
   for (const std::string& input : inputs) {
     if (!fs::exists(input, ec)) return usage(codes::batch::no_such_input, "no such file or folder: " + input);
     if (!fs::is_directory(input, ec)) {
-      if (inside(input, out_folder)) return usage(codes::batch::inside_output, input + " is inside the output folder " + out_dir);
+      if (inside(input, out_folder))
+        return usage(codes::batch::inside_output, input + " is inside the output folder " + out_dir);
       found.push_back({input, fs::path(without_input_extension(input)).filename().string(), {}});
       continue;
     }
@@ -138,7 +141,8 @@ Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs,
   for (const auto& [input, name, full_name] : found) {
     BatchJob job{input, {}};
     for (std::size_t k = 0; k < kinds.size(); ++k) {
-      const std::string output = (fs::path(out_dir) / (name + writers[k]->extensions.front())).lexically_normal().string();
+      const std::string output =
+          (fs::path(out_dir) / (name + writers[k]->extensions.front())).lexically_normal().string();
       job.outputs.push_back(OutputRequest{output, kinds[k]});
       inputs_of[output].push_back(input);
     }
@@ -151,8 +155,10 @@ Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs,
     for (const std::string& input : writers_of) shared += " " + input;
   }
   if (!shared.empty())
-    return usage(codes::batch::outputs_collide, "inputs would overwrite each other's outputs; nothing converted (rename one, or convert them "
-                 "in separate runs):" + shared);
+    return usage(codes::batch::outputs_collide,
+                 "inputs would overwrite each other's outputs; nothing converted (rename one, or convert them "
+                 "in separate runs):" +
+                     shared);
   return jobs;
 }
 
@@ -249,7 +255,8 @@ std::vector<BatchOutcome> run_batch(const std::vector<BatchJob>& jobs, const Con
   // Hands every job finished in input order since the last call to in_order. Under `report`.
   const auto hand_over = [&] {
     for (; reported < jobs.size() && finished[reported]; ++reported)
-      if (run.in_order && (outcomes[reported].ran || outcomes[reported].up_to_date)) run.in_order(reported, outcomes[reported]);
+      if (run.in_order && (outcomes[reported].ran || outcomes[reported].up_to_date))
+        run.in_order(reported, outcomes[reported]);
   };
   const auto worker = [&] {
     for (std::size_t i; !stopping() && (i = next++) < jobs.size();) {

@@ -24,7 +24,7 @@ int rank(const json& job) {
 std::string job_key(const json& job) {
   const json& outputs = job["outputs"];
   return outputs.is_array() && !outputs.empty() && outputs[0].is_string() ? outputs[0].get<std::string>()
-                                                                            : job["input"].get<std::string>();
+                                                                          : job["input"].get<std::string>();
 }
 
 Diagnostic not_a_report(const std::string& path, const std::string& why) {
@@ -35,13 +35,15 @@ Diagnostic not_a_report(const std::string& path, const std::string& why) {
 // The report's shape as far as the merge relies on it.
 std::optional<std::string> shape_problem(const json& report) {
   if (!report.is_object()) return "not an object";
-  if (report.value("schema_version", 0) != kJsonSchemaVersion) return "no schema_version " + std::to_string(kJsonSchemaVersion);
+  if (report.value("schema_version", 0) != kJsonSchemaVersion)
+    return "no schema_version " + std::to_string(kJsonSchemaVersion);
   if (!report.contains("jobs") || !report["jobs"].is_array()) return "no jobs array";
   for (const json& job : report["jobs"])
     if (!job.is_object() || !job.contains("input") || !job["input"].is_string() || !job.contains("outputs"))
       return "a job without input or outputs";
   const json& shard = report.value("shard", json());
-  if (!shard.is_null() && !(shard.is_object() && shard.value("count", 0u) > 0 && shard.value("index", 0u) < shard.value("count", 0u)))
+  if (!shard.is_null() &&
+      !(shard.is_object() && shard.value("count", 0u) > 0 && shard.value("index", 0u) < shard.value("count", 0u)))
     return "a shard that is not {index, count}";
   return std::nullopt;
 }
@@ -107,10 +109,16 @@ Result<MergedReport> merge_batch_reports(const std::vector<ReportText>& reports)
   out["shard"] = nullptr;
   out["planned"] = *planned;
   out["jobs"] = std::move(jobs);
-  out["totals"] = {{"jobs", *planned}, {"converted", converted}, {"up_to_date", up_to_date}, {"failed", failed},
-                   {"not_run", *planned - converted - up_to_date - failed}, {"interrupted", interrupted},
+  out["totals"] = {{"jobs", *planned},
+                   {"converted", converted},
+                   {"up_to_date", up_to_date},
+                   {"failed", failed},
+                   {"not_run", *planned - converted - up_to_date - failed},
+                   {"interrupted", interrupted},
                    {"job_seconds", seconds}};
-  out["merged"] = {{"reports", reports.size()}, {"shards", *shard_count}, {"missing_shards", merged.missing_shards},
+  out["merged"] = {{"reports", reports.size()},
+                   {"shards", *shard_count},
+                   {"missing_shards", merged.missing_shards},
                    {"no_result", merged.no_result}};
   return merged;
 }

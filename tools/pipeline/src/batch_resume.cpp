@@ -114,7 +114,8 @@ void CompletionRecords::sweep(const std::string& folder) const {
     // Nor this process's own temporary files: another thread may be writing one (a job started
     // while this sweep still walks the folder), and a killed run's have another prefix.
     std::error_code entry_ec;
-    if (!target.empty() && names->second.count(target) && !name.starts_with(own_prefix) && it->is_regular_file(entry_ec))
+    if (!target.empty() && names->second.count(target) && !name.starts_with(own_prefix) &&
+        it->is_regular_file(entry_ec))
       fs::remove(it->path(), entry_ec);
   }
 }
@@ -131,7 +132,8 @@ std::optional<FileStamp> CompletionRecords::prepare(const BatchJob& job) const {
 Status CompletionRecords::record(const BatchJob& job, const std::optional<FileStamp>& input) const {
   const std::string path = record_path(job);
   const auto failed = [&](const std::string& why) {
-    return make_error(codes::batch::record_not_written, Location::whole_file(path), "cannot write the completion record: " + why);
+    return make_error(codes::batch::record_not_written, Location::whole_file(path),
+                      "cannot write the completion record: " + why);
   };
   if (!input) return failed("the input " + job.input + " is no longer a readable file");
   json outputs = json::array();
@@ -140,7 +142,9 @@ Status CompletionRecords::record(const BatchJob& job, const std::optional<FileSt
     if (!stamp) return failed("the output " + output.path + " is not there");
     outputs.push_back({{"path", output.path}, {"kind", output.kind}, {"stamp", stamp_json(*stamp)}});
   }
-  const json record = {{"input", job.input}, {"input_stamp", stamp_json(*input)}, {"settings", settings_},
+  const json record = {{"input", job.input},
+                       {"input_stamp", stamp_json(*input)},
+                       {"settings", settings_},
                        {"outputs", std::move(outputs)}};
   std::error_code ec;
   fs::create_directories(fs::path(path).parent_path(), ec);

@@ -51,7 +51,8 @@ Result<Shard> parse_shard(const std::string& text) {
 
 Result<std::optional<Shard>> shard_from_environment(const EnvironmentLookup& lookup,
                                                     std::optional<std::size_t> shards) {
-  const auto given = [&](std::size_t index, std::size_t count, const std::string& source) -> Result<std::optional<Shard>> {
+  const auto given = [&](std::size_t index, std::size_t count,
+                         const std::string& source) -> Result<std::optional<Shard>> {
     auto shard = checked(index, count, source);
     if (!shard) return shard.error();
     return std::optional<Shard>{*shard};

@@ -19,13 +19,20 @@
 namespace fapc::pipeline {
 
 std::vector<CodeTable> code_tables() {
-  return {{"fapc::codec", codes::codec_codes},           {"fapc::transcoder", codes::transcoder_codes},
-          {"fapc::speech", codes::speech_codes},         {"fapc::audio_codec", codes::audio_codec_codes},
-          {"fapc::face", codes::face_codes},             {"fapc::head3d", codes::head3d_codes},
-          {"fapc::vocabulary", codes::vocabulary_codes}, {"fapc::xml", codes::xml_codes},
-          {"fapc::mpeg4", codes::mpeg4_codes},           {"fapc::fml", codes::fml_codes},
-          {"fapc::xmto", codes::xmto_codes},             {"fapc::bml", codes::bml_codes},
-          {"fapc::intent", codes::intent_codes},         {"fapc::smil", codes::smil_codes},
+  return {{"fapc::codec", codes::codec_codes},
+          {"fapc::transcoder", codes::transcoder_codes},
+          {"fapc::speech", codes::speech_codes},
+          {"fapc::audio_codec", codes::audio_codec_codes},
+          {"fapc::face", codes::face_codes},
+          {"fapc::head3d", codes::head3d_codes},
+          {"fapc::vocabulary", codes::vocabulary_codes},
+          {"fapc::xml", codes::xml_codes},
+          {"fapc::mpeg4", codes::mpeg4_codes},
+          {"fapc::fml", codes::fml_codes},
+          {"fapc::xmto", codes::xmto_codes},
+          {"fapc::bml", codes::bml_codes},
+          {"fapc::intent", codes::intent_codes},
+          {"fapc::smil", codes::smil_codes},
           {"fapc::pipeline", codes::pipeline_codes}};
 }
 

@@ -15,8 +15,7 @@ namespace {
 // A facial state (.xpr) or, through the registry, any input; an included one (an operand of a
 // .combine file) is checked for cycles and read on a stack of its own.
 Result<algebra::Value> load_operand(const std::string& path, const Location& where, bool included,
-                                    const ConvertOptions& options, const Profile& profile,
-                                    Diagnostics& warnings) {
+                                    const ConvertOptions& options, const Profile& profile, Diagnostics& warnings) {
   algebra::Value value;
   if (path.ends_with(".xpr")) {
     Result<std::string> text = read_file_bytes(path, options.limits);
@@ -35,12 +34,13 @@ Result<algebra::Value> load_operand(const std::string& path, const Location& whe
   // slot, and a late last frame costs as much as a long animation.
   if (const auto& frames = loaded->frames.frames; !frames.empty()) {
     if (frames.front().number < 0)
-      return make_error(codes::combine::before_zero, Location::whole_file(path), "frame " + std::to_string(frames.front().number) +
-                                                      " is before time 0: an operand's frames start at 0 or later");
+      return make_error(codes::combine::before_zero, Location::whole_file(path),
+                        "frame " + std::to_string(frames.front().number) +
+                            " is before time 0: an operand's frames start at 0 or later");
     if (frames.back().number >= options.limits.max_frames)
       return limit_error(Location::whole_file(path),
-                         "its frames run to number " + std::to_string(frames.back().number) +
-                             ", a grid of " + std::to_string(frames.back().number + 1) + " frames",
+                         "its frames run to number " + std::to_string(frames.back().number) + ", a grid of " +
+                             std::to_string(frames.back().number + 1) + " frames",
                          Limit::frames, options.limits);
   }
   value.animation = algebra::animation_from(loaded->frames);
@@ -49,8 +49,7 @@ Result<algebra::Value> load_operand(const std::string& path, const Location& whe
 
 }  // namespace
 
-Result<algebra::Value> evaluate_combination(const std::string& expression,
-                                            const std::string& including_file,
+Result<algebra::Value> evaluate_combination(const std::string& expression, const std::string& including_file,
                                             const ConvertOptions& options, Diagnostics& warnings) {
   Result<Profile> profile = profile_for(options);
   if (!profile) return profile.error();

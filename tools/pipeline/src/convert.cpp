@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "fapc/codec/file_io.hpp"
 #include "fap_text_outputs.hpp"
+#include "fapc/codec/file_io.hpp"
 #include "streamed_convert.hpp"
 
 namespace fapc::pipeline {
@@ -92,7 +92,8 @@ ConvertResult write_outputs(Loaded loaded, const std::vector<OutputRequest>& out
   return result;
 }
 
-ConvertResult convert(const std::string& input, const std::vector<OutputRequest>& outputs, const ConvertOptions& options) {
+ConvertResult convert(const std::string& input, const std::vector<OutputRequest>& outputs,
+                      const ConvertOptions& options) {
   ConvertResult result;
   std::vector<const OutputFormat*> writers;
   if ((result.error = find_writers(outputs, writers))) return result;
@@ -105,8 +106,10 @@ ConvertResult convert(const std::string& input, const std::vector<OutputRequest>
   // A script's frames are kept only when a writer reads them; else they are rendered and dropped,
   // one at a time, for their warnings and the summary.
   ConvertOptions load_options = options;
-  load_options.curves = std::any_of(writers.begin(), writers.end(), [](const OutputFormat* w) { return w->uses_curves; });
-  load_options.frames = std::any_of(writers.begin(), writers.end(), [](const OutputFormat* w) { return w->uses_frames; });
+  load_options.curves =
+      std::any_of(writers.begin(), writers.end(), [](const OutputFormat* w) { return w->uses_curves; });
+  load_options.frames =
+      std::any_of(writers.begin(), writers.end(), [](const OutputFormat* w) { return w->uses_frames; });
   // The outputs' limits on the length (a video's pictures), before a script's frames are made.
   load_options.check_length = [&writers, &outputs, &options](std::int64_t frames, int fps, const Location& ends) {
     for (std::size_t i = 0; i < writers.size(); ++i)

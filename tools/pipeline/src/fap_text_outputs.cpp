@@ -22,8 +22,10 @@ FapTextOutputs::FapTextOutputs(const std::string& name, int fps, std::size_t fra
 
 void FapTextOutputs::open(std::size_t i, const std::string& path) {
   auto file = AtomicFile::create(path);
-  if (file) files_.emplace_back(i, std::move(*file));
-  else failed_.emplace_back(i, file.error());
+  if (file)
+    files_.emplace_back(i, std::move(*file));
+  else
+    failed_.emplace_back(i, file.error());
 }
 
 void FapTextOutputs::begin() {
@@ -32,8 +34,10 @@ void FapTextOutputs::begin() {
 
 void FapTextOutputs::add(const FapFrame& frame) {
   if (error_) return;
-  if (auto status = writer_.add(frame, text_); !status) error_ = status.error();
-  else if (text_.size() >= (std::size_t{1} << 20)) flush();
+  if (auto status = writer_.add(frame, text_); !status)
+    error_ = status.error();
+  else if (text_.size() >= (std::size_t{1} << 20))
+    flush();
 }
 
 void FapTextOutputs::finish() {

@@ -44,8 +44,8 @@ class FapTextOutputs {
   void flush();
 
   FapTextWriter writer_;
-  std::string text_;                                         // made, not yet written
-  std::optional<Diagnostic> error_;                          // the writer's: the flavour cannot carry a frame
+  std::string text_;                                        // made, not yet written
+  std::optional<Diagnostic> error_;                         // the writer's: the flavour cannot carry a frame
   std::vector<std::pair<std::size_t, AtomicFile>> files_;   // by output index
   std::vector<std::pair<std::size_t, Diagnostic>> failed_;  // outputs whose file failed
 };

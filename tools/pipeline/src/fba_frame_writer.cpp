@@ -19,8 +19,12 @@ FbaEncodeOptions options_with(const ConvertOptions& options, bool align_planes, 
 
 FbaFrameWriter::FbaFrameWriter(const std::string& path, const std::string& input, const ConvertOptions& options,
                                FrameSource& source, bool align_planes)
-    : path_(path), input_(input), verify_(options.verify), source_(source),
-      fba_options_(options_with(options, align_planes, source)), encoder_(fba_options_) {}
+    : path_(path),
+      input_(input),
+      verify_(options.verify),
+      source_(source),
+      fba_options_(options_with(options, align_planes, source)),
+      encoder_(fba_options_) {}
 
 void FbaFrameWriter::check(const FapFrame& frame) {
   if (!error_)
@@ -44,8 +48,10 @@ void FbaFrameWriter::add(const FapFrame& frame) {
 void FbaFrameWriter::finish() {
   if (!error_) {
     auto finished = encoder_.finish();
-    if (finished) encoded_ = std::move(*finished);
-    else error_ = finished.error();
+    if (finished)
+      encoded_ = std::move(*finished);
+    else
+      error_ = finished.error();
     encoder_ = FbaEncoder();  // its statistics of the masks go before the outputs are made
     if (verify_ && finished)  // as encode_checked verifies
       if (auto verified = source_.verify(*encoded_, fba_options_, facts_.fps, input_); !verified)

@@ -14,8 +14,8 @@ namespace fapc::pipeline {
 
 class FbaFrameWriter : public FrameWriter {
  public:
-  FbaFrameWriter(const std::string& path, const std::string& input, const ConvertOptions& options,
-                 FrameSource& source, bool align_planes);
+  FbaFrameWriter(const std::string& path, const std::string& input, const ConvertOptions& options, FrameSource& source,
+                 bool align_planes);
 
   bool checks_first() const override { return true; }
   void check(const FapFrame& frame) override;

@@ -79,8 +79,8 @@ std::function<Location(std::int64_t, int)> frame_locator(const std::vector<std::
   };
 }
 
-Result<EncodedFba> encode_checked(const Loaded& loaded, const ConvertOptions& options,
-                                  const std::string& input, bool align_planes) {
+Result<EncodedFba> encode_checked(const Loaded& loaded, const ConvertOptions& options, const std::string& input,
+                                  bool align_planes) {
   const FapSequence& sequence = loaded.frames;
   if (auto error = fba_rate_error(sequence.fps, loaded.rate_at, loaded.rate_written, input)) return *error;
   FbaEncodeOptions fba = fba_encode_options(options);

@@ -23,7 +23,8 @@ Status FrameSource::second_pass(const FapFrameSink& code, bool keep_tape) {
   return ok_status();
 }
 
-Status FrameSource::verify(const EncodedFba& encoded, const FbaEncodeOptions& options, int fps, const std::string& file) {
+Status FrameSource::verify(const EncodedFba& encoded, const FbaEncodeOptions& options, int fps,
+                           const std::string& file) {
   return verify_fba(frames_read(), fps, replayed(true), encoded, options, file);
 }
 

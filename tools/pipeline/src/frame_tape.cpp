@@ -20,7 +20,6 @@ std::array<int, 6> fields(const ExpressionFields& e) {
   return {e.select1, e.intensity1, e.select2, e.intensity2, e.init_face, e.def};
 }
 
-
 // Variable-length integers, 7 bits a byte, low bits first; signed ones zigzagged (small
 // magnitudes of either sign take one byte). Most differences of a smooth animation take one.
 std::uint8_t* put(std::uint8_t* out, std::uint64_t v) {
@@ -83,7 +82,8 @@ bool FrameTape::record(const FapFrame& frame) {
   // Only masked slots carry anything: the rest at 0 (or default fields) need not be taped.
   const bool every_slot = !slots_.at_rest_outside(frame);
   const bool jump = frame.number != previous_.number + 1;
-  *out++ = static_cast<std::uint8_t>((new_mask ? kNewMask : 0) | (jump ? kNumberJump : 0) | (every_slot ? kEverySlot : 0));
+  *out++ =
+      static_cast<std::uint8_t>((new_mask ? kNewMask : 0) | (jump ? kNumberJump : 0) | (every_slot ? kEverySlot : 0));
   if (new_mask)
     for (std::size_t byte = 0; byte < kMaskBytes; ++byte) {
       std::uint8_t bits = 0;

@@ -81,10 +81,10 @@ class FrameTape {
 
   std::size_t budget_;
   bool dropped_ = false;
-  std::size_t bytes_ = 0;     // recorded, over every block
+  std::size_t bytes_ = 0;      // recorded, over every block
   std::vector<Block> blocks_;  // the last is being filled
-  FapFrame previous_;  // the last frame recorded: values are coded as differences from it
-  Slots slots_;        // of its mask
+  FapFrame previous_;          // the last frame recorded: values are coded as differences from it
+  Slots slots_;                // of its mask
 };
 
 }  // namespace fapc::pipeline

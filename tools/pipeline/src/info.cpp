@@ -21,9 +21,7 @@ nlohmann::ordered_json summarise(const std::string& path, const std::string& kin
   for (const FapFrame& frame : seq.frames)
     for (int fap = 1; fap <= kFapCount; ++fap) {
       if (!frame.has(fap)) continue;
-      const long long v = fap == 1   ? frame.viseme.select1
-                          : fap == 2 ? frame.expression.select1
-                                     : frame.value(fap);
+      const long long v = fap == 1 ? frame.viseme.select1 : fap == 2 ? frame.expression.select1 : frame.value(fap);
       Range& r = ranges[static_cast<std::size_t>(fap)];
       r.min = r.frames ? std::min(r.min, v) : v;
       r.max = r.frames ? std::max(r.max, v) : v;
@@ -42,8 +40,12 @@ nlohmann::ordered_json summarise(const std::string& path, const std::string& kin
     const Range& r = ranges[static_cast<std::size_t>(fap)];
     if (r.frames == 0) continue;
     const FapInfo& info = *find_fap(fap);
-    faps.push_back({{"number", fap}, {"name", info.name}, {"unit", fapu_name(info.unit)},
-                    {"min", r.min}, {"max", r.max}, {"frames", r.frames}});
+    faps.push_back({{"number", fap},
+                    {"name", info.name},
+                    {"unit", fapu_name(info.unit)},
+                    {"min", r.min},
+                    {"max", r.max},
+                    {"frames", r.frames}});
   }
   out["faps_used"] = faps.size();
   out["faps"] = faps;

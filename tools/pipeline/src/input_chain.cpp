@@ -32,9 +32,8 @@ ReadingInput::ReadingInput(const std::string& path, const ConvertOptions& option
   options_.input_kind.clear();  // --from names the top input's kind, not its includes'
   IncludePolicy& includes = options_.includes;
   if (reading_chain.empty()) {
-    const std::string own = includes.base_folder.empty()
-                                ? std::filesystem::path(path).parent_path().string()
-                                : includes.base_folder;
+    const std::string own =
+        includes.base_folder.empty() ? std::filesystem::path(path).parent_path().string() : includes.base_folder;
     includes.allowed_folders.insert(includes.allowed_folders.begin(), own);
   } else {
     includes.base_folder.clear();  // the working folder was standard input's, not its includes'

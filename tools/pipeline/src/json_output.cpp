@@ -55,8 +55,8 @@ json verify_document(std::vector<json> files) {
   return out;
 }
 
-json batch_report_json(const std::vector<BatchJob>& jobs, const std::vector<BatchOutcome>& outcomes,
-                       bool interrupted, const std::optional<Shard>& shard, std::size_t planned) {
+json batch_report_json(const std::vector<BatchJob>& jobs, const std::vector<BatchOutcome>& outcomes, bool interrupted,
+                       const std::optional<Shard>& shard, std::size_t planned) {
   json list = json::array();
   std::size_t ran = 0, failed = 0, up_to_date = 0;
   double seconds = 0;
@@ -93,8 +93,13 @@ json batch_report_json(const std::vector<BatchJob>& jobs, const std::vector<Batc
   out["shard"] = shard ? json{{"index", shard->index}, {"count", shard->count}} : json(nullptr);
   out["planned"] = shard ? planned : jobs.size();
   out["jobs"] = std::move(list);
-  out["totals"] = {{"jobs", jobs.size()}, {"converted", ran - failed}, {"up_to_date", up_to_date}, {"failed", failed},
-                   {"not_run", jobs.size() - ran - up_to_date}, {"interrupted", interrupted}, {"job_seconds", seconds}};
+  out["totals"] = {{"jobs", jobs.size()},
+                   {"converted", ran - failed},
+                   {"up_to_date", up_to_date},
+                   {"failed", failed},
+                   {"not_run", jobs.size() - ran - up_to_date},
+                   {"interrupted", interrupted},
+                   {"job_seconds", seconds}};
   return out;
 }
 

@@ -45,8 +45,8 @@ Format described(Format format, std::string carries, std::vector<std::string> op
   return format;
 }
 
-const std::vector<std::string> kScriptOptions = {"fps", "profile", "duration", "allow-include", "max-runs",
-                                                 "max-expansion", "max-frames"};
+const std::vector<std::string> kScriptOptions = {"fps",      "profile",       "duration",  "allow-include",
+                                                 "max-runs", "max-expansion", "max-frames"};
 
 // A script reader's options: those of every script, then its own.
 std::vector<std::string> script_options(std::initializer_list<std::string> own) {
@@ -68,8 +68,10 @@ Registry built_in() {
   r.add(described(builtin::xmto_input(), "an XMT-Omega document animating FAPs (XMT-A is an output)", kScriptOptions));
   r.add(described(builtin::combine_input(), "an Algebra of Expressions over other inputs (docs/algebra.md)",
                   kScriptOptions));
-  r.add(described(builtin::bml_input(), "a BML document: behaviours placed by their sync constraints, speech", kScriptOptions));
-  r.add(described(builtin::xml_input(), "an .xml document read by its root: BML, FML, XMT-Omega, FML-APML, APML or SMIL-Agent",
+  r.add(described(builtin::bml_input(), "a BML document: behaviours placed by their sync constraints, speech",
+                  kScriptOptions));
+  r.add(described(builtin::xml_input(),
+                  "an .xml document read by its root: BML, FML, XMT-Omega, FML-APML, APML or SMIL-Agent",
                   kScriptOptions));
   r.add(described(builtin::fml_apml_input(), "Greta's FML-APML: intentions on a speech's marks, through the lexicon",
                   script_options({"lexicon", "voice", "speech-rate"})));
@@ -94,7 +96,8 @@ Registry built_in() {
                   {"size", "frame", "time", "sheet", "points"}));
   r.add(described(builtin::webm_output(), "a VP9 video of the face", {"size", "frame-rate"}));
   r.add(described(builtin::html_output(), "a page that plays the face in a browser", {"size", "frame-rate", "view"}));
-  r.add(described(builtin::wav_output(), "the voice (speech or a recording) as 16-bit PCM WAV", {"voice", "speech-rate"}));
+  r.add(described(builtin::wav_output(), "the voice (speech or a recording) as 16-bit PCM WAV",
+                  {"voice", "speech-rate"}));
   r.add(described(builtin::tracker_csv_input(), "OpenFace or ARKit CSV, told by its header (docs/bridges.md)",
                   {"fps", "max-frames"}));
   r.add(described(builtin::openface_csv_input(), "OpenFace action units, pose and gaze (docs/bridges.md)",
@@ -103,12 +106,13 @@ Registry built_in() {
                   {"fps", "max-frames"}));
   r.add(described(builtin::arkit_csv_output(),
                   "ARKit blendshapes in Live Link Face's layout; loses FAPs no shape moves", {}));
-  r.add(described(builtin::openface_csv_output(),
-                  "OpenFace's 17 AU intensities, pose, gaze; loses FAPs no unit moves", {}));
-  r.add(described(builtin::viseme_json_output(),
-                  "FAP 1's visemes as OpenXR names and times; loses every other FAP", {}));
+  r.add(described(builtin::openface_csv_output(), "OpenFace's 17 AU intensities, pose, gaze; loses FAPs no unit moves",
+                  {}));
+  r.add(
+      described(builtin::viseme_json_output(), "FAP 1's visemes as OpenXR names and times; loses every other FAP", {}));
   r.add(described(builtin::viseme_csv_output(), "the viseme track as CSV (start,end,viseme,mpeg4)", {}));
-  r.add(described(builtin::glb_output(), "the 3D head with FAP morph targets and the animation, binary glTF 2.0", {"morphs"}));
+  r.add(described(builtin::glb_output(), "the 3D head with FAP morph targets and the animation, binary glTF 2.0",
+                  {"morphs"}));
   r.add(described(builtin::gltf_output(), "the same 3D head and animation as glTF 2.0 JSON", {"morphs"}));
   return r;
 }
@@ -139,7 +143,8 @@ const InputFormat* reader_for(const std::string& path, const ConvertOptions& opt
 namespace {
 
 template <class Format>
-std::vector<const Format*> rows_where(const std::vector<Format>& table, const std::function<bool(const Format&)>& keep) {
+std::vector<const Format*> rows_where(const std::vector<Format>& table,
+                                      const std::function<bool(const Format&)>& keep) {
   std::vector<const Format*> rows;
   for (const Format& f : table)
     if (!keep || keep(f)) rows.push_back(&f);

@@ -15,8 +15,8 @@
 #include <algorithm>
 #include <memory>
 
-#include "fapc/codec/file_io.hpp"
 #include "fap_text_outputs.hpp"
+#include "fapc/codec/file_io.hpp"
 #include "frame_source.hpp"
 
 namespace fapc::pipeline {
@@ -105,8 +105,10 @@ std::optional<ConvertResult> convert_streamed(const std::string& input, const st
       (up_front || std::all_of(sinks.begin(), sinks.end(), [](const auto& w) { return w->writes_before_facts(); }));
   for (const auto& w : sinks) {
     if (!one_pass) break;
-    if (up_front) w->start(*up_front);
-    else w->start_early();
+    if (up_front)
+      w->start(*up_front);
+    else
+      w->start_early();
   }
   // Pass 1. The frames go on the tape where a second pass follows and that pays: for an encoder
   // (as fast as reading a .fap again, and a lower peak: 149 against 165 MB at 10^6 frames) and from
@@ -114,13 +116,15 @@ std::optional<ConvertResult> convert_streamed(const std::string& input, const st
   // .fap only rewritten as .fap is read again (the tape would be some 50 bytes a frame more).
   const bool onto_tape = !one_pass && (!checkers.empty() || source.placed_in_first_pass());
   std::bitset<kFapCount> faps;
-  auto facts = source.first_pass([&](const FapFrame& frame) -> Status {
-    faps |= frame.mask;
-    for (FrameWriter* w : checkers) w->check(frame);
-    if (one_pass)
-      for (const auto& w : sinks) w->add(frame);
-    return ok_status();
-  }, onto_tape);
+  auto facts = source.first_pass(
+      [&](const FapFrame& frame) -> Status {
+        faps |= frame.mask;
+        for (FrameWriter* w : checkers) w->check(frame);
+        if (one_pass)
+          for (const auto& w : sinks) w->add(frame);
+        return ok_status();
+      },
+      onto_tape);
   if (!take_facts(result, facts, faps, input, options)) return result;
   // --verify compares the streams with the frames on the tape; frames too many for it take the
   // usual way (nothing is written yet).
@@ -130,10 +134,12 @@ std::optional<ConvertResult> convert_streamed(const std::string& input, const st
   if (!one_pass || !up_front)
     for (const auto& w : sinks) w->start(*facts);
   if (!one_pass && std::any_of(sinks.begin(), sinks.end(), [](const auto& w) { return w->wants_frames(); })) {
-    auto again = source.second_pass([&](const FapFrame& frame) -> Status {
-      for (const auto& w : sinks) w->add(frame);
-      return ok_status();
-    }, options.verify);
+    auto again = source.second_pass(
+        [&](const FapFrame& frame) -> Status {
+          for (const auto& w : sinks) w->add(frame);
+          return ok_status();
+        },
+        options.verify);
     if (!again) {
       result.error = again.error();
       return result;

@@ -67,9 +67,8 @@ Result<Rendered> render_not_kept(const Timeline& timeline, const RenderOptions& 
 
 }  // namespace
 
-Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
-                                    const Profile& profile, const ConvertOptions& options,
-                                    Diagnostics warnings, nlohmann::ordered_json facts) {
+Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name, const Profile& profile,
+                                    const ConvertOptions& options, Diagnostics warnings, nlohmann::ordered_json facts) {
   if (options.duration) {
     timeline.explicit_end = *options.duration;
     timeline.end_source = Location::whole_file(name);  // the whole input, ended by --duration
@@ -90,7 +89,8 @@ Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
   }
   const RenderOptions render = render_options_for(name, profile, options);
   FramesSeen seen;
-  Result<Rendered> rendered = options.frames ? render_frames(timeline, render) : render_not_kept(timeline, render, seen);
+  Result<Rendered> rendered =
+      options.frames ? render_frames(timeline, render) : render_not_kept(timeline, render, seen);
   if (!rendered) return named_after(rendered.error(), name);
   Result<std::optional<AudioTrack>> audio = mixed_audio(timeline, options);
   if (!audio) return audio.error();

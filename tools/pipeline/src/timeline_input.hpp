@@ -33,9 +33,9 @@ Result<std::optional<AudioTrack>> mixed_audio(const Timeline& timeline, const Co
 
 // Frames at options.fps (clamp warnings appended to `warnings`), curves, and the timeline itself;
 // the timeline alone when options.render is false. `facts` become Loaded::facts.
-Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name,
-                                    const Profile& profile, const ConvertOptions& options,
-                                    Diagnostics warnings, nlohmann::ordered_json facts = nlohmann::ordered_json::object());
+Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name, const Profile& profile,
+                                    const ConvertOptions& options, Diagnostics warnings,
+                                    nlohmann::ordered_json facts = nlohmann::ordered_json::object());
 
 // A script row's loader: `read(profile)` gives a document with `timeline` and `warnings`, and
 // `facts_of(document)` what `fapc info` tells of it (made only when asked).

@@ -83,7 +83,7 @@ std::vector<int> intra_periods(const FapSequence& frames, const FbaStreamInfo& i
 // in the stream; the range mode, the intra period and the mask layout are tried in turn, since the
 // bits do not say which was used. `same` compares an encoding with the original.
 VerifyResult reencode_matches(const std::string& path, const DecodedFba& decoded, bool aligned,
-                             const std::function<bool(const EncodedFba&)>& same, std::size_t bytes) {
+                              const std::function<bool(const EncodedFba&)>& same, std::size_t bytes) {
   const FbaStreamInfo& info = decoded.info;
   const auto failure = [&](const std::string& why) {
     return failed(make_error(codes::verify::fba_foreign, Location::whole_file(path), "verification failed: " + why),
@@ -126,8 +126,8 @@ VerifyResult verify_fba_file(const std::string& path, const Limits& limits) {
   if (!decoded) return failed(decoded.error());
   const FbaStreamInfo& info = decoded->info;
   const bool aligned = info.planes > 0 && info.plane_start_codes == info.planes;
-  return reencode_matches(path, *decoded, aligned, [&](const EncodedFba& again) { return again.bytes == bytes; },
-                          bytes.size());
+  return reencode_matches(
+      path, *decoded, aligned, [&](const EncodedFba& again) { return again.bytes == bytes; }, bytes.size());
 }
 
 namespace {
@@ -137,7 +137,8 @@ namespace {
 // An .mp4's voice: its presentation (the delay, then the sound) must span the face track's: it
 // starts at 0 like every edit list, its sound starts before the face ends, and it ends within one
 // frame of the face's end (docs/mp4-and-xmta.md section 1.2). Checked from the container alone.
-std::optional<Diagnostic> audio_mismatch(const std::string& path, const xmt::Mp4File& mp4, const xmt::FbaTrackInput& fba) {
+std::optional<Diagnostic> audio_mismatch(const std::string& path, const xmt::Mp4File& mp4,
+                                         const xmt::FbaTrackInput& fba) {
   const xmt::Mp4Track* voice = xmt::find_audio_track(mp4);
   if (!voice) return std::nullopt;
   auto audio = xmt::read_audio_track(mp4, *voice);
@@ -175,7 +176,8 @@ VerifyResult verify_mp4_file(const std::string& path, const Limits& limits) {
   if (!mp4) return failed(mp4.error());
   auto fba = decode_mp4_fba(*mp4, path, limits);
   if (!fba) return failed(fba.error());
-  if (auto mismatch = audio_mismatch(path, *mp4, fba->track)) return failed(std::move(*mismatch), fba->decoded.warnings);
+  if (auto mismatch = audio_mismatch(path, *mp4, fba->track))
+    return failed(std::move(*mismatch), fba->decoded.warnings);
   const std::vector<xmt::FbaSample>& samples = fba->track.samples;
   std::size_t bytes = 0;
   for (const xmt::FbaSample& sample : samples) bytes += sample.bytes.size();
@@ -185,7 +187,8 @@ VerifyResult verify_mp4_file(const std::string& path, const Limits& limits) {
       const CodedPlane& plane = again.planes[k];
       const xmt::FbaSample& sample = samples[k];
       const auto first = again.bytes.begin() + static_cast<std::ptrdiff_t>(plane.offset);
-      if (!std::equal(first, first + static_cast<std::ptrdiff_t>(plane.size), sample.bytes.begin(), sample.bytes.end()) ||
+      if (!std::equal(first, first + static_cast<std::ptrdiff_t>(plane.size), sample.bytes.begin(),
+                      sample.bytes.end()) ||
           plane.intra != sample.sync || static_cast<std::uint32_t>(plane.frames) != sample.duration)
         return false;
     }
@@ -203,11 +206,13 @@ VerifyResult verify_input(const std::string& path, const ConvertOptions& options
   checked.verify = true;
   auto encoded = encode_checked(*loaded, checked, path);
   if (!encoded) return failed(encoded.error(), loaded->warnings);
-  const double bits = loaded->frames.frames.empty()
-                          ? 0.0
-                          : 8.0 * static_cast<double>(encoded->bytes.size()) /
-                                static_cast<double>(loaded->frames.frames.back().number - loaded->frames.frames.front().number + 1);
-  VerifyResult result = passed(loaded->frames.frames.size(), encoded->bytes.size(), bits, options.quant, loaded->warnings);
+  const double bits =
+      loaded->frames.frames.empty()
+          ? 0.0
+          : 8.0 * static_cast<double>(encoded->bytes.size()) /
+                static_cast<double>(loaded->frames.frames.back().number - loaded->frames.frames.front().number + 1);
+  VerifyResult result =
+      passed(loaded->frames.frames.size(), encoded->bytes.size(), bits, options.quant, loaded->warnings);
   result.max_error = max_error(loaded->frames, *encoded);
   return result;
 }

@@ -52,8 +52,8 @@ std::vector<std::uint8_t> aac_lc_mono_config(int sample_rate) {
   constexpr std::uint64_t kAacLc = 2, kMono = 1, kSyncExtension = 0x2B7, kSbr = 5;
   // 5 bits object type, 4 frequency index, 4 channels, 3 zero GASpecificConfig bits; 11 bits
   // sync extension, 5 extension object type, 1 sbrPresentFlag (0): 33 bits in 40.
-  const std::uint64_t bits = (kAacLc << 35) | (static_cast<std::uint64_t>(index) << 31) | (kMono << 27) |
-                             (kSyncExtension << 13) | (kSbr << 8);
+  const std::uint64_t bits =
+      (kAacLc << 35) | (static_cast<std::uint64_t>(index) << 31) | (kMono << 27) | (kSyncExtension << 13) | (kSbr << 8);
   std::vector<std::uint8_t> out;
   for (int shift = 32; shift >= 0; shift -= 8) out.push_back(static_cast<std::uint8_t>((bits >> shift) & 0xFF));
   return out;
@@ -100,8 +100,8 @@ Result<AacStream> encode_aac(const AudioTrack& track, const std::string& where, 
                       "libavcodec's AAC encoder announced a configuration other than mono AAC-LC");
   const int frame_size = c.context->frame_size > 0 ? c.context->frame_size : kAacFrameLength;
   if (frame_size != kAacFrameLength)
-    return make_error(codes::aac::encoder_unexpected, at, "libavcodec's AAC encoder uses " +
-                                                      std::to_string(frame_size) + "-sample frames");
+    return make_error(codes::aac::encoder_unexpected, at,
+                      "libavcodec's AAC encoder uses " + std::to_string(frame_size) + "-sample frames");
 
   c.frame = av_frame_alloc();
   c.frame->format = AV_SAMPLE_FMT_FLTP;
@@ -145,7 +145,8 @@ Result<std::vector<std::int16_t>> decode_aac(const AacStream& stream, const std:
   // Access unit i (from 0), or the last one for an error at the stream's end.
   auto unit_at = [&](std::size_t i) {
     if (stream.frame_offsets.empty()) return at;
-    return Location::binary(where, static_cast<std::int64_t>(stream.frame_offsets[std::min(i, stream.frame_offsets.size() - 1)]));
+    return Location::binary(
+        where, static_cast<std::int64_t>(stream.frame_offsets[std::min(i, stream.frame_offsets.size() - 1)]));
   };
   auto failed_at = [](const Location& place, const std::string& what, int code) {
     return make_error(codes::aac::does_not_decode, place, what + ": " + av_message(code));
@@ -157,8 +158,8 @@ Result<std::vector<std::int16_t>> decode_aac(const AacStream& stream, const std:
   c.context = avcodec_alloc_context3(aac);
   c.context->sample_rate = stream.sample_rate;
   av_channel_layout_default(&c.context->ch_layout, stream.channels);
-  c.context->extradata = static_cast<std::uint8_t*>(
-      av_mallocz(stream.audio_specific_config.size() + AV_INPUT_BUFFER_PADDING_SIZE));
+  c.context->extradata =
+      static_cast<std::uint8_t*>(av_mallocz(stream.audio_specific_config.size() + AV_INPUT_BUFFER_PADDING_SIZE));
   std::copy(stream.audio_specific_config.begin(), stream.audio_specific_config.end(), c.context->extradata);
   c.context->extradata_size = static_cast<int>(stream.audio_specific_config.size());
   c.context->thread_count = 1;
@@ -197,7 +198,8 @@ Result<std::vector<std::int16_t>> decode_aac(const AacStream& stream, const std:
     const int e = avcodec_send_packet(c.context, c.packet);
     av_packet_unref(c.packet);
     if (e < 0) return failed_at(unit_at(i), "AAC access unit " + std::to_string(i + 1) + " does not decode", e);
-    if (int t = take(); t < 0) return failed_at(unit_at(i), "AAC access unit " + std::to_string(i + 1) + " does not decode", t);
+    if (int t = take(); t < 0)
+      return failed_at(unit_at(i), "AAC access unit " + std::to_string(i + 1) + " does not decode", t);
   }
   const std::size_t last = stream.frames.empty() ? 0 : stream.frames.size() - 1;
   if (samples.size() < want) {

@@ -115,13 +115,20 @@ const Fapus& fapus() {
 
 double Fapus::unit(Fapu u) const {
   switch (u) {
-    case Fapu::irisd: return irisd0 / 1024;
-    case Fapu::es: return es0 / 1024;
-    case Fapu::ens: return ens0 / 1024;
-    case Fapu::mns: return mns0 / 1024;
-    case Fapu::mw: return mw0 / 1024;
-    case Fapu::au: return 1e-5;
-    case Fapu::none: return 0;
+    case Fapu::irisd:
+      return irisd0 / 1024;
+    case Fapu::es:
+      return es0 / 1024;
+    case Fapu::ens:
+      return ens0 / 1024;
+    case Fapu::mns:
+      return mns0 / 1024;
+    case Fapu::mw:
+      return mw0 / 1024;
+    case Fapu::au:
+      return 1e-5;
+    case Fapu::none:
+      return 0;
   }
   return 0;
 }

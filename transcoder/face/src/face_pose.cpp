@@ -43,41 +43,77 @@ struct Follower {
 // follow their middle; a brow's points drag their neighbours; an ear moves as a whole.
 std::vector<Follower> followers(int fap) {
   switch (fap) {
-    case 3: case 14: case 15:  // open_jaw, thrust_jaw, shift_jaw
-      return {{P::chin_boss, 1},      {P::chin_l, 1},         {P::chin_r, 1},
-              {P::lip_b_mid_i, 1},    {P::lip_b_lm_i, 1},     {P::lip_b_rm_i, 1},
-              {P::lip_b_mid_o, 1},    {P::lip_b_lm_o, 1},     {P::lip_b_rm_o, 1},
-              {P::teeth_b_l, 1},      {P::teeth_b_r, 1},      {P::tongue_tip, 0.6},
-              {P::tongue_body, 0.6},  {P::lip_l_corner_i, 0.5}, {P::lip_r_corner_i, 0.5},
-              {P::lip_l_corner_o, 0.5}, {P::lip_r_corner_o, 0.5}, {P::jaw_angle_l, 0.25},
-              {P::jaw_angle_r, 0.25}, {P::cheek_l_side, 0.2}, {P::cheek_r_side, 0.2}};
-    case 4: case 17: return {{P::lip_t_lm_i, 0.6}, {P::lip_t_rm_i, 0.6}};
-    case 5: case 16: return {{P::lip_b_lm_i, 0.6}, {P::lip_b_rm_i, 0.6}};
-    case 6: case 12: return {{P::lip_t_lm_i, 0.4}, {P::lip_b_lm_i, 0.4}};
-    case 7: case 13: return {{P::lip_t_rm_i, 0.4}, {P::lip_b_rm_i, 0.4}};
-    case 18: return {{P::chin_bottom, 0.5}};
-    case 31: return {{P::brow_l_mid, 0.3}};
-    case 32: return {{P::brow_r_mid, 0.3}};
-    case 33: return {{P::brow_l_inner, 0.3}, {P::brow_l_outer, 0.3}};
-    case 34: return {{P::brow_r_inner, 0.3}, {P::brow_r_outer, 0.3}};
-    case 35: return {{P::brow_l_mid, 0.3}};
-    case 36: return {{P::brow_r_mid, 0.3}};
-    case 37: return {{P::brow_l_mid, 0.5}, {P::brow_l_outer, 0.2}};
-    case 38: return {{P::brow_r_mid, 0.5}, {P::brow_r_outer, 0.2}};
-    case 39: return {{P::jaw_angle_l, 0.3}, {P::cheek_l, 0.3}};
-    case 40: return {{P::jaw_angle_r, 0.3}, {P::cheek_r, 0.3}};
-    case 41: return {{P::lid_b_l, 0.2}};
-    case 42: return {{P::lid_b_r, 0.2}};
-    case 46: return {{P::tongue_tip, 0.5}};
-    case 51: return {{P::lip_t_lm_o, 0.6}, {P::lip_t_rm_o, 0.6}};
-    case 52: return {{P::lip_b_lm_o, 0.6}, {P::lip_b_rm_o, 0.6}};
-    case 53: case 59: return {{P::lip_t_lm_o, 0.4}, {P::lip_b_lm_o, 0.4}};
-    case 54: case 60: return {{P::lip_t_rm_o, 0.4}, {P::lip_b_rm_o, 0.4}};
-    case 63: return {{P::nose_base, 0.5}, {P::nose_l, 0.3}, {P::nose_r, 0.3}};
-    case 64: return {{P::nose_base, 0.5}};
-    case 65: case 67: return {{P::ear_l_top, 1}, {P::ear_l_back, 1}, {P::ear_l_lobe, 1}, {P::ear_l_front, 1}};
-    case 66: case 68: return {{P::ear_r_top, 1}, {P::ear_r_back, 1}, {P::ear_r_lobe, 1}, {P::ear_r_front, 1}};
-    default: return {};
+    case 3:
+    case 14:
+    case 15:  // open_jaw, thrust_jaw, shift_jaw
+      return {{P::chin_boss, 1},        {P::chin_l, 1},           {P::chin_r, 1},           {P::lip_b_mid_i, 1},
+              {P::lip_b_lm_i, 1},       {P::lip_b_rm_i, 1},       {P::lip_b_mid_o, 1},      {P::lip_b_lm_o, 1},
+              {P::lip_b_rm_o, 1},       {P::teeth_b_l, 1},        {P::teeth_b_r, 1},        {P::tongue_tip, 0.6},
+              {P::tongue_body, 0.6},    {P::lip_l_corner_i, 0.5}, {P::lip_r_corner_i, 0.5}, {P::lip_l_corner_o, 0.5},
+              {P::lip_r_corner_o, 0.5}, {P::jaw_angle_l, 0.25},   {P::jaw_angle_r, 0.25},   {P::cheek_l_side, 0.2},
+              {P::cheek_r_side, 0.2}};
+    case 4:
+    case 17:
+      return {{P::lip_t_lm_i, 0.6}, {P::lip_t_rm_i, 0.6}};
+    case 5:
+    case 16:
+      return {{P::lip_b_lm_i, 0.6}, {P::lip_b_rm_i, 0.6}};
+    case 6:
+    case 12:
+      return {{P::lip_t_lm_i, 0.4}, {P::lip_b_lm_i, 0.4}};
+    case 7:
+    case 13:
+      return {{P::lip_t_rm_i, 0.4}, {P::lip_b_rm_i, 0.4}};
+    case 18:
+      return {{P::chin_bottom, 0.5}};
+    case 31:
+      return {{P::brow_l_mid, 0.3}};
+    case 32:
+      return {{P::brow_r_mid, 0.3}};
+    case 33:
+      return {{P::brow_l_inner, 0.3}, {P::brow_l_outer, 0.3}};
+    case 34:
+      return {{P::brow_r_inner, 0.3}, {P::brow_r_outer, 0.3}};
+    case 35:
+      return {{P::brow_l_mid, 0.3}};
+    case 36:
+      return {{P::brow_r_mid, 0.3}};
+    case 37:
+      return {{P::brow_l_mid, 0.5}, {P::brow_l_outer, 0.2}};
+    case 38:
+      return {{P::brow_r_mid, 0.5}, {P::brow_r_outer, 0.2}};
+    case 39:
+      return {{P::jaw_angle_l, 0.3}, {P::cheek_l, 0.3}};
+    case 40:
+      return {{P::jaw_angle_r, 0.3}, {P::cheek_r, 0.3}};
+    case 41:
+      return {{P::lid_b_l, 0.2}};
+    case 42:
+      return {{P::lid_b_r, 0.2}};
+    case 46:
+      return {{P::tongue_tip, 0.5}};
+    case 51:
+      return {{P::lip_t_lm_o, 0.6}, {P::lip_t_rm_o, 0.6}};
+    case 52:
+      return {{P::lip_b_lm_o, 0.6}, {P::lip_b_rm_o, 0.6}};
+    case 53:
+    case 59:
+      return {{P::lip_t_lm_o, 0.4}, {P::lip_b_lm_o, 0.4}};
+    case 54:
+    case 60:
+      return {{P::lip_t_rm_o, 0.4}, {P::lip_b_rm_o, 0.4}};
+    case 63:
+      return {{P::nose_base, 0.5}, {P::nose_l, 0.3}, {P::nose_r, 0.3}};
+    case 64:
+      return {{P::nose_base, 0.5}};
+    case 65:
+    case 67:
+      return {{P::ear_l_top, 1}, {P::ear_l_back, 1}, {P::ear_l_lobe, 1}, {P::ear_l_front, 1}};
+    case 66:
+    case 68:
+      return {{P::ear_r_top, 1}, {P::ear_r_back, 1}, {P::ear_r_lobe, 1}, {P::ear_r_front, 1}};
+    default:
+      return {};
   }
 }
 
@@ -98,9 +134,9 @@ const std::vector<Influence>& influences() {
       if (fap == 27 || fap == 28) continue;  // eyeball thrust: moves the eyeball (pose_eye)
       const std::optional<P> own = point_by_label(motion.feature_point);
       if (!own) continue;
-      Influence in{fap, fapus().unit(find_fap(fap)->unit),
-                   Vec3{double(motion.direction[0]), double(motion.direction[1]),
-                        double(motion.direction[2])},
+      Influence in{fap,
+                   fapus().unit(find_fap(fap)->unit),
+                   Vec3{double(motion.direction[0]), double(motion.direction[1]), double(motion.direction[2])},
                    {{*own, 1}}};
       for (const Follower& f : followers(fap))
         if (f.point != *own) in.points.push_back(f);
@@ -114,7 +150,7 @@ const std::vector<Influence>& influences() {
 // Inner and outer lip FAPs that act on the same spot: when a frame drives only one of the pair,
 // the other follows it, so a stream that animates only the inner (or outer) contour still moves
 // the whole lip.
-constexpr int kLipPairs[][2] = {{4, 51}, {5, 52}, {6, 53}, {7, 54}, {8, 55},
+constexpr int kLipPairs[][2] = {{4, 51}, {5, 52},  {6, 53},  {7, 54},  {8, 55},
                                 {9, 56}, {10, 57}, {11, 58}, {12, 59}, {13, 60}};
 
 double fap(const FapValues& v, int number) { return v[static_cast<std::size_t>(number - 1)]; }
@@ -126,8 +162,7 @@ void meet_if_crossed(FacePose& pose, P top, P bottom) {
   if (t.y < b.y) t.y = b.y = (t.y + b.y) / 2;
 }
 
-EyePose pose_eye(const FapValues& v, P pupil, int yaw_fap, int pitch_fap, int thrust_fap,
-                 int dilate_fap) {
+EyePose pose_eye(const FapValues& v, P pupil, int yaw_fap, int pitch_fap, int thrust_fap, int dilate_fap) {
   const double au = fapus().unit(Fapu::au);
   const Vec3 gaze = rotation_y(fap(v, yaw_fap) * au) * (rotation_x(fap(v, pitch_fap) * au) * Vec3{0, 0, 1});
   Vec3 centre = neutral(pupil) - Vec3{0, 0, kEyeballRadius};
@@ -145,8 +180,10 @@ FapValues with_lip_pairs(const FapValues& values) {
   for (const auto& pair : kLipPairs) {
     double& inner = v[static_cast<std::size_t>(pair[0] - 1)];
     double& outer = v[static_cast<std::size_t>(pair[1] - 1)];
-    if (inner == 0) inner = outer;
-    else if (outer == 0) outer = inner;
+    if (inner == 0)
+      inner = outer;
+    else if (outer == 0)
+      outer = inner;
   }
   return v;
 }
@@ -165,7 +202,8 @@ FacePose pose_face(const FapValues& values) {
   const FapValues v = with_lip_pairs(values);
 
   FacePose pose;
-  for (int i = 0; i < kPointCount; ++i) pose.local[static_cast<std::size_t>(i)] = face_points()[static_cast<std::size_t>(i)].neutral;
+  for (int i = 0; i < kPointCount; ++i)
+    pose.local[static_cast<std::size_t>(i)] = face_points()[static_cast<std::size_t>(i)].neutral;
   for (const Influence& in : influences()) {
     const double amount = fap(v, in.fap) * in.mm_per_unit;
     if (amount == 0) continue;

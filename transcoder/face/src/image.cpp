@@ -4,8 +4,8 @@
 #include <cairo.h>
 
 #include <algorithm>
-#include <cstring>
 #include <cstdlib>
+#include <cstring>
 
 #include "fapc/face/codes.hpp"
 
@@ -36,13 +36,14 @@ cairo_status_t take(void* closure, unsigned char* data, unsigned int length) {
 Result<std::string> encode_png(const Image& image) {
   // cairo writes from its own surface; wrap the pixels without copying (stride = width x 4).
   cairo_surface_t* surface = cairo_image_surface_create_for_data(
-      reinterpret_cast<unsigned char*>(const_cast<std::uint32_t*>(image.pixels.data())),
-      CAIRO_FORMAT_RGB24, image.width, image.height, image.width * 4);
+      reinterpret_cast<unsigned char*>(const_cast<std::uint32_t*>(image.pixels.data())), CAIRO_FORMAT_RGB24,
+      image.width, image.height, image.width * 4);
   std::string out;
   const cairo_status_t status = cairo_surface_write_to_png_stream(surface, append, &out);
   cairo_surface_destroy(surface);
   if (status != CAIRO_STATUS_SUCCESS)
-    return make_error(codes::picture::encode_failed, Location{}, std::string("cannot encode PNG: ") + cairo_status_to_string(status));
+    return make_error(codes::picture::encode_failed, Location{},
+                      std::string("cannot encode PNG: ") + cairo_status_to_string(status));
   return out;
 }
 

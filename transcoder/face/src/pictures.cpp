@@ -30,22 +30,22 @@ Status check_picture_options(const PictureOptions& o, const std::string& where) 
   const Location at = Location::whole_file(where);
   if (o.width < kMinSide || o.height < kMinSide || o.width > kMaxSide || o.height > kMaxSide)
     return make_error(codes::picture::bad_size, at,
-                      "--size " + std::to_string(o.width) + "x" + std::to_string(o.height) +
-                          ": each side must be " + std::to_string(kMinSide) + " to " +
-                          std::to_string(kMaxSide) + " pixels");
+                      "--size " + std::to_string(o.width) + "x" + std::to_string(o.height) + ": each side must be " +
+                          std::to_string(kMinSide) + " to " + std::to_string(kMaxSide) + " pixels");
   const std::string size = std::to_string(o.width) + "x" + std::to_string(o.height);
   if (std::int64_t{o.width} * o.height > o.limits.max_frame_pixels)
-    return limit_error(at, "--size " + size + " is " + std::to_string(std::int64_t{o.width} * o.height) + " pixels a picture",
-                       Limit::frame_pixels, o.limits);
+    return limit_error(
+        at, "--size " + size + " is " + std::to_string(std::int64_t{o.width} * o.height) + " pixels a picture",
+        Limit::frame_pixels, o.limits);
   if (o.frame && o.time) return make_error(codes::picture::conflicting_options, at, "give --frame or --time, not both");
   if (o.sheet && (o.frame || o.time))
     return make_error(codes::picture::conflicting_options, at, "--sheet picks its own frames; drop --frame/--time");
   if (o.frame && *o.frame < 0) return make_error(codes::picture::bad_frame, at, "--frame must be 0 or more");
   if (o.time && !(*o.time >= 0)) return make_error(codes::picture::bad_frame, at, "--time must be 0 or more seconds");
   if (o.sheet && (*o.sheet < 1 || *o.sheet > kMaxSheetFrames))
-    return make_error(codes::picture::sheet_cells, at,
-                      "--sheet " + std::to_string(*o.sheet) + ": a sheet holds 1 to " +
-                          std::to_string(kMaxSheetFrames) + " frames");
+    return make_error(
+        codes::picture::sheet_cells, at,
+        "--sheet " + std::to_string(*o.sheet) + ": a sheet holds 1 to " + std::to_string(kMaxSheetFrames) + " frames");
   if (o.sheet) {
     const int columns = static_cast<int>(std::ceil(std::sqrt(double(*o.sheet))));
     const int rows = (*o.sheet + columns - 1) / columns;
@@ -56,8 +56,10 @@ Status check_picture_options(const PictureOptions& o, const std::string& where) 
                             " would pass 16384 pixels on a side; use a smaller --size");
     const std::int64_t pixels = std::int64_t{columns} * o.width * rows * o.height;
     if (pixels > o.limits.max_sheet_pixels)
-      return limit_error(at, "a contact sheet of " + std::to_string(*o.sheet) + " cells at --size " + size + " is " +
-                                 std::to_string(pixels) + " pixels", Limit::sheet_pixels, o.limits);
+      return limit_error(at,
+                         "a contact sheet of " + std::to_string(*o.sheet) + " cells at --size " + size + " is " +
+                             std::to_string(pixels) + " pixels",
+                         Limit::sheet_pixels, o.limits);
   }
   return ok_status();
 }
@@ -85,9 +87,9 @@ Result<Image> render_picture(const FaceTrack& track, const PictureOptions& o, co
   const int columns = static_cast<int>(std::ceil(std::sqrt(double(cells))));
   const int rows = (cells + columns - 1) / columns;
   Image sheet(columns * o.width, rows * o.height);
-  cairo_surface_t* surface = cairo_image_surface_create_for_data(
-      reinterpret_cast<unsigned char*>(sheet.pixels.data()), CAIRO_FORMAT_ARGB32, sheet.width,
-      sheet.height, sheet.width * 4);
+  cairo_surface_t* surface =
+      cairo_image_surface_create_for_data(reinterpret_cast<unsigned char*>(sheet.pixels.data()), CAIRO_FORMAT_ARGB32,
+                                          sheet.width, sheet.height, sheet.width * 4);
   cairo_t* cr = cairo_create(surface);
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
@@ -114,8 +116,7 @@ Result<Image> render_picture(const FaceTrack& track, const PictureOptions& o, co
   return sheet;
 }
 
-Result<std::string> face_png(const FapSequence& sequence, const PictureOptions& options,
-                             const std::string& where) {
+Result<std::string> face_png(const FapSequence& sequence, const PictureOptions& options, const std::string& where) {
   Result<Image> picture = render_picture(FaceTrack(sequence), options, where);
   if (!picture) return picture.error();
   return encode_png(*picture);

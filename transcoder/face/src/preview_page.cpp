@@ -94,8 +94,8 @@ std::string base64(std::string_view bytes) {
   out.reserve((bytes.size() + 2) / 3 * 4);
   std::size_t i = 0;
   for (; i + 2 < bytes.size(); i += 3) {
-    const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) |
-                       (static_cast<unsigned char>(bytes[i + 1]) << 8) | static_cast<unsigned char>(bytes[i + 2]);
+    const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) | (static_cast<unsigned char>(bytes[i + 1]) << 8) |
+                       static_cast<unsigned char>(bytes[i + 2]);
     out += kAlphabet[v >> 18];
     out += kAlphabet[(v >> 12) & 63];
     out += kAlphabet[(v >> 6) & 63];
@@ -120,7 +120,8 @@ std::string preview_page(const FaceTrack& track, std::string_view webm, const Pr
   std::string faps;
   for (int fap : track.moving_faps()) {
     if (!faps.empty()) faps += ",\n";
-    faps += "{\"number\":" + std::to_string(fap) + ",\"name\":\"" + std::string(find_fap(fap)->name) + "\",\"values\":[";
+    faps +=
+        "{\"number\":" + std::to_string(fap) + ",\"name\":\"" + std::string(find_fap(fap)->name) + "\",\"values\":[";
     for (std::int64_t j = 0; j < frames; ++j) {
       if (j) faps += ',';
       faps += number(std::round(track.at_time(double(j) / rate)[static_cast<std::size_t>(fap - 1)] * 100) / 100);
@@ -131,16 +132,22 @@ std::string preview_page(const FaceTrack& track, std::string_view webm, const Pr
   std::string page;
   page.reserve((webm.size() + o.head_glb.size()) * 4 / 3 + faps.size() + 8192);
   page += "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + title + "</title>\n";
-  page += "<meta name=\"generator\" content=\"fapc render\">\n<style>\n"
-          "body{margin:0;font:14px sans-serif;background:#f4f5f7}\n"
-          "#face{display:" + std::string(o.view == PreviewView::three_d ? "none" : "block") +
-          ";position:absolute;left:0;top:0}\n#head3d{position:absolute;top:0;left:" + std::to_string(head3d_left(o)) +
-          "px}\n"
-          "#panel{position:absolute;left:0;top:" + std::to_string(o.height) + "px;padding:8px}\n"
-          "#side{position:absolute;left:" + std::to_string(o.width + head3d_left(o) + 8) + "px;top:0;max-height:" +
-          std::to_string(o.height) + "px;overflow:auto}\n"
-          "#scrub{width:" + std::to_string(kPlotWidth - 2 * kPlotMargin) + "px;margin-left:" +
-          std::to_string(kPlotMargin - 8) + "px}\ntd{padding:0 6px}\n</style></head>\n<body>\n";
+  page +=
+      "<meta name=\"generator\" content=\"fapc render\">\n<style>\n"
+      "body{margin:0;font:14px sans-serif;background:#f4f5f7}\n"
+      "#face{display:" +
+      std::string(o.view == PreviewView::three_d ? "none" : "block") +
+      ";position:absolute;left:0;top:0}\n#head3d{position:absolute;top:0;left:" + std::to_string(head3d_left(o)) +
+      "px}\n"
+      "#panel{position:absolute;left:0;top:" +
+      std::to_string(o.height) +
+      "px;padding:8px}\n"
+      "#side{position:absolute;left:" +
+      std::to_string(o.width + head3d_left(o) + 8) + "px;top:0;max-height:" + std::to_string(o.height) +
+      "px;overflow:auto}\n"
+      "#scrub{width:" +
+      std::to_string(kPlotWidth - 2 * kPlotMargin) + "px;margin-left:" + std::to_string(kPlotMargin - 8) +
+      "px}\ntd{padding:0 6px}\n</style></head>\n<body>\n";
   page += "<video id=\"face\" width=\"" + std::to_string(o.width) + "\" height=\"" + std::to_string(o.height) +
           (o.sound ? "\"" : "\" muted") + " playsinline preload=\"auto\" src=\"data:video/webm;base64,";
   page += base64(webm);
@@ -149,13 +156,14 @@ std::string preview_page(const FaceTrack& track, std::string_view webm, const Pr
   page += "<div id=\"side\"><b>" + title + "</b><table id=\"values\"></table></div>\n";
   page += "<div id=\"panel\"><button id=\"play\">play</button> <span id=\"clock\"></span><br>\n";
   char range[200];
-  std::snprintf(range, sizeof range, "<input id=\"scrub\" type=\"range\" min=\"0\" max=\"%.6g\" step=\"%.6g\" value=\"0\"><br>\n",
+  std::snprintf(range, sizeof range,
+                "<input id=\"scrub\" type=\"range\" min=\"0\" max=\"%.6g\" step=\"%.6g\" value=\"0\"><br>\n",
                 double(frames - 1) / rate, 1.0 / rate);
   page += range;
   page += "<canvas id=\"curves\" width=\"" + std::to_string(kPlotWidth) + "\" height=\"220\"></canvas></div>\n";
   page += "<script id=\"fap-data\" type=\"application/json\">{\"rate\":" + std::to_string(rate) +
-          ",\"frames\":" + std::to_string(frames) + ",\"plotMargin\":" + std::to_string(kPlotMargin) +
-          ",\"faps\":[\n" + faps + "]}</script>\n<script>";
+          ",\"frames\":" + std::to_string(frames) + ",\"plotMargin\":" + std::to_string(kPlotMargin) + ",\"faps\":[\n" +
+          faps + "]}</script>\n<script>";
   page += kScript;
   page += "</script>\n</body></html>\n";
   return page;

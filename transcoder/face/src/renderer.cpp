@@ -46,8 +46,7 @@ std::vector<Vec3> ellipsoid_samples(const Ellipsoid& e) {
   for (int i = 0; i <= 24; ++i)
     for (int j = 0; j < 48; ++j) {
       const double theta = M_PI * i / 24, phi = 2 * M_PI * j / 48;
-      out.push_back(e.centre + Vec3{e.radii.x * std::sin(theta) * std::cos(phi),
-                                    e.radii.y * std::cos(theta),
+      out.push_back(e.centre + Vec3{e.radii.x * std::sin(theta) * std::cos(phi), e.radii.y * std::cos(theta),
                                     e.radii.z * std::sin(theta) * std::sin(phi)});
     }
   return out;
@@ -69,8 +68,8 @@ void curve(cairo_t* cr, const std::vector<Pt>& p, bool closed) {
   const std::ptrdiff_t segments = closed ? std::ptrdiff_t(n) : std::ptrdiff_t(n) - 1;
   for (std::ptrdiff_t i = 0; i < segments; ++i) {
     const Pt &p0 = at(i - 1), &p1 = at(i), &p2 = at(i + 1), &p3 = at(i + 2);
-    cairo_curve_to(cr, p1.x + (p2.x - p0.x) / 6, p1.y + (p2.y - p0.y) / 6,
-                   p2.x - (p3.x - p1.x) / 6, p2.y - (p3.y - p1.y) / 6, p2.x, p2.y);
+    cairo_curve_to(cr, p1.x + (p2.x - p0.x) / 6, p1.y + (p2.y - p0.y) / 6, p2.x - (p3.x - p1.x) / 6,
+                   p2.y - (p3.y - p1.y) / 6, p2.x, p2.y);
   }
   if (closed) cairo_close_path(cr);
 }
@@ -79,8 +78,8 @@ void curve(cairo_t* cr, const std::vector<Pt>& p, bool closed) {
 void arc_through(cairo_t* cr, Pt a, Pt m, Pt b, bool move) {
   const Pt c{2 * m.x - (a.x + b.x) / 2, 2 * m.y - (a.y + b.y) / 2};
   if (move) cairo_move_to(cr, a.x, a.y);
-  cairo_curve_to(cr, a.x + 2.0 / 3 * (c.x - a.x), a.y + 2.0 / 3 * (c.y - a.y),
-                 b.x + 2.0 / 3 * (c.x - b.x), b.y + 2.0 / 3 * (c.y - b.y), b.x, b.y);
+  cairo_curve_to(cr, a.x + 2.0 / 3 * (c.x - a.x), a.y + 2.0 / 3 * (c.y - a.y), b.x + 2.0 / 3 * (c.x - b.x),
+                 b.y + 2.0 / 3 * (c.y - b.y), b.x, b.y);
 }
 
 }  // namespace
@@ -139,8 +138,10 @@ void FaceRenderer::State::feature_points() {
     if (pose.turn_direction(outward).z < -5) continue;
     const Pt c = at(p.id);
     const bool standard = !p.label.empty();
-    if (standard) cairo_set_source_rgb(cr, 0.85, 0.1, 0.1);
-    else cairo_set_source_rgb(cr, 0.45, 0.45, 0.5);
+    if (standard)
+      cairo_set_source_rgb(cr, 0.85, 0.1, 0.1);
+    else
+      cairo_set_source_rgb(cr, 0.45, 0.45, 0.5);
     cairo_arc(cr, c.x, c.y, std::max(1.5, 0.9 * scale), 0, 2 * M_PI);
     cairo_fill(cr);
     if (!standard) continue;
@@ -248,8 +249,8 @@ void FaceRenderer::State::skin() {
   set(cr, kSkinLine, 0.35);
   cairo_set_line_width(cr, 0.8 * scale);
   cairo_move_to(cr, boss.x - 8 * scale, boss.y - 4 * scale);
-  cairo_curve_to(cr, boss.x - 3 * scale, boss.y - 1 * scale, boss.x + 3 * scale, boss.y - 1 * scale,
-                 boss.x + 8 * scale, boss.y - 4 * scale);
+  cairo_curve_to(cr, boss.x - 3 * scale, boss.y - 1 * scale, boss.x + 3 * scale, boss.y - 1 * scale, boss.x + 8 * scale,
+                 boss.y - 4 * scale);
   cairo_stroke(cr);
 }
 
@@ -347,10 +348,10 @@ void FaceRenderer::State::nose() {
 }
 
 void FaceRenderer::State::mouth() {
-  const std::vector<Pt> outer = at({P::lip_l_corner_o, P::lip_t_lm_o, P::lip_t_mid_o, P::lip_t_rm_o,
-                                    P::lip_r_corner_o, P::lip_b_rm_o, P::lip_b_mid_o, P::lip_b_lm_o});
-  const std::vector<Pt> inner = at({P::lip_l_corner_i, P::lip_t_lm_i, P::lip_t_mid_i, P::lip_t_rm_i,
-                                    P::lip_r_corner_i, P::lip_b_rm_i, P::lip_b_mid_i, P::lip_b_lm_i});
+  const std::vector<Pt> outer = at({P::lip_l_corner_o, P::lip_t_lm_o, P::lip_t_mid_o, P::lip_t_rm_o, P::lip_r_corner_o,
+                                    P::lip_b_rm_o, P::lip_b_mid_o, P::lip_b_lm_o});
+  const std::vector<Pt> inner = at({P::lip_l_corner_i, P::lip_t_lm_i, P::lip_t_mid_i, P::lip_t_rm_i, P::lip_r_corner_i,
+                                    P::lip_b_rm_i, P::lip_b_mid_i, P::lip_b_lm_i});
   curve(cr, outer, true);
   set(cr, kLips);
   cairo_fill(cr);
@@ -369,7 +370,8 @@ void FaceRenderer::State::mouth() {
   set(cr, kTongue);
   cairo_fill(cr);
   const FacePose& q = pose;
-  for (const auto& [l, r, up] : {std::tuple{P::teeth_t_l, P::teeth_t_r, 1.0}, std::tuple{P::teeth_b_l, P::teeth_b_r, -1.0}}) {
+  for (const auto& [l, r, up] :
+       {std::tuple{P::teeth_t_l, P::teeth_t_r, 1.0}, std::tuple{P::teeth_b_l, P::teeth_b_r, -1.0}}) {
     const Vec3 a = q.local[static_cast<std::size_t>(l)], b = q.local[static_cast<std::size_t>(r)];
     const std::vector<Pt> band{at(q.turn(a)), at(q.turn(b)), at(q.turn(b + Vec3{0, 7 * up, -2})),
                                at(q.turn(a + Vec3{0, 7 * up, -2}))};
@@ -410,7 +412,7 @@ void FaceRenderer::State::draw_all() {
   struct Item {
     Part part;
     Vec3 reference;
-    Vec3 normal;    // {0,0,0}: always drawn fully
+    Vec3 normal;  // {0,0,0}: always drawn fully
     double depth = 0;
     double alpha = 1;
   };
@@ -441,18 +443,42 @@ void FaceRenderer::State::draw_all() {
     if (item.alpha <= 0) continue;
     if (item.alpha < 1) cairo_push_group(cr);
     switch (item.part) {
-      case Part::hair: ellipsoid(hair(), kHair, false); break;
-      case Part::skin: skin(); break;
-      case Part::ear_l: ear(true); break;
-      case Part::ear_r: ear(false); break;
-      case Part::brow_l: brow(true); break;
-      case Part::brow_r: brow(false); break;
-      case Part::eye_l: eye(true); break;
-      case Part::eye_r: eye(false); break;
-      case Part::nose: nose(); break;
-      case Part::mouth: mouth(); break;
-      case Part::cheek_l: cheek(true); break;
-      case Part::cheek_r: cheek(false); break;
+      case Part::hair:
+        ellipsoid(hair(), kHair, false);
+        break;
+      case Part::skin:
+        skin();
+        break;
+      case Part::ear_l:
+        ear(true);
+        break;
+      case Part::ear_r:
+        ear(false);
+        break;
+      case Part::brow_l:
+        brow(true);
+        break;
+      case Part::brow_r:
+        brow(false);
+        break;
+      case Part::eye_l:
+        eye(true);
+        break;
+      case Part::eye_r:
+        eye(false);
+        break;
+      case Part::nose:
+        nose();
+        break;
+      case Part::mouth:
+        mouth();
+        break;
+      case Part::cheek_l:
+        cheek(true);
+        break;
+      case Part::cheek_r:
+        cheek(false);
+        break;
     }
     if (item.alpha < 1) {
       cairo_pop_group_to_source(cr);

@@ -8,7 +8,7 @@ namespace {
 constexpr unsigned char kDigitSegments[10] = {0x3f, 0x06, 0x5b, 0x4f, 0x66, 0x6d, 0x7d, 0x07, 0x7f, 0x6f};
 
 void segments(cairo_t* cr, unsigned char bits, double x, double y, double w, double h) {
-  const double s[7][4] = {{0, 0, w, 0},     {w, 0, w, h / 2}, {w, h / 2, w, h}, {0, h, w, h},
+  const double s[7][4] = {{0, 0, w, 0},     {w, 0, w, h / 2}, {w, h / 2, w, h},    {0, h, w, h},
                           {0, h / 2, 0, h}, {0, 0, 0, h / 2}, {0, h / 2, w, h / 2}};
   for (int i = 0; i < 7; ++i)
     if (bits & (1 << i)) {

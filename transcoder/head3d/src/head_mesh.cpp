@@ -17,26 +17,57 @@ using face::P;
 
 std::string_view kMaterialNames[] = {"skin", "hair", "lips", "mouth", "teeth", "tongue", "sclera", "iris", "pupil"};
 // Linear RGB base colours, our own.
-constexpr std::array<double, 3> kMaterialColours[] = {
-    {0.80, 0.52, 0.40}, {0.16, 0.09, 0.05}, {0.62, 0.22, 0.22}, {0.22, 0.03, 0.04}, {0.90, 0.88, 0.80},
-    {0.65, 0.20, 0.22}, {0.92, 0.92, 0.90}, {0.12, 0.25, 0.42}, {0.01, 0.01, 0.01}};
+constexpr std::array<double, 3> kMaterialColours[] = {{0.80, 0.52, 0.40}, {0.16, 0.09, 0.05}, {0.62, 0.22, 0.22},
+                                                      {0.22, 0.03, 0.04}, {0.90, 0.88, 0.80}, {0.65, 0.20, 0.22},
+                                                      {0.92, 0.92, 0.90}, {0.12, 0.25, 0.42}, {0.01, 0.01, 0.01}};
 
 // Which side of an opening a feature point is on (the lower lip and everything the jaw carries are
 // below the mouth; a lid and its brow are above the eye, the lower lid below).
 Side side_of_point(P p) {
   switch (p) {
-    case P::lip_t_mid_i: case P::lip_t_lm_i: case P::lip_t_rm_i: case P::lip_t_mid_o: case P::lip_t_lm_o:
-    case P::lip_t_rm_o: case P::teeth_t_l: case P::teeth_t_r: case P::nose_base: case P::nose_l: case P::nose_r:
+    case P::lip_t_mid_i:
+    case P::lip_t_lm_i:
+    case P::lip_t_rm_i:
+    case P::lip_t_mid_o:
+    case P::lip_t_lm_o:
+    case P::lip_t_rm_o:
+    case P::teeth_t_l:
+    case P::teeth_t_r:
+    case P::nose_base:
+    case P::nose_l:
+    case P::nose_r:
       return Side::mouth_upper;
-    case P::lip_b_mid_i: case P::lip_b_lm_i: case P::lip_b_rm_i: case P::lip_b_mid_o: case P::lip_b_lm_o:
-    case P::lip_b_rm_o: case P::teeth_b_l: case P::teeth_b_r: case P::tongue_tip: case P::tongue_body:
-    case P::chin_bottom: case P::chin_boss: case P::chin_l: case P::chin_r:
+    case P::lip_b_mid_i:
+    case P::lip_b_lm_i:
+    case P::lip_b_rm_i:
+    case P::lip_b_mid_o:
+    case P::lip_b_lm_o:
+    case P::lip_b_rm_o:
+    case P::teeth_b_l:
+    case P::teeth_b_r:
+    case P::tongue_tip:
+    case P::tongue_body:
+    case P::chin_bottom:
+    case P::chin_boss:
+    case P::chin_l:
+    case P::chin_r:
       return Side::mouth_lower;
-    case P::lid_t_l: case P::brow_l_inner: case P::brow_l_mid: case P::brow_l_outer: return Side::eye_l_upper;
-    case P::lid_b_l: return Side::eye_l_lower;
-    case P::lid_t_r: case P::brow_r_inner: case P::brow_r_mid: case P::brow_r_outer: return Side::eye_r_upper;
-    case P::lid_b_r: return Side::eye_r_lower;
-    default: return Side::any;
+    case P::lid_t_l:
+    case P::brow_l_inner:
+    case P::brow_l_mid:
+    case P::brow_l_outer:
+      return Side::eye_l_upper;
+    case P::lid_b_l:
+      return Side::eye_l_lower;
+    case P::lid_t_r:
+    case P::brow_r_inner:
+    case P::brow_r_mid:
+    case P::brow_r_outer:
+      return Side::eye_r_upper;
+    case P::lid_b_r:
+      return Side::eye_r_lower;
+    default:
+      return Side::any;
   }
 }
 
@@ -46,10 +77,10 @@ struct SidedAnchor {
 };
 
 // Points of the skull no FAP moves: they hold the back and the top of the head still.
-constexpr Vec3 kFixedPoints[] = {{0, 121, -22},  {60, 60, -40},  {-60, 60, -40}, {0, 60, -100}, {0, 20, -106},
-                                 {72, 10, -40},  {-72, 10, -40}, {50, 20, -90},  {-50, 20, -90}, {0, -40, -72},
-                                 {45, -50, -55}, {-45, -50, -55}, {0, -110, -20}, {0, -90, -50}, {60, 90, -60},
-                                 {-60, 90, -60}, {0, 100, 0},    {40, 100, 0},   {-40, 100, 0},  {0, 40, 37}};
+constexpr Vec3 kFixedPoints[] = {{0, 121, -22},  {60, 60, -40},   {-60, 60, -40}, {0, 60, -100},  {0, 20, -106},
+                                 {72, 10, -40},  {-72, 10, -40},  {50, 20, -90},  {-50, 20, -90}, {0, -40, -72},
+                                 {45, -50, -55}, {-45, -50, -55}, {0, -110, -20}, {0, -90, -50},  {60, 90, -60},
+                                 {-60, 90, -60}, {0, 100, 0},     {40, 100, 0},   {-40, 100, 0},  {0, 40, 37}};
 
 std::vector<SidedAnchor> anchors() {
   std::vector<SidedAnchor> out;
@@ -115,7 +146,8 @@ HeadMesh build() {
   mesh.parts = builder.parts;
   std::sort(mesh.parts.begin(), mesh.parts.end(), [](const Part& a, const Part& b) { return a.material < b.material; });
   mesh.normals = smooth_normals(mesh.positions, mesh.parts);
-  for (std::size_t v = 0; v < mesh.positions.size(); ++v) mesh.bindings.push_back(bind(mesh.positions[v], builder.sides[v], sided));
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v)
+    mesh.bindings.push_back(bind(mesh.positions[v], builder.sides[v], sided));
   // The vertex that stands for each feature point: the nearest one on the point's side (or on no
   // side: away from the openings).
   for (const face::FacePoint& fp : face::face_points()) {
@@ -145,8 +177,8 @@ EyeballMesh build_eyeball() {
     double from, to;
     int rings;
   };
-  const Band bands[] = {{Material::pupil, 0, pupil, 2}, {Material::iris, pupil, iris, 3},
-                        {Material::sclera, iris, std::numbers::pi, 12}};
+  const Band bands[] = {
+      {Material::pupil, 0, pupil, 2}, {Material::iris, pupil, iris, 3}, {Material::sclera, iris, std::numbers::pi, 12}};
   auto at = [&](double polar, double azimuth) {
     return Vec3{r * std::sin(polar) * std::cos(azimuth), r * std::sin(polar) * std::sin(azimuth), r * std::cos(polar)};
   };
@@ -156,10 +188,13 @@ EyeballMesh build_eyeball() {
       const double polar = band.from + (band.to - band.from) * k / band.rings;
       std::vector<std::uint32_t> ring;
       const bool pole = polar == 0 || std::abs(polar - std::numbers::pi) < 1e-12;
-      for (int s = 0; s < (pole ? 1 : kSegments); ++s) ring.push_back(b.add(at(polar, 2 * std::numbers::pi * s / kSegments), Side::any));
+      for (int s = 0; s < (pole ? 1 : kSegments); ++s)
+        ring.push_back(b.add(at(polar, 2 * std::numbers::pi * s / kSegments), Side::any));
       rings.push_back(ring);
     }
-    auto id = [&](std::size_t ring, int i) { return rings[ring][static_cast<std::size_t>(i % kSegments) % rings[ring].size()]; };
+    auto id = [&](std::size_t ring, int i) {
+      return rings[ring][static_cast<std::size_t>(i % kSegments) % rings[ring].size()];
+    };
     for (std::size_t k = 0; k + 1 < rings.size(); ++k)
       for (int s = 0; s < kSegments; ++s) {
         const std::uint32_t a = id(k, s), c = id(k + 1, s + 1), d = id(k + 1, s);

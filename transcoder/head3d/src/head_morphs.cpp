@@ -150,7 +150,7 @@ void for_each_head_frame(const FapSequence& sequence, const std::function<void(c
   bool has_viseme = false, has_expression = false;
   std::int64_t next = 0;  // the next grid frame to show
   HeadFrame shown = frame_of(held, viseme, false, expression, false);
-  bool pending = false;   // `shown` is frame next - 1 and not yet visited (a repeated number may replace it)
+  bool pending = false;  // `shown` is frame next - 1 and not yet visited (a repeated number may replace it)
   for (const FapFrame& frame : sequence.frames) {
     if (frame.number < 0) continue;
     if (frame.number >= next) {

@@ -43,7 +43,8 @@ void add_arch(MeshBuilder& mesh, Side side, Vec3 left_edge, double bottom, doubl
     for (std::size_t k = 0; k < 4; ++k) {
       const std::uint32_t a = sections[i][k], b = sections[i][(k + 1) % 4];
       const std::uint32_t c = sections[i + 1][(k + 1) % 4], d = sections[i + 1][k];
-      const Vec3 out = (0.25 * (mesh.positions[a] + mesh.positions[b] + mesh.positions[c] + mesh.positions[d])) - centre;
+      const Vec3 out =
+          (0.25 * (mesh.positions[a] + mesh.positions[b] + mesh.positions[c] + mesh.positions[d])) - centre;
       facing(a, b, c, out);
       facing(a, c, d, out);
     }
@@ -74,7 +75,8 @@ void build_ears(MeshBuilder& mesh) {
     const Vec3 front = face::neutral(left ? P::ear_l_front : P::ear_r_front);
     const Vec3 back = face::neutral(left ? P::ear_l_back : P::ear_r_back);
     const Vec3 centre{(t.x + lobe.x) / 2 + (left ? 2 : -2), (t.y + lobe.y) / 2, (front.z + back.z) / 2};
-    add_ellipsoid(mesh, Material::skin, Side::any, centre, Vec3{5, (t.y - lobe.y) / 2 + 1, (front.z - back.z) / 2 + 1}, 8, 14);
+    add_ellipsoid(mesh, Material::skin, Side::any, centre, Vec3{5, (t.y - lobe.y) / 2 + 1, (front.z - back.z) / 2 + 1},
+                  8, 14);
   }
 }
 

@@ -26,10 +26,10 @@ struct Section {
 // Our own numbers, read off the feature points: the chin, the jaw angles, the cheeks, the brows,
 // the hairline and the top of the head (docs/render.md lists the points).
 constexpr Section kSections[] = {
-    {-114, 0, -5, -5},    {-108, 24, 22, -40},  {-100, 38, 32, -52}, {-90, 50, 35, -58},
-    {-72, 62, 37, -62},   {-66, 62, 38, -64},   {-40, 64, 38, -72},  {-20, 68, 40, -85},
-    {0, 72, 40, -100},    {17, 74, 40, -105},   {40, 74, 37, -106},  {66, 68, 28, -100},
-    {90, 56, 10, -85},    {110, 35, -8, -60},   {118, 20, -14, -42}, {122, 0, -22, -22},
+    {-114, 0, -5, -5},  {-108, 24, 22, -40}, {-100, 38, 32, -52}, {-90, 50, 35, -58},
+    {-72, 62, 37, -62}, {-66, 62, 38, -64},  {-40, 64, 38, -72},  {-20, 68, 40, -85},
+    {0, 72, 40, -100},  {17, 74, 40, -105},  {40, 74, 37, -106},  {66, 68, 28, -100},
+    {90, 56, 10, -85},  {110, 35, -8, -60},  {118, 20, -14, -42}, {122, 0, -22, -22},
 };
 
 double hermite(double y, double Section::*field) {
@@ -44,8 +44,8 @@ double hermite(double y, double Section::*field) {
   };
   const double h = s1.y - s0.y, t = std::clamp((y - s0.y) / h, 0.0, 1.0);
   const double t2 = t * t, t3 = t2 * t;
-  return (2 * t3 - 3 * t2 + 1) * (s0.*field) + (t3 - 2 * t2 + t) * h * slope(i) +
-         (-2 * t3 + 3 * t2) * (s1.*field) + (t3 - t2) * h * slope(i + 1);
+  return (2 * t3 - 3 * t2 + 1) * (s0.*field) + (t3 - 2 * t2 + t) * h * slope(i) + (-2 * t3 + 3 * t2) * (s1.*field) +
+         (t3 - t2) * h * slope(i + 1);
 }
 
 struct Ellipse {
@@ -67,8 +67,8 @@ double angle_of(Vec3 p) {
 
 // The offset field: Gaussian radial basis functions over (lambda x kArc, y) that move the
 // sections onto the feature points exactly (x and z offsets interpolated separately).
-constexpr double kArc = 60;    // millimetres per radian of lambda in the interpolation plane
-constexpr double kSigma = 9;   // width of each basis function, millimetres
+constexpr double kArc = 60;   // millimetres per radian of lambda in the interpolation plane
+constexpr double kSigma = 9;  // width of each basis function, millimetres
 struct OffsetField {
   std::vector<double> u, v, cx, cz;
   Vec3 at(double y, double lambda) const {
@@ -110,14 +110,13 @@ std::vector<double> solve(std::vector<std::vector<double>> a, std::vector<double
 // The feature points the skin passes through (not the lids, which lie on the eyeball's sphere,
 // nor the ears, which are parts of their own).
 constexpr P kSkinPoints[] = {
-    P::chin_bottom, P::chin_boss, P::chin_l, P::chin_r, P::jaw_angle_l, P::jaw_angle_r,
-    P::lip_t_mid_i, P::lip_t_lm_i, P::lip_t_rm_i, P::lip_l_corner_i, P::lip_r_corner_i,
-    P::lip_t_mid_o, P::lip_b_mid_o, P::lip_l_corner_o, P::lip_r_corner_o, P::lip_t_lm_o,
-    P::lip_t_rm_o, P::lip_b_lm_o, P::lip_b_rm_o, P::eye_l_outer, P::eye_l_inner, P::eye_r_outer,
-    P::eye_r_inner, P::brow_l_inner, P::brow_r_inner, P::brow_l_mid, P::brow_r_mid,
-    P::brow_l_outer, P::brow_r_outer, P::cheek_l_side, P::cheek_r_side, P::cheek_l, P::cheek_r,
-    P::cheek_l_upper, P::cheek_r_upper, P::nose_l, P::nose_r, P::nose_tip, P::nose_base,
-    P::nose_bridge, P::hairline, P::head_top};
+    P::chin_bottom,  P::chin_boss,      P::chin_l,         P::chin_r,         P::jaw_angle_l,    P::jaw_angle_r,
+    P::lip_t_mid_i,  P::lip_t_lm_i,     P::lip_t_rm_i,     P::lip_l_corner_i, P::lip_r_corner_i, P::lip_t_mid_o,
+    P::lip_b_mid_o,  P::lip_l_corner_o, P::lip_r_corner_o, P::lip_t_lm_o,     P::lip_t_rm_o,     P::lip_b_lm_o,
+    P::lip_b_rm_o,   P::eye_l_outer,    P::eye_l_inner,    P::eye_r_outer,    P::eye_r_inner,    P::brow_l_inner,
+    P::brow_r_inner, P::brow_l_mid,     P::brow_r_mid,     P::brow_l_outer,   P::brow_r_outer,   P::cheek_l_side,
+    P::cheek_r_side, P::cheek_l,        P::cheek_r,        P::cheek_l_upper,  P::cheek_r_upper,  P::nose_l,
+    P::nose_r,       P::nose_tip,       P::nose_base,      P::nose_bridge,    P::hairline,       P::head_top};
 
 OffsetField offset_field() {
   OffsetField f;
@@ -177,14 +176,11 @@ bool inside_lips(Vec3 c) {
   const Vec3 corner = face::neutral(P::lip_l_corner_o), top_mid = face::neutral(P::lip_t_lm_o),
              bottom_mid = face::neutral(P::lip_b_lm_o);
   if (ax > corner.x || c.z < 10) return false;
-  auto between = [&](double y0, double y1, double x0, double x1) {
-    return y0 + (y1 - y0) * (ax - x0) / (x1 - x0);
-  };
+  auto between = [&](double y0, double y1, double x0, double x1) { return y0 + (y1 - y0) * (ax - x0) / (x1 - x0); };
   const double top = ax < top_mid.x ? between(face::neutral(P::lip_t_mid_o).y, top_mid.y, 0, top_mid.x)
-                                     : between(top_mid.y, corner.y, top_mid.x, corner.x);
-  const double bottom = ax < bottom_mid.x
-                            ? between(face::neutral(P::lip_b_mid_o).y, bottom_mid.y, 0, bottom_mid.x)
-                            : between(bottom_mid.y, corner.y, bottom_mid.x, corner.x);
+                                    : between(top_mid.y, corner.y, top_mid.x, corner.x);
+  const double bottom = ax < bottom_mid.x ? between(face::neutral(P::lip_b_mid_o).y, bottom_mid.y, 0, bottom_mid.x)
+                                          : between(bottom_mid.y, corner.y, bottom_mid.x, corner.x);
   return c.y <= top && c.y >= bottom;
 }
 
@@ -305,7 +301,8 @@ void build_skin(MeshBuilder& mesh, std::vector<std::pair<std::uint32_t, int>>& l
   for (int r = 0; r + 1 < rows; ++r)
     for (int j = 0; j < kColumns; ++j) {
       // The row below a quad uses the upper vertices of an opening; the row above the lower ones.
-      const std::uint32_t a = at(upper, r, j), b = at(upper, r, j + 1), c = at(grid, r + 1, j + 1), d = at(grid, r + 1, j);
+      const std::uint32_t a = at(upper, r, j), b = at(upper, r, j + 1), c = at(grid, r + 1, j + 1),
+                          d = at(grid, r + 1, j);
       tri(a, b, c);
       tri(a, c, d);
     }

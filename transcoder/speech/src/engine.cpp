@@ -118,8 +118,9 @@ const Engine& started() {
 }
 
 bool plain_name(const std::string& s) {
-  return !s.empty() && s.size() <= 40 &&
-         std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_'; });
+  return !s.empty() && s.size() <= 40 && std::all_of(s.begin(), s.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_';
+  });
 }
 
 // The synthesis itself, run in the child (speak() checked the names and the rate). srand: the
@@ -142,7 +143,8 @@ void spoken_in_this_process(const EngineRequest& request, EngineOutput& into) {
   for (const std::string& piece : speakable_pieces(request.text)) {
     const std::size_t first_phoneme = into.phonemes.size();
     const auto offset_ms = static_cast<int>(into.samples.size() * 1000 / static_cast<std::size_t>(sample_rate));
-    const espeak_ERROR status = espeak_Synth(piece.c_str(), piece.size() + 1, 0, POS_CHARACTER, 0, espeakCHARS_UTF8, nullptr, nullptr);
+    const espeak_ERROR status =
+        espeak_Synth(piece.c_str(), piece.size() + 1, 0, POS_CHARACTER, 0, espeakCHARS_UTF8, nullptr, nullptr);
     for (std::size_t i = first_phoneme; i < into.phonemes.size(); ++i) into.phonemes[i].second += offset_ms;
     if (into.stop != EngineOutput::Stop::spoken) return;
     if (status != EE_OK) {
@@ -190,40 +192,50 @@ Result<Utterance> speak(const SpeechRequest& request) {
   const std::lock_guard lock(engine_mutex());
   const Engine& engine = started();
   if (engine.sample_rate == 0)
-    return make_error(codes::speech::engine_missing, request.where, "the speech engine (eSpeak NG) could not start: is espeak-ng-data installed?");
+    return make_error(codes::speech::engine_missing, request.where,
+                      "the speech engine (eSpeak NG) could not start: is espeak-ng-data installed?");
   if (!plain_name(request.language))
-    return make_error(codes::speech::bad_language, request.where, "'" + request.language + "' is not a language name (like en, en-us, fr, de)");
-  if (!request.voice.empty() &&
-      (!plain_name(request.voice) || !std::filesystem::is_regular_file(engine.data / "voices" / "!v" / request.voice))) {
+    return make_error(codes::speech::bad_language, request.where,
+                      "'" + request.language + "' is not a language name (like en, en-us, fr, de)");
+  if (!request.voice.empty() && (!plain_name(request.voice) ||
+                                 !std::filesystem::is_regular_file(engine.data / "voices" / "!v" / request.voice))) {
     return make_error(codes::speech::unknown_voice, request.where,
-                      "unknown voice '" + request.voice + "' (voice variants of eSpeak NG: m1..m7, f1..f5, klatt, whisper, ...; `espeak-ng --voices=variant` lists them)");
+                      "unknown voice '" + request.voice +
+                          "' (voice variants of eSpeak NG: m1..m7, f1..f5, klatt, whisper, ...; `espeak-ng "
+                          "--voices=variant` lists them)");
   }
   const std::string language = lower(request.language);
   if (engine.mbrola.count(language) != 0 || language.rfind("mb-", 0) == 0)
     return make_error(codes::speech::mbrola_voice, request.where,
-                      "'" + request.language + "' is an MBROLA voice: fapc speaks only with eSpeak NG's own voices "
-                      "(an MBROLA voice runs an outside program; `espeak-ng --voices` lists the others)");
+                      "'" + request.language +
+                          "' is an MBROLA voice: fapc speaks only with eSpeak NG's own voices "
+                          "(an MBROLA voice runs an outside program; `espeak-ng --voices` lists the others)");
   if (engine.own.count(language) == 0)
     return make_error(codes::speech::unknown_language, request.where,
                       "unknown language '" + request.language + "' (`espeak-ng --voices` lists the languages)");
   const int rate = static_cast<int>(request.words_per_minute + 0.5);
   if (rate < espeakRATE_MINIMUM || rate > espeakRATE_MAXIMUM)
-    return make_error(codes::speech::rate_out_of_range, request.where, "the speech rate " + std::to_string(rate) + " words per minute is outside 80 to 450");
+    return make_error(codes::speech::rate_out_of_range, request.where,
+                      "the speech rate " + std::to_string(rate) + " words per minute is outside 80 to 450");
 
   const auto max_samples = static_cast<std::size_t>(std::max(0.0, request.max_seconds) * engine.sample_rate);
   // Started here when nobody started it earlier (start_engine_process): this process may run
   // other threads by now, a risk taken once, never again for its utterances.
   if (start_speaker(kSpeakerWork, true) != SpeakerStart::started)
-    return make_error(codes::speech::engine_failed, request.where, std::string("the speech engine (eSpeak NG) could not start a process (") + std::strerror(errno) + ")");
+    return make_error(
+        codes::speech::engine_failed, request.where,
+        std::string("the speech engine (eSpeak NG) could not start a process (") + std::strerror(errno) + ")");
   const ForkedOutcome forked =
       ask_speaker(kSpeakerWork, encode(EngineRequest{request.language, request.voice, rate, max_samples, request.text}),
                   // The samples, and a generous bound on the events (a few per character of text).
                   max_samples * sizeof(std::int16_t) + 64 * request.text.size() + 4096, kMaxEngineMessageBytes);
   if (forked.end != ForkedOutcome::End::finished)
-    return make_error(codes::speech::engine_failed, request.where, "the speech engine (eSpeak NG) " + failure(forked) + " on this text");
+    return make_error(codes::speech::engine_failed, request.where,
+                      "the speech engine (eSpeak NG) " + failure(forked) + " on this text");
   std::optional<EngineOutput> collected = decode_engine_output(forked.output);
   if (!collected)
-    return make_error(codes::speech::engine_failed, request.where, "the speech engine (eSpeak NG) sent back a malformed result");
+    return make_error(codes::speech::engine_failed, request.where,
+                      "the speech engine (eSpeak NG) sent back a malformed result");
   switch (collected->stop) {
     case EngineOutput::Stop::spoken:
       break;
@@ -237,8 +249,9 @@ Result<Utterance> speak(const SpeechRequest& request) {
       return make_error(codes::limit::speech_seconds, request.where,
                         "the speech would last more than " + std::to_string(request.max_seconds) + " s");
     case EngineOutput::Stop::synth_failed:
-      return make_error(codes::speech::engine_failed, request.where,
-                        "eSpeak NG failed to synthesise this text (error " + std::to_string(collected->synth_status) + ")");
+      return make_error(
+          codes::speech::engine_failed, request.where,
+          "eSpeak NG failed to synthesise this text (error " + std::to_string(collected->synth_status) + ")");
   }
   EngineOutput& spoken = *collected;
 
@@ -260,8 +273,9 @@ Result<Utterance> speak(const SpeechRequest& request) {
     p.viseme = viseme_of_espeak_phoneme(request.language, name);
     if (p.viseme < 0) {
       if (unknown.insert(name).second)
-        out.warnings.push_back(make_warning(request.where, "the speech engine's phoneme '" + name + "' (" + request.language +
-                                                               ") has no viseme in fapc's table: the mouth keeps the shape around it"));
+        out.warnings.push_back(
+            make_warning(request.where, "the speech engine's phoneme '" + name + "' (" + request.language +
+                                            ") has no viseme in fapc's table: the mouth keeps the shape around it"));
       p.viseme = 0;
     }
     out.phonemes.push_back(std::move(p));

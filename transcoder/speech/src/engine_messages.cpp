@@ -29,12 +29,14 @@ Diagnostics engine_message_warnings(std::string_view messages, std::size_t dropp
     messages.remove_prefix(end == std::string_view::npos ? messages.size() : end + 1);
     while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.remove_suffix(1);
     if (line.empty() || !seen.insert(line).second) continue;
-    out.push_back(make_warning(codes::speech::engine_message, where,
-                               "the speech engine (eSpeak NG) reported: " + quoted(line) + " (the voice may not sound as it should)"));
+    out.push_back(make_warning(
+        codes::speech::engine_message, where,
+        "the speech engine (eSpeak NG) reported: " + quoted(line) + " (the voice may not sound as it should)"));
   }
   if (dropped > 0)
-    out.push_back(make_warning(codes::speech::engine_message, where,
-                               "the speech engine (eSpeak NG) wrote " + std::to_string(dropped) + " more bytes of messages, not shown"));
+    out.push_back(make_warning(
+        codes::speech::engine_message, where,
+        "the speech engine (eSpeak NG) wrote " + std::to_string(dropped) + " more bytes of messages, not shown"));
   return out;
 }
 

@@ -35,7 +35,6 @@ struct ForkedOutcome {
 // output). Call it only from a process with a single thread, as the speaker is
 // (speaker_process.hpp): the child has only the calling thread, and a lock another thread held
 // at the fork would never be released there.
-ForkedOutcome call_in_child(const std::function<std::string()>& work, std::size_t max_output,
-                            std::size_t max_messages);
+ForkedOutcome call_in_child(const std::function<std::string()>& work, std::size_t max_output, std::size_t max_messages);
 
 }  // namespace fapc::speech

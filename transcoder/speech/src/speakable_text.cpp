@@ -31,7 +31,9 @@ std::size_t assigned_character(std::string_view s, std::size_t i) {
   const char32_t shortest[] = {0, 0, 0x80, 0x800, 0x10000};
   if (code < shortest[length] || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) return 0;
   // Without the C.UTF-8 locale (it is built into glibc since 2.35) every well-formed one passes.
-  if (utf8 != locale_t{} && !iswprint_l(static_cast<wint_t>(code), utf8) && !iswspace_l(static_cast<wint_t>(code), utf8)) return 0;
+  if (utf8 != locale_t{} && !iswprint_l(static_cast<wint_t>(code), utf8) &&
+      !iswspace_l(static_cast<wint_t>(code), utf8))
+    return 0;
   return length;
 }
 

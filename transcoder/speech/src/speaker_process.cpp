@@ -80,8 +80,7 @@ bool receive_bytes(int fd, std::string& into, std::uint64_t max_size) {
     const std::uint64_t head[] = {static_cast<std::uint64_t>(out.end),
                                   static_cast<std::uint64_t>(static_cast<std::int64_t>(out.detail)),
                                   out.messages_dropped};
-    if (!send_all(fd, head, sizeof head) || !send_bytes(fd, out.output) || !send_bytes(fd, out.messages))
-      ::_exit(0);
+    if (!send_all(fd, head, sizeof head) || !send_bytes(fd, out.output) || !send_bytes(fd, out.messages)) ::_exit(0);
   }
 }
 
@@ -90,7 +89,7 @@ struct Speakers {
   std::mutex mutex;
   struct Entry {
     std::string (*serve)(std::string_view) = nullptr;
-    pid_t owner = 0;  // the process that started it
+    pid_t owner = 0;          // the process that started it
     std::atomic<int> fd{-1};  // the owner's end of the socket; -1 once it failed
   };
   Entry entries[kMaxSpeakers];

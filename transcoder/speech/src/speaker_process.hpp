@@ -17,7 +17,7 @@
 namespace fapc::speech {
 
 struct SpeakerWork {
-  void (*prepare)();                            // run in the speaker before its first child
+  void (*prepare)();                               // run in the speaker before its first child
   std::string (*serve)(std::string_view request);  // run in a child, once per request
 };
 

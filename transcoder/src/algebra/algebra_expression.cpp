@@ -30,8 +30,8 @@ struct Term {
 };
 
 bool name_char(char c) {
-  return !std::isspace(static_cast<unsigned char>(c)) && c != '+' && c != '*' && c != '|' &&
-         c != '[' && c != ']' && c != '(' && c != ')' && c != '@' && c != '"' && c != '>';
+  return !std::isspace(static_cast<unsigned char>(c)) && c != '+' && c != '*' && c != '|' && c != '[' && c != ']' &&
+         c != '(' && c != ')' && c != '@' && c != '"' && c != '>';
 }
 
 // A state meets an animation: the state holds on every slot of the animation's grid.
@@ -54,8 +54,11 @@ class Evaluator {
     Result<Term> result = overlap();
     if (!result) return result.error();
     skip_blanks();
-    if (at_ < text_.size()) return error(codes::algebra::unexpected_character, at_, "unexpected '" + std::string(1, text_[at_]) + "'");
-    if (result->priority) return error(codes::algebra::priority_outside_overlap, static_cast<std::size_t>(result->column - 1), "'@' gives a priority to an operand of '|'; there is no '|' here");
+    if (at_ < text_.size())
+      return error(codes::algebra::unexpected_character, at_, "unexpected '" + std::string(1, text_[at_]) + "'");
+    if (result->priority)
+      return error(codes::algebra::priority_outside_overlap, static_cast<std::size_t>(result->column - 1),
+                   "'@' gives a priority to an operand of '|'; there is no '|' here");
     if (result->mask) return masked(*result);
     return result->value;
   }
@@ -104,14 +107,16 @@ class Evaluator {
                   "the operators up to here make %.15g frames in all, more than %d times the frame limit of %lld "
                   "(--max-frames N raises it)",
                   made_, kWorkFactor, static_cast<long long>(max_frames_));
-    Diagnostic d = make_error(codes::limit::frames, Location::text("<expression>", 1, static_cast<int>(offset) + 1), what);
+    Diagnostic d =
+        make_error(codes::limit::frames, Location::text("<expression>", 1, static_cast<int>(offset) + 1), what);
     d.source_line = std::string(text_);
     return d;
   }
   Diagnostic frames_limit(std::size_t offset, const std::string& what) const {
     Limits limits;
     limits.max_frames = max_frames_;
-    Diagnostic d = limit_error(Location::text("<expression>", 1, static_cast<int>(offset) + 1), what, Limit::frames, limits);
+    Diagnostic d =
+        limit_error(Location::text("<expression>", 1, static_cast<int>(offset) + 1), what, Limit::frames, limits);
     d.source_line = std::string(text_);
     return d;
   }
@@ -138,7 +143,8 @@ class Evaluator {
     const std::size_t start = at_;
     double value = 0;
     const auto [end, status] = std::from_chars(text_.data() + at_, text_.data() + text_.size(), value);
-    if (status != std::errc{} || !std::isfinite(value)) return error(codes::algebra::expected_number, start, "expected a number");
+    if (status != std::errc{} || !std::isfinite(value))
+      return error(codes::algebra::expected_number, start, "expected a number");
     at_ = static_cast<std::size_t>(end - text_.data());
     return value;
   }
@@ -170,14 +176,16 @@ class Evaluator {
     std::vector<LayeredAnimation> layers;
     for (const Term& t : terms) {
       if (!t.priority) {
-        return error(codes::algebra::priority_missing, static_cast<std::size_t>(t.column - 1), "every operand of '|' needs a priority ('@2')");
+        return error(codes::algebra::priority_missing, static_cast<std::size_t>(t.column - 1),
+                     "every operand of '|' needs a priority ('@2')");
       }
-      layers.push_back(LayeredAnimation{
-          t.value.state ? broadcast(*t.value.state, grid ? *grid : Animation{}) : t.value.animation,
-          t.mask.value_or(Mask::all()), *t.priority});
+      layers.push_back(
+          LayeredAnimation{t.value.state ? broadcast(*t.value.state, grid ? *grid : Animation{}) : t.value.animation,
+                           t.mask.value_or(Mask::all()), *t.priority});
     }
     Result<Animation> folded = fapc::algebra::overlap(layers);
-    if (!folded) return retold_at(folded.error(), static_cast<std::size_t>(terms.front().column - 1), folded.error().message);
+    if (!folded)
+      return retold_at(folded.error(), static_cast<std::size_t>(terms.front().column - 1), folded.error().message);
     Term out;
     out.column = terms.front().column;
     if (!grid) {
@@ -199,7 +207,8 @@ class Evaluator {
       if (accept("[")) {
         Result<double> weight = number();
         if (!weight) return weight.error();
-        if (*weight < 0 || *weight > 1) return error(codes::algebra::weight_out_of_range, at, "the sum's weight must be within 0..1");
+        if (*weight < 0 || *weight > 1)
+          return error(codes::algebra::weight_out_of_range, at, "the sum's weight must be within 0..1");
         v = *weight;
         if (!accept("]")) return error(codes::algebra::syntax, at_, "expected ']' after the sum's weight");
       }
@@ -208,7 +217,8 @@ class Evaluator {
       if (auto bad = overlap_only(*left); bad) return *bad;
       if (auto bad = overlap_only(*right); bad) return *bad;
       if (auto bad = too_many_frames(at, {&left->value, &right->value})) return *bad;
-      left->value = combine(left->value, right->value, [v](const auto& s, const auto& t) { return fapc::algebra::sum(s, t, v); });
+      left->value =
+          combine(left->value, right->value, [v](const auto& s, const auto& t) { return fapc::algebra::sum(s, t, v); });
     }
   }
 
@@ -255,7 +265,9 @@ class Evaluator {
         const std::size_t close = text_.find(']', at_);
         if (close == std::string_view::npos) return error(codes::algebra::syntax, at, "'[' without ']'");
         Result<Mask> mask = parse_mask(text_.substr(at_, close - at_));
-        if (!mask) return retold_at(mask.error(), at_ + static_cast<std::size_t>(mask.error().where.column), mask.error().message);
+        if (!mask)
+          return retold_at(mask.error(), at_ + static_cast<std::size_t>(mask.error().where.column),
+                           mask.error().message);
         term->mask = *mask;
         at_ = close + 1;
       } else if (accept("@")) {
@@ -268,15 +280,17 @@ class Evaluator {
       } else if (accept(">>")) {
         Result<double> seconds = number();
         if (!seconds) return seconds.error();
-        if (term->value.state) return error(codes::algebra::delay_of_state, at, "'>>' delays an animation; this operand is a state");
+        if (term->value.state)
+          return error(codes::algebra::delay_of_state, at, "'>>' delays an animation; this operand is a state");
         // A day of frames is already more than any face animation; beyond it is a typo. A
         // negative delay would cut the animation's start away (all of it, for a short one): the
         // operator only delays (docs/algebra.md).
         if (*seconds < 0 || *seconds > 86400)
-          return error(codes::algebra::delay_out_of_range, at, "a delay is from 0 to 86400 s (a day); " + format(*seconds) + " is not");
+          return error(codes::algebra::delay_out_of_range, at,
+                       "a delay is from 0 to 86400 s (a day); " + format(*seconds) + " is not");
         const long frames = std::lround(*seconds * term->value.animation.fps);
-        const double slots = static_cast<double>(term->value.animation.size()) +
-                             static_cast<double>(delay_frames) + static_cast<double>(frames);
+        const double slots = static_cast<double>(term->value.animation.size()) + static_cast<double>(delay_frames) +
+                             static_cast<double>(frames);
         if (slots > static_cast<double>(max_frames_)) {
           char what[96];
           std::snprintf(what, sizeof what, "the delayed animation spans %.15g frames at %d fps", slots,
@@ -286,7 +300,8 @@ class Evaluator {
         delay_frames += frames;
       } else {
         if (delay_frames > 0) {
-          const double delayed = static_cast<double>(term->value.animation.size() + static_cast<std::size_t>(delay_frames));
+          const double delayed =
+              static_cast<double>(term->value.animation.size() + static_cast<std::size_t>(delay_frames));
           if (auto bad = too_much_work(at_, delayed)) return *bad;
           delay_in_place(term->value.animation, delay_frames);
         }
@@ -324,8 +339,9 @@ class Evaluator {
       name = std::string(text_.substr(start, at_ - start));
     }
     if (name.empty()) {
-      return error(codes::algebra::syntax, start, at_ < text_.size() ? "expected a file, a number or '(', found '" + std::string(1, text_[at_]) + "'"
-                                              : "expected a file, a number or '(' at the end");
+      return error(codes::algebra::syntax, start,
+                   at_ < text_.size() ? "expected a file, a number or '(', found '" + std::string(1, text_[at_]) + "'"
+                                      : "expected a file, a number or '(' at the end");
     }
     Result<Value> value = load_(name, static_cast<int>(start) + 1);
     if (value && !value->state)
@@ -368,9 +384,10 @@ class Evaluator {
       for (int fap = 3; fap <= kFapCount; ++fap) {
         const double product = std::round(w * s.at(fap));
         if (product <= 2147483647.0 && product >= -2147483648.0) continue;
-        return error(codes::algebra::value_overflow, offset, "the amplifier " + format(w) + " takes FAP " + std::to_string(fap) + " from " +
-                                 std::to_string(s.at(fap)) + " to " + format(product) +
-                                 ", beyond the 32-bit range of FAP values");
+        return error(codes::algebra::value_overflow, offset,
+                     "the amplifier " + format(w) + " takes FAP " + std::to_string(fap) + " from " +
+                         std::to_string(s.at(fap)) + " to " + format(product) +
+                         ", beyond the 32-bit range of FAP values");
       }
       return std::nullopt;
     };

@@ -33,10 +33,17 @@ std::optional<int> number(std::string_view text) {
 // groups) and "all".
 const std::vector<std::pair<std::string_view, std::vector<int>>>& mask_group_names() {
   static const std::vector<std::pair<std::string_view, std::vector<int>>> names{
-      {"jaw", range(3, 18)},    {"lips", range(3, 18)},       {"eyes", range(19, 30)},
-      {"brows", range(31, 38)}, {"cheeks", range(39, 42)},    {"tongue", range(43, 47)},
-      {"head", range(48, 50)},  {"outer_lips", range(51, 60)}, {"nose", range(61, 64)},
-      {"ears", range(65, 68)},  {"mouth", joined(range(3, 18), range(51, 60))},
+      {"jaw", range(3, 18)},
+      {"lips", range(3, 18)},
+      {"eyes", range(19, 30)},
+      {"brows", range(31, 38)},
+      {"cheeks", range(39, 42)},
+      {"tongue", range(43, 47)},
+      {"head", range(48, 50)},
+      {"outer_lips", range(51, 60)},
+      {"nose", range(61, 64)},
+      {"ears", range(65, 68)},
+      {"mouth", joined(range(3, 18), range(51, 60))},
       {"all", range(3, 68)},
   };
   return names;
@@ -66,16 +73,19 @@ Result<Mask> parse_mask(std::string_view text) {
       }
       faps = range(*first, *last);
     } else if (const FapInfo* fap = find_fap_by_name_or_number(item)) {
-      if (fap->number < 3) return fail(codes::algebra::bad_mask, "FAP " + std::to_string(fap->number) + " is not part of a facial state (3-68)");
+      if (fap->number < 3)
+        return fail(codes::algebra::bad_mask,
+                    "FAP " + std::to_string(fap->number) + " is not part of a facial state (3-68)");
       faps = {fap->number};
     } else {
       for (const auto& [name, members] : mask_group_names()) {
         if (name == item) faps = members;
       }
       if (faps.empty()) {
-        return fail(codes::algebra::bad_mask, "unknown mask item '" + std::string(item) +
-                    "' (a group: jaw, lips, eyes, brows, cheeks, tongue, head, outer_lips, nose, "
-                    "ears, mouth, all; a FAP name or number; or a range like 19-30)");
+        return fail(codes::algebra::bad_mask,
+                    "unknown mask item '" + std::string(item) +
+                        "' (a group: jaw, lips, eyes, brows, cheeks, tongue, head, outer_lips, nose, "
+                        "ears, mouth, all; a FAP name or number; or a range like 19-30)");
       }
     }
     for (const int f : faps) {

@@ -46,7 +46,8 @@ double placed_samples(const AudioClip& clip, double shift, double from, double t
   return std::max(0.0, last - first);
 }
 
-Result<std::optional<AudioTrack>> mix_audio(const std::vector<AudioClip>& clips, double max_seconds, const Limits& limits) {
+Result<std::optional<AudioTrack>> mix_audio(const std::vector<AudioClip>& clips, double max_seconds,
+                                            const Limits& limits) {
   std::optional<AudioTrack> none;
   int rate = 0;
   double start = 0;
@@ -81,7 +82,8 @@ Result<std::optional<AudioTrack>> mix_audio(const std::vector<AudioClip>& clips,
   if (samples > static_cast<double>(limits.max_audio_samples)) {
     return limit_error(furthest->source,
                        "the audio from " + std::to_string(start) + " s to " + std::to_string(end) + " s at " +
-                           std::to_string(rate) + " Hz spans " + std::to_string(static_cast<std::int64_t>(samples)) + " samples",
+                           std::to_string(rate) + " Hz spans " + std::to_string(static_cast<std::int64_t>(samples)) +
+                           " samples",
                        Limit::audio_samples, limits);
   }
   AudioTrack track;
@@ -101,7 +103,7 @@ Result<std::optional<AudioTrack>> mix_audio(const std::vector<AudioClip>& clips,
   for (const AudioClip& clip : clips) {
     if (clip.sample_rate <= 0 || clip.samples.empty()) continue;
     const double step = static_cast<double>(clip.sample_rate) / rate;  // clip samples per track sample
-    const double offset = (clip.begin - start) * rate;                  // track index of clip sample 0
+    const double offset = (clip.begin - start) * rate;                 // track index of clip sample 0
     const auto from = static_cast<std::size_t>(std::max(0.0, std::ceil(offset)));
     const double clip_length = static_cast<double>(clip.samples.size()) / step;
     const auto to = std::min(length, static_cast<std::size_t>(std::max(0.0, std::ceil(offset + clip_length))));

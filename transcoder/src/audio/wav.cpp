@@ -43,7 +43,9 @@ Result<AudioClip> read_wav(std::string_view b, const std::string& file) {
     const std::string_view id = b.substr(pos, 4);
     const std::uint64_t size = u32(b, pos + 4);
     const std::size_t body = pos + 8;
-    if (body + size > b.size()) return at(codes::wav::truncated_chunk, file, pos, "the WAV chunk '" + std::string(id) + "' runs past the end of the file");
+    if (body + size > b.size())
+      return at(codes::wav::truncated_chunk, file, pos,
+                "the WAV chunk '" + std::string(id) + "' runs past the end of the file");
     if (id == "fmt ") {
       if (size < 16) return at(codes::wav::bad_format_chunk, file, pos, "the WAV fmt chunk is too short");
       format_at = pos;
@@ -53,18 +55,29 @@ Result<AudioClip> read_wav(std::string_view b, const std::string& file) {
       const int bits = u16(b, body + 14);
       if (tag == 0xFFFE && size >= 40) tag = u16(b, body + 24);  // WAVE_FORMAT_EXTENSIBLE: the subformat's tag
       if (tag != 1) {
-        const char* name = tag == 3 ? "32-bit float" : tag == 6 ? "A-law" : tag == 7 ? "mu-law" : tag == 2 ? "ADPCM" : "non-PCM";
-        return at(codes::wav::unsupported_format, file, body, std::string("the WAV file is ") + name + " (format " + std::to_string(tag) +
-                                  "); fapc reads 16-bit PCM WAV only: convert it, e.g. ffmpeg -i IN -c:a pcm_s16le OUT.wav");
+        const char* name = tag == 3   ? "32-bit float"
+                           : tag == 6 ? "A-law"
+                           : tag == 7 ? "mu-law"
+                           : tag == 2 ? "ADPCM"
+                                      : "non-PCM";
+        return at(codes::wav::unsupported_format, file, body,
+                  std::string("the WAV file is ") + name + " (format " + std::to_string(tag) +
+                      "); fapc reads 16-bit PCM WAV only: convert it, e.g. ffmpeg -i IN -c:a pcm_s16le OUT.wav");
       }
       if (bits != 16)
-        return at(codes::wav::unsupported_format, file, body + 14, "the WAV file is " + std::to_string(bits) +
-                                       "-bit PCM; fapc reads 16-bit PCM WAV only: convert it, e.g. ffmpeg -i IN -c:a pcm_s16le OUT.wav");
-      if (channels < 1 || channels > 64) return at(codes::wav::bad_format_chunk, file, body + 2, "the WAV file has " + std::to_string(channels) + " channels (1 to 64)");
-      if (rate < 1 || rate > 384000) return at(codes::wav::bad_format_chunk, file, body + 4, "the WAV sample rate " + std::to_string(rate) + " Hz is outside 1 to 384000");
+        return at(codes::wav::unsupported_format, file, body + 14,
+                  "the WAV file is " + std::to_string(bits) +
+                      "-bit PCM; fapc reads 16-bit PCM WAV only: convert it, e.g. ffmpeg -i IN -c:a pcm_s16le OUT.wav");
+      if (channels < 1 || channels > 64)
+        return at(codes::wav::bad_format_chunk, file, body + 2,
+                  "the WAV file has " + std::to_string(channels) + " channels (1 to 64)");
+      if (rate < 1 || rate > 384000)
+        return at(codes::wav::bad_format_chunk, file, body + 4,
+                  "the WAV sample rate " + std::to_string(rate) + " Hz is outside 1 to 384000");
       have_format = true;
     } else if (id == "data") {
-      if (!have_format) return at(codes::wav::data_before_format, file, pos, "the WAV data chunk comes before any fmt chunk");
+      if (!have_format)
+        return at(codes::wav::data_before_format, file, pos, "the WAV data chunk comes before any fmt chunk");
       AudioClip clip;
       clip.sample_rate = rate;
       clip.source = Location{file, 0, 0, static_cast<std::int64_t>(format_at)};
@@ -73,14 +86,16 @@ Result<AudioClip> read_wav(std::string_view b, const std::string& file) {
       for (std::size_t f = 0; f < frames; ++f) {
         long sum = 0;  // several channels: their mean
         for (int c = 0; c < channels; ++c)
-          sum += static_cast<std::int16_t>(u16(b, body + 2 * (f * static_cast<std::size_t>(channels) + static_cast<std::size_t>(c))));
+          sum += static_cast<std::int16_t>(
+              u16(b, body + 2 * (f * static_cast<std::size_t>(channels) + static_cast<std::size_t>(c))));
         clip.samples[f] = static_cast<std::int16_t>(sum / channels);
       }
       return clip;
     }
     pos = body + size + (size & 1);
   }
-  return at(codes::wav::missing_chunk, file, b.size(), have_format ? "the WAV file has no data chunk" : "the WAV file has no fmt chunk");
+  return at(codes::wav::missing_chunk, file, b.size(),
+            have_format ? "the WAV file has no data chunk" : "the WAV file has no fmt chunk");
 }
 
 std::string wav_bytes(const AudioTrack& track) {
@@ -97,7 +112,7 @@ std::string wav_bytes(const AudioTrack& track) {
   put16(out, 1);  // mono
   put32(out, static_cast<std::uint32_t>(track.sample_rate));
   put32(out, static_cast<std::uint32_t>(track.sample_rate) * 2);  // bytes per second
-  put16(out, 2);                                                 // bytes per frame
+  put16(out, 2);                                                  // bytes per frame
   put16(out, 16);
   out += "data";
   put32(out, data_size);

@@ -15,9 +15,7 @@ constexpr std::array<std::string_view, 19> kNames = {
     "min",  "max",   "linear",  "sin", "log",  "exp", "average", "add",      "overwrite"};
 
 bool is_fade_param(N n) { return n == N::in || n == N::hold || n == N::out || n == N::value || n == N::connect; }
-bool is_periodic_param(N n) {
-  return n == N::duration || n == N::freq || n == N::period || n == N::min || n == N::max;
-}
+bool is_periodic_param(N n) { return n == N::duration || n == N::freq || n == N::period || n == N::min || n == N::max; }
 bool is_length(N n) {
   return n == N::in || n == N::hold || n == N::out || n == N::duration || n == N::freq || n == N::period;
 }
@@ -37,10 +35,14 @@ std::optional<ParamName> param_name(std::string_view text) {
 Interpolation ActionParams::interpolation() const {
   if (!function) return Interpolation::linear;
   switch (function->id) {
-    case N::sin: return Interpolation::sin;
-    case N::log: return Interpolation::log;
-    case N::exp: return Interpolation::exp;
-    default: return Interpolation::linear;
+    case N::sin:
+      return Interpolation::sin;
+    case N::log:
+      return Interpolation::log;
+    case N::exp:
+      return Interpolation::exp;
+    default:
+      return Interpolation::linear;
   }
 }
 
@@ -54,18 +56,30 @@ std::optional<BlendMode> ActionParams::blend_mode() const {
 // The slot of a parameter that carries a number, or nullptr.
 static std::optional<Number>* number_slot(ActionParams& out, N n) {
   switch (n) {
-    case N::left: return &out.left;
-    case N::right: return &out.right;
-    case N::in: return &out.in;
-    case N::hold: return &out.hold;
-    case N::out: return &out.out;
-    case N::value: return &out.value;
-    case N::duration: return &out.duration;
-    case N::freq: return &out.freq;
-    case N::period: return &out.period;
-    case N::min: return &out.min;
-    case N::max: return &out.max;
-    default: return nullptr;
+    case N::left:
+      return &out.left;
+    case N::right:
+      return &out.right;
+    case N::in:
+      return &out.in;
+    case N::hold:
+      return &out.hold;
+    case N::out:
+      return &out.out;
+    case N::value:
+      return &out.value;
+    case N::duration:
+      return &out.duration;
+    case N::freq:
+      return &out.freq;
+    case N::period:
+      return &out.period;
+    case N::min:
+      return &out.min;
+    case N::max:
+      return &out.max;
+    default:
+      return nullptr;
   }
 }
 
@@ -83,8 +97,9 @@ Result<ActionParams> read_params(const std::vector<Param>& params, const ErrorAt
       const bool function = is_function(n);
       std::optional<Param>& slot = function ? out.function : out.blend;
       if (slot) {
-        return error(codes::mimic::parameter_conflict, p.at, "'" + p.name() + "' conflicts with '" + slot->name() + "': one " +
-                               (function ? "fading function" : "blend mode") + " per action");
+        return error(codes::mimic::parameter_conflict, p.at,
+                     "'" + p.name() + "' conflicts with '" + slot->name() + "': one " +
+                         (function ? "fading function" : "blend mode") + " per action");
       }
       slot = p;
     }

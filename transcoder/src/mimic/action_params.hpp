@@ -16,9 +16,9 @@ struct ActionParams {
   std::optional<Number> left, right;  // present: given (value 0 when written without one)
   std::optional<Number> in, hold, out, value;
   std::optional<Number> duration, freq, period, min, max;
-  std::optional<Param> connect;  // with an optional explicit end value
-  std::optional<Param> function;  // linear | sin | log | exp
-  std::optional<Param> blend;     // add | average | overwrite
+  std::optional<Param> connect;           // with an optional explicit end value
+  std::optional<Param> function;          // linear | sin | log | exp
+  std::optional<Param> blend;             // add | average | overwrite
   const Param* first_fade = nullptr;      // in/hold/out/value/connect, for "mixed kinds" errors
   const Param* first_periodic = nullptr;  // duration/freq/period/min/max
 

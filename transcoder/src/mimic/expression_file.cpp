@@ -8,8 +8,7 @@
 
 namespace fapc {
 
-Result<std::vector<ExpressionEntry>> parse_expression_file(std::string_view text,
-                                                           const std::string& file_name) {
+Result<std::vector<ExpressionEntry>> parse_expression_file(std::string_view text, const std::string& file_name) {
   std::vector<ExpressionEntry> entries;
   int line_number = 0;
   while (!text.empty()) {
@@ -31,8 +30,7 @@ Result<std::vector<ExpressionEntry>> parse_expression_file(std::string_view text
     }
     if (fields.empty()) continue;
     const auto error = [&](ErrorCode code, int column, std::string message) {
-      return make_error(code, Location::text(file_name, line_number, column), std::move(message),
-                        std::string(line));
+      return make_error(code, Location::text(file_name, line_number, column), std::move(message), std::string(line));
     };
     if (fields.size() != 2) {
       return error(codes::expression::field_count, fields.size() > 2 ? fields[2].second : fields[0].second,
@@ -44,8 +42,8 @@ Result<std::vector<ExpressionEntry>> parse_expression_file(std::string_view text
     if (status != std::errc{} || stop != number.data() + number.size() || !std::isfinite(value)) {
       return error(codes::expression::not_a_number, fields[1].second, "'" + std::string(number) + "' is not a number");
     }
-    entries.push_back(ExpressionEntry{std::string(fields[0].first), value,
-                                      Location::text(file_name, line_number, fields[0].second)});
+    entries.push_back(
+        ExpressionEntry{std::string(fields[0].first), value, Location::text(file_name, line_number, fields[0].second)});
   }
   return entries;
 }

@@ -21,9 +21,25 @@ struct Number {
 
 // The pname / pname-arg keywords of Mimic Table 1, as a byte: a program has millions of them.
 enum class ParamName : std::uint8_t {
-  left, right, connect,                                      // a value or none
-  in, hold, out, value, duration, freq, period, min, max,    // a value
-  linear, sin, log, exp, average, add, overwrite,            // no value
+  left,
+  right,
+  connect,  // a value or none
+  in,
+  hold,
+  out,
+  value,
+  duration,
+  freq,
+  period,
+  min,
+  max,  // a value
+  linear,
+  sin,
+  log,
+  exp,
+  average,
+  add,
+  overwrite,  // no value
 };
 std::string_view to_string(ParamName name);
 std::optional<ParamName> param_name(std::string_view text);  // empty: not a parameter
@@ -55,8 +71,8 @@ struct Definition {
   bool expression = false;  // defxpr
   std::string name;
   Position at;
-  Action group;       // def
-  std::string file;   // defxpr
+  Action group;      // def
+  std::string file;  // defxpr
   Position file_at;
 };
 

@@ -9,22 +9,38 @@ namespace fapc::mimic {
 
 const char* describe(TokenKind kind) {
   switch (kind) {
-    case TokenKind::identifier: return "a name";
-    case TokenKind::number: return "a number";
-    case TokenKind::string: return "a quoted file name";
-    case TokenKind::left_brace: return "'{'";
-    case TokenKind::right_brace: return "'}'";
-    case TokenKind::left_bracket: return "'['";
-    case TokenKind::right_bracket: return "']'";
-    case TokenKind::less: return "'<'";
-    case TokenKind::greater: return "'>'";
-    case TokenKind::left_paren: return "'('";
-    case TokenKind::right_paren: return "')'";
-    case TokenKind::semicolon: return "';'";
-    case TokenKind::comma: return "','";
-    case TokenKind::equals: return "'='";
-    case TokenKind::end_of_input: return "the end of the program";
-    case TokenKind::error: return "an error";
+    case TokenKind::identifier:
+      return "a name";
+    case TokenKind::number:
+      return "a number";
+    case TokenKind::string:
+      return "a quoted file name";
+    case TokenKind::left_brace:
+      return "'{'";
+    case TokenKind::right_brace:
+      return "'}'";
+    case TokenKind::left_bracket:
+      return "'['";
+    case TokenKind::right_bracket:
+      return "']'";
+    case TokenKind::less:
+      return "'<'";
+    case TokenKind::greater:
+      return "'>'";
+    case TokenKind::left_paren:
+      return "'('";
+    case TokenKind::right_paren:
+      return "')'";
+    case TokenKind::semicolon:
+      return "';'";
+    case TokenKind::comma:
+      return "','";
+    case TokenKind::equals:
+      return "'='";
+    case TokenKind::end_of_input:
+      return "the end of the program";
+    case TokenKind::error:
+      return "an error";
   }
   return "?";
 }
@@ -53,18 +69,30 @@ bool continues_identifier(char c) { return is_letter(c) || is_digit(c) || c == '
 
 TokenKind punctuation(char c) {
   switch (c) {
-    case '{': return TokenKind::left_brace;
-    case '}': return TokenKind::right_brace;
-    case '[': return TokenKind::left_bracket;
-    case ']': return TokenKind::right_bracket;
-    case '<': return TokenKind::less;
-    case '>': return TokenKind::greater;
-    case '(': return TokenKind::left_paren;
-    case ')': return TokenKind::right_paren;
-    case ';': return TokenKind::semicolon;
-    case ',': return TokenKind::comma;
-    case '=': return TokenKind::equals;
-    default: return TokenKind::end_of_input;
+    case '{':
+      return TokenKind::left_brace;
+    case '}':
+      return TokenKind::right_brace;
+    case '[':
+      return TokenKind::left_bracket;
+    case ']':
+      return TokenKind::right_bracket;
+    case '<':
+      return TokenKind::less;
+    case '>':
+      return TokenKind::greater;
+    case '(':
+      return TokenKind::left_paren;
+    case ')':
+      return TokenKind::right_paren;
+    case ';':
+      return TokenKind::semicolon;
+    case ',':
+      return TokenKind::comma;
+    case '=':
+      return TokenKind::equals;
+    default:
+      return TokenKind::end_of_input;
   }
 }
 
@@ -91,7 +119,8 @@ Token Lexer::next() {
     token.text = source_.substr(at_, 1);
     ++at_;
   } else {
-    return fail(codes::mimic::unexpected_character, token.line, token.column, std::string("unexpected character '") + c + "'");
+    return fail(codes::mimic::unexpected_character, token.line, token.column,
+                std::string("unexpected character '") + c + "'");
   }
   return token;
 }
@@ -158,7 +187,8 @@ bool Lexer::read_number(Token& token) {
     return false;
   }
   if (at_ < source_.size() && starts_identifier(source_[at_])) {
-    fail(codes::mimic::bad_number, line_, column(), "a number must not run into a name ('" + token.str() + source_[at_] + "...')");
+    fail(codes::mimic::bad_number, line_, column(),
+         "a number must not run into a name ('" + token.str() + source_[at_] + "...')");
     return false;
   }
   token.kind = TokenKind::number;
@@ -178,6 +208,5 @@ bool Lexer::read_string(Token& token) {
   ++at_;
   return true;
 }
-
 
 }  // namespace fapc::mimic

@@ -13,8 +13,17 @@ enum class TokenKind {
   identifier,
   number,
   string,  // "file.xpr"
-  left_brace, right_brace, left_bracket, right_bracket, less, greater, left_paren, right_paren,
-  semicolon, comma, equals,
+  left_brace,
+  right_brace,
+  left_bracket,
+  right_bracket,
+  less,
+  greater,
+  left_paren,
+  right_paren,
+  semicolon,
+  comma,
+  equals,
   end_of_input,
   error,  // a lexical error; Lexer::error() says which
 };
@@ -35,8 +44,7 @@ const char* describe(TokenKind kind);  // "'{'", "a number", ... for messages
 // not hold a million tokens): end_of_input at the end, `error` with error() at a lexical error.
 class Lexer {
  public:
-  Lexer(std::string_view source, const std::string& file_name)
-      : source_(source), file_(file_name) {}
+  Lexer(std::string_view source, const std::string& file_name) : source_(source), file_(file_name) {}
 
   Token next();
   const Diagnostic& error() const { return error_; }

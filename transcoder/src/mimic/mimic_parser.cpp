@@ -13,9 +13,7 @@ namespace {
 bool takes_no_value(ParamName n) { return n >= ParamName::linear; }
 bool needs_value(ParamName n) { return n >= ParamName::in && n <= ParamName::max; }
 
-bool is_keyword(std::string_view name) {
-  return name == "main" || name == "def" || name == "defxpr";
-}
+bool is_keyword(std::string_view name) { return name == "main" || name == "def" || name == "defxpr"; }
 
 class Parser {
  public:
@@ -23,8 +21,7 @@ class Parser {
       : lexer_(source, file), current_(lexer_.next()), source_(source), file_(file), sink_(sink) {}
 
   Status program(Program& program) {
-    while (peek().kind == TokenKind::identifier &&
-           (peek().text == "def" || peek().text == "defxpr")) {
+    while (peek().kind == TokenKind::identifier && (peek().text == "def" || peek().text == "defxpr")) {
       Result<Definition> definition = define();
       if (!definition) return definition.error();
       program.definitions.push_back(std::move(*definition));
@@ -71,8 +68,7 @@ class Parser {
   static Position position(const Token& t) { return Position{t.line, t.column}; }
 
   Diagnostic error_at(ErrorCode code, const Token& t, std::string message) const {
-    return make_error(code, Location::text(file_, t.line, t.column), std::move(message),
-                      source_line(source_, t.line));
+    return make_error(code, Location::text(file_, t.line, t.column), std::move(message), source_line(source_, t.line));
   }
   Diagnostic unexpected(const std::string& wanted) const {
     const Token& t = peek();
@@ -93,7 +89,8 @@ class Parser {
     definition.expression = next().text == "defxpr";
     Result<Token> name = expect(TokenKind::identifier, "a name to define");
     if (!name) return name.error();
-    if (is_keyword(name->text)) return error_at(codes::mimic::keyword_as_name, *name, "'" + name->str() + "' is a keyword, not a name");
+    if (is_keyword(name->text))
+      return error_at(codes::mimic::keyword_as_name, *name, "'" + name->str() + "' is a keyword, not a name");
     definition.name = name->str();
     definition.at = position(*name);
     if (definition.expression) {
@@ -116,8 +113,7 @@ class Parser {
       return unexpected("'{' (a sequence) or '[' (a parallel)");
     }
     if (depth_ >= kMaxNestingDepth) {
-      return nesting_too_deep(Location::text(file_, open.line, open.column), "groups",
-                              source_line(source_, open.line));
+      return nesting_too_deep(Location::text(file_, open.line, open.column), "groups", source_line(source_, open.line));
     }
     ++depth_;
     Result<Action> group = group_body(open, std::move(params));
@@ -130,19 +126,18 @@ class Parser {
     group.params = std::move(params);
     group.kind = open.kind == TokenKind::left_brace ? Action::Kind::sequence : Action::Kind::parallel;
     group.at = position(open);
-    const TokenKind close =
-        group.kind == Action::Kind::sequence ? TokenKind::right_brace : TokenKind::right_bracket;
+    const TokenKind close = group.kind == Action::Kind::sequence ? TokenKind::right_brace : TokenKind::right_bracket;
     next();
     if (peek().kind == close) {
-      return error_at(codes::mimic::empty_group, peek(), std::string("an empty ") +
-                                  (group.kind == Action::Kind::sequence ? "sequence" : "parallel") +
-                                  ": a group needs at least one action");
+      return error_at(codes::mimic::empty_group, peek(),
+                      std::string("an empty ") + (group.kind == Action::Kind::sequence ? "sequence" : "parallel") +
+                          ": a group needs at least one action");
     }
     if (streaming_) sink_.open_group(group);
     while (peek().kind != close) {
       if (peek().kind == TokenKind::end_of_input) {
-        return error_at(codes::mimic::unclosed_group, open, std::string("this '") + (close == TokenKind::right_brace ? "{" : "[") +
-                                  "' is never closed");
+        return error_at(codes::mimic::unclosed_group, open,
+                        std::string("this '") + (close == TokenKind::right_brace ? "{" : "[") + "' is never closed");
       }
       Result<Action> child = action(close);
       if (!child) return child.error();
@@ -171,7 +166,8 @@ class Parser {
     Result<Token> name = expect(TokenKind::identifier, "an action (a name, '{', '[' or '<')");
     if (!name) return name.error();
     if (is_keyword(name->text)) {
-      return error_at(codes::mimic::definition_after_main, *name, "'" + name->str() + "' must come before main, at the top of the program");
+      return error_at(codes::mimic::definition_after_main, *name,
+                      "'" + name->str() + "' must come before main, at the top of the program");
     }
     Action atomic;
     atomic.kind = Action::Kind::named;
@@ -205,8 +201,8 @@ class Parser {
         const Token& t = next();
         numbers_read_.push_back(Number{t.number, position(t)});
       }
-      const char* wanted = list == &atomic.times ? "a time or ';' ending the times"
-                                                 : "a value or ';' ending the values";
+      const char* wanted =
+          list == &atomic.times ? "a time or ';' ending the times" : "a value or ';' ending the values";
       if (auto semicolon = expect(TokenKind::semicolon, wanted); !semicolon) return semicolon.error();
       list->assign(numbers_read_.begin(), numbers_read_.end());
     }
@@ -225,10 +221,11 @@ class Parser {
       if (!name) return name.error();
       const std::optional<ParamName> id = param_name(name->text);
       if (!id) {
-        return error_at(codes::mimic::unknown_parameter, *name, "unknown parameter " + quoted_name(name->text) +
-                                   " (expected left, right, in, hold, out, value, connect, "
-                                   "duration, freq, period, min, max, linear, sin, log, exp, "
-                                   "average, add or overwrite)");
+        return error_at(codes::mimic::unknown_parameter, *name,
+                        "unknown parameter " + quoted_name(name->text) +
+                            " (expected left, right, in, hold, out, value, connect, "
+                            "duration, freq, period, min, max, linear, sin, log, exp, "
+                            "average, add or overwrite)");
       }
       Param param{*id, position(*name), std::nullopt};
       if (peek().kind == TokenKind::equals) {
@@ -237,14 +234,15 @@ class Parser {
         }
         next();
         if (peek().kind == TokenKind::identifier) {
-          return error_at(codes::mimic::parameter_value, peek(), "'" + param.name() + "' takes a number, not the name '" +
-                                      peek().str() + "'");
+          return error_at(codes::mimic::parameter_value, peek(),
+                          "'" + param.name() + "' takes a number, not the name '" + peek().str() + "'");
         }
         Result<Token> value = expect(TokenKind::number, "a number after '" + param.name() + "='");
         if (!value) return value.error();
         param.value = Number{value->number, position(*value)};
       } else if (needs_value(param.id)) {
-        return error_at(codes::mimic::parameter_value, *name, "'" + param.name() + "' needs a value ('" + param.name() + "=...')");
+        return error_at(codes::mimic::parameter_value, *name,
+                        "'" + param.name() + "' needs a value ('" + param.name() + "=...')");
       }
       params.push_back(std::move(param));
       if (peek().kind == TokenKind::comma) {

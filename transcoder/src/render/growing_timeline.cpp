@@ -19,9 +19,9 @@ constexpr double kForever = std::numeric_limits<double>::infinity();
 }  // namespace
 
 struct GrowingTimeline::Target {
-  std::vector<double> begins;          // per slot, ascending
-  std::vector<std::uint32_t> added;    // per slot: the clip's index in clips_ once added
-  std::vector<double> tree;            // max-tree over the slots' effective ends, leaves at [leaves, 2 leaves)
+  std::vector<double> begins;        // per slot, ascending
+  std::vector<std::uint32_t> added;  // per slot: the clip's index in clips_ once added
+  std::vector<double> tree;          // max-tree over the slots' effective ends, leaves at [leaves, 2 leaves)
   std::size_t leaves = 1;
   std::multimap<double, std::uint32_t> frozen_by_end;  // added fill=freeze clips: end -> slot
 
@@ -105,8 +105,8 @@ void GrowingTimeline::add(std::size_t planned_index, std::size_t clip_index) {
   }
   double effective_end = clip.end;
   if (clip.fill == Fill::freeze) {
-    const auto from = static_cast<std::size_t>(
-        std::lower_bound(target.begins.begin(), target.begins.end(), clip.end) - target.begins.begin());
+    const auto from = static_cast<std::size_t>(std::lower_bound(target.begins.begin(), target.begins.end(), clip.end) -
+                                               target.begins.begin());
     const std::int64_t next = target.first_added_from(1, 0, target.leaves, from);
     effective_end = next >= 0 ? std::max(clip.end, target.begins[static_cast<std::size_t>(next)]) : kForever;
     target.frozen_by_end.emplace(clip.end, slot);

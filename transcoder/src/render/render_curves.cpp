@@ -110,7 +110,8 @@ void sample_merged(const std::vector<double>& clip_times, double from, double to
   // never copied as the vector grows.
   const std::int64_t frame_count = std::max<std::int64_t>(frames.second - frames.first, 0);
   points.reserve(2 * clip_times.size() + static_cast<std::size_t>(frame_count) + 1);
-  merge_times(clip_times, std::span<const FrameRange>(&frames, 1), fps, [&](double t) { add_sample(points, t, value); });
+  merge_times(clip_times, std::span<const FrameRange>(&frames, 1), fps,
+              [&](double t) { add_sample(points, t, value); });
 }
 
 // docs/cli.md: FAP 1 and FAP 2 appear as "viseme" and "expression" curves whose value is the
@@ -118,8 +119,8 @@ void sample_merged(const std::vector<double>& clip_times, double from, double to
 // under their own targets. The number steps, so every change is a jump.
 void add_strongest_curve(const TimelineIndex& index, int fap, const char* name, Curves& out, Points& points) {
   std::vector<std::pair<const TargetIndex*, double>> members;  // with the viseme/expression number
-  std::vector<double> edges;  // the clips' begins and ends
-  std::vector<FrameRange> frames;  // each clip's
+  std::vector<double> edges;                                   // the clips' begins and ends
+  std::vector<FrameRange> frames;                              // each clip's
   for (const auto& [target, target_index] : index.targets) {
     const std::optional<WeightTarget> weight = weight_target(target);
     if (!weight || weight->fap != fap) continue;
@@ -190,8 +191,9 @@ Curves render_curves(const Timeline& timeline, const CurveOptions& options) {
     times.push_back(last);
     sort_unique(times);
     ForwardLookup lookup(index, target_index);
-    sample_merged(times, target_index.span_begin, last, options.fps,
-                  [&](double t, bool from_left) { return lookup.value_at(t, from_left); }, samples);
+    sample_merged(
+        times, target_index.span_begin, last, options.fps,
+        [&](double t, bool from_left) { return lookup.value_at(t, from_left); }, samples);
     out.curves[target] = thinned(samples, options.tolerance);
   }
   add_strongest_curve(index, 1, "viseme", out, samples);
@@ -211,12 +213,14 @@ Curves render_clip_curves(const Timeline& timeline, const CurveOptions& options)
     std::vector<double> times;
     add_clip_times(clip, clip.end, times);
     sort_unique(times);
-    sample_merged(times, clip.begin, clip.end, options.fps, [&](double t, bool from_left) {
-      return t >= clip.end && !from_left ? clip_value(clip, t, true) : clip_value(clip, t, from_left);
-    }, samples);
+    sample_merged(
+        times, clip.begin, clip.end, options.fps,
+        [&](double t, bool from_left) {
+          return t >= clip.end && !from_left ? clip_value(clip, t, true) : clip_value(clip, t, from_left);
+        },
+        samples);
     // "jaw (table2.mimic:5)"; a second clip from the same place (a macro used twice) gets " #2".
-    std::string label = clip.target + " (" +
-                        std::filesystem::path(clip.source.file.str()).filename().string() + ":" +
+    std::string label = clip.target + " (" + std::filesystem::path(clip.source.file.str()).filename().string() + ":" +
                         std::to_string(clip.source.line) + ")";
     std::string unique = label;
     for (int& n = uses[label]; out.curves.contains(unique);) unique = label + " #" + std::to_string(++n + 1);

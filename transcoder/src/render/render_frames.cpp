@@ -16,7 +16,7 @@ namespace {
 struct Driver {
   const TargetIndex* index;
   std::vector<FapContribution> contributions;
-  int weight_slot = -1;  // viseme or expression number for viseme.X / expression.X targets
+  int weight_slot = -1;    // viseme or expression number for viseme.X / expression.X targets
   std::size_t cursor = 0;  // the elementary interval of the last frame: frames mostly come in order
 };
 
@@ -38,8 +38,7 @@ std::pair<std::pair<int, int>, std::pair<int, int>> strongest_two(std::span<cons
 
 class FrameRenderer {
  public:
-  FrameRenderer(const Timeline& timeline, const RenderOptions& options)
-      : index_(timeline.clips), options_(options) {}
+  FrameRenderer(const Timeline& timeline, const RenderOptions& options) : index_(timeline.clips), options_(options) {}
   FrameRenderer(const FrameRenderer&) = delete;
 
   // What drives each FAP, per target; an error for a target the profile does not map.
@@ -107,8 +106,7 @@ class FrameRenderer {
       frame.viseme.select2 = b.first;
       // blend weighs select1 against select2; alone, a viseme's weight mixes it with neutral.
       frame.viseme.blend =
-          b.second > 0 ? static_cast<int>(std::lround(63.0 * a.second / (a.second + b.second)))
-                       : a.second;
+          b.second > 0 ? static_cast<int>(std::lround(63.0 * a.second / (a.second + b.second))) : a.second;
     }
     if (frame.has(2)) {
       const auto [a, b] = strongest_two(expressions);
@@ -117,15 +115,14 @@ class FrameRenderer {
     return frame;
   }
 
-  int clamp_and_warn(double value, int high, int low, std::int64_t cause, double t,
-                     std::string_view what) {
+  int clamp_and_warn(double value, int high, int low, std::int64_t cause, double t, std::string_view what) {
     const double rounded = std::round(value);  // halves away from zero
     if (rounded >= low && rounded <= high) return static_cast<int>(rounded);
     if (cause >= 0 && warned_clips_.insert(cause).second) {
       const Clip& clip = index_.clips[static_cast<std::size_t>(cause)];
       std::ostringstream message;
-      message << what << " of '" << clip.target << "' reaches " << rounded << " at " << t
-              << " s, outside " << low << ".." << high << "; clamped";
+      message << what << " of '" << clip.target << "' reaches " << rounded << " at " << t << " s, outside " << low
+              << ".." << high << "; clamped";
       warnings_.push_back(make_warning(codes::render::clamped, clip.source, message.str()));
     }
     return static_cast<int>(std::clamp(rounded, double(low), double(high)));

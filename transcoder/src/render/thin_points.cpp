@@ -56,8 +56,7 @@ void thin_points(std::vector<std::pair<double, double>>& points, double toleranc
   for (std::size_t i = 1; i + 1 < points.size(); ++i) {
     run_low = std::min(run_low, points[i].second);
     run_high = std::max(run_high, points[i].second);
-    const bool droppable = !is_jump(i) && i + 1 - anchor <= kMaxRun &&
-                           chord_fits(anchor, i + 1);
+    const bool droppable = !is_jump(i) && i + 1 - anchor <= kMaxRun && chord_fits(anchor, i + 1);
     if (!droppable) {
       points[kept++] = points[i];
       anchor = i;

@@ -83,8 +83,8 @@ void TargetIndex::build_intervals(const std::vector<double>& begins) {
 
 std::span<const std::uint32_t> TargetIndex::active_at(double t, bool from_left) const {
   // Interval j is [cuts[j], cuts[j+1]) (from the left: (cuts[j], cuts[j+1]]).
-  const auto it = from_left ? std::lower_bound(cuts.begin(), cuts.end(), t)
-                            : std::upper_bound(cuts.begin(), cuts.end(), t);
+  const auto it =
+      from_left ? std::lower_bound(cuts.begin(), cuts.end(), t) : std::upper_bound(cuts.begin(), cuts.end(), t);
   if (it == cuts.begin()) return {};
   const auto j = static_cast<std::size_t>(it - cuts.begin() - 1);
   return std::span<const std::uint32_t>(members).subspan(offsets[j], offsets[j + 1] - offsets[j]);
@@ -97,8 +97,7 @@ double clip_value(const Clip& clip, double t, bool from_left) {
   return from_left ? clip.curve.left_limit(local) : clip.curve.value_at(local);
 }
 
-Blended blend(const std::vector<Clip>& all, std::span<const std::uint32_t> active, double t,
-              bool from_left) {
+Blended blend(const std::vector<Clip>& all, std::span<const std::uint32_t> active, double t, bool from_left) {
   Blended result;
   if (active.empty()) return result;
   // 1. The overwrite clip that began last wins (ties: the later in the source).

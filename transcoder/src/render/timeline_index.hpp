@@ -15,7 +15,7 @@ namespace fapc {
 struct TargetIndex {
   TargetIndex(const std::vector<Clip>& all, std::vector<std::uint32_t> of_target);
 
-  std::vector<std::uint32_t> clips;  // indices into the timeline, by begin
+  std::vector<std::uint32_t> clips;   // indices into the timeline, by begin
   std::vector<double> effective_end;  // per entry of `clips`, fill=freeze resolved
   // Elementary interval j is [cuts[j], cuts[j+1]); its active clips are
   // members[offsets[j] .. offsets[j+1]), in source order.
@@ -63,8 +63,7 @@ struct Blended {
 // The value of one clip at absolute time t (a frozen clip past its end keeps its end value);
 // `from_left`: the limit from the left, which is what a clip has at its own end.
 double clip_value(const Clip& clip, double t, bool from_left = false);
-Blended blend(const std::vector<Clip>& all, std::span<const std::uint32_t> active, double t,
-              bool from_left);
+Blended blend(const std::vector<Clip>& all, std::span<const std::uint32_t> active, double t, bool from_left);
 
 // Refers to the timeline's clips (no copy: a clip may hold long curves): the timeline must outlive it.
 struct TimelineIndex {

@@ -8,8 +8,8 @@
 namespace fapc {
 namespace {
 
-constexpr double kWeight = 63;     // a viseme at full strength (FAP 1's blend range)
-constexpr double kTouch = 1e-9;    // spans closer than this are neighbours, not separated by silence
+constexpr double kWeight = 63;   // a viseme at full strength (FAP 1's blend range)
+constexpr double kTouch = 1e-9;  // spans closer than this are neighbours, not separated by silence
 
 bool is_pause(const std::string& name) { return !name.empty() && name[0] == '_'; }
 
@@ -65,8 +65,8 @@ std::vector<VisemeSpan> viseme_spans(const std::vector<SpokenPhoneme>& phonemes)
   return spans;
 }
 
-std::vector<Clip> coarticulated_viseme_clips(std::vector<VisemeSpan> spans, double stretch,
-                                             const Coarticulation& rule, const Location& where) {
+std::vector<Clip> coarticulated_viseme_clips(std::vector<VisemeSpan> spans, double stretch, const Coarticulation& rule,
+                                             const Location& where) {
   for (VisemeSpan& s : spans) {
     s.begin *= stretch;
     s.end *= stretch;
@@ -82,14 +82,14 @@ std::vector<Clip> coarticulated_viseme_clips(std::vector<VisemeSpan> spans, doub
     const auto half_fade = [&](double other) { return std::min({rule.fade / 2, length / 2, other / 2}); };
     // Before the first sound the fade fits between the utterance's start and the sound (the face
     // is neutral when the talk begins); after the last one it runs its full length.
-    const double before = i == 0 ? 2 * s.begin
-                                 : (std::abs(spans[i - 1].end - s.begin) < kTouch
-                                        ? spans[i - 1].end - spans[i - 1].begin
-                                        : s.begin - spans[i - 1].end);
-    const double after = i + 1 == spans.size() ? rule.fade
-                                               : (std::abs(spans[i + 1].begin - s.end) < kTouch
-                                                      ? spans[i + 1].end - spans[i + 1].begin
-                                                      : spans[i + 1].begin - s.end);
+    const double before = i == 0
+                              ? 2 * s.begin
+                              : (std::abs(spans[i - 1].end - s.begin) < kTouch ? spans[i - 1].end - spans[i - 1].begin
+                                                                               : s.begin - spans[i - 1].end);
+    const double after = i + 1 == spans.size()
+                             ? rule.fade
+                             : (std::abs(spans[i + 1].begin - s.end) < kTouch ? spans[i + 1].end - spans[i + 1].begin
+                                                                              : spans[i + 1].begin - s.end);
     const double in = half_fade(before);
     const double out = half_fade(after);
     Clip clip;

@@ -64,8 +64,8 @@ double Curve::value_at(double local_time) const {
   if (periodic) return periodic_value(*periodic, local_time);
   if (keys.empty()) return 0;
   // The segment after the last key at or before t: at two keys at one time the later one wins.
-  const auto after = std::upper_bound(keys.begin(), keys.end(), local_time,
-                                      [](double t, const KeyPoint& k) { return t < k.time; });
+  const auto after =
+      std::upper_bound(keys.begin(), keys.end(), local_time, [](double t, const KeyPoint& k) { return t < k.time; });
   if (after == keys.begin()) return keys.front().value;
   if (after == keys.end()) return keys.back().value;
   return on_segment(after, local_time);
@@ -75,8 +75,8 @@ double Curve::left_limit(double local_time) const {
   if (periodic) return periodic_value(*periodic, local_time);
   if (keys.empty()) return 0;
   // The segment that ends at or after t: at two keys at one time the earlier one counts.
-  const auto after = std::lower_bound(keys.begin(), keys.end(), local_time,
-                                      [](const KeyPoint& k, double t) { return k.time < t; });
+  const auto after =
+      std::lower_bound(keys.begin(), keys.end(), local_time, [](const KeyPoint& k, double t) { return k.time < t; });
   if (after == keys.begin()) return keys.front().value;
   if (after == keys.end()) return keys.back().value;
   return on_segment(after, local_time);

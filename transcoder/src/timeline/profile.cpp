@@ -13,10 +13,8 @@ namespace fapc {
 namespace {
 
 bool same_ignoring_case(std::string_view a, std::string_view b) {
-  return a.size() == b.size() &&
-         std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::tolower(static_cast<unsigned char>(x)) ==
-                  std::tolower(static_cast<unsigned char>(y));
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
          });
 }
 
@@ -37,7 +35,6 @@ std::vector<Field> split_fields(std::string_view line) {
   }
   return fields;
 }
-
 
 }  // namespace
 
@@ -66,8 +63,7 @@ Result<Profile> parse_profile(std::string_view text, const std::string& file_nam
     const std::vector<Field> fields = split_fields(line);
     if (fields.empty()) continue;
     const auto error = [&](ErrorCode code, const Field& at, std::string message) {
-      return make_error(code, Location::text(file_name, line_number, at.column), std::move(message),
-                        std::string(line));
+      return make_error(code, Location::text(file_name, line_number, at.column), std::move(message), std::string(line));
     };
     if (fields.size() != 3) {
       return error(codes::profile::field_count, fields.size() > 3 ? fields[3] : fields.back(),
@@ -75,20 +71,22 @@ Result<Profile> parse_profile(std::string_view text, const std::string& file_nam
     }
     const FapInfo* fap = find_fap_by_name_or_number(fields[1].text);
     if (fap == nullptr || fap->number <= 2) {
-      return error(codes::profile::bad_fap, fields[1], fap ? "FAP 1 and 2 are not scalar parameters; use viseme.<name> or "
-                                    "expression.<name> targets"
-                                  : unknown_fap_message(fields[1].text));
+      return error(codes::profile::bad_fap, fields[1],
+                   fap ? "FAP 1 and 2 are not scalar parameters; use viseme.<name> or "
+                         "expression.<name> targets"
+                       : unknown_fap_message(fields[1].text));
     }
     double scale = 0;
     const Field& scale_field = fields[2];
     const char* end = scale_field.text.data() + scale_field.text.size();
     const auto [stop, status] = std::from_chars(scale_field.text.data(), end, scale);
     if (status != std::errc{} || stop != end || !std::isfinite(scale)) {
-      return error(codes::profile::bad_scale, scale_field, "the scale '" + std::string(scale_field.text) + "' is not a number");
+      return error(codes::profile::bad_scale, scale_field,
+                   "the scale '" + std::string(scale_field.text) + "' is not a number");
     }
     if (find_fap_by_name_or_number(fields[0].text) != nullptr) {
-      return error(codes::profile::standard_name, fields[0], "'" + std::string(fields[0].text) +
-                                  "' is a standard FAP name; a profile maps other names");
+      return error(codes::profile::standard_name, fields[0],
+                   "'" + std::string(fields[0].text) + "' is a standard FAP name; a profile maps other names");
     }
     profile.parameters[std::string(fields[0].text)].push_back(FapContribution{fap->number, scale});
   }

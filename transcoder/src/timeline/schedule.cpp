@@ -65,8 +65,8 @@ class Scheduler {
       // would vanish without a word; no renderable animation gets near (docs/security.md).
       if (start + *active > kLatestTime) {
         fail(node, ScheduleProblem::ends_too_late,
-             "ends at " + seconds(start + *active) + ", after the latest time fapc schedules (" +
-                 seconds(kLatestTime) + ")");
+             "ends at " + seconds(start + *active) + ", after the latest time fapc schedules (" + seconds(kLatestTime) +
+                 ")");
         return start;
       }
       const double simple = node.timing.duration.value_or(*active);
@@ -87,8 +87,7 @@ class Scheduler {
     const std::optional<double> own_limit =
         node.timing.duration ? std::optional<double>(start + *node.timing.duration) : limit;
     // With an explicit duration, children beyond it are cut at the end of each iteration.
-    const double iteration_cut =
-        node.timing.duration ? std::min(inner_cut, start + *node.timing.duration) : inner_cut;
+    const double iteration_cut = node.timing.duration ? std::min(inner_cut, start + *node.timing.duration) : inner_cut;
     const double children_end = place_children(node, index, start, own_limit, iteration_cut, out);
     if (error) return start;
     const double simple = node.timing.duration.value_or(children_end - start);
@@ -302,8 +301,7 @@ class Scheduler {
   // In an exclusive group one child plays at a time: a child that starts cuts the one playing
   // (at equal starts the later child in the source wins).
   static void cut_exclusive(std::vector<ChildRun> runs, std::vector<Occurrence>& out) {
-    std::stable_sort(runs.begin(), runs.end(),
-                     [](const ChildRun& a, const ChildRun& b) { return a.start < b.start; });
+    std::stable_sort(runs.begin(), runs.end(), [](const ChildRun& a, const ChildRun& b) { return a.start < b.start; });
     for (std::size_t i = 0; i + 1 < runs.size(); ++i) {
       for (std::size_t k = runs[i].from; k < runs[i].to; ++k) {
         out[k].end = std::max(out[k].begin, std::min(out[k].end, runs[i + 1].start));
@@ -352,13 +350,20 @@ namespace {
 // Each problem's code (codes.def): a user mends each differently.
 ErrorCode schedule_code(ScheduleProblem problem) {
   switch (problem) {
-    case ScheduleProblem::no_duration: return codes::timeline::no_duration;
-    case ScheduleProblem::starts_before_zero: return codes::timeline::starts_before_zero;
-    case ScheduleProblem::ends_too_late: return codes::timeline::ends_too_late;
-    case ScheduleProblem::endless_repeat: return codes::timeline::endless_repeat;
-    case ScheduleProblem::too_many_runs: return codes::limit::runs;
-    case ScheduleProblem::right_without_end: return codes::timeline::right_without_end;
-    case ScheduleProblem::right_in_sequence: return codes::timeline::right_in_sequence;
+    case ScheduleProblem::no_duration:
+      return codes::timeline::no_duration;
+    case ScheduleProblem::starts_before_zero:
+      return codes::timeline::starts_before_zero;
+    case ScheduleProblem::ends_too_late:
+      return codes::timeline::ends_too_late;
+    case ScheduleProblem::endless_repeat:
+      return codes::timeline::endless_repeat;
+    case ScheduleProblem::too_many_runs:
+      return codes::limit::runs;
+    case ScheduleProblem::right_without_end:
+      return codes::timeline::right_without_end;
+    case ScheduleProblem::right_in_sequence:
+      return codes::timeline::right_in_sequence;
   }
   return codes::timeline::no_duration;
 }
@@ -374,8 +379,8 @@ Result<Schedule> schedule(const ScheduleNode& root, const ScheduleOptions& optio
   auto scheduled = schedule_tree(root, options);
   if (auto* problem = std::get_if<ScheduleError>(&scheduled)) {
     // Only a start and an end read wrong without a subject ("starts before time 0").
-    const bool needs_subject = problem->problem == ScheduleProblem::starts_before_zero ||
-                               problem->problem == ScheduleProblem::ends_too_late;
+    const bool needs_subject =
+        problem->problem == ScheduleProblem::starts_before_zero || problem->problem == ScheduleProblem::ends_too_late;
     return problem->diagnostic(needs_subject ? "the action" : "");
   }
   return std::get<Schedule>(std::move(scheduled));
@@ -392,8 +397,9 @@ std::variant<Schedule, ScheduleError> schedule_tree(const ScheduleNode& root, co
   // made (96 MB at issue 19's 10^6-element XMT-Omega script). Runs cut short leave room unused,
   // which costs address space, not memory (pages never written are never given); the room stays
   // within the run limit and a few times the tree, which is in memory already.
-  const double room = std::min({scheduler.promised_runs, static_cast<double>(std::max<std::int64_t>(options.max_runs, 0)),
-                                8.0 * static_cast<double>(scheduler.leaves)});
+  const double room =
+      std::min({scheduler.promised_runs, static_cast<double>(std::max<std::int64_t>(options.max_runs, 0)),
+                8.0 * static_cast<double>(scheduler.leaves)});
   result.occurrences.reserve(static_cast<std::size_t>(room));
   result.end = scheduler.place(root, 0, root.timing.offset, options.root_end, cut, result.occurrences);
   if (scheduler.error) return *scheduler.error;

@@ -14,20 +14,28 @@ double Timeline::end() const {
 
 const char* to_string(Interpolation how) {
   switch (how) {
-    case Interpolation::linear: return "linear";
-    case Interpolation::step: return "step";
-    case Interpolation::sin: return "sin";
-    case Interpolation::log: return "log";
-    case Interpolation::exp: return "exp";
+    case Interpolation::linear:
+      return "linear";
+    case Interpolation::step:
+      return "step";
+    case Interpolation::sin:
+      return "sin";
+    case Interpolation::log:
+      return "log";
+    case Interpolation::exp:
+      return "exp";
   }
   return "?";
 }
 
 const char* to_string(BlendMode mode) {
   switch (mode) {
-    case BlendMode::add: return "add";
-    case BlendMode::average: return "average";
-    case BlendMode::overwrite: return "overwrite";
+    case BlendMode::add:
+      return "add";
+    case BlendMode::average:
+      return "average";
+    case BlendMode::overwrite:
+      return "overwrite";
   }
   return "?";
 }
@@ -39,13 +47,13 @@ std::string dump(const Timeline& timeline) {
   out.precision(10);
   out << "timeline end " << timeline.end() << (timeline.explicit_end ? " (explicit)" : "") << '\n';
   for (const Clip& clip : timeline.clips) {
-    out << clip.target << " [" << clip.begin << ", " << clip.end << ") " << to_string(clip.blend)
-        << ' ' << to_string(clip.fill);
+    out << clip.target << " [" << clip.begin << ", " << clip.end << ") " << to_string(clip.blend) << ' '
+        << to_string(clip.fill);
     if (clip.curve_offset != 0) out << " offset " << clip.curve_offset;
     if (clip.curve.periodic) {
       const Periodic& p = *clip.curve.periodic;
-      out << (p.shape == Periodic::Shape::sine ? " sine" : " triangle") << " min " << p.min
-          << " max " << p.max << " period " << p.period;
+      out << (p.shape == Periodic::Shape::sine ? " sine" : " triangle") << " min " << p.min << " max " << p.max
+          << " period " << p.period;
     } else {
       out << " keys";
       for (const KeyPoint& key : clip.curve.keys) {

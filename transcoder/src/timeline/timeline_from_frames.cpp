@@ -48,8 +48,7 @@ class Builder {
       const double f0 = static_cast<double>(offset_of(keys[n - 2]));
       const double f1 = static_cast<double>(offset_of(keys[n - 1]));
       const double f2 = static_cast<double>(frame - open.first);
-      return (keys[n - 1].value - keys[n - 2].value) * (f2 - f1) ==
-             (value - keys[n - 1].value) * (f1 - f0);
+      return (keys[n - 1].value - keys[n - 2].value) * (f2 - f1) == (value - keys[n - 1].value) * (f1 - f0);
     };
     if (n >= 2 && collinear()) {
       keys.back() = KeyPoint{time, value, how};
@@ -88,9 +87,7 @@ class Builder {
   }
 };
 
-std::string weight_name(const char* prefix, std::string_view name) {
-  return std::string(prefix) + std::string(name);
-}
+std::string weight_name(const char* prefix, std::string_view name) { return std::string(prefix) + std::string(name); }
 
 }  // namespace
 
@@ -99,26 +96,23 @@ Timeline timeline_from_frames(const FapSequence& sequence, double shift, const L
   for (const FapFrame& frame : sequence.frames) {
     for (int fap = 3; fap <= kFapCount; ++fap) {
       if (!frame.has(fap)) continue;
-      builder.add(std::string(find_fap(fap)->name), frame.number, frame.value(fap),
-                  Interpolation::linear);
+      builder.add(std::string(find_fap(fap)->name), frame.number, frame.value(fap), Interpolation::linear);
     }
     if (frame.has(1)) {
       // blend weighs select1 against select2 (docs/timeline.md); both become weights.
       const VisemeFields& v = frame.viseme;
-      builder.add(weight_name("viseme.", viseme_name(v.select1)), frame.number,
-                  v.blend, Interpolation::step);
+      builder.add(weight_name("viseme.", viseme_name(v.select1)), frame.number, v.blend, Interpolation::step);
       if (v.select2 != 0 && v.select2 != v.select1) {
-        builder.add(weight_name("viseme.", viseme_name(v.select2)), frame.number, 63 - v.blend,
-                    Interpolation::step);
+        builder.add(weight_name("viseme.", viseme_name(v.select2)), frame.number, 63 - v.blend, Interpolation::step);
       }
     }
     if (frame.has(2)) {
       const ExpressionFields& e = frame.expression;
-      builder.add(weight_name("expression.", expression_name(e.select1)), frame.number,
-                  e.intensity1, Interpolation::step);
+      builder.add(weight_name("expression.", expression_name(e.select1)), frame.number, e.intensity1,
+                  Interpolation::step);
       if (e.select2 != 0 && e.select2 != e.select1) {
-        builder.add(weight_name("expression.", expression_name(e.select2)), frame.number,
-                    e.intensity2, Interpolation::step);
+        builder.add(weight_name("expression.", expression_name(e.select2)), frame.number, e.intensity2,
+                    Interpolation::step);
       }
     }
     builder.end_missing(frame.number);

@@ -18,9 +18,11 @@ namespace {
 
 // The word for the way a FAP's feature point moves when its value is negative.
 std::string_view opposite(std::string_view positive) {
-  static const std::pair<std::string_view, std::string_view> pairs[] = {
-      {"up", "down"}, {"left", "right"}, {"forward", "backward"}, {"growing", "shrinking"},
-      {"concave upward", "concave downward"}};
+  static const std::pair<std::string_view, std::string_view> pairs[] = {{"up", "down"},
+                                                                        {"left", "right"},
+                                                                        {"forward", "backward"},
+                                                                        {"growing", "shrinking"},
+                                                                        {"concave upward", "concave downward"}};
   for (const auto& [a, b] : pairs) {
     if (positive == a) return b;
     if (positive == b) return a;
@@ -41,7 +43,8 @@ Result<std::string> check_key(const std::string& file, const TsvLine& line, cons
     const char* end = cell.text.data() + cell.text.size();
     const auto [ptr, ec] = std::from_chars(cell.text.data(), end, au);
     if (ec != std::errc{} || ptr != end || au < 1 || au > 99) {
-      return cell_error(codes::vocabulary::bad_value, file, line, cell, "'" + std::string(cell.text) + "' is not an action unit number (1-99)");
+      return cell_error(codes::vocabulary::bad_value, file, line, cell,
+                        "'" + std::string(cell.text) + "' is not an action unit number (1-99)");
     }
     return std::to_string(au);
   }
@@ -61,25 +64,28 @@ Status check_motion(const std::string& file, const TsvLine& line, MappingRow& ro
   const TsvCell& amount_cell = line.cells[3];
   if (fap_cell.text == "-") {
     if (direction_cell.text != "-" || amount_cell.text != "0") {
-      return cell_error(codes::vocabulary::bad_value, file, line, direction_cell, "a row without a FAP ('-') has direction '-' and amount 0");
+      return cell_error(codes::vocabulary::bad_value, file, line, direction_cell,
+                        "a row without a FAP ('-') has direction '-' and amount 0");
     }
     return ok_status();
   }
   const FapInfo* info = find_fap_by_name_or_number(fap_cell.text);
   if (!info || info->number < 3) {
     return cell_error(codes::vocabulary::bad_value, file, line, fap_cell,
-                      info ? "FAP " + std::to_string(info->number) + " is high-level; a table row names one of FAPs 3-68"
-                           : unknown_fap_message(fap_cell.text));
+                      info
+                          ? "FAP " + std::to_string(info->number) + " is high-level; a table row names one of FAPs 3-68"
+                          : unknown_fap_message(fap_cell.text));
   }
   row.fap = info->number;
   const std::optional<double> amount = finite_number(amount_cell.text);
   if (!amount || *amount == 0) {
-    return cell_error(codes::vocabulary::bad_value, file, line, amount_cell, "'" + std::string(amount_cell.text) + "' is not a non-zero number");
+    return cell_error(codes::vocabulary::bad_value, file, line, amount_cell,
+                      "'" + std::string(amount_cell.text) + "' is not a non-zero number");
   }
   if (std::abs(*amount) > info->legal_max()) {
     return cell_error(codes::vocabulary::bad_value, file, line, amount_cell,
-                      std::string(amount_cell.text) + " is outside " + std::string(info->name) + "'s legal range of +-" +
-                          std::to_string(info->legal_max()));
+                      std::string(amount_cell.text) + " is outside " + std::string(info->name) +
+                          "'s legal range of +-" + std::to_string(info->legal_max()));
   }
   row.amount = *amount;
   const std::string_view expected = *amount > 0 ? info->positive_motion : opposite(info->positive_motion);
@@ -145,7 +151,9 @@ Result<MappingTable> parse_mapping_table(std::string_view text, const std::strin
     if (!key) return key.error();
     MappingRow row{*key, 0, 0, std::string(line.cells[4].text), line.line};
     if (Status motion = check_motion(file, line, row); !motion) return motion.error();
-    if (row.reason.empty()) return cell_error(codes::vocabulary::no_reason, file, line, line.cells[4], "every row says why it holds: the reason is empty");
+    if (row.reason.empty())
+      return cell_error(codes::vocabulary::no_reason, file, line, line.cells[4],
+                        "every row says why it holds: the reason is empty");
     const auto [it, fresh] = seen.emplace(std::make_pair(row.key, row.fap), line.line);
     if (!fresh) {
       return cell_error(codes::vocabulary::duplicate_row, file, line, line.cells[1],
@@ -163,8 +171,9 @@ Result<MappingTable> parse_mapping_table(std::string_view text, const std::strin
     for (std::string_view shape : arkit_shape_names()) {
       if (!table.has_key(shape)) {
         return make_error(codes::vocabulary::missing_row, Location::text(file, lines->front().line, 1),
-                          "shape '" + std::string(shape) + "' has no row: every one of the 52 shapes needs one "
-                          "(a row with fap '-' if no FAP carries it)",
+                          "shape '" + std::string(shape) +
+                              "' has no row: every one of the 52 shapes needs one "
+                              "(a row with fap '-' if no FAP carries it)",
                           std::string(lines->front().whole));
       }
     }

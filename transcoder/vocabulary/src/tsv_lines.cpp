@@ -18,9 +18,9 @@ Result<std::vector<TsvLine>> split_tsv(std::string_view text, const std::string&
     pos = end + 1;
   }
   if (rows > max_lines) {
-    return make_error(codes::vocabulary::too_many_lines, Location::text(file, 1, 1),
-                      "the table has " + std::to_string(rows) + " lines, more than the limit of " +
-                          std::to_string(max_lines));
+    return make_error(
+        codes::vocabulary::too_many_lines, Location::text(file, 1, 1),
+        "the table has " + std::to_string(rows) + " lines, more than the limit of " + std::to_string(max_lines));
   }
   std::vector<TsvLine> lines;
   lines.reserve(rows);
@@ -72,12 +72,14 @@ Status check_columns(const std::vector<TsvLine>& lines, const std::string& file,
   std::string wanted;
   for (std::string_view name : expected) wanted += (wanted.empty() ? "" : " ") + std::string(name);
   if (lines.empty()) {
-    return make_error(codes::vocabulary::bad_header, Location::text(file, 1, 1), "no header line: expected the columns " + wanted);
+    return make_error(codes::vocabulary::bad_header, Location::text(file, 1, 1),
+                      "no header line: expected the columns " + wanted);
   }
   const TsvLine& header = lines.front();
   for (std::size_t i = 0; i < expected.size(); ++i) {
     if (i >= header.cells.size()) {
-      return make_error(codes::vocabulary::bad_header, Location::text(file, header.line, static_cast<int>(header.whole.size()) + 1),
+      return make_error(codes::vocabulary::bad_header,
+                        Location::text(file, header.line, static_cast<int>(header.whole.size()) + 1),
                         "the header ends before column '" + std::string(expected[i]) + "' (expected " + wanted + ")",
                         std::string(header.whole));
     }
@@ -93,7 +95,8 @@ Status check_columns(const std::vector<TsvLine>& lines, const std::string& file,
                         "more than " + std::to_string(expected.size()) + " tab-separated cells");
     }
     if (line.cells.size() < expected.size()) {
-      return make_error(codes::vocabulary::cell_count, Location::text(file, line.line, static_cast<int>(line.whole.size()) + 1),
+      return make_error(codes::vocabulary::cell_count,
+                        Location::text(file, line.line, static_cast<int>(line.whole.size()) + 1),
                         std::to_string(line.cells.size()) + " tab-separated cells, expected " +
                             std::to_string(expected.size()) + " (" + wanted + ")",
                         std::string(line.whole));

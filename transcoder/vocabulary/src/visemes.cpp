@@ -24,12 +24,13 @@ Result<std::vector<VisemeRow>> parse_viseme_table(std::string_view text, const s
     int viseme = -1;
     const auto [ptr, ec] = std::from_chars(number.text.data(), number.text.data() + number.text.size(), viseme);
     if (ec != std::errc{} || ptr != number.text.data() + number.text.size() || viseme < 0 || viseme >= kVisemeCount) {
-      return cell_error(codes::vocabulary::bad_value, file, line, number, "'" + std::string(number.text) + "' is not a viseme number (0-14)");
+      return cell_error(codes::vocabulary::bad_value, file, line, number,
+                        "'" + std::string(number.text) + "' is not a viseme number (0-14)");
     }
     VisemeRow& row = rows[static_cast<std::size_t>(viseme)];
     if (row.line != 0) {
-      return cell_error(codes::vocabulary::duplicate_row, file, line, number, "viseme " + std::to_string(viseme) + " is already given on line " +
-                                                std::to_string(row.line));
+      return cell_error(codes::vocabulary::duplicate_row, file, line, number,
+                        "viseme " + std::to_string(viseme) + " is already given on line " + std::to_string(row.line));
     }
     if (line.cells[1].text != viseme_name(viseme)) {
       return cell_error(codes::vocabulary::bad_value, file, line, line.cells[1],
@@ -37,12 +38,14 @@ Result<std::vector<VisemeRow>> parse_viseme_table(std::string_view text, const s
                             "' in the standard, not '" + std::string(line.cells[1].text) + "'");
     }
     const std::string_view openxr = line.cells[2].text;
-    if (openxr.empty()) return cell_error(codes::vocabulary::empty_cell, file, line, line.cells[2], "the OpenXR name is empty");
+    if (openxr.empty())
+      return cell_error(codes::vocabulary::empty_cell, file, line, line.cells[2], "the OpenXR name is empty");
     if (const auto [it, fresh] = openxr_lines.emplace(openxr, line.line); !fresh) {
-      return cell_error(codes::vocabulary::duplicate_row, file, line, line.cells[2], "'" + std::string(openxr) + "' is already given on line " +
-                                                       std::to_string(it->second));
+      return cell_error(codes::vocabulary::duplicate_row, file, line, line.cells[2],
+                        "'" + std::string(openxr) + "' is already given on line " + std::to_string(it->second));
     }
-    if (line.cells[3].text.empty()) return cell_error(codes::vocabulary::no_reason, file, line, line.cells[3], "the reason is empty");
+    if (line.cells[3].text.empty())
+      return cell_error(codes::vocabulary::no_reason, file, line, line.cells[3], "the reason is empty");
     row = VisemeRow{viseme, std::string(line.cells[1].text), std::string(openxr), std::string(line.cells[3].text),
                     line.line};
   }

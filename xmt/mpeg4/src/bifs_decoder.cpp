@@ -18,7 +18,7 @@ using bifs::FieldSpec;
 using bifs::Ndt;
 using bifs::NodeSpec;
 
-constexpr int kMaxDepth = 64;         // deeper scenes are not the project's
+constexpr int kMaxDepth = 64;           // deeper scenes are not the project's
 constexpr std::size_t kMaxName = 1024;  // DEF names longer than this are taken as corruption
 
 class SceneDecoder {
@@ -31,19 +31,20 @@ class SceneDecoder {
 
   Result<SceneNode> node(Ndt ndt, int depth) {
     if (depth > kMaxDepth) {
-      return fail(codes::limit::nesting_depth, "scene nested deeper than " + std::to_string(kMaxDepth) + " levels (the depth limit)");
+      return fail(codes::limit::nesting_depth,
+                  "scene nested deeper than " + std::to_string(kMaxDepth) + " levels (the depth limit)");
     }
     const bifs::NdtSpec& table = bifs::ndt_spec(ndt);
     if (in_.get_bit()) return fail(codes::bifs::not_decoded, "USE of a node: fapc decodes only scenes without USE");
     const std::uint32_t code = in_.get(table.bits);
     if (in_.failed()) return cut_short();
     if (code == 0)
-      return fail(codes::bifs::not_decoded, std::string(table.name) + " node from a later BIFS version: fapc decodes " +
-                  "version 1 nodes only");
+      return fail(codes::bifs::not_decoded,
+                  std::string(table.name) + " node from a later BIFS version: fapc decodes " + "version 1 nodes only");
     const NodeSpec* spec = bifs::node_for_code(ndt, code);
     if (!spec)
       return fail(codes::bifs::bad_node, std::string(table.name) + " node type " + std::to_string(code) +
-                  " is outside the node subset fapc decodes");
+                                             " is outside the node subset fapc decodes");
     SceneNode n{std::string(spec->name), {}, {}};
     if (in_.get_bit()) {
       const std::uint32_t id = in_.get(config_.node_id_bits) + 1;
@@ -73,7 +74,9 @@ class SceneDecoder {
     std::vector<std::pair<std::uint32_t, SceneField>> found;
     auto read_one = [&](std::uint32_t index) -> Status {
       for (const auto& [i, f] : found)
-        if (i == index) return fail(codes::bifs::bad_node, "field " + std::string(spec.fields[index].name) + " of " + n.type + " coded twice");
+        if (i == index)
+          return fail(codes::bifs::bad_node,
+                      "field " + std::string(spec.fields[index].name) + " of " + n.type + " coded twice");
       SceneField field{std::string(spec.fields[index].name), 0};
       if (Status s = value(spec.fields[index], depth, field.value); !s) return s;
       found.emplace_back(index, std::move(field));
@@ -198,11 +201,12 @@ Result<BifsConfig> decode_bifs_config(const Bytes& bytes, std::uint64_t base, co
   return c;
 }
 
-Result<SceneNode> decode_scene_replace(const Bytes& bytes, const BifsConfig& config,
-                                       std::uint64_t base, const std::string& file) {
+Result<SceneNode> decode_scene_replace(const Bytes& bytes, const BifsConfig& config, std::uint64_t base,
+                                       const std::string& file) {
   SceneDecoder decoder(bytes, config, base, file);
   BitReader& in = decoder.bits();
-  if (in.get(2) != 3) return decoder.fail(codes::bifs::bad_command, "the scene access unit does not start with SceneReplace");
+  if (in.get(2) != 3)
+    return decoder.fail(codes::bifs::bad_command, "the scene access unit does not start with SceneReplace");
   in.get(6);  // reserved
   decoder.use_names(in.get_bit());
   if (in.get_bit()) return decoder.fail(codes::bifs::not_decoded, "PROTO declarations are not decoded by fapc");

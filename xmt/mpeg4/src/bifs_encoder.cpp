@@ -28,8 +28,8 @@ class SceneEncoder {
     const std::uint32_t code = bifs::node_code(ndt, n.type);
     const NodeSpec* spec = bifs::find_node(n.type);
     if (code == 0 || spec == nullptr)
-      return fail("cannot code node " + n.type + " as " + std::string(bifs::ndt_spec(ndt).name) +
-                  " (in " + std::string(parent) + "): not in the BIFS subset fapc writes");
+      return fail("cannot code node " + n.type + " as " + std::string(bifs::ndt_spec(ndt).name) + " (in " +
+                  std::string(parent) + "): not in the BIFS subset fapc writes");
     out_.put_bit(false);  // not a USE
     out_.put(code, bifs::ndt_spec(ndt).bits);
     out_.put_bit(!n.def_name.empty());
@@ -140,7 +140,8 @@ class SceneEncoder {
   // An MFURL of SFURLs that name object descriptors: isOD 1, then the 10-bit OD ID.
   Status urls(const std::vector<ObjectUrl>& list, const std::string& where) {
     return mf_field(list, [&](const ObjectUrl& u) -> Status {
-      if (u.od_id == 0 || u.od_id >= 1024) return fail(where + ": OD ID " + std::to_string(u.od_id) + " is not 1..1023");
+      if (u.od_id == 0 || u.od_id >= 1024)
+        return fail(where + ": OD ID " + std::to_string(u.od_id) + " is not 1..1023");
       out_.put_bit(true);  // isOD
       out_.put(u.od_id, 10);
       return ok_status();

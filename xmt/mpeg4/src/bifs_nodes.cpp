@@ -39,9 +39,7 @@ const std::vector<NodeSpec>& node_table() {
         {"expression_intensity2", FieldKind::sf_int32},
         {"init_face", FieldKind::sf_bool},
         {"expression_def", FieldKind::sf_bool}}},
-      {"Shape",
-       {{"appearance", FieldKind::sf_node, Ndt::appearance},
-        {"geometry", FieldKind::sf_node, Ndt::geometry}}},
+      {"Shape", {{"appearance", FieldKind::sf_node, Ndt::appearance}, {"geometry", FieldKind::sf_node, Ndt::geometry}}},
       {"Sphere", {{"radius", FieldKind::sf_float, Ndt::top, 0, 1.0F}}},
       // The voice. Fields the project never sets are listed for their place in DEF order only
       // (their kinds beyond these are not coded: the encoder refuses them, the decoder names them).

@@ -37,8 +37,8 @@ struct NdtMember {
 
 struct NdtSpec {
   Ndt ndt;
-  std::string_view name;  // "SF3DNode"
-  int bits;               // width of a type code
+  std::string_view name;           // "SF3DNode"
+  int bits;                        // width of a type code
   std::vector<NdtMember> members;  // only the subset's nodes
 };
 

@@ -59,9 +59,9 @@ class DescriptorParser {
     }
     if (in.failed()) return error(codes::mp4::descriptor_truncated, in.failed_at(), "descriptor header cut short");
     if (size > in.remaining())
-      return error(codes::mp4::bad_descriptor, d.offset, "descriptor (tag 0x" + hex(d.tag) + ") of " + std::to_string(size) +
-                                 " bytes overruns its container (" + std::to_string(in.remaining()) +
-                                 " bytes left)");
+      return error(codes::mp4::bad_descriptor, d.offset,
+                   "descriptor (tag 0x" + hex(d.tag) + ") of " + std::to_string(size) +
+                       " bytes overruns its container (" + std::to_string(in.remaining()) + " bytes left)");
     d.body = ByteReader(in.here(), size, in.offset());
     in.skip(size);
     return d;
@@ -148,21 +148,21 @@ Bytes encode_object_descriptor_update(const std::vector<ObjectDescriptor>& ods) 
   return out.take();
 }
 
-Result<EsDescriptor> decode_es_descriptor(const Bytes& bytes, std::uint64_t base,
-                                          const std::string& file) {
+Result<EsDescriptor> decode_es_descriptor(const Bytes& bytes, std::uint64_t base, const std::string& file) {
   DescriptorParser p(file);
   ByteReader outer(bytes.data(), bytes.size(), base);
   auto d = p.next(outer);
   if (!d) return d.error();
   if (d->tag != kEsDescriptorTag)
-    return p.error(codes::mp4::unexpected_descriptor, d->offset, "expected an ES_Descriptor (tag 0x03), found tag 0x" + p.hex(d->tag));
+    return p.error(codes::mp4::unexpected_descriptor, d->offset,
+                   "expected an ES_Descriptor (tag 0x03), found tag 0x" + p.hex(d->tag));
   ByteReader& in = d->body;
   EsDescriptor es;
   es.es_id = static_cast<std::uint16_t>(in.u16());
   const std::uint32_t flags = in.u8();
-  if (flags & 0x80) in.skip(2);             // dependsOn_ES_ID
-  if (flags & 0x40) in.skip(in.u8());       // URL
-  if (flags & 0x20) in.skip(2);             // OCR_ES_Id
+  if (flags & 0x80) in.skip(2);        // dependsOn_ES_ID
+  if (flags & 0x40) in.skip(in.u8());  // URL
+  if (flags & 0x20) in.skip(2);        // OCR_ES_Id
   if (in.failed()) return p.cut_short(in, "ES_Descriptor");
   bool have_config = false;
   while (in.remaining() > 0) {
@@ -178,12 +178,12 @@ Result<EsDescriptor> decode_es_descriptor(const Bytes& bytes, std::uint64_t base
       if (sub->body.failed()) return p.cut_short(sub->body, "SLConfigDescriptor");
     }
   }
-  if (!have_config) return p.error(codes::mp4::missing_descriptor, d->offset, "ES_Descriptor without a DecoderConfigDescriptor");
+  if (!have_config)
+    return p.error(codes::mp4::missing_descriptor, d->offset, "ES_Descriptor without a DecoderConfigDescriptor");
   return es;
 }
 
-Result<InitialObjectDescriptor> decode_initial_object_descriptor(const Bytes& bytes,
-                                                                 std::uint64_t base,
+Result<InitialObjectDescriptor> decode_initial_object_descriptor(const Bytes& bytes, std::uint64_t base,
                                                                  const std::string& file) {
   DescriptorParser p(file);
   ByteReader outer(bytes.data(), bytes.size(), base);
@@ -191,8 +191,8 @@ Result<InitialObjectDescriptor> decode_initial_object_descriptor(const Bytes& by
   if (!d) return d.error();
   // 0x02 is the IOD form outside MP4 files; it has the same header.
   if (d->tag != kMp4IodTag && d->tag != 0x02)
-    return p.error(codes::mp4::unexpected_descriptor, d->offset, "expected an initial object descriptor (tag 0x10), found tag 0x" +
-                                  p.hex(d->tag));
+    return p.error(codes::mp4::unexpected_descriptor, d->offset,
+                   "expected an initial object descriptor (tag 0x10), found tag 0x" + p.hex(d->tag));
   ByteReader& in = d->body;
   InitialObjectDescriptor iod;
   const std::uint32_t head = in.u16();
@@ -216,9 +216,8 @@ Result<InitialObjectDescriptor> decode_initial_object_descriptor(const Bytes& by
   return iod;
 }
 
-Result<std::vector<ObjectDescriptor>> decode_object_descriptor_updates(const Bytes& bytes,
-                                                                      std::uint64_t base,
-                                                                      const std::string& file) {
+Result<std::vector<ObjectDescriptor>> decode_object_descriptor_updates(const Bytes& bytes, std::uint64_t base,
+                                                                       const std::string& file) {
   DescriptorParser p(file);
   ByteReader commands(bytes.data(), bytes.size(), base);
   std::vector<ObjectDescriptor> ods;
@@ -226,15 +225,16 @@ Result<std::vector<ObjectDescriptor>> decode_object_descriptor_updates(const Byt
     auto command = p.next(commands);
     if (!command) return command.error();
     if (command->tag != kObjectDescriptorUpdateTag)
-      return p.error(codes::mp4::unexpected_descriptor, command->offset, "OD command with tag 0x" + p.hex(command->tag) +
-                                          " is not an ObjectDescriptorUpdate; fapc reads only those");
+      return p.error(
+          codes::mp4::unexpected_descriptor, command->offset,
+          "OD command with tag 0x" + p.hex(command->tag) + " is not an ObjectDescriptorUpdate; fapc reads only those");
     ByteReader& list = command->body;
     while (list.remaining() > 0) {
       auto d = p.next(list);
       if (!d) return d.error();
       if (d->tag != kMp4OdTag && d->tag != 0x01)
-        return p.error(codes::mp4::unexpected_descriptor, d->offset, "expected an object descriptor (tag 0x11), found tag 0x" +
-                                      p.hex(d->tag));
+        return p.error(codes::mp4::unexpected_descriptor, d->offset,
+                       "expected an object descriptor (tag 0x11), found tag 0x" + p.hex(d->tag));
       ByteReader& in = d->body;
       ObjectDescriptor od;
       const std::uint32_t head = in.u16();

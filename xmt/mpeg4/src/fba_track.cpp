@@ -11,9 +11,7 @@ namespace {
 constexpr std::uint8_t kFbaVisualObjectByte = 0x23;
 constexpr std::uint8_t kStuffingWhenAligned = 0x7F;
 
-void put_start_code(Bytes& out, std::uint8_t code) {
-  out.insert(out.end(), {0x00, 0x00, 0x01, code});
-}
+void put_start_code(Bytes& out, std::uint8_t code) { out.insert(out.end(), {0x00, 0x00, 0x01, code}); }
 
 bool starts_with_start_code(std::span<const std::uint8_t> bytes, std::uint8_t code) {
   return bytes.size() >= 4 && bytes[0] == 0 && bytes[1] == 0 && bytes[2] == 1 && bytes[3] == code;
@@ -41,11 +39,16 @@ Result<std::uint8_t> fba_profile_level(const Bytes& dsi, const std::string& file
 
 std::string_view fba_profile_name(std::uint8_t profile_level) {
   switch (profile_level) {
-    case kSimpleFaceAnimationL1: return "Simple Face Animation @ L1";
-    case kSimpleFaceAnimationL2: return "Simple Face Animation @ L2";
-    case kSimpleFbaL1: return "Simple FBA @ L1";
-    case kSimpleFbaL2: return "Simple FBA @ L2";
-    default: return "";
+    case kSimpleFaceAnimationL1:
+      return "Simple Face Animation @ L1";
+    case kSimpleFaceAnimationL2:
+      return "Simple Face Animation @ L2";
+    case kSimpleFbaL1:
+      return "Simple FBA @ L1";
+    case kSimpleFbaL2:
+      return "Simple FBA @ L2";
+    default:
+      return "";
   }
 }
 
@@ -77,10 +80,12 @@ Status check_fba_track(const FbaTrackView& track) {
   for (std::size_t i = 0; i < track.samples.size(); ++i) {
     const FbaSampleView& s = track.samples[i];
     if (!starts_with_start_code(s.bytes, kFbaObjectPlaneStartCode))
-      return make_error(codes::mp4::bad_fba_track, Location{}, "FBA sample " + std::to_string(i + 1) +
-                                        " does not start with the plane start code 00 00 01 BB");
+      return make_error(
+          codes::mp4::bad_fba_track, Location{},
+          "FBA sample " + std::to_string(i + 1) + " does not start with the plane start code 00 00 01 BB");
     if (s.duration == 0)
-      return make_error(codes::mp4::bad_fba_track, Location{}, "FBA sample " + std::to_string(i + 1) + " lasts 0 ticks");
+      return make_error(codes::mp4::bad_fba_track, Location{},
+                        "FBA sample " + std::to_string(i + 1) + " lasts 0 ticks");
   }
   return ok_status();
 }

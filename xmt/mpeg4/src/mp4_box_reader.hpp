@@ -12,8 +12,8 @@
 namespace fapc::xmt {
 
 struct Box {
-  std::string type;         // four characters; bytes outside printable ASCII shown as '?'
-  std::uint64_t offset = 0;  // file offset of the box's first byte
+  std::string type;             // four characters; bytes outside printable ASCII shown as '?'
+  std::uint64_t offset = 0;     // file offset of the box's first byte
   ByteReader body{nullptr, 0};  // the payload after the header
 };
 

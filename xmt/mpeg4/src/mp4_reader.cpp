@@ -1,7 +1,7 @@
 // The MP4 reader: the box tree down to the sample tables, then each track's samples resolved to
 // file offsets, decode times and sync flags, every one checked to lie inside the file.
-#include <optional>
 #include "fapc/mpeg4/mp4_reader.hpp"
+#include <optional>
 
 #include <algorithm>
 
@@ -143,11 +143,14 @@ class Mp4Parser {
       in.u24();
       const std::uint32_t count = in.u32();
       if (in.failed()) return error(codes::mp4::box_truncated, child.offset, "'elst' box cut short");
-      if (version > 1) return error(codes::mp4::bad_edit_list, child.offset, "'elst' version " + std::to_string(version) + " is unknown");
+      if (version > 1)
+        return error(codes::mp4::bad_edit_list, child.offset,
+                     "'elst' version " + std::to_string(version) + " is unknown");
       const std::size_t entry = version == 1 ? 20 : 12;
       if (count > in.remaining() / entry)
-        return error(codes::mp4::bad_edit_list, child.offset, "'elst' claims " + std::to_string(count) + " entries; its box holds " +
-                                       std::to_string(in.remaining() / entry));
+        return error(codes::mp4::bad_edit_list, child.offset,
+                     "'elst' claims " + std::to_string(count) + " entries; its box holds " +
+                         std::to_string(in.remaining() / entry));
       track.edits_offset = child.offset;
       for (std::uint32_t i = 0; i < count; ++i) {
         Mp4Edit e;
@@ -160,7 +163,8 @@ class Mp4Parser {
         }
         const std::uint32_t rate = in.u32();
         if (rate != 0x00010000 && e.media_time != -1)
-          return error(codes::mp4::bad_edit_list, child.offset, "'elst' entry " + std::to_string(i + 1) + " plays at a rate other than 1");
+          return error(codes::mp4::bad_edit_list, child.offset,
+                       "'elst' entry " + std::to_string(i + 1) + " plays at a rate other than 1");
         track.edits.push_back(e);
       }
     }
@@ -209,11 +213,12 @@ class Mp4Parser {
     for (Box& child : *boxes) {
       ByteReader& in = child.body;
       const std::string& type = child.type;
-      if (type != "stsd" && type != "stts" && type != "stss" && type != "stsc" && type != "stsz" &&
-          type != "stco" && type != "co64" && type != "stz2")
+      if (type != "stsd" && type != "stts" && type != "stss" && type != "stsc" && type != "stsz" && type != "stco" &&
+          type != "co64" && type != "stz2")
         continue;
       in.u32();  // version, flags
-      if (type == "stz2") return error(codes::mp4::compact_sizes, child.offset, "compact sample sizes ('stz2') are not supported");
+      if (type == "stz2")
+        return error(codes::mp4::compact_sizes, child.offset, "compact sample sizes ('stz2') are not supported");
       if (type == "stsd") {
         if (Status s = stsd(child, track); !s) return s;
         continue;
@@ -224,15 +229,17 @@ class Mp4Parser {
         t.have_stsz = true;
         if (fixed != 0) {
           // One size for all: the count is bounded by what the file can hold, not by this box.
-          if (count > out_.data.size()) return error(codes::mp4::bad_sample_table, child.offset, "'stsz' sample count " + std::to_string(count) + " exceeds the file size");
+          if (count > out_.data.size())
+            return error(codes::mp4::bad_sample_table, child.offset,
+                         "'stsz' sample count " + std::to_string(count) + " exceeds the file size");
           t.sizes.assign(count, fixed);
           count = 0;
         }
       }
       const std::size_t entry = type == "stts" ? 8 : type == "stsc" ? 12 : type == "co64" ? 8 : 4;
       if (in.failed() || count > in.remaining() / entry)
-        return error(codes::mp4::bad_sample_table, child.offset, "'" + type + "' box holds fewer entries than its count (" +
-                                       std::to_string(count) + ")");
+        return error(codes::mp4::bad_sample_table, child.offset,
+                     "'" + type + "' box holds fewer entries than its count (" + std::to_string(count) + ")");
       for (std::uint32_t i = 0; i < count; ++i) {
         if (type == "stts") {
           const std::uint32_t n = in.u32();
@@ -244,8 +251,9 @@ class Mp4Parser {
           const std::uint32_t first = in.u32(), per_chunk = in.u32();
           in.u32();  // sample description index
           if (first == 0 || (!t.stsc.empty() && first <= t.stsc.back().first_chunk))
-            return error(codes::mp4::bad_sample_table, child.offset, "'stsc' entry " + std::to_string(i + 1) + " has first chunk " +
-                                           std::to_string(first) + ", not after the previous entry");
+            return error(codes::mp4::bad_sample_table, child.offset,
+                         "'stsc' entry " + std::to_string(i + 1) + " has first chunk " + std::to_string(first) +
+                             ", not after the previous entry");
           t.stsc.push_back({first, per_chunk});
         } else if (type == "stsz") {
           t.sizes.push_back(in.u32());
@@ -269,7 +277,8 @@ class Mp4Parser {
   Status stsd(Box& box, Mp4Track& track) {
     ByteReader& in = box.body;
     const std::uint32_t count = in.u32();
-    if (in.failed() || count == 0) return error(codes::mp4::missing_box, box.offset, "'stsd' box without a sample entry");
+    if (in.failed() || count == 0)
+      return error(codes::mp4::missing_box, box.offset, "'stsd' box without a sample entry");
     if (count > 1) warn(box.offset, "only the first of " + std::to_string(count) + " sample entries is read");
     auto entries = read_boxes(ByteReader(in.here(), in.remaining(), in.offset()), file_);
     if (!entries) return entries.error();
@@ -279,12 +288,17 @@ class Mp4Parser {
     // Bytes before the child boxes: SampleEntry (8), plus VisualSampleEntry (70) or
     // AudioSampleEntry (20) fields.
     std::size_t fixed = 0;
-    if (entry.type == "mp4s") fixed = 8;
-    else if (entry.type == "mp4v") fixed = 78;
-    else if (entry.type == "mp4a") fixed = 28;
-    else return ok_status();  // not an MPEG-4 systems sample entry: no ES descriptor to read
+    if (entry.type == "mp4s")
+      fixed = 8;
+    else if (entry.type == "mp4v")
+      fixed = 78;
+    else if (entry.type == "mp4a")
+      fixed = 28;
+    else
+      return ok_status();  // not an MPEG-4 systems sample entry: no ES descriptor to read
     ByteReader& e = entry.body;
-    if (e.remaining() < fixed) return error(codes::mp4::box_truncated, entry.offset, "sample entry '" + entry.type + "' cut short");
+    if (e.remaining() < fixed)
+      return error(codes::mp4::box_truncated, entry.offset, "sample entry '" + entry.type + "' cut short");
     e.skip(fixed);
     auto children = read_boxes(ByteReader(e.here(), e.remaining(), e.offset()), file_);
     if (!children) return children.error();
@@ -297,7 +311,8 @@ class Mp4Parser {
       if (!es) return es.error();
       track.es = std::move(*es);
     }
-    if (!track.es) return error(codes::mp4::missing_box, entry.offset, "sample entry '" + entry.type + "' without an 'esds' box");
+    if (!track.es)
+      return error(codes::mp4::missing_box, entry.offset, "sample entry '" + entry.type + "' without an 'esds' box");
     return ok_status();
   }
 
@@ -312,19 +327,24 @@ class Mp4Parser {
     std::size_t i = 0;
     std::uint64_t time = 0;
     for (const auto& [count, duration] : t.stts) {
-      if (count > n - i) return error(codes::mp4::bad_sample_table, t.stts_at, id + ": 'stts' describes more samples than 'stsz' (" + std::to_string(n) + ")");
+      if (count > n - i)
+        return error(codes::mp4::bad_sample_table, t.stts_at,
+                     id + ": 'stts' describes more samples than 'stsz' (" + std::to_string(n) + ")");
       for (std::uint32_t k = 0; k < count; ++k, ++i) {
         track.samples[i].decode_time = time;
         track.samples[i].duration = duration;
         time += duration;
       }
     }
-    if (i != n) return error(codes::mp4::bad_sample_table, t.stts_at, id + ": 'stts' describes " + std::to_string(i) + " samples, 'stsz' " + std::to_string(n));
+    if (i != n)
+      return error(codes::mp4::bad_sample_table, t.stts_at,
+                   id + ": 'stts' describes " + std::to_string(i) + " samples, 'stsz' " + std::to_string(n));
     if (t.stss) {
       for (Mp4Sample& s : track.samples) s.sync = false;
       for (std::uint32_t number : *t.stss) {
         if (number == 0 || number > n)
-          return error(codes::mp4::bad_sample_table, t.stss_at, id + ": 'stss' names sample " + std::to_string(number) + " of " + std::to_string(n));
+          return error(codes::mp4::bad_sample_table, t.stss_at,
+                       id + ": 'stss' names sample " + std::to_string(number) + " of " + std::to_string(n));
         track.samples[number - 1].sync = true;
       }
     }
@@ -341,12 +361,15 @@ class Mp4Parser {
         s.offset = offset;
         s.size = t.sizes[i];
         if (offset > out_.data.size() || s.size > out_.data.size() - offset)
-          return error(codes::mp4::bad_sample_table, t.stco_at, id + ": sample " + std::to_string(i + 1) + " (" + std::to_string(s.size) +
-                               " bytes at offset " + std::to_string(offset) + ") lies outside the file");
+          return error(codes::mp4::bad_sample_table, t.stco_at,
+                       id + ": sample " + std::to_string(i + 1) + " (" + std::to_string(s.size) + " bytes at offset " +
+                           std::to_string(offset) + ") lies outside the file");
         offset += s.size;
       }
     }
-    if (i != n) return error(codes::mp4::bad_sample_table, t.stsc_at, id + ": 'stsc' and 'stco' place " + std::to_string(i) + " of " + std::to_string(n) + " samples");
+    if (i != n)
+      return error(codes::mp4::bad_sample_table, t.stsc_at,
+                   id + ": 'stsc' and 'stco' place " + std::to_string(i) + " of " + std::to_string(n) + " samples");
     return ok_status();
   }
 
@@ -362,7 +385,8 @@ class Mp4Parser {
     return box_error(code, file_, offset, message);
   }
   void warn(std::uint64_t offset, const std::string& message) {
-    out_.warnings.push_back(make_warning(codes::mp4::ignored, Location::binary(file_, static_cast<std::int64_t>(offset)), message));
+    out_.warnings.push_back(
+        make_warning(codes::mp4::ignored, Location::binary(file_, static_cast<std::int64_t>(offset)), message));
   }
 
   Mp4File& out_;

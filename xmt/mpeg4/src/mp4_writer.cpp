@@ -27,7 +27,7 @@ std::uint64_t to_movie_time(std::uint64_t ticks, std::uint32_t timescale) {
 
 // One edit of an edit list (14496-12 §8.6.6), times in the movie's timescale and the media's.
 struct Edit {
-  std::uint32_t duration = 0;  // movie timescale
+  std::uint32_t duration = 0;    // movie timescale
   std::int32_t media_time = -1;  // -1: an empty edit (nothing plays)
 };
 
@@ -93,9 +93,9 @@ void write_sample_entry(BoxWriter& box, const TrackPlan& t) {
   ByteWriter& out = box.out();
   box.open(t.visual() ? "mp4v" : t.audio() ? "mp4a" : "mp4s");
   out.zeros(6);
-  out.u16(1);  // data_reference_index
+  out.u16(1);       // data_reference_index
   if (t.audio()) {  // AudioSampleEntry (14496-14 §5.6): the decoder configuration is in esds
-    out.zeros(8);  // reserved
+    out.zeros(8);   // reserved
     out.u16(static_cast<std::uint32_t>(t.channels));
     out.u16(16);  // samplesize
     out.u16(0);   // pre_defined
@@ -104,13 +104,13 @@ void write_sample_entry(BoxWriter& box, const TrackPlan& t) {
     out.u32(t.timescale < 65536 ? t.timescale << 16 : 0);
   }
   if (t.visual()) {
-    out.zeros(16);      // pre_defined, reserved, pre_defined[3]
-    out.u16(0);         // width: an FBA stream has no picture size
-    out.u16(0);         // height
+    out.zeros(16);        // pre_defined, reserved, pre_defined[3]
+    out.u16(0);           // width: an FBA stream has no picture size
+    out.u16(0);           // height
     out.u32(0x00480000);  // 72 dpi
     out.u32(0x00480000);
     out.u32(0);
-    out.u16(1);  // frame_count
+    out.u16(1);     // frame_count
     out.zeros(32);  // compressorname: empty
     out.u16(0x0018);
     out.u16(0xFFFF);  // pre_defined = -1
@@ -132,8 +132,10 @@ void write_sample_table(BoxWriter& box, const TrackPlan& t, std::uint64_t chunk_
   // stts: runs of equal durations.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> runs;
   for (std::uint32_t d : t.durations) {
-    if (!runs.empty() && runs.back().second == d) ++runs.back().first;
-    else runs.emplace_back(1, d);
+    if (!runs.empty() && runs.back().second == d)
+      ++runs.back().first;
+    else
+      runs.emplace_back(1, d);
   }
   box.open_full("stts", 0, 0);
   out.u32(static_cast<std::uint32_t>(runs.size()));
@@ -176,8 +178,8 @@ void write_track(BoxWriter& box, const TrackPlan& t, std::uint64_t chunk_offset)
   out.u32(0);
   out.u32(static_cast<std::uint32_t>(t.movie_duration()));
   out.zeros(8);
-  out.u16(0);  // layer
-  out.u16(0);  // alternate_group
+  out.u16(0);                       // layer
+  out.u16(0);                       // alternate_group
   out.u16(t.audio() ? 0x0100 : 0);  // volume: 1.0 for sound
   out.u16(0);
   write_matrix(out);
@@ -282,8 +284,8 @@ Bytes ftyp() {
   return box.out().take();
 }
 
-TrackPlan system_track(std::uint32_t id, std::string_view handler, std::string_view name,
-                       std::uint8_t stream_type, Piece sample, std::uint32_t duration) {
+TrackPlan system_track(std::uint32_t id, std::string_view handler, std::string_view name, std::uint8_t stream_type,
+                       Piece sample, std::uint32_t duration) {
   TrackPlan t;
   t.id = id;
   t.handler = handler;
@@ -378,7 +380,8 @@ Status write_mp4(const FbaTrackView& fba, const AudioTrackInput* audio, const Mp
   const auto span = static_cast<std::uint32_t>(std::max<std::uint64_t>(
       {1, to_movie_time(fba_track.duration(), fba.timescale), voice ? voice->movie_duration() : 0}));
   const BifsConfig config;
-  auto scene_au = encode_scene_replace(audio ? with_sound(face_scene(), kAudioObjectDescriptorId) : face_scene(), config);
+  auto scene_au =
+      encode_scene_replace(audio ? with_sound(face_scene(), kAudioObjectDescriptorId) : face_scene(), config);
   if (!scene_au) return scene_au.error();
   // One zero byte after the command frame. GPAC's BIFS decoder stops reading a node's field list
   // or an MFNode list early when the bits left lie in the last byte of the access unit (it counts
@@ -391,7 +394,7 @@ Status write_mp4(const FbaTrackView& fba, const AudioTrackInput* audio, const Mp
   if (audio) ods.push_back({kAudioObjectDescriptorId, {2}});
   const Bytes od_au = encode_object_descriptor_update(ods);
   TrackPlan od = system_track(kOdTrackId, "odsm", "fapc object descriptors", kObjectDescriptorStream, od_au, span);
-  od.mpod = {kFbaTrackId};  // ES_ID_Ref 1 is this first entry
+  od.mpod = {kFbaTrackId};                      // ES_ID_Ref 1 is this first entry
   if (audio) od.mpod.push_back(kAudioTrackId);  // and 2 the second
   set_bitrates(scene);
   set_bitrates(od);
@@ -417,7 +420,8 @@ Status write_mp4(const FbaTrackView& fba, const AudioTrackInput* audio, const Mp
     for (const Piece& s : tracks[i].samples) at += s.size();
   }
   if (at > std::numeric_limits<std::uint32_t>::max())
-    return make_error(codes::mp4::too_large, Location{}, "MP4 output would exceed 4 GiB; fapc writes 32-bit offsets only");
+    return make_error(codes::mp4::too_large, Location{},
+                      "MP4 output would exceed 4 GiB; fapc writes 32-bit offsets only");
 
   PieceOut file(sink);
   ByteWriter mdat_header;

@@ -12,8 +12,8 @@ namespace {
 // The six FAPs whose BIFS field name is not their 14496-2 name (docs/fap-table.md section 5,
 // checked against GPAC's FAP node table in tests/xmt/scene_test.cpp).
 constexpr std::pair<int, std::string_view> kRenamedFapFields[] = {
-    {6, "stretch_l_corner"},     {7, "stretch_r_corner"},     {10, "lower_b_lip_lm"},
-    {11, "lower_b_lip_rm"},      {53, "stretch_l_cornerlip"}, {54, "stretch_r_cornerlip"},
+    {6, "stretch_l_corner"}, {7, "stretch_r_corner"},     {10, "lower_b_lip_lm"},
+    {11, "lower_b_lip_rm"},  {53, "stretch_l_cornerlip"}, {54, "stretch_r_cornerlip"},
 };
 
 SceneNode node(std::string type, std::string def_name = {}, std::vector<SceneField> fields = {}) {
@@ -48,8 +48,10 @@ std::string scene_text(const SceneNode& node) {
       const bool list = is_mf_node_field(node.type, f.name);
       if (list) out += "[ ";
       for (const SceneNode& child : *nodes) out += scene_text(child) + ' ';
-      if (list) out += ']';
-      else out.pop_back();
+      if (list)
+        out += ']';
+      else
+        out.pop_back();
     } else if (const auto* i = std::get_if<std::int32_t>(&f.value)) {
       out += std::to_string(*i);
     } else if (const auto* b = std::get_if<bool>(&f.value)) {
@@ -86,9 +88,9 @@ std::vector<SceneField> viseme_fields(const VisemeFields& v) {
 }
 
 std::vector<SceneField> expression_fields(const ExpressionFields& e) {
-  return {{"expression_select1", e.select1},     {"expression_intensity1", e.intensity1},
-          {"expression_select2", e.select2},     {"expression_intensity2", e.intensity2},
-          {"init_face", e.init_face != 0},       {"expression_def", e.def != 0}};
+  return {{"expression_select1", e.select1}, {"expression_intensity1", e.intensity1},
+          {"expression_select2", e.select2}, {"expression_intensity2", e.intensity2},
+          {"init_face", e.init_face != 0},   {"expression_def", e.def != 0}};
 }
 
 SceneNode face_scene(const FapFrame* initial) {
@@ -97,12 +99,11 @@ SceneNode face_scene(const FapFrame* initial) {
     // Viseme and Expression nodes always exist in this form, so that timed commands can address
     // their fields by DEF name even when the first frame does not mask FAP 1 or 2.
     const FapFrame& f = *initial;
-    fap.fields.push_back(children(
-        "viseme", {node("Viseme", std::string(kVisemeDefName),
-                        f.has(1) ? viseme_fields(f.viseme) : std::vector<SceneField>{})}));
-    fap.fields.push_back(children(
-        "expression", {node("Expression", std::string(kExpressionDefName),
-                            f.has(2) ? expression_fields(f.expression) : std::vector<SceneField>{})}));
+    fap.fields.push_back(children("viseme", {node("Viseme", std::string(kVisemeDefName),
+                                                  f.has(1) ? viseme_fields(f.viseme) : std::vector<SceneField>{})}));
+    fap.fields.push_back(
+        children("expression", {node("Expression", std::string(kExpressionDefName),
+                                     f.has(2) ? expression_fields(f.expression) : std::vector<SceneField>{})}));
     for (int number = 3; number <= kFapCount; ++number)
       if (f.has(number)) fap.fields.push_back({std::string(fap_field_name(number)), f.value(number)});
   }

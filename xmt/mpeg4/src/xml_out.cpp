@@ -7,8 +7,7 @@ namespace fapc::xmt {
 void XmlOut::start_tag(const std::string& name, const XmlAttributes& attributes) {
   text_.append(2 * open_.size(), ' ');
   text_ += '<' + name;
-  for (const auto& [key, value] : attributes)
-    text_ += ' ' + key + "=\"" + xml_escape(value, XmlPlace::attribute) + '"';
+  for (const auto& [key, value] : attributes) text_ += ' ' + key + "=\"" + xml_escape(value, XmlPlace::attribute) + '"';
 }
 
 void XmlOut::open(const std::string& name, const XmlAttributes& attributes) {

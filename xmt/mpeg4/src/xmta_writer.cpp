@@ -37,8 +37,10 @@ void write_node(XmlOut& xml, const SceneNode& node) {
   if (!node.def_name.empty()) attributes.emplace_back("DEF", node.def_name);
   bool has_children = false;
   for (const SceneField& f : node.fields) {
-    if (std::holds_alternative<std::vector<SceneNode>>(f.value)) has_children = true;
-    else attributes.emplace_back(f.name, value_text(f.value));
+    if (std::holds_alternative<std::vector<SceneNode>>(f.value))
+      has_children = true;
+    else
+      attributes.emplace_back(f.name, value_text(f.value));
   }
   if (!has_children) {
     xml.empty(node.type, attributes);
@@ -69,12 +71,11 @@ void write_sl_config(XmlOut& xml) {
   xml.close();
 }
 
-void write_system_stream(XmlOut& xml, const std::string& es_id, std::uint32_t binary_id,
-                         std::uint8_t stream_type, bool bifs_config) {
+void write_system_stream(XmlOut& xml, const std::string& es_id, std::uint32_t binary_id, std::uint8_t stream_type,
+                         bool bifs_config) {
   xml.open("ES_Descriptor", {{"ES_ID", es_id}, {"binaryID", number(binary_id)}});
   xml.open("decConfigDescr");
-  const XmlAttributes types = {{"streamType", number(stream_type)},
-                               {"objectTypeIndication", number(kSystemsV1Object)}};
+  const XmlAttributes types = {{"streamType", number(stream_type)}, {"objectTypeIndication", number(kSystemsV1Object)}};
   if (!bifs_config) {
     xml.empty("DecoderConfigDescriptor", types);
   } else {
@@ -133,8 +134,8 @@ void write_object_descriptor(XmlOut& xml, std::uint16_t od_id, const std::string
   xml.open("esDescr");
   xml.open("ES_Descriptor", {{"ES_ID", es_name}, {"binaryID", number(es_id)}});
   xml.open("decConfigDescr");
-  xml.open("DecoderConfigDescriptor", {{"streamType", number(stream_type)},
-                                       {"objectTypeIndication", number(object_type)}});
+  xml.open("DecoderConfigDescriptor",
+           {{"streamType", number(stream_type)}, {"objectTypeIndication", number(object_type)}});
   xml.open("decSpecificInfo");
   xml.empty("DecoderSpecificInfo", {{"src", "data:application/octet-string," + percent_bytes(dsi)}});
   xml.close();
@@ -146,15 +147,14 @@ void write_object_descriptor(XmlOut& xml, std::uint16_t od_id, const std::string
   for (int i = 0; i < 3; ++i) xml.close();
 }
 
-void write_object_descriptors(XmlOut& xml, const Bytes& dsi, const std::string& stream_source,
-                              const XmtaAudio* audio) {
+void write_object_descriptors(XmlOut& xml, const Bytes& dsi, const std::string& stream_source, const XmtaAudio* audio) {
   xml.open("ObjectDescriptorUpdate");
   xml.open("OD");
-  write_object_descriptor(xml, kFbaObjectDescriptorId, "fba", kFbaTrackId, kVisualStream, kVisual14496_2Object,
-                          dsi, stream_source);
+  write_object_descriptor(xml, kFbaObjectDescriptorId, "fba", kFbaTrackId, kVisualStream, kVisual14496_2Object, dsi,
+                          stream_source);
   if (audio)
-    write_object_descriptor(xml, kAudioObjectDescriptorId, "voice", kAudioTrackId, kAudioStream,
-                            kAudio14496_3Object, audio->decoder_specific_info, audio->stream_source);
+    write_object_descriptor(xml, kAudioObjectDescriptorId, "voice", kAudioTrackId, kAudioStream, kAudio14496_3Object,
+                            audio->decoder_specific_info, audio->stream_source);
   xml.close();
   xml.close();
 }
@@ -213,8 +213,10 @@ std::string write_xmta_commands(const FapSequence& sequence) {
   std::map<std::pair<std::string, std::string>, std::string> state;
   for (const auto& [def, fields] : frame_values(initial))
     for (const SceneField& f : fields) state[{def, f.name}] = value_text(f.value);
-  for (const SceneField& f : viseme_fields({})) state.try_emplace({std::string(kVisemeDefName), f.name}, value_text(f.value));
-  for (const SceneField& f : expression_fields({})) state.try_emplace({std::string(kExpressionDefName), f.name}, value_text(f.value));
+  for (const SceneField& f : viseme_fields({}))
+    state.try_emplace({std::string(kVisemeDefName), f.name}, value_text(f.value));
+  for (const SceneField& f : expression_fields({}))
+    state.try_emplace({std::string(kExpressionDefName), f.name}, value_text(f.value));
 
   XmlOut xml;
   write_head(xml, ProfileLevels{}, false);

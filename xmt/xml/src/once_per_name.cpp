@@ -32,8 +32,8 @@ void report_stray_text(const xml::XmlDocument& doc, const xmlNode* element, Once
       once.report("text " + name, doc.warning(element, "text inside " + name + " is ignored"));
     } else if (child->type == XML_ENTITY_REF_NODE) {
       const std::string entity = "&" + std::string(xml::local_name(child)) + ";";
-      once.report("entity " + entity,
-                  doc.warning(element, "entity reference " + entity + " inside " + name + " is not expanded and was ignored"));
+      once.report("entity " + entity, doc.warning(element, "entity reference " + entity + " inside " + name +
+                                                               " is not expanded and was ignored"));
     }
   }
 }

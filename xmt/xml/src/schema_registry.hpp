@@ -10,10 +10,10 @@
 namespace fapc::xmt {
 
 struct SchemaBinding {
-  std::string_view kind;       // shown to users
-  std::string_view root;       // local name of the root element
-  std::string_view ns;         // its namespace; empty: any (the schema then decides)
-  std::string_view schema;     // file name under docs/schemas/
+  std::string_view kind;    // shown to users
+  std::string_view root;    // local name of the root element
+  std::string_view ns;      // its namespace; empty: any (the schema then decides)
+  std::string_view schema;  // file name under docs/schemas/
 };
 
 // The binding for a root element, or nullptr.

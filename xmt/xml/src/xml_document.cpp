@@ -197,7 +197,8 @@ Status check_element_depth(std::string_view text, const std::string& file_name) 
   const std::optional<std::size_t> deep = first_tag_deeper_than(text, kMaxNestingDepth);
   if (!deep) return ok_status();
   const std::size_t line_start = text.rfind('\n', *deep) == std::string_view::npos ? 0 : text.rfind('\n', *deep) + 1;
-  const auto line = static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(*deep), '\n')) + 1;
+  const auto line =
+      static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(*deep), '\n')) + 1;
   std::size_t line_end = text.find('\n', *deep);
   if (line_end == std::string_view::npos) line_end = text.size();
   return nesting_too_deep(Location::text(file_name, line, static_cast<int>(*deep - line_start) + 1), "elements",
@@ -213,9 +214,10 @@ Result<XmlDocument> XmlDocument::parse(std::string_view text, const std::string&
   // before libxml2 (which stops at the same depth with a message of its own) sees the text.
   if (Status depth = check_element_depth(text, file_name); !depth) return depth.error();
   xmlInitParser();
-  std::unique_ptr<xmlParserCtxt, void (*)(xmlParserCtxtPtr)> context(xmlNewParserCtxt(),
-                                                                      xmlFreeParserCtxt);
-  if (!context) return make_error(codes::xml::parser_failed, Location::whole_file(file_name), "out of memory starting the XML parser");
+  std::unique_ptr<xmlParserCtxt, void (*)(xmlParserCtxtPtr)> context(xmlNewParserCtxt(), xmlFreeParserCtxt);
+  if (!context)
+    return make_error(codes::xml::parser_failed, Location::whole_file(file_name),
+                      "out of memory starting the XML parser");
   ParseReport report{file_name, std::nullopt, {}, &blank_text};
   context->_private = &report;
   context->sax->serror = collect_error;
@@ -224,11 +226,13 @@ Result<XmlDocument> XmlDocument::parse(std::string_view text, const std::string&
   xmlSetGenericErrorFunc(nullptr, ignore_generic_error);
   // No network, no DTD loading or defaulted attributes, no entity substitution: an external
   // entity is never fetched and a document reads the same wherever it is.
-  xmlDocPtr parsed = xmlCtxtReadMemory(context.get(), text.data(), static_cast<int>(text.size()),
-                                       file_name.c_str(), nullptr, XML_PARSE_NONET | XML_PARSE_COMPACT);
+  xmlDocPtr parsed = xmlCtxtReadMemory(context.get(), text.data(), static_cast<int>(text.size()), file_name.c_str(),
+                                       nullptr, XML_PARSE_NONET | XML_PARSE_COMPACT);
   xmlSetGenericErrorFunc(nullptr, nullptr);
   XmlDocument document;
-  document.doc_ = std::shared_ptr<xmlDoc>(parsed, [](xmlDocPtr d) { if (d) xmlFreeDoc(d); });
+  document.doc_ = std::shared_ptr<xmlDoc>(parsed, [](xmlDocPtr d) {
+    if (d) xmlFreeDoc(d);
+  });
   document.file_ = file_name;
   document.text_ = text;
   document.index_lines();
@@ -288,7 +292,8 @@ Result<XmlDocument> XmlDocument::stream(std::string_view text, const std::string
     too_deep = too_deep || (!tag.empty && tag.depth + 1 > static_cast<std::size_t>(kMaxNestingDepth));
     document.add_tag(tag.offset, tag.parent, *tag.attributes);
   });
-  if (too_deep) return make_error(codes::limit::nesting_depth, Location::text(file_name, 1, 1), "elements nested too deep");
+  if (too_deep)
+    return make_error(codes::limit::nesting_depth, Location::text(file_name, 1, 1), "elements nested too deep");
   document.shrink_positions();
   // The scans touched every page; the parser reads them again one part at a time.
   if (release_text) release_text(text.size());
@@ -300,13 +305,16 @@ Result<XmlDocument> XmlDocument::stream(std::string_view text, const std::string
   state->blank_text = blank_text;
   state->tag_offsets = document.tag_offsets_.data();
   state->tag_count = document.tag_offsets_.size();
-  auto report = std::make_unique<ParseReport>(ParseReport{file_name, std::nullopt, {}, &state->blank_text, state.get()});
+  auto report =
+      std::make_unique<ParseReport>(ParseReport{file_name, std::nullopt, {}, &state->blank_text, state.get()});
   // The first bytes tell the parser the encoding.
   state->fed = std::min<std::size_t>(4, text.size());
-  state->context.reset(xmlCreatePushParserCtxt(nullptr, nullptr, text.data(), static_cast<int>(state->fed),
-                                               file_name.c_str()));
+  state->context.reset(
+      xmlCreatePushParserCtxt(nullptr, nullptr, text.data(), static_cast<int>(state->fed), file_name.c_str()));
   xmlParserCtxtPtr context = state->context.get();
-  if (!context) return make_error(codes::xml::parser_failed, Location::whole_file(file_name), "out of memory starting the XML parser");
+  if (!context)
+    return make_error(codes::xml::parser_failed, Location::whole_file(file_name),
+                      "out of memory starting the XML parser");
   xmlCtxtUseOptions(context, XML_PARSE_NONET | XML_PARSE_COMPACT);
   context->_private = report.get();
   context->sax->serror = collect_error;
@@ -515,8 +523,7 @@ Diagnostic XmlDocument::error(ErrorCode code, const xmlNode* element, std::strin
 Diagnostic XmlDocument::warning(const xmlNode* element, std::string message) const {
   return with_line(make_warning(where(element), std::move(message)));
 }
-Diagnostic XmlDocument::warning(const xmlNode* element, std::string_view attribute,
-                                std::string message) const {
+Diagnostic XmlDocument::warning(const xmlNode* element, std::string_view attribute, std::string message) const {
   return with_line(make_warning(where(element, attribute), std::move(message)));
 }
 

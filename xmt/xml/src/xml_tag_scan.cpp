@@ -21,7 +21,9 @@ class Scanner {
     return tags;
   }
 
-  void each(const std::function<void(const ScannedTagView&)>& on_tag) { scan(on_tag, [] {}); }
+  void each(const std::function<void(const ScannedTagView&)>& on_tag) {
+    scan(on_tag, [] {});
+  }
 
   std::optional<std::size_t> first_deeper_than(int limit) {
     int depth = 0;
@@ -39,7 +41,7 @@ class Scanner {
   std::string_view text_;
   std::size_t pos_ = 0;
   std::vector<std::pair<std::string_view, std::size_t>> attributes_;  // of the tag being read
-  std::vector<std::size_t> open_;  // numbers of the elements open around the scan
+  std::vector<std::size_t> open_;                                     // numbers of the elements open around the scan
   std::size_t started_ = 0;
 
   template <class OnStart, class OnEnd>
@@ -110,8 +112,8 @@ class Scanner {
 
   std::string_view name() {
     const std::size_t from = pos_;
-    while (pos_ < text_.size() && !is_space(text_[pos_]) && text_[pos_] != '/' &&
-           text_[pos_] != '>' && text_[pos_] != '=') {
+    while (pos_ < text_.size() && !is_space(text_[pos_]) && text_[pos_] != '/' && text_[pos_] != '>' &&
+           text_[pos_] != '=') {
       ++pos_;
     }
     return text_.substr(from, pos_ - from);

@@ -14,10 +14,10 @@
 namespace fapc::xml {
 
 struct ScannedTag {
-  std::size_t offset = 0;  // the '<'
-  std::string name;        // qualified name as written
+  std::size_t offset = 0;                                       // the '<'
+  std::string name;                                             // qualified name as written
   std::vector<std::pair<std::string, std::size_t>> attributes;  // name as written, offset of it
-  bool empty = false;      // an empty-element tag ("<x/>"): opens no level
+  bool empty = false;                                           // an empty-element tag ("<x/>"): opens no level
 };
 
 // Start tags (and empty-element tags) in document order.

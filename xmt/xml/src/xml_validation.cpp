@@ -33,9 +33,9 @@
 
 #include "fapc/codec/deep_stack.hpp"
 #include "fapc/xml/codes.hpp"
+#include "fapc/xml/xml_document.hpp"
 #include "schema_registry.hpp"
 #include "xml_tag_scan.hpp"
-#include "fapc/xml/xml_document.hpp"
 
 namespace fapc::xmt {
 
@@ -122,9 +122,9 @@ bool is_number_list(std::string_view s) {
 // Which attribute a problem is about, as Xerces' API says (never its message): the problem is
 // moved there from the end of the start tag where Xerces reports it.
 struct AttributeTarget {
-  std::string name;     // local name
-  bool at_value = true; // point at the value (false: at the name, for an undeclared attribute)
-  std::string token;    // within the value: this token (an IDREFS item), or empty for the start
+  std::string name;      // local name
+  bool at_value = true;  // point at the value (false: at the name, for an undeclared attribute)
+  std::string token;     // within the value: this token (an IDREFS item), or empty for the start
 };
 
 // What Xerces' error codes say a problem is: a validity code, or a datatype validator's
@@ -139,10 +139,19 @@ bool about_an_attribute(const ProblemCode& code) {
   using v = xc::XMLValid;
   if (code.datatype) return true;
   switch (code.validity) {
-    case v::AttNotDefined: case v::AttNotDefinedForElement: case v::DatatypeError:
-    case v::DatatypeValidationFailure: case v::ProhibitedAttributePresent: case v::AttributeNotQualified:
-    case v::AttributeNotUnQualified: case v::InvalidEmptyAttValue: case v::AttrValNotName:
-    case v::ReusedIDValue: case v::BadEntityRefAttr: case v::UnknownEntityRefAttr: case v::UnknownNotRefAttr:
+    case v::AttNotDefined:
+    case v::AttNotDefinedForElement:
+    case v::DatatypeError:
+    case v::DatatypeValidationFailure:
+    case v::ProhibitedAttributePresent:
+    case v::AttributeNotQualified:
+    case v::AttributeNotUnQualified:
+    case v::InvalidEmptyAttValue:
+    case v::AttrValNotName:
+    case v::ReusedIDValue:
+    case v::BadEntityRefAttr:
+    case v::UnknownEntityRefAttr:
+    case v::UnknownNotRefAttr:
     case v::AttrDupToken:
       return true;
     default:
@@ -226,7 +235,8 @@ class Collector : public xc::DefaultHandler, public xc::PSVIHandler {
     std::set<std::string> named;
     for (const auto& [where, target] : references_)
       if (!ids_.count(target.token) && named.insert(target.token).second)
-        found.push_back({make_error(codes::xml::undeclared_id, where, "ID attribute '" + target.token + "' is referenced but was never declared"),
+        found.push_back({make_error(codes::xml::undeclared_id, where,
+                                    "ID attribute '" + target.token + "' is referenced but was never declared"),
                          target});
     if (found.size() != reported.size()) return;
     for (std::size_t k = 0; k < reported.size(); ++k) {
@@ -263,13 +273,15 @@ class Collector : public xc::DefaultHandler, public xc::PSVIHandler {
       if (is_number_list(value)) continue;
       const std::string shown = value.size() > 40 ? value.substr(0, 40) + "..." : value;
       targets[problems.size()] = {name, false, {}};
-      problems.push_back(make_error(codes::xml::not_a_number_list, here(), "'" + name + "': '" + shown + "' is not a list of numbers separated by ';'"));
+      problems.push_back(make_error(codes::xml::not_a_number_list, here(),
+                                    "'" + name + "': '" + shown + "' is not a list of numbers separated by ';'"));
       codes_.push_back({});
     }
   }
 
   void add(Severity severity, const xc::SAXParseException& e, ErrorCode code = codes::xml::not_valid) {
-    const Location at = Location::text(file_, static_cast<int>(e.getLineNumber()), static_cast<int>(e.getColumnNumber()));
+    const Location at =
+        Location::text(file_, static_cast<int>(e.getLineNumber()), static_cast<int>(e.getColumnNumber()));
     problems.push_back(severity == Severity::error ? make_error(code, at, text(e.getMessage()))
                                                    : make_warning(at, text(e.getMessage())));
     codes_.push_back(next_code);
@@ -413,22 +425,24 @@ Result<ValidationReport> validate_with_xerces(std::string_view text_in, const st
     for (const std::string& k : validated_document_kinds()) known += (known.empty() ? "" : ", ") + k;
     return make_error(codes::xml::no_schema, Location::text(file, 1, 1),
                       "no schema for root element '" + first.root_name + "'" +
-                          (first.root_ns.empty() ? "" : " in namespace " + first.root_ns) +
-                          "; fapc validates " + known);
+                          (first.root_ns.empty() ? "" : " in namespace " + first.root_ns) + "; fapc validates " +
+                          known);
   }
   const auto schema = embedded_schemas().find(std::string(binding->schema));
   if (schema == embedded_schemas().end())
-    return make_error(codes::xml::schema_missing, Location::whole_file(file), "schema " + std::string(binding->schema) + " was not built in");
+    return make_error(codes::xml::schema_missing, Location::whole_file(file),
+                      "schema " + std::string(binding->schema) + " was not built in");
 
   // Pass 2: validate against the cached grammar.
   Collector collector(file, binding->schema == "xmt-o.xsd");
   Reader reader = make_reader(collector, security, true);
   const XmlCh schema_id(std::string(binding->schema));
-  xc::MemBufInputSource grammar(reinterpret_cast<const XMLByte*>(schema->second.data()),
-                                schema->second.size(), schema_id.get(), false);
+  xc::MemBufInputSource grammar(reinterpret_cast<const XMLByte*>(schema->second.data()), schema->second.size(),
+                                schema_id.get(), false);
   if (!reader->loadGrammar(grammar, xc::Grammar::SchemaGrammarType, true) || !collector.problems.empty()) {
     const std::string why = collector.problems.empty() ? "" : ": " + collector.problems.front().message;
-    return make_error(codes::xml::schema_missing, Location::whole_file(file), "built-in schema " + std::string(binding->schema) + " does not load" + why);
+    return make_error(codes::xml::schema_missing, Location::whole_file(file),
+                      "built-in schema " + std::string(binding->schema) + " does not load" + why);
   }
   xc::MemBufInputSource in(reinterpret_cast<const XMLByte*>(text_in.data()), text_in.size(), id.get(), false);
   reader->parse(in);

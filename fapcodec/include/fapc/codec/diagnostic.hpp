@@ -22,12 +22,8 @@ struct Location {
   int column = 0;
   std::int64_t byte_offset = -1;
 
-  static Location text(std::string file, int line, int column) {
-    return Location{std::move(file), line, column, -1};
-  }
-  static Location binary(std::string file, std::int64_t offset) {
-    return Location{std::move(file), 0, 0, offset};
-  }
+  static Location text(std::string file, int line, int column) { return Location{std::move(file), line, column, -1}; }
+  static Location binary(std::string file, std::int64_t offset) { return Location{std::move(file), 0, 0, offset}; }
   static Location whole_file(std::string file) { return Location{std::move(file), 0, 0, -1}; }
 };
 
@@ -117,8 +113,7 @@ inline Diagnostic make_warning(Location where, std::string message, std::string 
   return make_diagnostic(Severity::warning, ErrorKind::bad_input, std::move(where), std::move(message),
                          std::move(source_line), "");
 }
-inline Diagnostic make_warning(WarningCode code, Location where, std::string message,
-                               std::string source_line = {}) {
+inline Diagnostic make_warning(WarningCode code, Location where, std::string message, std::string source_line = {}) {
   return make_diagnostic(Severity::warning, ErrorKind::bad_input, std::move(where), std::move(message),
                          std::move(source_line), code.name);
 }
@@ -128,8 +123,8 @@ inline Diagnostic make_warning(WarningCode code, Location where, std::string mes
 template <class T>
 class Result {
  public:
-  Result(T value) : state_(std::move(value)) {}                 // NOLINT: implicit on purpose
-  Result(Diagnostic error) : state_(std::move(error)) {}        // NOLINT: implicit on purpose
+  Result(T value) : state_(std::move(value)) {}           // NOLINT: implicit on purpose
+  Result(Diagnostic error) : state_(std::move(error)) {}  // NOLINT: implicit on purpose
 
   bool ok() const { return std::holds_alternative<T>(state_); }
   explicit operator bool() const { return ok(); }

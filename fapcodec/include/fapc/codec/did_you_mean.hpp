@@ -30,8 +30,7 @@ std::vector<std::string> closest_names(std::string_view name, const std::vector<
 std::size_t plausible_distance(std::string_view name);
 
 // "; did you mean a, b or c?" over the plausible closest names, or "" when none is close.
-std::string did_you_mean(std::string_view name, const std::vector<std::string>& candidates,
-                         std::size_t how_many = 3);
+std::string did_you_mean(std::string_view name, const std::vector<std::string>& candidates, std::size_t how_many = 3);
 
 // How a message quotes a name the input gave: 'name', or its first kQuotedNameLength characters
 // and its length when longer ('abc...' (1000000 characters)), so that an error stays one line.

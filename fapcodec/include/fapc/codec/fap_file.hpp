@@ -17,15 +17,15 @@ namespace fapc {
 // What the reader saw: the variant of the format and its deviations from the baseline layout.
 struct FapFileFacts {
   bool has_header = false;
-  std::string version;        // header's first token, e.g. "2.1"
-  std::string header_name;    // everything between version and fps, joined by single spaces
-  double header_fps = 0;      // as written (may be fractional)
-  long long header_count = -1;  // as written; -1 when there is no header
-  Location header_fps_at;       // where the header's frame rate is written
-  bool crlf = false;                 // V1
-  bool trailing_spaces = false;      // V2
-  bool final_newline = true;         // V3 when false
-  int comment_lines = 0;             // V4, V5
+  std::string version;           // header's first token, e.g. "2.1"
+  std::string header_name;       // everything between version and fps, joined by single spaces
+  double header_fps = 0;         // as written (may be fractional)
+  long long header_count = -1;   // as written; -1 when there is no header
+  Location header_fps_at;        // where the header's frame rate is written
+  bool crlf = false;             // V1
+  bool trailing_spaces = false;  // V2
+  bool final_newline = true;     // V3 when false
+  int comment_lines = 0;         // V4, V5
   bool utf8_bom = false;
   bool tabs = false;                 // V14
   bool mask_69_tokens = false;       // V8
@@ -64,8 +64,7 @@ struct FapReadResult {
 
 // `file` names the input in diagnostics. Bytes are taken as Latin-1. `progress`: as for
 // scan_fap_text below.
-Result<FapReadResult> read_fap_text(std::string_view text, const std::string& file,
-                                    const FapReadOptions& options = {},
+Result<FapReadResult> read_fap_text(std::string_view text, const std::string& file, const FapReadOptions& options = {},
                                     const std::function<void(std::size_t)>& progress = {});
 
 // Frames one at a time, for inputs too long to hold as frames (an error stops the reading).
@@ -83,8 +82,7 @@ struct FapScanResult {
 // given, is told now and then how many bytes of `text` are read and will not be looked at again
 // unless for a diagnostic (a caller reading a mapped file lets those pages go).
 Result<FapScanResult> scan_fap_text(std::string_view text, const std::string& file, const FapReadOptions& options,
-                                    const FapFrameSink& sink,
-                                    const std::function<void(std::size_t)>& progress = {});
+                                    const FapFrameSink& sink, const std::function<void(std::size_t)>& progress = {});
 
 // The .fap layouts of the player families (docs/fap-files.md, "Flavours"): each writes exactly
 // the header, mask width, FAP 1/2 form, separators and line ends that family's reader expects.

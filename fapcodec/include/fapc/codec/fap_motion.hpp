@@ -19,10 +19,10 @@ enum class FapAction {
 // Face coordinates of the standard's neutral face: x towards the face's own left, y up, z forward
 // (out of the face, towards a viewer who looks at it). Right-handed.
 struct FapMotion {
-  int number;                       // 1..68
-  std::string_view feature_point;   // "2.1"; empty for FAP 1 and 2
+  int number;                      // 1..68
+  std::string_view feature_point;  // "2.1"; empty for FAP 1 and 2
   FapAction action;
-  int direction[3];                 // unit axis in face coordinates (translation or rotation axis)
+  int direction[3];  // unit axis in face coordinates (translation or rotation axis)
 };
 
 // The motion of FAP `number` (1..68), or null.

@@ -36,10 +36,10 @@ struct FapFrame {
   // Position on the sequence's frame grid: time = number / fps. Numbers ascend but may have gaps
   // (absent frames are absent, not zero).
   std::int64_t number = 0;
-  std::bitset<kFapCount> mask;                 // bit i is FAP i+1
+  std::bitset<kFapCount> mask;                   // bit i is FAP i+1
   std::array<std::int32_t, kFapCount> values{};  // index i is FAP i+1; only FAPs 3..68 are used
-  VisemeFields viseme;                         // FAP 1, when masked
-  ExpressionFields expression;                 // FAP 2, when masked
+  VisemeFields viseme;                           // FAP 1, when masked
+  ExpressionFields expression;                   // FAP 2, when masked
 
   bool has(int fap) const { return mask.test(static_cast<std::size_t>(fap - 1)); }
   std::int32_t value(int fap) const { return values[static_cast<std::size_t>(fap - 1)]; }

@@ -28,16 +28,16 @@ const std::array<FapuInfo, 7>& fapu_table();
 std::string_view fapu_name(Fapu unit);
 
 struct FapInfo {
-  int number;                    // 1..68
-  std::string_view name;         // standard name, e.g. "open_jaw"
+  int number;             // 1..68
+  std::string_view name;  // standard name, e.g. "open_jaw"
   std::string_view description;
   Fapu unit;
-  bool bidirectional;            // U (false) or B (true) in the standard's table
+  bool bidirectional;  // U (false) or B (true) in the standard's table
   std::string_view positive_motion;
-  int group;                     // 1..10
-  int quant_step;                // QP of the reference codec; step is QP * fap_quant
-  int intra_range;               // default I range in quantised units (symmetric: -r..r)
-  int predictive_range;          // default P range in quantised units
+  int group;             // 1..10
+  int quant_step;        // QP of the reference codec; step is QP * fap_quant
+  int intra_range;       // default I range in quantised units (symmetric: -r..r)
+  int predictive_range;  // default P range in quantised units
   // The largest |value| in FAP units that an intra frame carries with default ranges at
   // fap_quant 1 (intra range rounded up to a multiple of 60, times QP). This is what the project
   // calls the FAP's legal range; renderers clamp to it. 0 for FAP 1 and 2.

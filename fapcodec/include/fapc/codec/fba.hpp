@@ -33,13 +33,13 @@ enum class FbaMaskMode {
 };
 
 struct FbaEncodeOptions {
-  int quant = 1;          // fap_quant 0..31: step = FAP quantiser (QP) x quant; 0 is lossless
-  int intra_period = 0;   // >0: at most this many planes from one intra plane to the next;
-                          // 0: intra planes only where needed (first frame, mask changes)
+  int quant = 1;         // fap_quant 0..31: step = FAP quantiser (QP) x quant; 0 is lossless
+  int intra_period = 0;  // >0: at most this many planes from one intra plane to the next;
+                         // 0: intra planes only where needed (first frame, mask changes)
   FbaRangeMode ranges = FbaRangeMode::fit;
   FbaMaskMode masks = FbaMaskMode::fit;
-  bool align_planes = false;  // start every plane with its start code and end it byte-aligned,
-                              // so each plane is one MP4 sample (docs/mp4-and-xmta.md section 6.3)
+  bool align_planes = false;     // start every plane with its start code and end it byte-aligned,
+                                 // so each plane is one MP4 sample (docs/mp4-and-xmta.md section 6.3)
   bool list_every_mask = false;  // mask type 01 (bits listed) for every group, the layout of the
                                  // test vector (docs/fba-bitstream.md 11); by default empty groups
                                  // get type 00 and full ones 11, which needs no mask bits
@@ -133,20 +133,20 @@ struct FbaIntraPlane {
   std::int64_t byte_offset = 0;  // where the plane starts
   std::size_t bits = 0;          // its length
   int fap_quant = 0;
-  int faps = 0;                  // FAPs in its mask
+  int faps = 0;  // FAPs in its mask
 };
 
 struct FbaStreamInfo {
   std::size_t bytes = 0;
-  int profile_and_level = -1;           // from a visual object sequence header, -1 without
+  int profile_and_level = -1;  // from a visual object sequence header, -1 without
   bool visual_object_header = false;
-  std::size_t planes = 0;               // face and body planes
+  std::size_t planes = 0;  // face and body planes
   std::size_t face_planes = 0;
-  std::size_t body_planes = 0;          // planes that carry body (BAP) data, parsed and ignored
-  std::size_t plane_start_codes = 0;    // planes introduced by 0x000001BB
-  std::int64_t frames = 0;              // frames the face planes cover, skips included
+  std::size_t body_planes = 0;        // planes that carry body (BAP) data, parsed and ignored
+  std::size_t plane_start_codes = 0;  // planes introduced by 0x000001BB
+  std::int64_t frames = 0;            // frames the face planes cover, skips included
   std::int64_t skipped_frames = 0;
-  double frame_rate = 30.0;             // 30 when the stream never says (the reference's rule)
+  double frame_rate = 30.0;  // 30 when the stream never says (the reference's rule)
   bool frame_rate_sent = false;
   std::vector<FbaIntraPlane> intra_planes;
   // Per FAP (index fap - 1), the widest ranges signalled for it; `ranged` says whether any was.

@@ -104,8 +104,8 @@ class AtomicFile {
   std::FILE* file_ = nullptr;  // null once committed or moved from
 };
 
-// An unnamed file beside an output (in the temporary folder for a device or FIFO), to write and read back: the body of an output whose
-// beginning is known only at the end (a .fap header gives the frame count). It never has a name
+// An unnamed file beside an output (in the temporary folder for a device or FIFO), to write and read back: the body of
+// an output whose beginning is known only at the end (a .fap header gives the frame count). It never has a name
 // (O_TMPFILE; a named file removed at once where the file system has no unnamed ones), so nothing
 // is left behind whatever happens. Errors name the output.
 class ScratchFile {

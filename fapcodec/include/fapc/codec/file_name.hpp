@@ -13,14 +13,14 @@ namespace fapc {
 
 class FileName {
  public:
-  FileName() = default;  // the empty name: no file
-  FileName(std::string_view name);  // NOLINT: a path is a file name
+  FileName() = default;                                                    // the empty name: no file
+  FileName(std::string_view name);                                         // NOLINT: a path is a file name
   FileName(const std::string& name) : FileName(std::string_view(name)) {}  // NOLINT
-  FileName(const char* name) : FileName(std::string_view(name)) {}          // NOLINT
+  FileName(const char* name) : FileName(std::string_view(name)) {}         // NOLINT
 
   const std::string& str() const { return name_ ? *name_ : no_name(); }
   operator const std::string&() const { return str(); }  // NOLINT: reads as the path
-  operator std::string_view() const { return str(); }     // NOLINT
+  operator std::string_view() const { return str(); }    // NOLINT
   bool empty() const { return !name_; }
   std::size_t size() const { return str().size(); }
   const char* c_str() const { return str().c_str(); }

@@ -57,8 +57,16 @@ struct Limits {
 inline constexpr std::int64_t kExpansionFloor = std::int64_t{1} << 20;
 
 enum class Limit {
-  frames, runs, decompressed_bytes, expansion, audio_samples, speech_text, speech_seconds,
-  frame_pixels, sheet_pixels, video_pixels
+  frames,
+  runs,
+  decompressed_bytes,
+  expansion,
+  audio_samples,
+  speech_text,
+  speech_seconds,
+  frame_pixels,
+  sheet_pixels,
+  video_pixels
 };
 
 // "--max-frames" ... : the option of `fapc compile` (and every command that reads inputs) that

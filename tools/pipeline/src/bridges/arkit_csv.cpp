@@ -1,7 +1,7 @@
 #include "arkit_csv.hpp"
 
-#include <charconv>
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <optional>
 
@@ -55,7 +55,8 @@ Columns find_columns(const std::vector<std::string>& header) {
     if (c.clock != Clock::rows && i == c.time) continue;
     if (name == "BlendShapeCount" || name == "_neutral") continue;  // a count; MediaPipe's rest weight
     if (const std::optional<int> shape = vocabulary::find_arkit_shape(name)) {
-      Columns::Shape s{i, vocabulary::arkit_table().rows_of(vocabulary::arkit_shape_names()[static_cast<std::size_t>(*shape)])};
+      Columns::Shape s{
+          i, vocabulary::arkit_table().rows_of(vocabulary::arkit_shape_names()[static_cast<std::size_t>(*shape)])};
       std::erase_if(s.rows, [&](const vocabulary::MappingRow& row) {
         return row.fap == 0 || (c.eye_angles && row.fap >= 23 && row.fap <= 26);
       });
@@ -90,9 +91,15 @@ const std::array<ArkitAngle, 9>& arkit_angle_columns() {
   // positive pitch looks down (EyeLookDown minus EyeLookUp, 0.996-1.0). The head's are taken to
   // follow the eyes' (the corpus's takes do not record the head: all zero).
   static constexpr std::array<ArkitAngle, 9> columns{{
-      {"HeadYaw", 49, -1},     {"HeadPitch", 48, 1},      {"HeadRoll", 50, 1},
-      {"LeftEyeYaw", 23, -1},  {"LeftEyePitch", 25, 1},   {"LeftEyeRoll", 0, 0},
-      {"RightEyeYaw", 24, -1}, {"RightEyePitch", 26, 1},  {"RightEyeRoll", 0, 0},
+      {"HeadYaw", 49, -1},
+      {"HeadPitch", 48, 1},
+      {"HeadRoll", 50, 1},
+      {"LeftEyeYaw", 23, -1},
+      {"LeftEyePitch", 25, 1},
+      {"LeftEyeRoll", 0, 0},
+      {"RightEyeYaw", 24, -1},
+      {"RightEyePitch", 26, 1},
+      {"RightEyeRoll", 0, 0},
   }};
   return columns;
 }
@@ -131,12 +138,14 @@ Result<TrackRead> read_arkit_csv(std::string_view text, const std::string& file,
   if (!header) return header.error();
   const Columns c = find_columns(*header);
   if (c.shapes.empty()) {
-    return make_error(codes::arkit::no_shape_column, Location::text(file, 1, 1), "an ARKit CSV without any of the 52 shape columns");
+    return make_error(codes::arkit::no_shape_column, Location::text(file, 1, 1),
+                      "an ARKit CSV without any of the 52 shape columns");
   }
   TrackRead read;
   read.frames.fps = options.fps;
   if (!c.unread.empty()) {
-    read.warnings.push_back(columns_not_read(file, codes::arkit::columns_not_read, c.unread, "not ARKit shapes or angles"));
+    read.warnings.push_back(
+        columns_not_read(file, codes::arkit::columns_not_read, c.unread, "not ARKit shapes or angles"));
   }
   // The timecode's rate: one pass over the frame fields first (a timecode by itself does not say).
   int rate = 0;
@@ -166,9 +175,9 @@ Result<TrackRead> read_arkit_csv(std::string_view text, const std::string& file,
     if (c.clock == Clock::timecode) {
       const std::optional<double> seconds = timecode_seconds(cells[c.time].text, rate);
       if (!seconds) {
-        return lines.error_at(codes::arkit::bad_timecode, &cells[c.time], "'" + std::string(cells[c.time].text) +
-                                                  "' is not a timecode HH:MM:SS:FF[.fff] at " + std::to_string(rate) +
-                                                  " frames a second");
+        return lines.error_at(codes::arkit::bad_timecode, &cells[c.time],
+                              "'" + std::string(cells[c.time].text) + "' is not a timecode HH:MM:SS:FF[.fff] at " +
+                                  std::to_string(rate) + " frames a second");
       }
       time = *seconds;
       // A take that runs past midnight starts again at 00: the day is added back.
@@ -179,7 +188,8 @@ Result<TrackRead> read_arkit_csv(std::string_view text, const std::string& file,
       time = c.clock == Clock::milliseconds ? *t / 1000 : *t;
     }
     if (last_time && time < *last_time) {
-      return lines.error_at(codes::csv::time_backwards, &cells[c.time], "the time goes back, to " + std::string(cells[c.time].text));
+      return lines.error_at(codes::csv::time_backwards, &cells[c.time],
+                            "the time goes back, to " + std::string(cells[c.time].text));
     }
     last_time = time;
     ++rows;
@@ -204,7 +214,8 @@ Result<TrackRead> read_arkit_csv(std::string_view text, const std::string& file,
     if (Status pushed = resampler.push(time, v, Location::text(file, lines.line(), cells[place].column)); !pushed)
       return pushed.error();
   }
-  if (rows == 0) return make_error(codes::csv::no_rows, Location::text(file, lines.line(), 1), "an ARKit CSV without any data row");
+  if (rows == 0)
+    return make_error(codes::csv::no_rows, Location::text(file, lines.line(), 1), "an ARKit CSV without any data row");
   if (clamped > 0) {
     read.warnings.push_back(make_warning(codes::arkit::weight_clamped, Location::text(file, 1, 1),
                                          std::to_string(clamped) + " shape weights outside 0-1 were clamped to it"));

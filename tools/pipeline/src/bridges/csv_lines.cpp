@@ -51,18 +51,20 @@ Result<double> CsvLines::number(const CsvCell& cell, std::string_view what) cons
   if (begin != end && *begin == '+') ++begin;  // from_chars takes no plus sign
   const auto [ptr, ec] = std::from_chars(begin, end, value);
   if (cell.text.empty() || ec != std::errc{} || ptr != end || !std::isfinite(value)) {
-    return error_at(codes::csv::not_a_number, &cell, std::string(what) + ": '" + std::string(cell.text) + "' is not a number");
+    return error_at(codes::csv::not_a_number, &cell,
+                    std::string(what) + ": '" + std::string(cell.text) + "' is not a number");
   }
   return value;
 }
 
 Status CsvLines::check_width(const std::vector<CsvCell>& cells, std::size_t width) const {
   if (cells.size() > width) {
-    return error_at(codes::csv::cell_count, &cells[width], "more cells than the header's " + std::to_string(width) + " columns");
+    return error_at(codes::csv::cell_count, &cells[width],
+                    "more cells than the header's " + std::to_string(width) + " columns");
   }
   if (cells.size() < width) {
-    return error_at(codes::csv::cell_count, nullptr, std::to_string(cells.size()) + " cells, but the header has " + std::to_string(width) +
-                                 " columns");
+    return error_at(codes::csv::cell_count, nullptr,
+                    std::to_string(cells.size()) + " cells, but the header has " + std::to_string(width) + " columns");
   }
   return ok_status();
 }
@@ -73,9 +75,9 @@ Result<std::vector<std::string>> read_header(CsvLines& lines) {
     return make_error(codes::csv::no_header, Location::text(lines.file(), 1, 1), "an empty CSV file: no header line");
   }
   if (cells.size() > kMaxCsvColumns) {
-    return lines.error_at(codes::csv::too_many_columns, &cells[kMaxCsvColumns], "the header has " + std::to_string(cells.size()) +
-                                                      " columns, more than the limit of " +
-                                                      std::to_string(kMaxCsvColumns));
+    return lines.error_at(codes::csv::too_many_columns, &cells[kMaxCsvColumns],
+                          "the header has " + std::to_string(cells.size()) + " columns, more than the limit of " +
+                              std::to_string(kMaxCsvColumns));
   }
   std::vector<std::string> names;
   names.reserve(cells.size());

@@ -49,24 +49,25 @@ std::string write_arkit_csv(const FapSequence& frames) {
   for (const ArkitAngle& angle : arkit_angle_columns()) out += "," + std::string(angle.name);
   out += '\n';
   const int fps = frames.fps > 0 ? frames.fps : 25;
-  for_each_fitted_frame(frames, arkit_basis(), [&](std::int64_t k, const face::FapValues& values,
-                                                   const std::vector<double>& weights) {
-    out += timecode(k, fps);
-    out += "," + std::to_string(vocabulary::kArkitShapeCount + arkit_angle_columns().size());
-    for (double w : weights) out += ',', append_fixed(out, w, 6);
-    for (const ArkitAngle& angle : arkit_angle_columns()) {
-      out += ',';
-      append_fixed(out, angle.fap ? values[static_cast<std::size_t>(angle.fap - 1)] / (angle.sign * kRadiansToAu) : 0.0,
-                   6);
-    }
-    out += '\n';
-  });
+  for_each_fitted_frame(
+      frames, arkit_basis(), [&](std::int64_t k, const face::FapValues& values, const std::vector<double>& weights) {
+        out += timecode(k, fps);
+        out += "," + std::to_string(vocabulary::kArkitShapeCount + arkit_angle_columns().size());
+        for (double w : weights) out += ',', append_fixed(out, w, 6);
+        for (const ArkitAngle& angle : arkit_angle_columns()) {
+          out += ',';
+          append_fixed(
+              out, angle.fap ? values[static_cast<std::size_t>(angle.fap - 1)] / (angle.sign * kRadiansToAu) : 0.0, 6);
+        }
+        out += '\n';
+      });
   return out;
 }
 
 std::string write_openface_csv(const FapSequence& frames) {
   // OpenFace 2.0's columns in its order, the subset fapc can fill, with its ", " separator.
-  std::string out = "frame, face_id, timestamp, confidence, success, gaze_angle_x, gaze_angle_y, pose_Rx, pose_Ry, pose_Rz";
+  std::string out =
+      "frame, face_id, timestamp, confidence, success, gaze_angle_x, gaze_angle_y, pose_Rx, pose_Ry, pose_Rz";
   for (int au : openface_intensity_units()) {
     char name[16];
     std::snprintf(name, sizeof name, ", AU%02d_r", au);
@@ -74,22 +75,22 @@ std::string write_openface_csv(const FapSequence& frames) {
   }
   out += '\n';
   const int fps = frames.fps > 0 ? frames.fps : 25;
-  for_each_fitted_frame(frames, openface_basis(), [&](std::int64_t k, const face::FapValues& v,
-                                                      const std::vector<double>& weights) {
-    out += std::to_string(k + 1) + ", 0, ";  // OpenFace numbers frames from 1
-    append_fixed(out, static_cast<double>(k) / fps, 3);
-    out += ", 1, 1";  // fapc's frames are the face itself: full confidence, tracked
-    // Both eyes' mean direction, and the head (the reader's axes, docs/bridges.md).
-    for (double value : {(v[22] + v[23]) / 2, (v[24] + v[25]) / 2, v[47], v[48], v[49]}) {
-      out += ", ";
-      append_fixed(out, value / kRadiansToAu, 3);
-    }
-    for (double w : weights) {
-      out += ", ";
-      append_fixed(out, w * kFullIntensity, 2);
-    }
-    out += '\n';
-  });
+  for_each_fitted_frame(frames, openface_basis(),
+                        [&](std::int64_t k, const face::FapValues& v, const std::vector<double>& weights) {
+                          out += std::to_string(k + 1) + ", 0, ";  // OpenFace numbers frames from 1
+                          append_fixed(out, static_cast<double>(k) / fps, 3);
+                          out += ", 1, 1";  // fapc's frames are the face itself: full confidence, tracked
+                          // Both eyes' mean direction, and the head (the reader's axes, docs/bridges.md).
+                          for (double value : {(v[22] + v[23]) / 2, (v[24] + v[25]) / 2, v[47], v[48], v[49]}) {
+                            out += ", ";
+                            append_fixed(out, value / kRadiansToAu, 3);
+                          }
+                          for (double w : weights) {
+                            out += ", ";
+                            append_fixed(out, w * kFullIntensity, 2);
+                          }
+                          out += '\n';
+                        });
   return out;
 }
 

@@ -38,12 +38,13 @@ Diagnostics losses(const FapSequence& frames, Carrier carrier, const std::string
     for (int fap = 2; fap <= kFapCount; ++fap)
       if (others.test(static_cast<std::size_t>(fap - 1))) faps.push_back(fap);
     if (!any_viseme) {
-      out.push_back(lost(output, codes::visemes::no_viseme, "no frame sends FAP 1 (viseme): the track is silence throughout"));
+      out.push_back(
+          lost(output, codes::visemes::no_viseme, "no frame sends FAP 1 (viseme): the track is silence throughout"));
     }
     if (!faps.empty()) {
-      out.push_back(lost(output, codes::visemes::faps_lost,
-                         "a viseme track carries FAP 1 only (the heavier of its two visemes); lost: FAPs " +
-                             fap_list(faps)));
+      out.push_back(
+          lost(output, codes::visemes::faps_lost,
+               "a viseme track carries FAP 1 only (the heavier of its two visemes); lost: FAPs " + fap_list(faps)));
     }
     return out;
   }
@@ -54,8 +55,8 @@ Diagnostics losses(const FapSequence& frames, Carrier carrier, const std::string
     if (!carried.test(static_cast<std::size_t>(fap - 1))) faps.push_back(fap);
   if (!faps.empty()) {
     out.push_back(lost(output, arkit ? codes::arkit_csv::faps_lost : codes::openface_csv::faps_lost,
-                       std::string(arkit ? "ARKit's shapes" : "OpenFace's 17 action units") +
-                           " cannot carry FAPs " + fap_list(faps) + "; they are lost"));
+                       std::string(arkit ? "ARKit's shapes" : "OpenFace's 17 action units") + " cannot carry FAPs " +
+                           fap_list(faps) + "; they are lost"));
   }
   return out;
 }

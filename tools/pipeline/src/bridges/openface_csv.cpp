@@ -12,7 +12,6 @@
 namespace fapc::pipeline::bridges {
 namespace {
 
-
 // "AU12_r" -> 12; nullopt for other names.
 std::optional<int> intensity_column_au(std::string_view name) {
   if (name.size() < 5 || !name.starts_with("AU") || !name.ends_with("_r")) return std::nullopt;
@@ -56,7 +55,8 @@ Result<Columns> find_columns(const std::vector<std::string>& header, const std::
   Columns c;
   const std::optional<std::size_t> timestamp = column_of(header, "timestamp");
   if (!timestamp) {
-    return make_error(codes::openface::no_timestamp, Location::text(file, 1, 1), "an OpenFace CSV without a 'timestamp' column: fapc places rows by it");
+    return make_error(codes::openface::no_timestamp, Location::text(file, 1, 1),
+                      "an OpenFace CSV without a 'timestamp' column: fapc places rows by it");
   }
   c.timestamp = *timestamp;
   c.success = column_of(header, "success");
@@ -68,8 +68,8 @@ Result<Columns> find_columns(const std::vector<std::string>& header, const std::
   for (int eye = 0; eye < 2; ++eye)
     for (int axis = 0; axis < 3; ++axis)
       c.gaze[eye][axis] = column_of(header, "gaze_" + std::to_string(eye) + "_" + std::string(1, "xyz"[axis]));
-  const bool vectors = !angles && c.gaze[0][0] && c.gaze[0][1] && c.gaze[0][2] && c.gaze[1][0] && c.gaze[1][1] &&
-                       c.gaze[1][2];
+  const bool vectors =
+      !angles && c.gaze[0][0] && c.gaze[0][1] && c.gaze[0][2] && c.gaze[1][0] && c.gaze[1][1] && c.gaze[1][2];
   c.gaze_vectors = vectors;
   if (angles || vectors) drive(c.faps, {23, 24, 25, 26});
   for (int axis = 0; axis < 3; ++axis) c.pose[axis] = column_of(header, std::string("pose_R") + "xyz"[axis]);
@@ -82,8 +82,8 @@ Result<Columns> find_columns(const std::vector<std::string>& header, const std::
     const std::optional<int> au = intensity_column_au(name);
     const bool used = i == c.timestamp || i == c.success || i == c.confidence || i == c.face_id ||
                       (angles && (i == c.gaze_angle_x || i == c.gaze_angle_y)) ||
-                      (vectors && name.starts_with("gaze_") && !name.starts_with("gaze_angle")) ||
-                      i == c.pose[0] || i == c.pose[1] || i == c.pose[2] || name == "frame";
+                      (vectors && name.starts_with("gaze_") && !name.starts_with("gaze_angle")) || i == c.pose[0] ||
+                      i == c.pose[1] || i == c.pose[2] || name == "frame";
     if (au && !table.is_lost(std::to_string(*au)) && table.has_key(std::to_string(*au))) {
       Columns::Unit unit{i, table.rows_of(std::to_string(*au))};
       for (const vocabulary::MappingRow& row : unit.rows) drive(c.faps, {row.fap});
@@ -174,8 +174,8 @@ Result<TrackRead> read_openface_csv(std::string_view text, const std::string& fi
   }
   Resampler resampler(options.fps, c.faps, options.limits, read.frames);
   std::vector<CsvCell> cells;
-  std::optional<double> face;       // the face followed: the first row's face_id
-  vocabulary::FapVector held{};     // the last trusted row's values (neutral before any)
+  std::optional<double> face;    // the face followed: the first row's face_id
+  vocabulary::FapVector held{};  // the last trusted row's values (neutral before any)
   std::optional<double> last_time;
   int untrusted = 0, first_untrusted_line = 0, other_faces = 0, clamped = 0, rows = 0;
   while (lines.next(cells)) {
@@ -193,8 +193,9 @@ Result<TrackRead> read_openface_csv(std::string_view text, const std::string& fi
     Result<double> time = lines.number(cells[c.timestamp], "timestamp");
     if (!time) return time.error();
     if (last_time && *time < *last_time) {
-      return lines.error_at(codes::csv::time_backwards, &cells[c.timestamp], "the timestamp goes back, from " + std::to_string(*last_time) +
-                                                     " to " + std::string(cells[c.timestamp].text) + " s");
+      return lines.error_at(codes::csv::time_backwards, &cells[c.timestamp],
+                            "the timestamp goes back, from " + std::to_string(*last_time) + " to " +
+                                std::string(cells[c.timestamp].text) + " s");
     }
     last_time = *time;
     bool trusted = true;
@@ -219,7 +220,9 @@ Result<TrackRead> read_openface_csv(std::string_view text, const std::string& fi
         !pushed)
       return pushed.error();
   }
-  if (rows == 0) return make_error(codes::csv::no_rows, Location::text(file, lines.line(), 1), "an OpenFace CSV without any data row");
+  if (rows == 0)
+    return make_error(codes::csv::no_rows, Location::text(file, lines.line(), 1),
+                      "an OpenFace CSV without any data row");
   if (untrusted > 0) {
     read.warnings.push_back(make_warning(
         codes::openface::untrusted_rows, Location::text(file, first_untrusted_line, 1),

@@ -9,8 +9,8 @@ Diagnostic columns_not_read(const std::string& file, WarningCode code, const std
   for (std::size_t i = 0; i < names.size() && i < kShown; ++i) list += (i ? ", " : "") + names[i];
   if (names.size() > kShown) list += " and " + std::to_string(names.size() - kShown) + " more";
   return make_warning(code, Location::text(file, 1, 1),
-                      std::to_string(names.size()) + " column" + (names.size() == 1 ? " is" : "s are") +
-                          " not read (" + std::string(why) + "): " + list);
+                      std::to_string(names.size()) + " column" + (names.size() == 1 ? " is" : "s are") + " not read (" +
+                          std::string(why) + "): " + list);
 }
 
 }  // namespace fapc::pipeline::bridges

@@ -44,8 +44,8 @@ char* write_point(char* out, bool first, double t, double v) {
 
 std::string header(int fps, double duration) {
   char number[kNumberRoom];
-  return "{\n \"fps\": " + std::to_string(fps) + ",\n \"duration\": " +
-         std::string(number, write_number(number, duration)) + ",\n \"curves\": {";
+  return "{\n \"fps\": " + std::to_string(fps) +
+         ",\n \"duration\": " + std::string(number, write_number(number, duration)) + ",\n \"curves\": {";
 }
 
 // Before each target: a line of its own, one target per line (golden files' diffs stay readable).

@@ -28,8 +28,8 @@ nlohmann::ordered_json facts_of(const bml::BmlDocument& document) {
 }
 
 Result<Loaded> load_bml(const std::string& path, const ConvertOptions& options) {
-  return load_script(path, options, [&](const Profile&) { return bml::load_bml(path, bml_options(options)); },
-                     facts_of);
+  return load_script(
+      path, options, [&](const Profile&) { return bml::load_bml(path, bml_options(options)); }, facts_of);
 }
 
 }  // namespace

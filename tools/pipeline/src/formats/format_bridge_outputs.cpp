@@ -9,7 +9,8 @@ namespace {
 
 OutputFormat bridge_output(std::string kind, std::string extension, std::string (*write)(const FapSequence&),
                            bridges::Carrier carrier) {
-  OutputFormat format{std::move(kind), {std::move(extension)},
+  OutputFormat format{std::move(kind),
+                      {std::move(extension)},
                       [write](const Loaded& loaded, const std::string&, const ConvertOptions&) -> Result<std::string> {
                         return write(loaded.frames);
                       }};
@@ -21,7 +22,9 @@ OutputFormat bridge_output(std::string kind, std::string extension, std::string 
 
 }  // namespace
 
-OutputFormat arkit_csv_output() { return bridge_output("arkit-csv", ".arkit.csv", bridges::write_arkit_csv, bridges::Carrier::arkit); }
+OutputFormat arkit_csv_output() {
+  return bridge_output("arkit-csv", ".arkit.csv", bridges::write_arkit_csv, bridges::Carrier::arkit);
+}
 OutputFormat openface_csv_output() {
   return bridge_output("au-csv", ".au.csv", bridges::write_openface_csv, bridges::Carrier::openface);
 }

@@ -34,10 +34,10 @@ Result<Loaded> load_combine(const std::string& path, const ConvertOptions& optio
     }
     start = end + 1;
   }
-  if (expression.empty()) return make_error(codes::combine::no_expression, Location::text(path, 1, 1), "no expression in this file");
+  if (expression.empty())
+    return make_error(codes::combine::no_expression, Location::text(path, 1, 1), "no expression in this file");
   Loaded loaded;
-  Result<algebra::Value> value = evaluate_combination(
-      expression, path, options, loaded.warnings);
+  Result<algebra::Value> value = evaluate_combination(expression, path, options, loaded.warnings);
   if (!value) {
     Diagnostic d = value.error();
     if (d.where.file == "<expression>") d.where = Location::text(path, expression_line, d.where.column);

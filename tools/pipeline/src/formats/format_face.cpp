@@ -67,7 +67,7 @@ Result<std::string> write_html(const Loaded& loaded, const std::string& path, co
   if (Status fits = video_takes(loaded, path, options); !fits) return fits.error();
   const auto voice = voice_of(loaded);
   const std::string& v = options.picture.view;
-  const face::PreviewView view = v == "3d" ? face::PreviewView::three_d
+  const face::PreviewView view = v == "3d"     ? face::PreviewView::three_d
                                  : v == "both" ? face::PreviewView::both
                                                : face::PreviewView::two_d;
   std::string glb;

@@ -1,12 +1,12 @@
 // .fap and .fap.gz, in and out; the frames read one at a time from a mapped file, and written so.
 #include <optional>
 
+#include "../frame_source.hpp"
+#include "fap_text_outputs.hpp"
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "fapc/pipeline/codes.hpp"
 #include "fapc/pipeline/fba_io.hpp"
-#include "../frame_source.hpp"
-#include "fap_text_outputs.hpp"
 #include "formats.hpp"
 
 namespace fapc::pipeline::builtin {
@@ -73,18 +73,19 @@ class FapSource : public FrameSource {
     read_options_.max_frames = options.limits.max_frames;
   }
 
-  Location locate(std::int64_t number, int fap) const override {
-    return locator_ ? locator_(number, fap) : Location{};
-  }
+  Location locate(std::int64_t number, int fap) const override { return locator_ ? locator_(number, fap) : Location{}; }
 
  protected:
   Result<SourceFacts> read(const FapFrameSink& check) override {
     std::int64_t ordinal = 0;
-    auto scan = scan_fap_text(text(), path_, read_options_, [&](const FapFrame& frame) {
-      FapFrame in_order = frame;
-      in_order.number = ordinal++;
-      return check(in_order);
-    }, let_go());
+    auto scan = scan_fap_text(
+        text(), path_, read_options_,
+        [&](const FapFrame& frame) {
+          FapFrame in_order = frame;
+          in_order.number = ordinal++;
+          return check(in_order);
+        },
+        let_go());
     if (!scan) return scan.error();
     numbers_ = std::move(scan->numbers);
     value_lines_ = std::move(scan->read.value_lines);
@@ -98,12 +99,15 @@ class FapSource : public FrameSource {
 
   Status read_again(const FapFrameSink& code) override {
     std::size_t k = 0;
-    auto again = scan_fap_text(text(), path_, read_options_, [&](const FapFrame& read) {
-      if (k == numbers_.size()) return Status(changed());
-      FapFrame frame = read;
-      frame.number = numbers_[k++];
-      return code(frame);
-    }, let_go());
+    auto again = scan_fap_text(
+        text(), path_, read_options_,
+        [&](const FapFrame& read) {
+          if (k == numbers_.size()) return Status(changed());
+          FapFrame frame = read;
+          frame.number = numbers_[k++];
+          return code(frame);
+        },
+        let_go());
     if (!again || k != numbers_.size()) return changed();
     return ok_status();
   }
@@ -116,13 +120,14 @@ class FapSource : public FrameSource {
     return [this](std::size_t offset) { file_.release(offset); };
   }
   Diagnostic changed() const {
-    return make_error(codes::input::changed_while_read, Location::whole_file(path_), "the file changed while it was read");
+    return make_error(codes::input::changed_while_read, Location::whole_file(path_),
+                      "the file changed while it was read");
   }
   MappedFile file_;
   std::string path_;
   FapReadOptions read_options_;
-  std::vector<std::int64_t> numbers_;  // frame k's number as placed in time
-  std::vector<int> value_lines_;       // and its value line
+  std::vector<std::int64_t> numbers_;                   // frame k's number as placed in time
+  std::vector<int> value_lines_;                        // and its value line
   std::function<Location(std::int64_t, int)> locator_;  // over the two, once read
 };
 
@@ -134,14 +139,18 @@ class FapSource : public FrameSource {
 class FapFrameWriter : public FrameWriter {
  public:
   FapFrameWriter(const std::string& path, const ConvertOptions& options, const FrameSource& source)
-      : path_(path), options_(options), write_options_(fap_write_options(options)),
+      : path_(path),
+        options_(options),
+        write_options_(fap_write_options(options)),
         early_possible_(source.placed_in_first_pass() && options.fap_flavour != FapFlavour::semaine) {}
 
   bool writes_before_facts() const override { return early_possible_; }
   void start_early() override {
     early_ = true;
-    if (auto body = ScratchFile::create(path_)) body_.emplace(std::move(*body));
-    else body_error_ = body.error();  // what creating the output itself says, found at the end
+    if (auto body = ScratchFile::create(path_))
+      body_.emplace(std::move(*body));
+    else
+      body_error_ = body.error();  // what creating the output itself says, found at the end
   }
 
   void start(const SourceFacts& facts) override {
@@ -162,8 +171,10 @@ class FapFrameWriter : public FrameWriter {
     if (!early_) return text_->add(frame);
     if (text_error_) return;
     if (!body_writer_) body_writer_.emplace(std::string(), 0, 0, frame.number, frame.number, write_options_);
-    if (auto status = body_writer_->add(frame, body_text_); !status) text_error_ = status.error();
-    else if (body_text_.size() >= (std::size_t{1} << 20)) flush();
+    if (auto status = body_writer_->add(frame, body_text_); !status)
+      text_error_ = status.error();
+    else if (body_text_.size() >= (std::size_t{1} << 20))
+      flush();
   }
 
   void finish() override {

@@ -2,16 +2,15 @@
 // .fba is decoded from its mapping frame by frame, and written by the encoder fed so.
 #include <filesystem>
 
-#include "fapc/pipeline/codes.hpp"
-#include "fapc/pipeline/fba_io.hpp"
 #include "../fba_frame_writer.hpp"
 #include "../verify_streams.hpp"
+#include "fapc/pipeline/codes.hpp"
+#include "fapc/pipeline/fba_io.hpp"
 #include "formats.hpp"
 
 namespace fapc::pipeline::builtin {
 
 namespace {
-
 
 nlohmann::ordered_json facts_of(const FbaStreamInfo& info) {
   nlohmann::ordered_json out;
@@ -38,8 +37,11 @@ nlohmann::ordered_json facts_of(const FbaStreamInfo& info) {
   for (int fap = 3; fap <= kFapCount; ++fap) {
     const auto i = static_cast<std::size_t>(fap - 1);
     if (!info.ranged[i]) continue;
-    ranges.push_back({{"fap", fap}, {"name", fap_table()[i].name}, {"intra_min", info.intra_range[i].min},
-                      {"intra_max", info.intra_range[i].max}, {"predictive_min", info.pred_range[i].min},
+    ranges.push_back({{"fap", fap},
+                      {"name", fap_table()[i].name},
+                      {"intra_min", info.intra_range[i].min},
+                      {"intra_max", info.intra_range[i].max},
+                      {"predictive_min", info.pred_range[i].min},
                       {"predictive_max", info.pred_range[i].max}});
   }
   out["quantised_ranges"] = ranges;
@@ -97,7 +99,8 @@ class FbaSource : public FrameSource {
       return code(frame);
     });
     if (!again || k != frames_)
-      return make_error(codes::input::changed_while_read, Location::whole_file(options_.file), "the file changed while it was read");
+      return make_error(codes::input::changed_while_read, Location::whole_file(options_.file),
+                        "the file changed while it was read");
     return ok_status();
   }
   std::size_t frames_read() const override { return frames_; }

@@ -37,8 +37,8 @@ nlohmann::ordered_json facts_of(const xmt::FmlDocument& document) {
 }
 
 Result<Loaded> load_fml(const std::string& path, const ConvertOptions& options) {
-  return load_script(path, options, [&](const Profile& profile) { return read_document(path, options, profile); },
-                     facts_of);
+  return load_script(
+      path, options, [&](const Profile& profile) { return read_document(path, options, profile); }, facts_of);
 }
 
 }  // namespace

@@ -46,8 +46,9 @@ Result<Loaded> load_with(Reader read, const std::string& path, const ConvertOpti
   intent_options.bml = bml_options(options);
   if (*lexicon) intent_options.lexicon = &**lexicon;
   const std::string lexicon_name = options.lexicon.value_or("intentions.tsv (fapc's own)");
-  return load_script(path, options, [&](const Profile&) { return read(path, intent_options); },
-                     [&](const intent::IntentDocument& d) { return facts_of(d, lexicon_name); });
+  return load_script(
+      path, options, [&](const Profile&) { return read(path, intent_options); },
+      [&](const intent::IntentDocument& d) { return facts_of(d, lexicon_name); });
 }
 
 Result<Loaded> load_fml_apml(const std::string& path, const ConvertOptions& options) {

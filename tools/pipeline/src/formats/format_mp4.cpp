@@ -4,14 +4,14 @@
 #include <filesystem>
 #include <sstream>
 
-#include "fapc/codec/file_io.hpp"
-#include "fapc/pipeline/codes.hpp"
-#include "fapc/pipeline/fba_io.hpp"
-#include "fapc/mpeg4/mp4_reader.hpp"
-#include "fapc/mpeg4/mp4_writer.hpp"
 #include "../audio_io.hpp"
 #include "../fba_frame_writer.hpp"
 #include "../verify_streams.hpp"
+#include "fapc/codec/file_io.hpp"
+#include "fapc/mpeg4/mp4_reader.hpp"
+#include "fapc/mpeg4/mp4_writer.hpp"
+#include "fapc/pipeline/codes.hpp"
+#include "fapc/pipeline/fba_io.hpp"
 #include "formats.hpp"
 
 namespace fapc::pipeline::builtin {
@@ -29,26 +29,26 @@ std::string track_line(const xmt::Mp4Track& t, const xmt::Mp4Track* fba) {
   s << t.handler << ' ' << t.sample_entry;
   if (t.es) {
     const xmt::DecoderConfig& c = t.es->config;
-    const char* role = &t == fba                                   ? "FBA stream"
+    const char* role = &t == fba                                       ? "FBA stream"
                        : c.stream_type == xmt::kSceneDescriptionStream ? "scene description"
                        : c.stream_type == xmt::kObjectDescriptorStream ? "object_descriptors"
-                       : c.stream_type == xmt::kAudioStream             ? "audio"
-                                                                        : "stream";
-    s << ", " << role << " (streamType " << int{c.stream_type} << ", objectTypeIndication "
-      << hex_byte(c.object_type) << ")";
+                       : c.stream_type == xmt::kAudioStream            ? "audio"
+                                                                       : "stream";
+    s << ", " << role << " (streamType " << int{c.stream_type} << ", objectTypeIndication " << hex_byte(c.object_type)
+      << ")";
   }
   std::size_t sync = 0;
   for (const xmt::Mp4Sample& sample : t.samples) sync += sample.sync ? 1 : 0;
-  s << ", " << t.samples.size() << (t.samples.size() == 1 ? " sample (" : " samples (") << sync
-    << " sync), timescale " << t.timescale;
+  s << ", " << t.samples.size() << (t.samples.size() == 1 ? " sample (" : " samples (") << sync << " sync), timescale "
+    << t.timescale;
   return s.str();
 }
 
 std::string profiles_text(const xmt::ProfileLevels& p) {
   std::string visual = hex_byte(p.visual);
   if (const auto name = xmt::fba_profile_name(p.visual); !name.empty()) visual += " " + std::string(name);
-  return "OD " + hex_byte(p.od) + ", scene " + hex_byte(p.scene) + ", audio " + hex_byte(p.audio) +
-         ", visual " + visual + ", graphics " + hex_byte(p.graphics);
+  return "OD " + hex_byte(p.od) + ", scene " + hex_byte(p.scene) + ", audio " + hex_byte(p.audio) + ", visual " +
+         visual + ", graphics " + hex_byte(p.graphics);
 }
 
 nlohmann::ordered_json facts_of(const xmt::Mp4File* mp4) {
@@ -133,7 +133,8 @@ Result<Loaded> load_mp4(const std::string& path, const ConvertOptions& options) 
 Result<std::string> write_mp4_file(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
   // An empty input would make a track without samples: say so about the input.
   if (loaded.frames.frames.empty())
-    return make_error(codes::output::no_frames, Location::whole_file(loaded.named(path)), "no frames to write: an MP4 FBA track needs at least one");
+    return make_error(codes::output::no_frames, Location::whole_file(loaded.named(path)),
+                      "no frames to write: an MP4 FBA track needs at least one");
   auto encoded = encode_checked(loaded, options, loaded.named(path), /*align_planes=*/true);
   if (!encoded) return encoded.error();
   std::optional<xmt::AudioTrackInput> voice;
@@ -167,14 +168,15 @@ class Mp4FrameWriter : public FbaFrameWriter {
   Status commit() override {
     // As write_mp4_file: an empty input would make a track without samples.
     if (facts_.frames == 0)
-      return make_error(codes::output::no_frames, Location::whole_file(input_), "no frames to write: an MP4 FBA track needs at least one");
+      return make_error(codes::output::no_frames, Location::whole_file(input_),
+                        "no frames to write: an MP4 FBA track needs at least one");
     if (error_) return *error_;
     auto file = AtomicFile::create(path_);
     if (!file) return file.error();
-    const Status written = xmt::write_mp4(fba_track_view(*encoded_, facts_.fps), nullptr,
-                                          [&](std::span<const std::uint8_t> bytes) {
-                                            return file->write({reinterpret_cast<const char*>(bytes.data()), bytes.size()});
-                                          });
+    const Status written =
+        xmt::write_mp4(fba_track_view(*encoded_, facts_.fps), nullptr, [&](std::span<const std::uint8_t> bytes) {
+          return file->write({reinterpret_cast<const char*>(bytes.data()), bytes.size()});
+        });
     if (!written) {
       Diagnostic error = written.error();
       if (error.where.file.empty()) error.where.file = input_;

@@ -33,8 +33,8 @@ nlohmann::ordered_json facts_of(const smil::SmilDocument& document) {
 }
 
 Result<Loaded> load_smil(const std::string& path, const ConvertOptions& options) {
-  return load_script(path, options, [&](const Profile&) { return smil::load_smil(path, smil_options(options)); },
-                     facts_of);
+  return load_script(
+      path, options, [&](const Profile&) { return smil::load_smil(path, smil_options(options)); }, facts_of);
 }
 
 }  // namespace

@@ -13,7 +13,8 @@ namespace {
 // frames of an input without a timeline (plot/figure.cpp).
 OutputFormat plot_output(std::string kind, std::string extension, PlotKind plot_kind) {
   const bool reads_frames = plot_kind == PlotKind::csv;
-  return {std::move(kind), {std::move(extension)},
+  return {std::move(kind),
+          {std::move(extension)},
           [plot_kind](const Loaded& loaded, const std::string& path, const ConvertOptions&) -> Result<std::string> {
             PlotOptions options;
             options.title = std::filesystem::path(path).stem().string();
@@ -21,7 +22,8 @@ OutputFormat plot_output(std::string kind, std::string extension, PlotKind plot_
             if (!plot) return plot.error();
             return std::move(plot->bytes);
           },
-          /*uses_curves=*/!reads_frames, /*uses_frames=*/reads_frames};
+          /*uses_curves=*/!reads_frames,
+          /*uses_frames=*/reads_frames};
 }
 
 }  // namespace

@@ -7,8 +7,7 @@ namespace fapc::pipeline::builtin {
 
 namespace {
 
-Result<std::string> write_timeline(const Loaded& loaded, const std::string& path,
-                                   const ConvertOptions&) {
+Result<std::string> write_timeline(const Loaded& loaded, const std::string& path, const ConvertOptions&) {
   if (!loaded.timeline) {
     return make_error(codes::output::no_timeline, Location::whole_file(path),
                       "this input has frames, not a timeline (.timeline needs a script: " +

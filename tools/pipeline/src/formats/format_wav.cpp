@@ -20,8 +20,8 @@ Result<std::string> write_wav(const Loaded& loaded, const std::string& path, con
   const double samples = std::max(0.0, audio.start) * audio.sample_rate + static_cast<double>(audio.samples.size());
   if (samples > static_cast<double>(options.limits.max_audio_samples)) {
     return limit_error(Location::whole_file(loaded.named(path)),
-                       "the .wav from time 0 to the voice's end (it starts at " + std::to_string(audio.start) + " s) would hold " +
-                           std::to_string(static_cast<std::int64_t>(samples)) + " samples",
+                       "the .wav from time 0 to the voice's end (it starts at " + std::to_string(audio.start) +
+                           " s) would hold " + std::to_string(static_cast<std::int64_t>(samples)) + " samples",
                        Limit::audio_samples, options.limits);
   }
   return wav_bytes(audio);

@@ -30,7 +30,8 @@ Result<Loaded> load_xml(const std::string& path, const ConvertOptions& options) 
   const InputFormat* reader = formats().input_for_xml_root(lower_case(root.name));
   if (reader == nullptr) {
     return make_error(codes::format::unknown_xml_root, root.where,
-                      "an XML document whose root <" + root.name + ">" + (root.ns.empty() ? "" : " (namespace " + root.ns + ")") +
+                      "an XML document whose root <" + root.name + ">" +
+                          (root.ns.empty() ? "" : " (namespace " + root.ns + ")") +
                           " is none fapc reads (roots read: " + roots_read() + ")");
   }
   Result<Loaded> loaded = reader->load(path, options);

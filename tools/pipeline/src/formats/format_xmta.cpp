@@ -29,9 +29,10 @@ Result<std::string> write_fba_scene(const Loaded& loaded, const std::string& pat
   if (loaded.audio && !loaded.audio->samples.empty()) {
     auto config = audio::aac_lc_mono_config(loaded.audio->sample_rate);
     if (config.empty())
-      return make_error(codes::aac::sample_rate,
-                        loaded.audio->source.file.empty() ? Location::whole_file(loaded.named(path)) : loaded.audio->source,
-                        "audio at " + std::to_string(loaded.audio->sample_rate) + " Hz has no AAC sampling frequency index");
+      return make_error(
+          codes::aac::sample_rate,
+          loaded.audio->source.file.empty() ? Location::whole_file(loaded.named(path)) : loaded.audio->source,
+          "audio at " + std::to_string(loaded.audio->sample_rate) + " Hz has no AAC sampling frequency index");
     voice = xmt::XmtaAudio{std::move(config), static_cast<std::uint32_t>(loaded.audio->sample_rate), voice_source};
   }
   return xmt::write_xmta_fba_scene(xmt::fba_decoder_specific_info(), source, voice ? &*voice : nullptr);

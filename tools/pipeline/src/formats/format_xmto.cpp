@@ -7,8 +7,8 @@
 #include "fapc/transcoder/timeline_from_frames.hpp"
 #include "fapc/xmto/xmto.hpp"
 #include "formats.hpp"
-#include "speech_options.hpp"
 #include "input_chain.hpp"
+#include "speech_options.hpp"
 #include "timeline_input.hpp"
 
 namespace fapc::pipeline::builtin {
@@ -76,8 +76,8 @@ nlohmann::ordered_json facts_of(const xmt::XmtoDocument& document) {
 }
 
 Result<Loaded> load_xmto(const std::string& path, const ConvertOptions& options) {
-  return load_script(path, options, [&](const Profile& profile) { return read_document(path, options, profile); },
-                     facts_of);
+  return load_script(
+      path, options, [&](const Profile& profile) { return read_document(path, options, profile); }, facts_of);
 }
 
 }  // namespace

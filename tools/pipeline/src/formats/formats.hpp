@@ -13,11 +13,11 @@ InputFormat mimic_input();
 InputFormat fml_input();
 InputFormat xmto_input();
 InputFormat combine_input();
-InputFormat bml_input();  // format_bml.cpp
-InputFormat xml_input();  // format_xml.cpp: by the root element
+InputFormat bml_input();       // format_bml.cpp
+InputFormat xml_input();       // format_xml.cpp: by the root element
 InputFormat fml_apml_input();  // format_intent.cpp
 InputFormat apml_input();      // format_intent.cpp
-InputFormat smil_input();  // format_smil.cpp: Xface SMIL-Agent
+InputFormat smil_input();      // format_smil.cpp: Xface SMIL-Agent
 
 OutputFormat fap_output();
 OutputFormat fba_output();
@@ -29,11 +29,11 @@ OutputFormat svg_output();  // the plots (format_svg.cpp)
 OutputFormat pdf_output();
 OutputFormat csv_output();
 OutputFormat timeline_output();
-OutputFormat png_output();   // the face (format_face.cpp)
+OutputFormat png_output();  // the face (format_face.cpp)
 OutputFormat webm_output();
 OutputFormat html_output();
-OutputFormat wav_output();   // the voice (format_wav.cpp)
-OutputFormat glb_output();   // the 3D head (format_gltf.cpp)
+OutputFormat wav_output();  // the voice (format_wav.cpp)
+OutputFormat glb_output();  // the 3D head (format_gltf.cpp)
 OutputFormat gltf_output();
 
 }  // namespace fapc::pipeline::builtin

@@ -12,9 +12,9 @@
 namespace fapc::pipeline {
 
 struct XmlRoot {
-  std::string name;        // the local name ("bml", "fml-apml")
-  std::string ns;          // the default namespace or the prefix's, as declared on the root ("" when none)
-  Location where;          // the root's '<'
+  std::string name;  // the local name ("bml", "fml-apml")
+  std::string ns;    // the default namespace or the prefix's, as declared on the root ("" when none)
+  Location where;    // the root's '<'
 };
 
 // An error (at its byte) when the text has no start tag after a well-formed prolog.

@@ -94,8 +94,9 @@ void paint(cairo_surface_t* surface, const Figure& figure, double scale) {
 
 std::string cairo_png(const Figure& figure, double scale) {
   const Size size = figure_size(figure);
-  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, static_cast<int>(std::ceil(size.width * scale)),
-                                                        static_cast<int>(std::ceil(size.height * scale)));
+  cairo_surface_t* surface =
+      cairo_image_surface_create(CAIRO_FORMAT_RGB24, static_cast<int>(std::ceil(size.width * scale)),
+                                 static_cast<int>(std::ceil(size.height * scale)));
   std::string out;
   if (cairo_surface_status(surface) == CAIRO_STATUS_SUCCESS) {
     paint(surface, figure, scale);

@@ -21,7 +21,8 @@ void append_number(std::string& out, T value) {
 Result<std::string> frames_csv(const FapSequence& sequence, const std::string& selection, const std::string& input) {
   std::vector<bool> used(kFapCount + 1, false);
   for (const FapFrame& frame : sequence.frames)
-    for (int fap = 1; fap <= kFapCount; ++fap) used[static_cast<std::size_t>(fap)] = used[static_cast<std::size_t>(fap)] || frame.has(fap);
+    for (int fap = 1; fap <= kFapCount; ++fap)
+      used[static_cast<std::size_t>(fap)] = used[static_cast<std::size_t>(fap)] || frame.has(fap);
   std::vector<std::string> available;
   for (int fap = 1; fap <= kFapCount; ++fap)
     if (used[static_cast<std::size_t>(fap)]) available.emplace_back(find_fap(fap)->name);

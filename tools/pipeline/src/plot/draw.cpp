@@ -46,7 +46,7 @@ std::string tick_text(double value, double step) {
 
 struct Layout {
   Size size;
-  double top = 0;           // of the first panel
+  double top = 0;  // of the first panel
   double panel_height = kPanel;
   std::size_t panels = 0;
   double time_title_y = 0;  // "time (s)"
@@ -97,8 +97,7 @@ Layout layout(const Figure& figure) {
   }
   if (!figure.omitted.empty()) {
     std::string note = "Not drawn, zero throughout:";
-    for (std::size_t k = 0; k < figure.omitted.size(); ++k)
-      note += (k ? ", " : " ") + figure.omitted[k];
+    for (std::size_t k = 0; k < figure.omitted.size(); ++k) note += (k ? ", " : " ") + figure.omitted[k];
     l.note_lines = wrapped(note);
     l.note_y = y + kLine;
     y += static_cast<double>(l.note_lines.size()) * kLine + 8;

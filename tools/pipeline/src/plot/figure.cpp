@@ -81,8 +81,7 @@ std::string target_unit(const std::string& name) {
   return std::string(fapu_name(fap->unit));
 }
 
-Result<std::vector<std::string>> select_targets(const std::string& selection,
-                                                const std::vector<std::string>& available,
+Result<std::vector<std::string>> select_targets(const std::string& selection, const std::vector<std::string>& available,
                                                 const std::string& input) {
   if (trimmed(selection).empty()) return available;
   std::vector<std::string> wanted;
@@ -111,8 +110,9 @@ Result<std::vector<std::string>> select_targets(const std::string& selection,
           best_distance = d;
         }
       if (!best.empty()) message += "; did you mean " + best + "?";
-      message += " (a FAP name or number, a range like 19-30, a group: jaw, lips, eyes, brows, cheeks, "
-                 "tongue, head, outer_lips, nose, ears, mouth, all; or viseme, expression)";
+      message +=
+          " (a FAP name or number, a range like 19-30, a group: jaw, lips, eyes, brows, cheeks, "
+          "tongue, head, outer_lips, nose, ears, mouth, all; or viseme, expression)";
       return make_error(codes::plot::unknown_parameter, Location::whole_file(input), message);
     }
     wanted.insert(wanted.end(), names->begin(), names->end());
@@ -124,8 +124,8 @@ Result<std::vector<std::string>> select_targets(const std::string& selection,
     std::string has;
     for (const std::string& name : available) has += (has.empty() ? "" : ", ") + name;
     return make_error(codes::plot::nothing_selected, Location::whole_file(input),
-                      "--faps '" + selection + "' selects none of this input's parameters (it has: " +
-                          (has.empty() ? "none" : has) + ")");
+                      "--faps '" + selection +
+                          "' selects none of this input's parameters (it has: " + (has.empty() ? "none" : has) + ")");
   }
   return chosen;
 }
@@ -137,14 +137,14 @@ Result<Figure> build_figure(const Loaded& loaded, const std::string& input, cons
   std::vector<std::pair<std::string, Points>> blended;
   if (loaded.curves) {
     figure.duration = loaded.curves->duration;
-    for (const auto& [name, points] : loaded.curves->curves) blended.emplace_back(name, visible_points(points, figure.duration));
+    for (const auto& [name, points] : loaded.curves->curves)
+      blended.emplace_back(name, visible_points(points, figure.duration));
   } else {
     figure.duration = loaded.frames.duration_seconds();
     blended = series_from_frames(loaded.frames, figure.duration);
   }
-  std::stable_sort(blended.begin(), blended.end(), [](const auto& a, const auto& b) {
-    return target_order(a.first) < target_order(b.first);
-  });
+  std::stable_sort(blended.begin(), blended.end(),
+                   [](const auto& a, const auto& b) { return target_order(a.first) < target_order(b.first); });
 
   std::optional<Curves> clips;
   if (options.per_clip) {

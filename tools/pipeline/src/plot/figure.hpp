@@ -12,18 +12,18 @@
 namespace fapc::pipeline::plot {
 
 struct Series {
-  std::string name;   // target name: "open_jaw", "viseme", a free parameter
-  std::string unit;   // "MNS", "AU"... (docs/fap-table.md), "number" for viseme/expression, "" otherwise
-  int order = 0;      // FAP number; targets that are not FAPs come after, by name
-  Points points;  // only what the panels can show of it (column_picks.hpp), when the figure has a duration
+  std::string name;  // target name: "open_jaw", "viseme", a free parameter
+  std::string unit;  // "MNS", "AU"... (docs/fap-table.md), "number" for viseme/expression, "" otherwise
+  int order = 0;     // FAP number; targets that are not FAPs come after, by name
+  Points points;     // only what the panels can show of it (column_picks.hpp), when the figure has a duration
   // Each clip's own curve for this target (--per-clip), labelled by its source line.
   std::vector<std::pair<std::string, Points>> clips;
 };
 
 struct Figure {
   std::string title;
-  double duration = 0;   // seconds: the shared time axis runs 0..duration
-  bool overlay = false;  // one panel for every series, with a legend
+  double duration = 0;               // seconds: the shared time axis runs 0..duration
+  bool overlay = false;              // one panel for every series, with a legend
   std::vector<Series> series;        // drawn, in FAP order
   std::vector<std::string> omitted;  // zero throughout, in FAP order
 };
@@ -34,8 +34,7 @@ int target_order(const std::string& name);
 std::string target_unit(const std::string& name);
 
 // The targets `selection` names among `available` (PlotOptions::faps); empty selection: all.
-Result<std::vector<std::string>> select_targets(const std::string& selection,
-                                                const std::vector<std::string>& available,
+Result<std::vector<std::string>> select_targets(const std::string& selection, const std::vector<std::string>& available,
                                                 const std::string& input);
 
 Result<Figure> build_figure(const Loaded& loaded, const std::string& input, const PlotOptions& options);

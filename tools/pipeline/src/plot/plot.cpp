@@ -12,11 +12,16 @@ namespace fapc::pipeline {
 
 bool plot_kind_for(const std::string& output, PlotKind& kind) {
   const std::string extension = std::filesystem::path(output).extension().string();
-  if (extension == ".svg") kind = PlotKind::svg;
-  else if (extension == ".png") kind = PlotKind::png;
-  else if (extension == ".pdf") kind = PlotKind::pdf;
-  else if (extension == ".csv") kind = PlotKind::csv;
-  else return false;
+  if (extension == ".svg")
+    kind = PlotKind::svg;
+  else if (extension == ".png")
+    kind = PlotKind::png;
+  else if (extension == ".pdf")
+    kind = PlotKind::pdf;
+  else if (extension == ".csv")
+    kind = PlotKind::csv;
+  else
+    return false;
   return true;
 }
 
@@ -36,10 +41,17 @@ Result<Plot> plot_loaded(const Loaded& loaded, const std::string& input, PlotKin
                         (figure->omitted.size() == 1 ? "" : "s") + " not drawn, zero throughout: " + names);
   }
   switch (kind) {
-    case PlotKind::svg: out.bytes = plot::svg_document(*figure); break;
-    case PlotKind::png: out.bytes = plot::cairo_png(*figure, 2); break;  // 1920 pixels wide: print quality
-    case PlotKind::pdf: out.bytes = plot::cairo_pdf(*figure); break;
-    case PlotKind::csv: break;
+    case PlotKind::svg:
+      out.bytes = plot::svg_document(*figure);
+      break;
+    case PlotKind::png:
+      out.bytes = plot::cairo_png(*figure, 2);
+      break;  // 1920 pixels wide: print quality
+    case PlotKind::pdf:
+      out.bytes = plot::cairo_pdf(*figure);
+      break;
+    case PlotKind::csv:
+      break;
   }
   if (out.bytes.empty())
     return make_error(codes::plot::draw_failed, Location::whole_file(input), "cairo could not draw the plot");

@@ -5,8 +5,8 @@
 namespace fapc::pipeline::plot {
 
 constexpr double kWidth = 960;
-constexpr double kLeft = 90;   // room for the y tick labels and the y-axis title
+constexpr double kLeft = 90;  // room for the y tick labels and the y-axis title
 constexpr double kRight = 20;
-constexpr double kInset = 6;   // points at the ends of the time axis stay clear of the frame
+constexpr double kInset = 6;  // points at the ends of the time axis stay clear of the frame
 
 }  // namespace fapc::pipeline::plot

@@ -14,14 +14,14 @@ VideoOptions video_options(const PictureOptions& options) {
 
 }  // namespace
 
-Result<std::string> face_webm(const FapSequence& sequence, const PictureOptions& options,
-                              const AudioInput* audio, const std::string& where) {
+Result<std::string> face_webm(const FapSequence& sequence, const PictureOptions& options, const AudioInput* audio,
+                              const std::string& where) {
   return encode_webm(FaceTrack(sequence), video_options(options), audio, where);
 }
 
-Result<std::string> face_html(const FapSequence& sequence, const PictureOptions& options,
-                              const AudioInput* audio, const std::string& title, const std::string& where,
-                              PreviewView view, std::string head_glb) {
+Result<std::string> face_html(const FapSequence& sequence, const PictureOptions& options, const AudioInput* audio,
+                              const std::string& title, const std::string& where, PreviewView view,
+                              std::string head_glb) {
   const FaceTrack track(sequence);
   Result<std::string> video = encode_webm(track, video_options(options), audio, where);
   if (!video) return video.error();

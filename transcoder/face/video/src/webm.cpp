@@ -13,9 +13,9 @@ extern "C" {
 #include <cstring>
 #include <memory>
 
+#include "av_error.hpp"
 #include "fapc/face/codes.hpp"
 #include "fapc/face/renderer.hpp"
-#include "av_error.hpp"
 #include "opus_audio.hpp"
 
 namespace fapc::face {
@@ -43,8 +43,10 @@ std::int64_t seek(void* opaque, std::int64_t offset, int whence) {
   whence &= ~AVSEEK_FORCE;
   if (whence == AVSEEK_SIZE) return static_cast<std::int64_t>(m->bytes.size());
   std::int64_t to = offset;
-  if (whence == SEEK_CUR) to = m->at + offset;
-  else if (whence == SEEK_END) to = static_cast<std::int64_t>(m->bytes.size()) + offset;
+  if (whence == SEEK_CUR)
+    to = m->at + offset;
+  else if (whence == SEEK_END)
+    to = static_cast<std::int64_t>(m->bytes.size()) + offset;
   if (to < 0) return -1;
   m->at = to;
   return to;
@@ -84,8 +86,8 @@ std::int64_t video_frame_count(const FaceTrack& track, int frame_rate) {
 
 Status check_video(std::int64_t frames, int fps, const VideoOptions& options, const Location& at,
                    const Location& length_at) {
-  if (options.width < kMinSide || options.height < kMinSide || options.width > kMaxSide ||
-      options.height > kMaxSide || options.width % 2 || options.height % 2)
+  if (options.width < kMinSide || options.height < kMinSide || options.width > kMaxSide || options.height > kMaxSide ||
+      options.width % 2 || options.height % 2)
     return make_error(codes::video::bad_size, at,
                       "--size " + std::to_string(options.width) + "x" + std::to_string(options.height) +
                           ": a .webm needs even sides from " + std::to_string(kMinSide) + " to " +
@@ -101,20 +103,22 @@ Status check_video(std::int64_t frames, int fps, const VideoOptions& options, co
   // The cost, from the duration and the rate, before any picture is drawn.
   const std::int64_t picture_pixels = std::int64_t{options.width} * options.height;
   if (picture_pixels > options.limits.max_frame_pixels)
-    return limit_error(at, "--size " + std::to_string(options.width) + "x" + std::to_string(options.height) + " is " +
-                               std::to_string(picture_pixels) + " pixels a picture",
+    return limit_error(at,
+                       "--size " + std::to_string(options.width) + "x" + std::to_string(options.height) + " is " +
+                           std::to_string(picture_pixels) + " pixels a picture",
                        Limit::frame_pixels, options.limits);
   if (pictures > options.limits.max_video_pixels / picture_pixels)
-    return limit_error(length_at, "the video would be " + std::to_string(pictures) + " pictures of " +
-                               std::to_string(options.width) + "x" + std::to_string(options.height) + " (" +
-                               std::to_string(seconds) + " s at " + std::to_string(rate) +
-                               " per second), " + std::to_string(pictures * picture_pixels) + " pixels",
+    return limit_error(length_at,
+                       "the video would be " + std::to_string(pictures) + " pictures of " +
+                           std::to_string(options.width) + "x" + std::to_string(options.height) + " (" +
+                           std::to_string(seconds) + " s at " + std::to_string(rate) + " per second), " +
+                           std::to_string(pictures * picture_pixels) + " pixels",
                        Limit::video_pixels, options.limits);
   return ok_status();
 }
 
-Result<std::string> encode_webm(const FaceTrack& track, const VideoOptions& options,
-                                const AudioInput* audio, const std::string& where) {
+Result<std::string> encode_webm(const FaceTrack& track, const VideoOptions& options, const AudioInput* audio,
+                                const std::string& where) {
   const Location at = Location::whole_file(where);
   if (Status checked = check_video(track.frame_count(), track.fps(), options, at, at); !checked) return checked.error();
   const int rate = options.frame_rate > 0 ? options.frame_rate : track.fps();
@@ -194,8 +198,8 @@ Result<std::string> encode_webm(const FaceTrack& track, const VideoOptions& opti
   if (int e = av_frame_get_buffer(out.frame, 0); e < 0) return failed("cannot allocate a picture", e);
   out.packet = av_packet_alloc();
   // cairo's ARGB32 is one native-endian 32-bit word per pixel: libav's RGB32.
-  out.scaler = sws_getContext(options.width, options.height, AV_PIX_FMT_RGB32, options.width,
-                              options.height, AV_PIX_FMT_YUV420P, SWS_BILINEAR, nullptr, nullptr, nullptr);
+  out.scaler = sws_getContext(options.width, options.height, AV_PIX_FMT_RGB32, options.width, options.height,
+                              AV_PIX_FMT_YUV420P, SWS_BILINEAR, nullptr, nullptr, nullptr);
 
   auto drain = [&]() -> int {
     for (;;) {

@@ -101,7 +101,6 @@ Result<Animation> overlap(const std::vector<LayeredAnimation>& operands);
 
 // A state from `parameter value` entries (a .xpr file): each parameter resolved through the
 // profile (FAP names need none), scaled into FAP units and rounded; errors at the entry.
-Result<FacialState> state_from_entries(const std::vector<ExpressionEntry>& entries,
-                                       const Profile& profile);
+Result<FacialState> state_from_entries(const std::vector<ExpressionEntry>& entries, const Profile& profile);
 
 }  // namespace fapc::algebra

@@ -16,13 +16,13 @@ struct AudioClip {
   double begin = 0;
   int sample_rate = 0;  // Hz
   std::vector<std::int16_t> samples;
-  Location source;      // the element it came from, for warnings and `fapc info`
+  Location source;  // the element it came from, for warnings and `fapc info`
   // Spelled out: Location has no operator==, so a defaulted one is deleted (clang refuses it
   // under -Werror, which broke the fuzz build).
   friend bool operator==(const AudioClip& a, const AudioClip& b) {
     return a.begin == b.begin && a.sample_rate == b.sample_rate && a.samples == b.samples &&
-           a.source.file == b.source.file && a.source.line == b.source.line &&
-           a.source.column == b.source.column && a.source.byte_offset == b.source.byte_offset;
+           a.source.file == b.source.file && a.source.line == b.source.line && a.source.column == b.source.column &&
+           a.source.byte_offset == b.source.byte_offset;
   }
 };
 

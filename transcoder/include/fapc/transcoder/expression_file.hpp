@@ -19,7 +19,6 @@ struct ExpressionEntry {
 
 // Syntax only (two fields per line, a finite number); errors at file:line:col. Whether the names
 // exist is the caller's question (it knows the profile).
-Result<std::vector<ExpressionEntry>> parse_expression_file(std::string_view text,
-                                                           const std::string& file_name);
+Result<std::vector<ExpressionEntry>> parse_expression_file(std::string_view text, const std::string& file_name);
 
 }  // namespace fapc

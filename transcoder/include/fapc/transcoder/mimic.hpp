@@ -7,9 +7,9 @@
 #include <string>
 #include <string_view>
 
-#include "fapc/codec/limits.hpp"
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/include_policy.hpp"
+#include "fapc/codec/limits.hpp"
 #include "fapc/transcoder/frame_budget.hpp"
 #include "fapc/transcoder/profile.hpp"
 #include "fapc/transcoder/timeline.hpp"

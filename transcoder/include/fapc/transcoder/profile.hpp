@@ -13,8 +13,8 @@
 namespace fapc {
 
 struct FapContribution {
-  int fap = 0;         // 3..68
-  double scale = 1;    // FAP value = parameter value * scale
+  int fap = 0;       // 3..68
+  double scale = 1;  // FAP value = parameter value * scale
   friend bool operator==(const FapContribution&, const FapContribution&) = default;
 };
 

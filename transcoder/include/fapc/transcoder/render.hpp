@@ -36,8 +36,8 @@ class TimelineEvaluator {
 
 struct RenderOptions {
   int fps = 25;
-  const Profile* profile = nullptr;  // nullptr: default_profile()
-  std::string name;                  // the sequence's name
+  const Profile* profile = nullptr;               // nullptr: default_profile()
+  std::string name;                               // the sequence's name
   std::int64_t max_frames = Limits{}.max_frames;  // more frames is a limit_exceeded error
 };
 

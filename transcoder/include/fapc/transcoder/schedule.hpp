@@ -24,8 +24,8 @@ namespace fapc {
 class OptionalSeconds {
  public:
   constexpr OptionalSeconds() = default;
-  constexpr OptionalSeconds(std::nullopt_t) {}                    // NOLINT
-  constexpr OptionalSeconds(double value) : value_(value) {}      // NOLINT
+  constexpr OptionalSeconds(std::nullopt_t) {}                   // NOLINT
+  constexpr OptionalSeconds(double value) : value_(value) {}     // NOLINT
   constexpr OptionalSeconds(const std::optional<double>& value)  // NOLINT
       : value_(value ? *value : none()) {}
 
@@ -71,8 +71,8 @@ struct Timing {
   // Only in parallels: end at the parallel's reference end + x (the start moves, the duration
   // stays). Mimic's `right` / `right=x`.
   OptionalSeconds align_right;
-  double repeat = 1;               // iterations, may be fractional (SMIL repeatCount)
-  bool repeat_indefinite = false;  // until the parent's end; an error when there is none
+  double repeat = 1;                // iterations, may be fractional (SMIL repeatCount)
+  bool repeat_indefinite = false;   // until the parent's end; an error when there is none
   OptionalSeconds repeat_duration;  // caps the active duration (SMIL repeatDur)
 };
 
@@ -135,13 +135,13 @@ Location end_source(const Schedule& schedule, const Location& root, LeafSource l
 // Why a tree cannot be scheduled, as a value: front ends decide by `problem` and name the
 // element by `node_tag`, never by the wording.
 enum class ScheduleProblem {
-  no_duration,          // a leaf with no duration and nothing around it ends
-  endless_repeat,       // a group repeats indefinitely and nothing around it ends
-  starts_before_zero,   // a leaf would start before time 0
-  right_without_end,    // aligned right in a parallel whose end is unknown
-  right_in_sequence,    // aligned right outside a parallel
-  too_many_runs,        // more than ScheduleOptions::max_runs runs (a limit, --max-runs)
-  ends_too_late,        // a leaf would end after the latest time fapc schedules
+  no_duration,         // a leaf with no duration and nothing around it ends
+  endless_repeat,      // a group repeats indefinitely and nothing around it ends
+  starts_before_zero,  // a leaf would start before time 0
+  right_without_end,   // aligned right in a parallel whose end is unknown
+  right_in_sequence,   // aligned right outside a parallel
+  too_many_runs,       // more than ScheduleOptions::max_runs runs (a limit, --max-runs)
+  ends_too_late,       // a leaf would end after the latest time fapc schedules
 };
 
 struct ScheduleError {
@@ -163,8 +163,7 @@ struct ScheduleError {
 // The schedule, or the first problem met (with the node's source position and tag): a start
 // before 0, align_right outside a parallel, a leaf or repeat with no duration and no parent end,
 // more than max_runs runs.
-std::variant<Schedule, ScheduleError> schedule_tree(const ScheduleNode& root,
-                                                    const ScheduleOptions& options = {});
+std::variant<Schedule, ScheduleError> schedule_tree(const ScheduleNode& root, const ScheduleOptions& options = {});
 
 // schedule_tree for front ends whose nodes are all "actions" (Mimic): the error's subject is
 // "the action" where the predicate needs one.

@@ -40,8 +40,8 @@ struct SpeechRequest {
   std::string language = "en";  // an engine language ("en", "en-us", "fr", "de", ...)
   std::string voice;            // a voice variant ("f3", "m1", "klatt", ...); empty: the default
   double words_per_minute = 175;
-  double max_seconds = 3600;    // longer speech is a limit_exceeded error
-  Location where;               // the element that asked, for errors and warnings
+  double max_seconds = 3600;  // longer speech is a limit_exceeded error
+  Location where;             // the element that asked, for errors and warnings
 };
 
 // Where one word of the request's text begins to be spoken (BML sync marks sit at words).
@@ -56,7 +56,7 @@ struct Utterance {
   std::vector<SpokenPhoneme> phonemes;  // in time order, covering [0, duration)
   std::vector<SpokenWord> words;        // in text order; empty when the engine gives no word events
   double duration = 0;
-  Diagnostics warnings;                 // unknown phonemes and the like
+  Diagnostics warnings;  // unknown phonemes and the like
 };
 
 // A low estimate of how long `text` takes to say at `words_per_minute`, from its letters and
@@ -74,19 +74,18 @@ using Synthesizer = std::function<Result<Utterance>(const SpeechRequest&)>;
 std::vector<VisemeSpan> viseme_spans(const std::vector<SpokenPhoneme>& phonemes);
 
 // The coarticulation rule (docs/speech.md): each span becomes one viseme clip of weight 63 (times
-// the span's weight) whose edges are linear cross-fades of `fade` seconds centred on the span's boundaries, so neighbours
-// overlap and FAP 1 blends them (viseme_select1/2, viseme_blend); a fade is never longer than the
-// shorter of the two spans it joins, and at silence the weight falls to 0 (neutral). The first
-// fade-in starts no earlier than time 0; the last fade-out may end fade/2 after the last span. Spans shorter
-// than `min_hold` are first widened to it around their centre (taking the time from their
-// neighbours), so a short closure such as a p still shows on a frame.
+// the span's weight) whose edges are linear cross-fades of `fade` seconds centred on the span's boundaries, so
+// neighbours overlap and FAP 1 blends them (viseme_select1/2, viseme_blend); a fade is never longer than the shorter of
+// the two spans it joins, and at silence the weight falls to 0 (neutral). The first fade-in starts no earlier than time
+// 0; the last fade-out may end fade/2 after the last span. Spans shorter than `min_hold` are first widened to it around
+// their centre (taking the time from their neighbours), so a short closure such as a p still shows on a frame.
 struct Coarticulation {
   double fade = 0.06;      // seconds
   double min_hold = 0.04;  // seconds; one frame at 25 fps
 };
 
 // `stretch` scales the spans' times first (a talk given a longer duration than its speech).
-std::vector<Clip> coarticulated_viseme_clips(std::vector<VisemeSpan> spans, double stretch,
-                                             const Coarticulation& rule, const Location& where);
+std::vector<Clip> coarticulated_viseme_clips(std::vector<VisemeSpan> spans, double stretch, const Coarticulation& rule,
+                                             const Location& where);
 
 }  // namespace fapc

@@ -14,14 +14,14 @@ namespace fapc {
 
 class TargetName {
  public:
-  TargetName() = default;  // the empty name
-  TargetName(std::string_view name) : name_(intern(name)) {}               // NOLINT: a name is a target
+  TargetName() = default;                                                 // the empty name
+  TargetName(std::string_view name) : name_(intern(name)) {}              // NOLINT: a name is a target
   TargetName(const std::string& name) : name_(std::string_view(name)) {}  // NOLINT
   TargetName(const char* name) : name_(std::string_view(name)) {}         // NOLINT
 
   const std::string& str() const { return name_.str(); }
   operator const std::string&() const { return str(); }  // NOLINT: reads as the name
-  operator std::string_view() const { return str(); }     // NOLINT
+  operator std::string_view() const { return str(); }    // NOLINT
   bool empty() const { return name_.empty(); }
   std::size_t size() const { return str().size(); }
   const char* c_str() const { return str().c_str(); }

@@ -43,8 +43,8 @@ struct Periodic {
 class OptionalPeriodic {
  public:
   OptionalPeriodic() = default;
-  OptionalPeriodic(std::nullopt_t) {}                                               // NOLINT
-  OptionalPeriodic(const Periodic& p) : box_(std::make_unique<Periodic>(p)) {}      // NOLINT
+  OptionalPeriodic(std::nullopt_t) {}                                                                         // NOLINT
+  OptionalPeriodic(const Periodic& p) : box_(std::make_unique<Periodic>(p)) {}                                // NOLINT
   OptionalPeriodic(const std::optional<Periodic>& p) : box_(p ? std::make_unique<Periodic>(*p) : nullptr) {}  // NOLINT
   OptionalPeriodic(const OptionalPeriodic& other) : OptionalPeriodic(other.as_optional()) {}
   OptionalPeriodic(OptionalPeriodic&&) noexcept = default;

@@ -17,15 +17,15 @@
 namespace fapc::bml {
 
 enum class BehaviourKind : std::uint8_t {
-  face_lexeme,  // faceLexeme, faceShift lexeme=: a lexeme through its action units
-  face_facs,    // faceFacs: one action unit
-  gaze,         // gaze, gazeShift: the eyes (and head) turned by offsetAngle/offsetDirection
-  head,         // head: a lexeme (NOD, SHAKE, TILT...) repeated
+  face_lexeme,     // faceLexeme, faceShift lexeme=: a lexeme through its action units
+  face_facs,       // faceFacs: one action unit
+  gaze,            // gaze, gazeShift: the eyes (and head) turned by offsetAngle/offsetDirection
+  head,            // head: a lexeme (NOD, SHAKE, TILT...) repeated
   head_direction,  // headDirectionShift: the head turned and held
-  speech,       // speech: visemes and the voice
-  lips,         // lips (SmartBody): one recorded viseme, through smartbody_visemes.tsv
-  wait,         // wait: time only
-  not_drawn,    // gesture, posture, locomotion, pointing, torso...: time only, reported once per kind
+  speech,          // speech: visemes and the voice
+  lips,            // lips (SmartBody): one recorded viseme, through smartbody_visemes.tsv
+  wait,            // wait: time only
+  not_drawn,       // gesture, posture, locomotion, pointing, torso...: time only, reported once per kind
 };
 
 // What a speech says: its visemes and voice, and the time of each of its sync marks.
@@ -44,15 +44,15 @@ struct Behaviour {
   std::string id;
   std::string element;  // the element's local name
   Location where;
-  std::string lexeme;   // faceLexeme, head
+  std::string lexeme;  // faceLexeme, head
   double amount = 1;
-  int au = 0;           // faceFacs
-  char side = 'B';      // faceFacs: L, R or B(oth)
-  int repetition = 1;   // head
-  int viseme = 0;       // lips: the MPEG-4 viseme (0: rest); amount is its articulation
-  double offset_angle = 0;        // gaze, headDirectionShift: degrees
-  std::string offset_direction;   // RIGHT, LEFT, UP, DOWN, UPRIGHT, ...
-  std::string influence;          // gaze: EYES, HEAD, NECK, ...
+  int au = 0;                    // faceFacs
+  char side = 'B';               // faceFacs: L, R or B(oth)
+  int repetition = 1;            // head
+  int viseme = 0;                // lips: the MPEG-4 viseme (0: rest); amount is its articulation
+  double offset_angle = 0;       // gaze, headDirectionShift: degrees
+  std::string offset_direction;  // RIGHT, LEFT, UP, DOWN, UPRIGHT, ...
+  std::string influence;         // gaze: EYES, HEAD, NECK, ...
   std::unique_ptr<SpokenText> speech;
 };
 

@@ -11,9 +11,9 @@
 #include <libxml/tree.h>
 
 #include "bml/behaviour_defaults.hpp"
-#include "bml/facefx_curves.hpp"
 #include "bml/block_reader.hpp"
 #include "bml/bml_model.hpp"
+#include "bml/facefx_curves.hpp"
 #include "bml/recorded_speech.hpp"
 #include "bml/smartbody_visemes.hpp"
 #include "bml/speak_text.hpp"
@@ -45,8 +45,8 @@ std::string upper(std::string_view s) {
 // The standard sync points by name; attackPeak is a face's ready.
 std::optional<std::uint32_t> standard_point(std::string_view name) {
   static const std::map<std::string_view, std::uint32_t> kNames = {
-      {"start", kStart},         {"ready", kReady},   {"attackPeak", kReady}, {"strokeStart", kStrokeStart},
-      {"stroke", kStroke},       {"strokeEnd", kStrokeEnd}, {"relax", kRelax}, {"end", kEnd}};
+      {"start", kStart},   {"ready", kReady},         {"attackPeak", kReady}, {"strokeStart", kStrokeStart},
+      {"stroke", kStroke}, {"strokeEnd", kStrokeEnd}, {"relax", kRelax},      {"end", kEnd}};
   const auto found = kNames.find(name);
   if (found == kNames.end()) return std::nullopt;
   return found->second;
@@ -57,7 +57,7 @@ const char* kPointNames[kStandardPoints] = {"start", "ready", "strokeStart", "st
 // Behaviours fapc does not draw: their timing is kept (others may sync to them).
 bool is_not_drawn(std::string_view name) {
   static const std::set<std::string_view> kNames = {"gesture", "posture", "postureShift", "locomotion", "pointing",
-                                                    "torso", "stance", "pose", "curves"};
+                                                    "torso",   "stance",  "pose",         "curves"};
   return kNames.count(name) != 0;
 }
 
@@ -78,14 +78,17 @@ struct Pending {
 
 class BmlReader {
  public:
-  BmlReader(const xml::XmlDocument& doc, const BmlOptions& options) : doc_(doc), options_(options), once_(out_.warnings) {}
+  BmlReader(const xml::XmlDocument& doc, const BmlOptions& options)
+      : doc_(doc), options_(options), once_(out_.warnings) {}
 
   // `root`: the document's root, or a bml element inside another language's document (FML-APML's
   // bml part), whose parser warnings that document's reader reports itself.
   Result<BmlDocument> run(const xmlNode* root, bool whole_document) {
-    if (root == nullptr) return make_error(codes::bml::empty_document, Location{doc_.file(), 1, 1}, "an empty document");
+    if (root == nullptr)
+      return make_error(codes::bml::empty_document, Location{doc_.file(), 1, 1}, "an empty document");
     if (xml::local_name(root) != "bml")
-      return doc_.error(codes::bml::not_bml, root, "the root element is <" + std::string(xml::local_name(root)) + ">, not a BML <bml> block");
+      return doc_.error(codes::bml::not_bml, root,
+                        "the root element is <" + std::string(xml::local_name(root)) + ">, not a BML <bml> block");
     out_.dialect = dialect_of(root);
     Block block;
     if (!read_block(root, block)) return *error_;
@@ -142,8 +145,9 @@ class BmlReader {
 
   bool count_one(const xmlNode* node) {
     if (++counted_ <= options_.max_behaviours) return true;
-    return fail(doc_.error(codes::limit::runs, node, "more than " + std::to_string(options_.max_behaviours) +
-                                        " behaviours and constraints (raise the limit with --max-runs)"));
+    return fail(doc_.error(codes::limit::runs, node,
+                           "more than " + std::to_string(options_.max_behaviours) +
+                               " behaviours and constraints (raise the limit with --max-runs)"));
   }
 
   bool read_block(const xmlNode* root, Block& block) {
@@ -152,10 +156,15 @@ class BmlReader {
     block.character = xml::attribute(root, "characterId").value_or(xml::attribute(root, "character").value_or(""));
     if (const auto composition = xml::attribute(root, "composition")) {
       const std::string c = upper(xml::trim(*composition));
-      if (c == "MERGE") block.composition = Block::Composition::merge;
-      else if (c == "APPEND") block.composition = Block::Composition::append;
-      else if (c == "REPLACE") block.composition = Block::Composition::replace;
-      else return fail(doc_.error(codes::bml::bad_composition, root, "composition", "composition '" + *composition + "' is not MERGE, APPEND or REPLACE"));
+      if (c == "MERGE")
+        block.composition = Block::Composition::merge;
+      else if (c == "APPEND")
+        block.composition = Block::Composition::append;
+      else if (c == "REPLACE")
+        block.composition = Block::Composition::replace;
+      else
+        return fail(doc_.error(codes::bml::bad_composition, root, "composition",
+                               "composition '" + *composition + "' is not MERGE, APPEND or REPLACE"));
     }
     out_.blocks.push_back(block.id);
     out_.characters.push_back(block.character);
@@ -186,14 +195,17 @@ class BmlReader {
       if (!b.speech) continue;
       if (lips && !b.speech->visemes.empty()) {
         b.speech->visemes.clear();
-        once_.report("lips over synthesis", with_code(make_warning(b.where, "the block's <lips> rows move the mouth: the visemes "
-                                                                            "synthesised for this speech are not drawn",
-                                                                   doc_.line_text(b.where.line)),
-                                                      codes::bml::lips_over_synthesis));
+        once_.report("lips over synthesis",
+                     with_code(make_warning(b.where,
+                                            "the block's <lips> rows move the mouth: the visemes "
+                                            "synthesised for this speech are not drawn",
+                                            doc_.line_text(b.where.line)),
+                               codes::bml::lips_over_synthesis));
       } else if (!lips && b.speech->recorded) {
         once_.report("recorded without lips",
-                     with_code(make_warning(b.where, "recorded speech without <lips> rows: fapc does not find the phonemes "
-                                                     "of audio, so the mouth does not follow it",
+                     with_code(make_warning(b.where,
+                                            "recorded speech without <lips> rows: fapc does not find the phonemes "
+                                            "of audio, so the mouth does not follow it",
                                             doc_.line_text(b.where.line)),
                                codes::bml::recorded_speech_without_lips));
       }
@@ -214,9 +226,10 @@ class BmlReader {
     const bool core = ns.empty() || ns == kBml10 || ns.find("mindmakers") != std::string_view::npos;
     if (!core || is_not_drawn(name)) {
       b.kind = BehaviourKind::not_drawn;
-      once_.report("not drawn " + b.element,
-                   with_code(doc_.warning(node, "<" + b.element + "> is not drawn by fapc (no body): its timing is kept"),
-                             codes::bml::not_drawn));
+      once_.report(
+          "not drawn " + b.element,
+          with_code(doc_.warning(node, "<" + b.element + "> is not drawn by fapc (no body): its timing is kept"),
+                    codes::bml::not_drawn));
     } else if (name == "lips" || name == "lip") {
       read_lips(node, b);
     } else if (name == "face" && upper(xml::trim(xml::attribute(node, "type").value_or(""))) == "FACS") {
@@ -241,7 +254,8 @@ class BmlReader {
       // Checked as a double: a huge value converted to int first is undefined (found by fuzzing).
       const double repetition = number_attribute(node, "repetition", 1.0);
       if (!(repetition >= 1 && repetition <= 100) || repetition != std::floor(repetition))
-        return fail(doc_.error(codes::bml::bad_value, node, "repetition", "repetition must be a whole number from 1 to 100"));
+        return fail(
+            doc_.error(codes::bml::bad_value, node, "repetition", "repetition must be a whole number from 1 to 100"));
       b.repetition = static_cast<int>(repetition);
     } else if (name == "headDirectionShift") {
       b.kind = BehaviourKind::head_direction;
@@ -254,9 +268,11 @@ class BmlReader {
       b.kind = BehaviourKind::wait;
     } else {
       b.kind = BehaviourKind::not_drawn;
-      once_.report("unknown " + b.element, with_code(doc_.warning(node, "<" + b.element +
-                                                                              "> is not a BML 1.0 behaviour: its timing is kept, nothing is drawn"),
-                                                     codes::bml::unknown_behaviour));
+      once_.report(
+          "unknown " + b.element,
+          with_code(doc_.warning(
+                        node, "<" + b.element + "> is not a BML 1.0 behaviour: its timing is kept, nothing is drawn"),
+                    codes::bml::unknown_behaviour));
     }
     if (error_) return false;
     if (b.id.empty()) b.id = "#" + std::to_string(block.behaviours.size() + 1);
@@ -296,9 +312,11 @@ class BmlReader {
         p_.b.behaviour = b.id;
         p_.b.sync = "start";
         p_.self = true;
-        once_.report("relative time", with_code(doc_.warning(node, attribute, std::string(attribute) + " is earlier than start: read as "
-                                                                           "a time from the behaviour's start (Greta 0.x)"),
-                                                codes::bml::time_from_start));
+        once_.report("relative time",
+                     with_code(doc_.warning(node, attribute,
+                                            std::string(attribute) + " is earlier than start: read as "
+                                                                     "a time from the behaviour's start (Greta 0.x)"),
+                               codes::bml::time_from_start));
       }
       p_.label = label(node, attribute, b.id + " " + attribute + "=\"" + std::string(xml::trim(*value)) + "\"");
       p_.node = node;
@@ -340,12 +358,14 @@ class BmlReader {
     const double recorded = *start + timing.defaults[p];
     if (std::abs(ref.offset - recorded) <= 1e-3) return false;
     if (overruled_.insert(node).second)
-      out_.warnings.push_back(with_code(doc_.warning(node, attribute, std::string(attribute) + "=\"" + std::string(xml::trim(*xml::attribute(node, attribute))) +
-                                                                          "\" contradicts the recording of '" + b.id + "' (" +
-                                                                          std::string(attribute) + " at " + format_seconds(recorded) + ", " +
-                                                                          format_seconds(b.speech->duration) + " long by its marks and audio): "
-                                                                          "the recorded timing wins, and the speech's other placeholder times are not read"),
-                                        codes::bml::recorded_timing_wins));
+      out_.warnings.push_back(with_code(
+          doc_.warning(node, attribute,
+                       std::string(attribute) + "=\"" + std::string(xml::trim(*xml::attribute(node, attribute))) +
+                           "\" contradicts the recording of '" + b.id + "' (" + std::string(attribute) + " at " +
+                           format_seconds(recorded) + ", " + format_seconds(b.speech->duration) +
+                           " long by its marks and audio): "
+                           "the recorded timing wins, and the speech's other placeholder times are not read"),
+          codes::bml::recorded_timing_wins));
     return true;
   }
 
@@ -362,8 +382,9 @@ class BmlReader {
     }
     std::string known;
     for (const std::string& n : smartbody_viseme_names()) known += (known.empty() ? "" : " ") + n;
-    once_.report("viseme " + name, with_code(doc_.warning(node, "viseme", "viseme '" + name + "' is not one of SmartBody's (" + known +
-                                                                             "): its timing is kept, the mouth does not move"),
+    once_.report("viseme " + name, with_code(doc_.warning(node, "viseme",
+                                                          "viseme '" + name + "' is not one of SmartBody's (" + known +
+                                                              "): its timing is kept, the mouth does not move"),
                                              codes::bml::unknown_viseme));
   }
 
@@ -373,13 +394,18 @@ class BmlReader {
     const auto au = xml::attribute(node, "au");
     const auto n = au ? xml::decimal(xml::trim(*au)) : std::nullopt;
     if (!n || *n != std::floor(*n) || *n < 1 || *n > 99)
-      return fail(doc_.error(codes::bml::missing_attribute, node, "au", "<" + b.element + "> needs au, an action unit number from 1 to 99"));
+      return fail(doc_.error(codes::bml::missing_attribute, node, "au",
+                             "<" + b.element + "> needs au, an action unit number from 1 to 99"));
     b.au = static_cast<int>(*n);
     const std::string side = upper(xml::trim(xml::attribute(node, "side").value_or("BOTH")));
-    if (side == "LEFT") b.side = 'L';
-    else if (side == "RIGHT") b.side = 'R';
-    else if (side == "BOTH") b.side = 'B';
-    else return fail(doc_.error(codes::bml::bad_value, node, "side", "side '" + side + "' is not LEFT, RIGHT or BOTH"));
+    if (side == "LEFT")
+      b.side = 'L';
+    else if (side == "RIGHT")
+      b.side = 'R';
+    else if (side == "BOTH")
+      b.side = 'B';
+    else
+      return fail(doc_.error(codes::bml::bad_value, node, "side", "side '" + side + "' is not LEFT, RIGHT or BOTH"));
     return true;
   }
 
@@ -403,9 +429,10 @@ class BmlReader {
     b.offset_angle = number_attribute(node, "offsetAngle", 0.0);
     b.offset_direction = upper(xml::trim(xml::attribute(node, "offsetDirection").value_or("RIGHT")));
     if (xml::attribute(node, "target"))
-      once_.report("target", with_code(doc_.warning(node, "target", "gaze and head targets name objects of a world "
-                                                                    "fapc does not have: taken as straight ahead, "
-                                                                    "offsetAngle and offsetDirection turn from there"),
+      once_.report("target", with_code(doc_.warning(node, "target",
+                                                    "gaze and head targets name objects of a world "
+                                                    "fapc does not have: taken as straight ahead, "
+                                                    "offsetAngle and offsetDirection turn from there"),
                                        codes::bml::target_ahead));
   }
 
@@ -454,7 +481,8 @@ class BmlReader {
         marked.mark_offsets.push_back(marked.text.empty() ? 0 : marked.text.size() + 1);
       } else if (name != "description" && name != "text") {
         once_.report("in speech " + std::string(name),
-                     with_code(doc_.warning(n, "<" + std::string(name) + "> in speech is not read (prosody marks): its text is not spoken"),
+                     with_code(doc_.warning(n, "<" + std::string(name) +
+                                                   "> in speech is not read (prosody marks): its text is not spoken"),
                                codes::bml::speech_markup_skipped));
       }
     }
@@ -471,9 +499,11 @@ class BmlReader {
       }
       if (!count_one(child)) return false;
       if (name != "synchronize" && name != "before" && name != "after") {
-        once_.report("constraint " + std::string(name),
-                     with_code(doc_.warning(child, "<" + std::string(name) + "> is not a BML constraint (synchronize, before, after): skipped"),
-                               codes::bml::unknown_constraint));
+        once_.report(
+            "constraint " + std::string(name),
+            with_code(doc_.warning(child, "<" + std::string(name) +
+                                              "> is not a BML constraint (synchronize, before, after): skipped"),
+                      codes::bml::unknown_constraint));
         continue;
       }
       std::optional<SyncRef> anchor;
@@ -483,8 +513,9 @@ class BmlReader {
         anchor = parse_sync_ref(*ref, why);
         if (!anchor) return fail(doc_.error(codes::bml::bad_reference, child, "ref", why));
       } else if (name != "synchronize") {
-        return fail(doc_.error(codes::bml::missing_attribute, child, "<" + std::string(name) + "> needs ref, the sync point the others come " +
-                                          (name == "before" ? "before" : "after")));
+        return fail(doc_.error(codes::bml::missing_attribute, child,
+                               "<" + std::string(name) + "> needs ref, the sync point the others come " +
+                                   (name == "before" ? "before" : "after")));
       }
       for (const xmlNode* sync : doc_.children(child)) {
         if (xml::local_name(sync) != "sync") continue;
@@ -503,8 +534,8 @@ class BmlReader {
         p.a_ref = ref;
         p.b = *anchor;
         p.reversed = name == "before";
-        p.label = label(sync, "ref", std::string(name) + " " + std::string(xml::trim(*ref_text)) + " with " +
-                                          describe(*anchor));
+        p.label = label(sync, "ref",
+                        std::string(name) + " " + std::string(xml::trim(*ref_text)) + " with " + describe(*anchor));
         p.node = sync;
         p.attribute = "ref";
         pending.push_back(std::move(p));
@@ -529,13 +560,15 @@ class BmlReader {
   std::optional<PointRef> point_of(const Block& block, const std::unordered_map<std::string, std::uint32_t>& ids,
                                    const SyncRef& ref, const Pending& at) {
     if (!ref.block.empty() && ref.block != block.id) {
-      fail(doc_.error(codes::bml::unknown_reference, at.node, at.attribute, "'" + describe(ref) + "' names the block '" + ref.block +
-                                                 "'; this document's block is '" + block.id + "'"));
+      fail(doc_.error(
+          codes::bml::unknown_reference, at.node, at.attribute,
+          "'" + describe(ref) + "' names the block '" + ref.block + "'; this document's block is '" + block.id + "'"));
       return std::nullopt;
     }
     const auto found = ids.find(ref.behaviour);
     if (found == ids.end()) {
-      fail(doc_.error(codes::bml::unknown_reference, at.node, at.attribute, "'" + describe(ref) + "': no behaviour '" + ref.behaviour + "' in block '" + block.id + "'"));
+      fail(doc_.error(codes::bml::unknown_reference, at.node, at.attribute,
+                      "'" + describe(ref) + "': no behaviour '" + ref.behaviour + "' in block '" + block.id + "'"));
       return std::nullopt;
     }
     const Behaviour& b = block.behaviours[found->second];
@@ -543,11 +576,13 @@ class BmlReader {
     if (b.speech) {
       const auto& ids_of = b.speech->mark_ids;
       const auto mark = std::find(ids_of.begin(), ids_of.end(), ref.sync);
-      if (mark != ids_of.end()) return PointRef{found->second, kStandardPoints + static_cast<std::uint32_t>(mark - ids_of.begin())};
+      if (mark != ids_of.end())
+        return PointRef{found->second, kStandardPoints + static_cast<std::uint32_t>(mark - ids_of.begin())};
     }
-    fail(doc_.error(codes::bml::unknown_reference, at.node, at.attribute, "'" + describe(ref) + "': " + b.element + " '" + b.id + "' has no sync point '" +
-                                               ref.sync + "' (start, ready, strokeStart, stroke, strokeEnd, relax, end" +
-                                               (b.speech ? ", or one of its sync marks)" : ")")));
+    fail(doc_.error(codes::bml::unknown_reference, at.node, at.attribute,
+                    "'" + describe(ref) + "': " + b.element + " '" + b.id + "' has no sync point '" + ref.sync +
+                        "' (start, ready, strokeStart, stroke, strokeEnd, relax, end" +
+                        (b.speech ? ", or one of its sync marks)" : ")")));
     return std::nullopt;
   }
 
@@ -559,15 +594,18 @@ class BmlReader {
         const Location& first = block.behaviours[ids[b.id]].where;
         if (out_.dialect != "BML 1.0") {
           // Greta's planners reuse ids; BML 1.0 forbids it. References name the first.
-          once_.report("duplicate id", with_code(make_warning(b.where, "a second behaviour with id '" + b.id + "' (the first is at line " +
-                                                                            std::to_string(first.line) + "): references name the first",
-                                                              doc_.line_text(b.where.line)),
-                                                 codes::bml::duplicate_id));
+          once_.report("duplicate id",
+                       with_code(make_warning(b.where,
+                                              "a second behaviour with id '" + b.id + "' (the first is at line " +
+                                                  std::to_string(first.line) + "): references name the first",
+                                              doc_.line_text(b.where.line)),
+                                 codes::bml::duplicate_id));
           continue;
         }
-        return fail(make_error(codes::bml::duplicate_id_error, b.where, "a second behaviour with id '" + b.id + "' (the first is at line " +
-                                            std::to_string(first.line) + ")",
-                               doc_.line_text(b.where.line)));
+        return fail(make_error(
+            codes::bml::duplicate_id_error, b.where,
+            "a second behaviour with id '" + b.id + "' (the first is at line " + std::to_string(first.line) + ")",
+            doc_.line_text(b.where.line)));
       }
     }
     for (const Pending& p : pending) {
@@ -582,7 +620,8 @@ class BmlReader {
         // <synchronize> may hold a plain time: the others are put at it.
         if (mine.absolute && !other.absolute && p.kind == Relation::Kind::equal) std::swap(mine, other);
         if (mine.absolute)
-          return fail(doc_.error(codes::bml::plain_times_compared, p.node, p.attribute, "this constraint compares two plain times: name a behaviour's sync point"));
+          return fail(doc_.error(codes::bml::plain_times_compared, p.node, p.attribute,
+                                 "this constraint compares two plain times: name a behaviour's sync point"));
         const auto point = point_of(block, ids, mine, p);
         if (!point) return false;
         a = *point;
@@ -599,7 +638,8 @@ class BmlReader {
       double offset = other.offset - a_offset;
       if (p.reversed) {  // before: t(a) + a_offset <= t(b) + b.offset -> t(b) >= t(a) + (a_offset - b.offset)
         if (!b) {
-          return fail(doc_.error(codes::bml::before_plain_time, p.node, p.attribute, "before a plain time is not read: give the time as the sync point's own"));
+          return fail(doc_.error(codes::bml::before_plain_time, p.node, p.attribute,
+                                 "before a plain time is not read: give the time as the sync point's own"));
         }
         r.a = *b;
         r.b = a;
@@ -653,15 +693,18 @@ class BmlReader {
   }
 
   Diagnostic solve_error(const Block& block, const SolveError& e) const {
-    const std::string what = e.label >= 0 ? sources_[static_cast<std::size_t>(e.label)].text : std::string("the timing");
+    const std::string what =
+        e.label >= 0 ? sources_[static_cast<std::size_t>(e.label)].text : std::string("the timing");
     const std::string chain = chain_text(e.chain);
     switch (e.what) {
       case SolveError::What::contradiction:
         if (e.absolute)
-          return at_label(e.label, what + " cannot hold: it asks for " + format_seconds(e.time) + " from the block's start, but " +
-                                       chain + " already put that point at " + format_seconds(e.other_time));
+          return at_label(e.label, what + " cannot hold: it asks for " + format_seconds(e.time) +
+                                       " from the block's start, but " + chain + " already put that point at " +
+                                       format_seconds(e.other_time));
         return at_label(e.label, what + " cannot hold: it asks for its two points " + format_seconds(e.time) +
-                                     " apart, but " + chain + " already put them " + format_seconds(e.other_time) + " apart");
+                                     " apart, but " + chain + " already put them " + format_seconds(e.other_time) +
+                                     " apart");
       case SolveError::What::order: {
         const Behaviour& b = block.behaviours[e.behaviour];
         return at_label(e.label, what + " cannot hold: it puts " + b.id + ":" + kPointNames[e.point] + " at " +
@@ -674,7 +717,8 @@ class BmlReader {
                                      ", before its block" + (chain.empty() ? "" : " (" + chain + ")"));
       }
       case SolveError::What::unmet:
-        return at_label(e.label, what + " cannot hold: it needs " + format_seconds(e.time) + " or later, but the times fixed " +
+        return at_label(e.label, what + " cannot hold: it needs " + format_seconds(e.time) +
+                                     " or later, but the times fixed " +
                                      (chain.empty() ? std::string("elsewhere") : "by " + chain) + " give " +
                                      format_seconds(e.other_time));
     }

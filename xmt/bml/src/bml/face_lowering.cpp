@@ -89,11 +89,14 @@ void lower_face(const Behaviour& b, const std::array<double, kStandardPoints>& t
   const std::map<int, double> faps =
       b.kind == BehaviourKind::face_facs ? unit_faps(b.au, b.side, 1.0, lost) : lexeme_faps(b.lexeme, lost);
   for (int au : lost)
-    warnings.push_back(make_warning(codes::bml::unit_not_drawn, b.where,
-                                    "action unit " + std::to_string(au) + " moves no FAP (fapc's au_faps.tsv): not drawn"));
+    warnings.push_back(
+        make_warning(codes::bml::unit_not_drawn, b.where,
+                     "action unit " + std::to_string(au) + " moves no FAP (fapc's au_faps.tsv): not drawn"));
   if (faps.empty() && lost.empty()) {
-    warnings.push_back(make_warning(codes::bml::unknown_lexeme, b.where,
-                                    "face lexeme '" + b.lexeme + "' is not in fapc's vocabulary (the 17 of BML 1.0, docs/bml.md): its timing is kept"));
+    warnings.push_back(
+        make_warning(codes::bml::unknown_lexeme, b.where,
+                     "face lexeme '" + b.lexeme +
+                         "' is not in fapc's vocabulary (the 17 of BML 1.0, docs/bml.md): its timing is kept"));
     return;
   }
   for (const auto& [fap, value] : faps) {

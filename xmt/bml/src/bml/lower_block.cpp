@@ -84,8 +84,9 @@ void lower_head(const Behaviour& b, const std::array<double, kStandardPoints>& t
     const double sign = l == "TILT_LEFT" ? -1 : 1;
     add("head_roll", envelope(t, sign * 10 * amount * kAngleUnitsPerDegree, false));
   } else {
-    warnings.push_back(make_warning(codes::bml::unknown_head_lexeme, b.where,
-                                    "head lexeme '" + l + "' is not one fapc draws (NOD, SHAKE, TILT, TILT_LEFT, TILT_RIGHT): its timing is kept"));
+    warnings.push_back(make_warning(
+        codes::bml::unknown_head_lexeme, b.where,
+        "head lexeme '" + l + "' is not one fapc draws (NOD, SHAKE, TILT, TILT_LEFT, TILT_RIGHT): its timing is kept"));
   }
 }
 
@@ -93,13 +94,13 @@ void lower_direction(const Behaviour& b, const std::array<double, kStandardPoint
   const auto [yaw, pitch] = direction_degrees(b);
   // The head takes the larger part of a turn when the gaze's influence reaches it (HEAD, NECK,
   // SHOULDER, WAIST, WHOLE): 60 %, leaving the eyes the rest, as people turn (docs/bml.md).
-  const bool head = b.kind == BehaviourKind::head_direction ||
-                    (b.influence != "EYES" && !b.influence.empty());
+  const bool head = b.kind == BehaviourKind::head_direction || (b.influence != "EYES" && !b.influence.empty());
   const double head_share = b.kind == BehaviourKind::head_direction ? 1.0 : head ? 0.6 : 0.0;
   const Fill fill = b.shift ? Fill::freeze : Fill::remove;
   auto add = [&](const char* target, double degrees) {
     if (degrees == 0) return;
-    out.clips.push_back(keyed_clip(target, origin, t, envelope(t, degrees * kAngleUnitsPerDegree, b.shift), b.where, fill));
+    out.clips.push_back(
+        keyed_clip(target, origin, t, envelope(t, degrees * kAngleUnitsPerDegree, b.shift), b.where, fill));
   };
   add("head_yaw", yaw * head_share);
   add("head_pitch", pitch * head_share);
@@ -110,8 +111,8 @@ void lower_direction(const Behaviour& b, const std::array<double, kStandardPoint
   }
 }
 
-void lower_speech(const Behaviour& b, const std::array<double, kStandardPoints>& t, double origin, const Coarticulation& rule,
-                  Timeline& out) {
+void lower_speech(const Behaviour& b, const std::array<double, kStandardPoints>& t, double origin,
+                  const Coarticulation& rule, Timeline& out) {
   const SpokenText& spoken = *b.speech;
   const double begin = origin + t[kStart];
   for (Clip clip : coarticulated_viseme_clips(spoken.visemes, 1.0, rule, b.where)) {
@@ -131,7 +132,8 @@ void lower_speech(const Behaviour& b, const std::array<double, kStandardPoints>&
 // rule of synthesised speech, as one utterance's visemes are (rows are lowered together so that
 // each fade is shared by the two rows it joins). Touching rows of one viseme and articulation are
 // one held shape; a row that overlaps the one before it starts where that one ends.
-void lower_lips(const Block& block, const Solution& solution, double origin, const Coarticulation& rule, Timeline& out) {
+void lower_lips(const Block& block, const Solution& solution, double origin, const Coarticulation& rule,
+                Timeline& out) {
   struct Row {
     VisemeSpan span;
     Location where;
@@ -173,12 +175,14 @@ void lower_lips(const Block& block, const Solution& solution, double origin, con
 
 void lower_behaviour(const Behaviour& b, const std::array<double, kStandardPoints>& t, double origin,
                      const Coarticulation& rule, Timeline& out, Diagnostics& warnings) {
-  const bool drawn = b.kind != BehaviourKind::wait && b.kind != BehaviourKind::not_drawn && b.kind != BehaviourKind::speech;
+  const bool drawn =
+      b.kind != BehaviourKind::wait && b.kind != BehaviourKind::not_drawn && b.kind != BehaviourKind::speech;
   if (drawn && !(t[kEnd] > t[kStart])) {
     // start = end is a consistent schedule (two sync points joined) but moves nothing: said, not
     // drawn, so that every clip of the timeline lasts some time.
-    warnings.push_back(make_warning(codes::bml::no_duration, b.where,
-                                    "<" + b.element + " id=\"" + b.id + "\"> starts and ends at the same moment: it moves nothing"));
+    warnings.push_back(
+        make_warning(codes::bml::no_duration, b.where,
+                     "<" + b.element + " id=\"" + b.id + "\"> starts and ends at the same moment: it moves nothing"));
     return;
   }
   switch (b.kind) {

@@ -31,8 +31,9 @@ Status read_marks(const xml::XmlDocument& doc, const xmlNode* text, const BmlOpt
     const std::string_view name = xml::local_name(mark);
     if (name != "sync" && name != "tm" && name != "mark") {
       if (!said) {
-        Diagnostic w = doc.warning(mark, "<" + std::string(name) + "> in recorded speech is not read: the recording is what "
-                                                                    "is heard, and only the marks' times are taken");
+        Diagnostic w = doc.warning(mark, "<" + std::string(name) +
+                                             "> in recorded speech is not read: the recording is what "
+                                             "is heard, and only the marks' times are taken");
         w.code = codes::bml::speech_markup_skipped.name;
         warnings.push_back(std::move(w));
         said = true;
@@ -40,22 +41,27 @@ Status read_marks(const xml::XmlDocument& doc, const xmlNode* text, const BmlOpt
       continue;
     }
     const std::string id(xml::trim(xml::attribute(mark, "id").value_or("")));
-    if (id.empty()) return doc.error(codes::bml::missing_attribute, mark, "<" + std::string(name) + "> in speech needs an id");
+    if (id.empty())
+      return doc.error(codes::bml::missing_attribute, mark, "<" + std::string(name) + "> in speech needs an id");
     const auto time_text = xml::attribute(mark, "time");
     if (!time_text)
-      return doc.error(codes::bml::missing_attribute, mark, "a mark of recorded speech needs time, seconds from the speech's start (the recording's "
-                             "audio says nothing about where its words are)");
+      return doc.error(codes::bml::missing_attribute, mark,
+                       "a mark of recorded speech needs time, seconds from the speech's start (the recording's "
+                       "audio says nothing about where its words are)");
     const auto time = xml::decimal(xml::trim(*time_text));
     if (!time || !std::isfinite(*time) || *time < 0)
-      return doc.error(codes::bml::bad_value, mark, "time", "time '" + *time_text + "' is not a number of seconds from 0 on");
+      return doc.error(codes::bml::bad_value, mark, "time",
+                       "time '" + *time_text + "' is not a number of seconds from 0 on");
     if (*time > options.max_speech_seconds) {
-      return doc.error(codes::limit::frames, mark, "time", "mark '" + id + "' at " + seconds_text(*time) + ": the speech would last more than " +
-                                                 seconds_text(options.max_speech_seconds) +
-                                                 " (the frame limit at this frame rate; raise it with --max-frames)");
+      return doc.error(codes::limit::frames, mark, "time",
+                       "mark '" + id + "' at " + seconds_text(*time) + ": the speech would last more than " +
+                           seconds_text(options.max_speech_seconds) +
+                           " (the frame limit at this frame rate; raise it with --max-frames)");
     }
     if (!out.mark_times.empty() && *time < out.mark_times.back())
-      return doc.error(codes::bml::marks_out_of_order, mark, "time", "mark '" + id + "' at " + seconds_text(*time) + " comes before the mark before it ('" +
-                                         out.mark_ids.back() + "' at " + seconds_text(out.mark_times.back()) + ")");
+      return doc.error(codes::bml::marks_out_of_order, mark, "time",
+                       "mark '" + id + "' at " + seconds_text(*time) + " comes before the mark before it ('" +
+                           out.mark_ids.back() + "' at " + seconds_text(out.mark_times.back()) + ")");
     out.mark_ids.push_back(id);
     out.mark_times.push_back(*time);
     out.duration = std::max(out.duration, *time);
@@ -71,9 +77,10 @@ Status read_audio(const xml::XmlDocument& doc, const xmlNode* description, const
     if (xml::local_name(child) == "file") file = child;
   const std::string ref(file != nullptr ? xml::trim(xml::attribute(file, "ref").value_or("")) : "");
   if (ref.empty()) {
-    Diagnostic w = doc.warning(file != nullptr ? file : description,
-                               "recorded speech names no audio file (<file ref=\"NAME\"/>): its marks keep their times, "
-                               "with no voice");
+    Diagnostic w =
+        doc.warning(file != nullptr ? file : description,
+                    "recorded speech names no audio file (<file ref=\"NAME\"/>): its marks keep their times, "
+                    "with no voice");
     w.code = codes::bml::recorded_audio_missing.name;
     warnings.push_back(std::move(w));
     return ok_status();
@@ -90,8 +97,10 @@ Status read_audio(const xml::XmlDocument& doc, const xmlNode* description, const
   // Only a name that is not there is missing; a directory or FIFO there is refused by
   // read_file_bytes (before it could block).
   if (!fs::exists(*path, error)) {
-    Diagnostic w = doc.warning(file, "ref", "the recording '" + name + "' is not next to the document: the speech keeps "
-                                            "its recorded times, with no voice");
+    Diagnostic w = doc.warning(file, "ref",
+                               "the recording '" + name +
+                                   "' is not next to the document: the speech keeps "
+                                   "its recorded times, with no voice");
     w.code = codes::bml::recorded_audio_missing.name;
     warnings.push_back(std::move(w));
     return ok_status();
@@ -112,13 +121,16 @@ Status read_audio(const xml::XmlDocument& doc, const xmlNode* description, const
   Result<AudioClip> audio = read_wav(*bytes, *path);
   if (!audio) {  // placed at the reference, saying what is wrong where in the file
     const Location at = doc.where(file, "ref");
-    return retold(audio.error(), at, "recording '" + name + "': " + audio.error().message + (audio.error().where.byte_offset >= 0
-                                                   ? " (at byte " + std::to_string(audio.error().where.byte_offset) + ")"
-                                                   : std::string()), doc.line_text(at.line));
+    return retold(
+        audio.error(), at,
+        "recording '" + name + "': " + audio.error().message +
+            (audio.error().where.byte_offset >= 0 ? " (at byte " + std::to_string(audio.error().where.byte_offset) + ")"
+                                                  : std::string()),
+        doc.line_text(at.line));
   }
   if (static_cast<std::int64_t>(audio->samples.size()) > options.speech_limits.max_audio_samples) {
-    Diagnostic d = limit_error(doc.where(file, "ref"), "recording '" + name + "' holds " + std::to_string(audio->samples.size()) +
-                                                           " samples",
+    Diagnostic d = limit_error(doc.where(file, "ref"),
+                               "recording '" + name + "' holds " + std::to_string(audio->samples.size()) + " samples",
                                Limit::audio_samples, options.speech_limits);
     d.source_line = doc.line_text(d.where.line);
     return d;

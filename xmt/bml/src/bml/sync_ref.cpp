@@ -8,8 +8,10 @@ namespace fapc::bml {
 namespace {
 
 std::string_view trimmed(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\n' || s.front() == '\r')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\n' || s.back() == '\r')) s.remove_suffix(1);
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\n' || s.front() == '\r'))
+    s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\n' || s.back() == '\r'))
+    s.remove_suffix(1);
   return s;
 }
 
@@ -17,7 +19,8 @@ std::string_view trimmed(std::string_view s) {
 bool plain_id(std::string_view s) {
   if (s.empty()) return false;
   for (char c : s)
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.' || static_cast<unsigned char>(c) >= 0x80))
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.' ||
+          static_cast<unsigned char>(c) >= 0x80))
       return false;
   return true;
 }
@@ -29,7 +32,8 @@ std::optional<double> parse_seconds(std::string_view text) {
   if (!text.empty() && text.front() == '+') text.remove_prefix(1);
   double value = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
+  if (text.empty() || ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(value))
+    return std::nullopt;
   return value;
 }
 
@@ -49,7 +53,8 @@ std::optional<SyncRef> parse_sync_ref(std::string_view text, std::string& why) {
   std::string_view names = text;
   for (std::size_t at = text.size(); at-- > 0;) {
     if (text[at] != '+' && text[at] != '-') continue;
-    if (const auto offset = parse_seconds(text.substr(at + 1)); offset && text.substr(at + 1).find(':') == std::string_view::npos) {
+    if (const auto offset = parse_seconds(text.substr(at + 1));
+        offset && text.substr(at + 1).find(':') == std::string_view::npos) {
       ref.offset = text[at] == '-' ? -*offset : *offset;
       names = trimmed(text.substr(0, at));
       break;
@@ -69,8 +74,9 @@ std::optional<SyncRef> parse_sync_ref(std::string_view text, std::string& why) {
   }
   for (std::string_view part : parts)
     if (!plain_id(part)) {
-      why = "'" + std::string(text) + "' is not a time nor a sync reference ([block:]behaviour:syncpoint[+|-seconds]): '" +
-            std::string(part) + "' is not a name";
+      why = "'" + std::string(text) +
+            "' is not a time nor a sync reference ([block:]behaviour:syncpoint[+|-seconds]): '" + std::string(part) +
+            "' is not a name";
       return std::nullopt;
     }
   if (parts.size() == 3) ref.block = parts[0];

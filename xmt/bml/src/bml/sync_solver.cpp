@@ -134,8 +134,13 @@ class Edges {
 class Solver {
  public:
   Solver(const std::vector<SolverBehaviour>& behaviours, const std::vector<Relation>& relations)
-      : behaviours_(behaviours), relations_(relations), vars_(behaviours), classes_(vars_.count()),
-        edges_(vars_.count()), named_(vars_.count(), 0), first_label_(vars_.count(), -1) {}
+      : behaviours_(behaviours),
+        relations_(relations),
+        vars_(behaviours),
+        classes_(vars_.count()),
+        edges_(vars_.count()),
+        named_(vars_.count(), 0),
+        first_label_(vars_.count(), -1) {}
 
   Solved run() {
     Solved out;

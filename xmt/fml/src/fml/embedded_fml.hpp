@@ -3,15 +3,15 @@
 #pragma once
 
 #include "fapc/fml/fml.hpp"
-#include "fml/fml_tree.hpp"
 #include "fapc/xml/xml_document.hpp"
+#include "fml/fml_tree.hpp"
 
 namespace fapc::xmt {
 
 struct EmbeddedFmlMove {
-  FmlLeaf leaf;   // what the move does (move, normal, talk or wait)
+  FmlLeaf leaf;        // what the move does (move, normal, talk or wait)
   std::string target;  // a move's target
-  Timing timing;  // begin, duration (always set), repeat, as the scheduler takes them
+  Timing timing;       // begin, duration (always set), repeat, as the scheduler takes them
   Diagnostics warnings;
 };
 

@@ -2,8 +2,8 @@
 // and lowers the runs to clips. What it does not read is reported, never dropped silently.
 #include <algorithm>
 #include <array>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <initializer_list>
 #include <map>
@@ -18,14 +18,14 @@
 #include "fapc/fml/codes.hpp"
 #include "fapc/fml/fml.hpp"
 #include "fapc/transcoder/audio_mix.hpp"
+#include "fapc/xml/name_table.hpp"
+#include "fapc/xml/once_per_name.hpp"
+#include "fapc/xml/text.hpp"
+#include "fapc/xml/xml_document.hpp"
 #include "fml/embedded_fml.hpp"
 #include "fml/fml_timing.hpp"
 #include "fml/fml_tree.hpp"
 #include "fml/other_formats.hpp"
-#include "fapc/xml/text.hpp"
-#include "fapc/xml/once_per_name.hpp"
-#include "fapc/xml/name_table.hpp"
-#include "fapc/xml/xml_document.hpp"
 
 namespace fapc::xmt {
 namespace {
@@ -63,10 +63,10 @@ bool same_value(const std::string& a, const std::string& b) {
 
 // expr types: FAP 2 expression numbers (fap_table.hpp), words of the paper and common variants.
 std::optional<int> expression_number(const std::string& type) {
-  static const std::map<std::string, int> kWords = {
-      {"smile", 1}, {"joy", 1}, {"happy", 1}, {"happiness", 1}, {"sadness", 2}, {"sad", 2},
-      {"anger", 3}, {"angry", 3}, {"fear", 4}, {"afraid", 4}, {"disgust", 5}, {"disgusted", 5},
-      {"surprise", 6}, {"surprised", 6}, {"normal", 0}, {"neutral", 0}};
+  static const std::map<std::string, int> kWords = {{"smile", 1},    {"joy", 1},       {"happy", 1},   {"happiness", 1},
+                                                    {"sadness", 2},  {"sad", 2},       {"anger", 3},   {"angry", 3},
+                                                    {"fear", 4},     {"afraid", 4},    {"disgust", 5}, {"disgusted", 5},
+                                                    {"surprise", 6}, {"surprised", 6}, {"normal", 0},  {"neutral", 0}};
   if (const auto n = number(type)) {
     if (*n == std::floor(*n) && *n >= 0 && *n <= 6) return static_cast<int>(*n);
     return std::nullopt;
@@ -106,9 +106,11 @@ class FmlReader {
   Result<EmbeddedFmlMove> run_embedded(const xmlNode* node) {
     const std::string name(xml::local_name(node));
     if (name != "talk" && name != "expr" && name != "hdmv" && name != "fap" && name != "param" && name != "wait") {
-      return doc_.error(codes::fml::not_a_move, node, "FML '" + name + "' inside XMT-Omega: only FML moves (talk, expr, hdmv, fap, param, "
-                                               "wait) are read here; use XMT-Omega's own time containers, or "
-                                               "place an FML document with animation src");
+      return doc_.error(codes::fml::not_a_move, node,
+                        "FML '" + name +
+                            "' inside XMT-Omega: only FML moves (talk, expr, hdmv, fap, param, "
+                            "wait) are read here; use XMT-Omega's own time containers, or "
+                            "place an FML document with animation src");
     }
     std::optional<ScheduleNode> placed = element(node);
     if (error_) return *error_;
@@ -126,12 +128,15 @@ class FmlReader {
     result_.warnings = doc_.warnings();
     const xmlNode* root = doc_.root();
     if (const std::string other = other_format_name(doc_, root); !other.empty()) {
-      return doc_.error(codes::fml::other_language, root, "this is " + other + ", not FML (the Arya-DiPaola Face Modeling Language, "
-                                                   "root fml with model and story): fapc does not read it");
+      return doc_.error(codes::fml::other_language, root,
+                        "this is " + other +
+                            ", not FML (the Arya-DiPaola Face Modeling Language, "
+                            "root fml with model and story): fapc does not read it");
     }
     if (xml::local_name(root) != "fml") {
-      return doc_.error(codes::fml::not_fml, root, "not an FML document: the root element is '" + std::string(xml::local_name(root)) +
-                                  "', expected fml");
+      return doc_.error(
+          codes::fml::not_fml, root,
+          "not an FML document: the root element is '" + std::string(xml::local_name(root)) + "', expected fml");
     }
     check_attributes(root, {});
     check_text(root);
@@ -230,8 +235,9 @@ class FmlReader {
       if (listed(known) || listed(more)) continue;
       const std::string element_name(xml::local_name(element));
       once_.report("attribute " + element_name + "@" + std::string(name),
-                   doc_.warning(element, name, "attribute '" + std::string(name) + "' of " + element_name +
-                                                   " is not part of FML and was ignored"));
+                   doc_.warning(element, name,
+                                "attribute '" + std::string(name) + "' of " + element_name +
+                                    " is not part of FML and was ignored"));
     }
   }
 
@@ -243,9 +249,9 @@ class FmlReader {
     for (const char* variant : variants) {
       if (auto value = xml::attribute(element, variant)) {
         const std::string element_name(xml::local_name(element));
-        once_.report("variant " + element_name + "@" + variant,
-                     doc_.warning(element, variant, std::string(variant) + " is read as " + paper +
-                                                        ", the paper's spelling"));
+        once_.report(
+            "variant " + element_name + "@" + variant,
+            doc_.warning(element, variant, std::string(variant) + " is read as " + paper + ", the paper's spelling"));
         return value;
       }
     }
@@ -291,7 +297,8 @@ class FmlReader {
     const auto val_text = xml::attribute(item, "val");
     const auto val = val_text ? number(*val_text) : std::nullopt;
     if (!val || *val < 0) {
-      fail(doc_.error(codes::fml::bad_range, item, val_text ? "val" : "", "range needs val, the largest angle in degrees (>= 0)"));
+      fail(doc_.error(codes::fml::bad_range, item, val_text ? "val" : "",
+                      "range needs val, the largest angle in degrees (>= 0)"));
       return;
     }
     // type: a direction (the paper's "left"); dir: an axis, both directions (docs/fml.md,
@@ -317,12 +324,14 @@ class FmlReader {
         limits_.min[2] = -*val;
       } else {
         fail(doc_.error(codes::fml::bad_range, item, xml::attribute(item, "type") ? "type" : "dir",
-                        "range type '" + *dir + "' is not a direction (left, right, up, down, roll-left, "
-                        "roll-right) or an axis (0 yaw, 1 pitch, 2 roll)"));
+                        "range type '" + *dir +
+                            "' is not a direction (left, right, up, down, roll-left, "
+                            "roll-right) or an axis (0 yaw, 1 pitch, 2 roll)"));
       }
       return;
     }
-    fail(doc_.error(codes::fml::bad_range, item, "range needs type, the direction it limits (left, right, up, down, ...)"));
+    fail(doc_.error(codes::fml::bad_range, item,
+                    "range needs type, the direction it limits (left, right, up, down, ...)"));
   }
 
   void read_event(const xmlNode* item) {
@@ -372,7 +381,8 @@ class FmlReader {
 
   bool count_node(const xmlNode* node) {
     if (++nodes_ <= static_cast<double>(options_.max_runs)) return true;
-    fail(limit_at(doc_.error(codes::limit::runs, node, ""), "the story has too many elements after template expansion"));
+    fail(
+        limit_at(doc_.error(codes::limit::runs, node, ""), "the story has too many elements after template expansion"));
     return false;
   }
 
@@ -419,7 +429,8 @@ class FmlReader {
         return false;
       }
       if (*n > static_cast<double>(options_.max_runs)) {
-        fail(limit_at(doc_.error(codes::limit::runs, node, "repeat", ""), "repeat " + text + " asks for more runs than allowed"));
+        fail(limit_at(doc_.error(codes::limit::runs, node, "repeat", ""),
+                      "repeat " + text + " asks for more runs than allowed"));
         return false;
       }
       timing.repeat = *n;
@@ -428,7 +439,8 @@ class FmlReader {
     const std::size_t semicolon = text.find(';');
     const std::string event = trim(text.substr(0, semicolon));
     if (!events_.count(event)) {
-      fail(doc_.error(codes::fml::bad_repeat, node, "repeat", "repeat '" + text + "' is not a count, indefinite, or an event declared in the model"));
+      fail(doc_.error(codes::fml::bad_repeat, node, "repeat",
+                      "repeat '" + text + "' is not a count, indefinite, or an event declared in the model"));
       return false;
     }
     const auto value = event_value(event);
@@ -469,10 +481,10 @@ class FmlReader {
       fail(timing.error());
       return std::nullopt;
     }
-    const bool group = name == "action" || name == "act" || name == "seq" || name == "par" || name == "excl" ||
-                       name == "behavior";
-    const bool move = name == "talk" || name == "expr" || name == "hdmv" || name == "fap" || name == "param" ||
-                      name == "wait";
+    const bool group =
+        name == "action" || name == "act" || name == "seq" || name == "par" || name == "excl" || name == "behavior";
+    const bool move =
+        name == "talk" || name == "expr" || name == "hdmv" || name == "fap" || name == "param" || name == "wait";
     if (!group && !move) {
       // Extensions of other systems (e.g. <emotion> in the published sample): their FML
       // children still play, together, as in a par.
@@ -517,8 +529,8 @@ class FmlReader {
     for (const xmlNode* child : xml::element_children(node)) {
       const auto branch = spelled(child, "ev_val", {"event_value"});
       if (!branch) {
-        result_.warnings.push_back(doc_.warning(child, std::string(xml::local_name(child)) +
-                                                           " in excl has no ev_val: it never plays"));
+        result_.warnings.push_back(
+            doc_.warning(child, std::string(xml::local_name(child)) + " in excl has no ev_val: it never plays"));
       }
       std::optional<ScheduleNode> placed = element(child);
       if (error_) return std::nullopt;
@@ -528,11 +540,11 @@ class FmlReader {
       }
     }
     if (!value) {
-      result_.warnings.push_back(doc_.warning(node, "event '" + name + "' has no value (give --event " + name +
-                                                        "=VALUE): the excl plays nothing"));
+      result_.warnings.push_back(doc_.warning(
+          node, "event '" + name + "' has no value (give --event " + name + "=VALUE): the excl plays nothing"));
     } else if (!chosen) {
-      result_.warnings.push_back(doc_.warning(node, "no branch of the excl has ev_val=\"" + *value + "\" (event '" +
-                                                        name + "'): it plays nothing"));
+      result_.warnings.push_back(doc_.warning(
+          node, "no branch of the excl has ev_val=\"" + *value + "\" (event '" + name + "'): it plays nothing"));
     }
     return group;
   }
@@ -631,9 +643,11 @@ class FmlReader {
   std::optional<ScheduleNode> expr(const xmlNode* node, const FmlTiming& timing, const std::string& type) {
     const auto expression = expression_number(type);
     if (!expression) {
-      return as_wait(node, timing, doc_.warning(node, "type", "expression type '" + type +
-                                                                  "' is not one fapc knows (smile, sadness, anger, "
-                                                                  "fear, disgust, surprise, normal or 0-6): it waits"));
+      return as_wait(node, timing,
+                     doc_.warning(node, "type",
+                                  "expression type '" + type +
+                                      "' is not one fapc knows (smile, sadness, anger, "
+                                      "fear, disgust, surprise, normal or 0-6): it waits"));
     }
     FmlLeaf leaf;
     if (*expression == 0) {
@@ -643,8 +657,9 @@ class FmlReader {
     auto percent = value_attribute(node, 100);
     if (!percent) return std::nullopt;
     if (*percent < 0 || *percent > 100) {
-      result_.warnings.push_back(doc_.warning(node, value_name(node), "expression val " + format_number(*percent) +
-                                                                          " is outside 0-100 (%) and was clamped"));
+      result_.warnings.push_back(
+          doc_.warning(node, value_name(node),
+                       "expression val " + format_number(*percent) + " is outside 0-100 (%) and was clamped"));
       percent = std::clamp(*percent, 0.0, 100.0);
     }
     leaf.kind = FmlLeaf::Kind::move;
@@ -659,15 +674,17 @@ class FmlReader {
     const char* type_name = xml::attribute(node, "type") ? "type" : "dir";
     const auto axis = head_axis(type);
     if (!axis) {
-      return as_wait(node, timing, doc_.warning(node, type_name, "head movement type '" + type +
-                                                                     "' is not yaw, pitch, roll or 0-2: it waits"));
+      return as_wait(
+          node, timing,
+          doc_.warning(node, type_name, "head movement type '" + type + "' is not yaw, pitch, roll or 0-2: it waits"));
     }
     auto degrees = value_attribute(node, 0);
     if (!degrees) return std::nullopt;
     const double clamped = std::clamp(*degrees, limits_.min[*axis], limits_.max[*axis]);
     if (clamped != *degrees) {
-      result_.warnings.push_back(doc_.warning(node, value_name(node), "head movement of " + format_number(*degrees) +
-                                                                          " degrees is beyond the model's range and was clamped"));
+      result_.warnings.push_back(doc_.warning(
+          node, value_name(node),
+          "head movement of " + format_number(*degrees) + " degrees is beyond the model's range and was clamped"));
     }
     FmlLeaf leaf;
     leaf.kind = FmlLeaf::Kind::move;
@@ -680,14 +697,17 @@ class FmlReader {
     const FapInfo* info = find_fap_by_name_or_number(trim(type));
     if (!info) {
       std::string closest;
-      for (const std::string_view n : closest_fap_names(trim(type))) closest += (closest.empty() ? "" : ", ") + std::string(n);
-      fail(doc_.error(codes::fml::bad_fap, node, "type", quoted_name(type) + " is not a FAP number (3-68) or name" +
-                                        (closest.empty() ? std::string() : "; did you mean " + closest + "?")));
+      for (const std::string_view n : closest_fap_names(trim(type)))
+        closest += (closest.empty() ? "" : ", ") + std::string(n);
+      fail(doc_.error(codes::fml::bad_fap, node, "type",
+                      quoted_name(type) + " is not a FAP number (3-68) or name" +
+                          (closest.empty() ? std::string() : "; did you mean " + closest + "?")));
       return std::nullopt;
     }
     if (info->number < 3) {
-      fail(doc_.error(codes::fml::bad_fap, node, "type", "FAP " + std::to_string(info->number) +
-                                        " is not animated with fap: use talk (visemes) or expr (expressions)"));
+      fail(doc_.error(codes::fml::bad_fap, node, "type",
+                      "FAP " + std::to_string(info->number) +
+                          " is not animated with fap: use talk (visemes) or expr (expressions)"));
       return std::nullopt;
     }
     const auto value = value_attribute(node, 0);
@@ -703,8 +723,10 @@ class FmlReader {
     const std::string name = trim(type);
     if (resolve_target(name, *profile_).empty() || weight_target(name)) {
       // Parameters are system-dependent (the paper's eye-wink): what the profile does not map waits.
-      return as_wait(node, timing, doc_.warning(node, "type", unknown_parameter_message(name, *profile_) +
-                                                                  " (param names come from the profile): it waits"));
+      return as_wait(
+          node, timing,
+          doc_.warning(node, "type",
+                       unknown_parameter_message(name, *profile_) + " (param names come from the profile): it waits"));
     }
     const auto value = value_attribute(node, 0);
     if (!value) return std::nullopt;
@@ -733,14 +755,18 @@ class FmlReader {
       auto speech = phonemes(node, trim(*file));
       if (!speech) return std::nullopt;
       if (speech->visemes.empty() && speech->duration == 0) {
-        return as_wait(node, timing, doc_.warning(node, "file", "talk file '" + *file + "' is not an MBROLA .pho "
-                                                                "phoneme file: fapc has no speech recogniser, so "
-                                                                "this talk is silent (it waits)"));
+        return as_wait(node, timing,
+                       doc_.warning(node, "file",
+                                    "talk file '" + *file +
+                                        "' is not an MBROLA .pho "
+                                        "phoneme file: fapc has no speech recogniser, so "
+                                        "this talk is silent (it waits)"));
       }
       leaf.talk->speech = std::move(*speech);
     } else {
       if (text.empty()) {
-        fail(doc_.error(codes::fml::talk_without_text, node, "talk needs text to say or a phoneme file (file=\"x.pho\")"));
+        fail(doc_.error(codes::fml::talk_without_text, node,
+                        "talk needs text to say or a phoneme file (file=\"x.pho\")"));
         return std::nullopt;
       }
       if (!speak(node, text, *leaf.talk)) return std::nullopt;
@@ -758,9 +784,10 @@ class FmlReader {
   // warning once per document.
   bool speak(const xmlNode* node, const std::string& text, FmlTalk& talk) {
     if (!options_.synthesize) {
-      once_.report("no speech engine", doc_.warning(node, "no speech engine (fapc built with FAPC_SPEECH=OFF, or none "
-                                                          "given): talk text becomes visemes by the letter table, with "
-                                                          "no voice"));
+      once_.report("no speech engine", doc_.warning(node,
+                                                    "no speech engine (fapc built with FAPC_SPEECH=OFF, or none "
+                                                    "given): talk text becomes visemes by the letter table, with "
+                                                    "no voice"));
       std::string skipped;
       talk.speech = visemes_from_text(text, options_.words_per_minute * 12 / 175, skipped);
       if (!skipped.empty()) {
@@ -782,23 +809,27 @@ class FmlReader {
     const Limits& limits = options_.speech_limits;
     speech_text_bytes_ += static_cast<std::int64_t>(text.size());
     if (speech_text_bytes_ > limits.max_speech_text_bytes) {
-      fail(placed(limit_error(doc_.where(node), "the talk text of this document reaches " + std::to_string(speech_text_bytes_) + " bytes",
+      fail(placed(limit_error(doc_.where(node),
+                              "the talk text of this document reaches " + std::to_string(speech_text_bytes_) + " bytes",
                               Limit::speech_text, limits)));
       return false;
     }
     const double left = limits.max_speech_seconds - speech_seconds_;
     const double estimate = estimated_speech_seconds(text, request.words_per_minute);
     if (estimate > left) {
-      fail(placed(limit_error(doc_.where(node), "the speech of this document would last at least " +
-                                                    seconds_text(speech_seconds_ + estimate) + " s",
-                              Limit::speech_seconds, limits)));
+      fail(placed(limit_error(
+          doc_.where(node),
+          "the speech of this document would last at least " + seconds_text(speech_seconds_ + estimate) + " s",
+          Limit::speech_seconds, limits)));
       return false;
     }
     request.max_seconds = std::min(left, options_.max_speech_seconds);
     Result<Utterance> spoken = options_.synthesize(request);
     if (!spoken && spoken.error().kind == ErrorKind::limit_exceeded) {
       fail(placed(left <= options_.max_speech_seconds
-                      ? limit_error(doc_.where(node), "the speech of this document would last more than " + seconds_text(limits.max_speech_seconds) + " s",
+                      ? limit_error(doc_.where(node),
+                                    "the speech of this document would last more than " +
+                                        seconds_text(limits.max_speech_seconds) + " s",
                                     Limit::speech_seconds, limits)
                       : make_error(codes::limit::frames, doc_.where(node),
                                    "the speech would last more than " + seconds_text(options_.max_speech_seconds) +
@@ -833,8 +864,9 @@ class FmlReader {
       if (leaf.kind != FmlLeaf::Kind::talk || run.end <= run.begin) continue;
       samples += placed_samples(leaf.talk->audio, run.begin - run.curve_offset, run.begin, run.end);
       if (samples > static_cast<double>(options_.speech_limits.max_audio_samples))
-        return placed(limit_error(leaf.where, "the voice of this talk, once per run, adds up to " +
-                                                  std::to_string(static_cast<std::int64_t>(samples)) + " samples",
+        return placed(limit_error(leaf.where,
+                                  "the voice of this talk, once per run, adds up to " +
+                                      std::to_string(static_cast<std::int64_t>(samples)) + " samples",
                                   Limit::audio_samples, options_.speech_limits));
     }
     return ok_status();
@@ -876,7 +908,8 @@ class FmlReader {
     const std::string& resolved = *allowed;
     Result<std::string> text = options_.read_file ? options_.read_file(resolved) : read_file_bytes(resolved);
     if (!text) {
-      fail(doc_.error(codes::fml::talk_file_unreadable, node, "file", "talk file '" + name + "': " + text.error().message));
+      fail(doc_.error(codes::fml::talk_file_unreadable, node, "file",
+                      "talk file '" + name + "': " + text.error().message));
       return std::nullopt;
     }
     result_.phoneme_files.push_back(resolved);
@@ -919,10 +952,12 @@ class FmlReader {
   // The scheduler's problem, its subject the element it is about.
   Diagnostic scheduler_error(const ScheduleError& problem) const {
     const bool named = problem.node_tag > 0 && problem.node_tag <= element_names_.size();
-    Diagnostic d = problem.diagnostic(named ? names_.name(element_names_[problem.node_tag - 1]) : std::string("the element"));
+    Diagnostic d =
+        problem.diagnostic(named ? names_.name(element_names_[problem.node_tag - 1]) : std::string("the element"));
     if (named && problem.needs_an_end()) {
-      d.message += " (repeat=\"indefinite\" and unset loop events need an end: a container's duration or end, "
-                   "or --duration)";
+      d.message +=
+          " (repeat=\"indefinite\" and unset loop events need an end: a container's duration or end, "
+          "or --duration)";
     }
     if (d.where.file == doc_.file() && d.source_line.empty()) d.source_line = doc_.line_text(d.where.line);
     return d;
@@ -935,7 +970,8 @@ class FmlReader {
 // as it is read: 10^4 short talks took 12 s before the last ones were refused). A lexical scan
 // of <talk ...>TEXT</talk> without file=, in document order: an estimate (it counts markup
 // inside a talk, and talks in comments), made exact by the checks as each talk is spoken.
-std::optional<Diagnostic> talk_text_over_budget(std::string_view text, const std::string& file, const FmlOptions& options) {
+std::optional<Diagnostic> talk_text_over_budget(std::string_view text, const std::string& file,
+                                                const FmlOptions& options) {
   const Limits& limits = options.speech_limits;
   std::int64_t bytes = 0;
   double seconds = 0;
@@ -954,14 +990,16 @@ std::optional<Diagnostic> talk_text_over_budget(std::string_view text, const std
     if (too_much_text || seconds > limits.max_speech_seconds) {
       const std::size_t line_start = text.rfind('\n', at);
       const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n');
-      const Location where = Location::text(
-          file, static_cast<int>(line), static_cast<int>(at - (line_start == std::string_view::npos ? 0 : line_start + 1)) + 1);
+      const Location where =
+          Location::text(file, static_cast<int>(line),
+                         static_cast<int>(at - (line_start == std::string_view::npos ? 0 : line_start + 1)) + 1);
       char shown[32];
       std::snprintf(shown, sizeof shown, "%.0f", seconds);
-      return too_much_text ? limit_error(where, "the talk text of this document reaches " + std::to_string(bytes) + " bytes",
-                                         Limit::speech_text, limits)
-                           : limit_error(where, std::string("the speech of this document would last at least ") + shown + " s",
-                                         Limit::speech_seconds, limits);
+      return too_much_text
+                 ? limit_error(where, "the talk text of this document reaches " + std::to_string(bytes) + " bytes",
+                               Limit::speech_text, limits)
+                 : limit_error(where, std::string("the speech of this document would last at least ") + shown + " s",
+                               Limit::speech_seconds, limits);
     }
     at = close;
   }

@@ -16,7 +16,7 @@ namespace fapc::xmt {
 // What a talk says: its visemes and, when spoken, its voice.
 struct FmlTalk {
   Speech speech;
-  AudioClip audio;  // the voice of a spoken talk (no samples: a silent one, stretched to its runs)
+  AudioClip audio;     // the voice of a spoken talk (no samples: a silent one, stretched to its runs)
   double natural = 0;  // a talk's own length: its speech, or the last viseme's fade to neutral if later
 };
 

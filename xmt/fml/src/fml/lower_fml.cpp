@@ -69,7 +69,8 @@ Timeline lower_fml(const FmlTree& tree, const Schedule& schedule) {
   std::vector<const Occurrence*> runs;
   for (const Occurrence& run : schedule.occurrences)
     if (run.end > run.begin) runs.push_back(&run);  // cut to nothing by an ancestor
-  std::stable_sort(runs.begin(), runs.end(), [](const Occurrence* a, const Occurrence* b) { return a->begin < b->begin; });
+  std::stable_sort(runs.begin(), runs.end(),
+                   [](const Occurrence* a, const Occurrence* b) { return a->begin < b->begin; });
   Timeline timeline;
   // A clip per run, but for talks (a clip per viseme) and normal moves (one per expression).
   timeline.clips.reserve(runs.size());

@@ -22,10 +22,10 @@ std::string other_format_name(const xml::XmlDocument& doc, const xmlNode* root) 
   for (const xmlNode* child : doc.children(root, kStory)) {
     const std::string_view c = xml::local_name(child);
     if (c == "model" || c == "story") return {};
-    if (c == "performative" || c == "emotion" || c == "deictic" || c == "beat" || c == "rest" ||
-        c == "laugh" || c == "world" || c == "certainty" || c == "belief-relation" || c == "other" ||
-        c == "gaze" || c == "head" || c == "ideational" || c == "turnallocation" || c == "backchannel" ||
-        c == "emphasis" || c == "iconic" || c == "metaphoric")
+    if (c == "performative" || c == "emotion" || c == "deictic" || c == "beat" || c == "rest" || c == "laugh" ||
+        c == "world" || c == "certainty" || c == "belief-relation" || c == "other" || c == "gaze" || c == "head" ||
+        c == "ideational" || c == "turnallocation" || c == "backchannel" || c == "emphasis" || c == "iconic" ||
+        c == "metaphoric")
       return "the fml part of a Greta FML-APML document";
   }
   return {};

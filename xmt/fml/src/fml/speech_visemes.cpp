@@ -10,25 +10,51 @@ namespace fapc::xmt {
 namespace {
 
 // The letter groups of visemes_from_text, longest first where they overlap.
-constexpr std::pair<std::string_view, int> kDigraphs[] = {
-    {"th", 3}, {"sh", 6}, {"ch", 6}, {"ph", 2}, {"ng", 8}, {"ck", 5}, {"qu", 5}};
+constexpr std::pair<std::string_view, int> kDigraphs[] = {{"th", 3}, {"sh", 6}, {"ch", 6}, {"ph", 2},
+                                                          {"ng", 8}, {"ck", 5}, {"qu", 5}};
 
 int viseme_of_letter(char c) {
   switch (c) {
-    case 'p': case 'b': case 'm': return 1;
-    case 'f': case 'v': return 2;
-    case 't': case 'd': return 4;
-    case 'k': case 'g': case 'c': case 'q': case 'x': return 5;
-    case 'j': return 6;
-    case 's': case 'z': return 7;
-    case 'n': case 'l': return 8;
-    case 'r': return 9;
-    case 'a': return 10;
-    case 'e': return 11;
-    case 'i': case 'y': return 12;
-    case 'o': return 13;
-    case 'u': case 'w': return 14;
-    default: return -1;
+    case 'p':
+    case 'b':
+    case 'm':
+      return 1;
+    case 'f':
+    case 'v':
+      return 2;
+    case 't':
+    case 'd':
+      return 4;
+    case 'k':
+    case 'g':
+    case 'c':
+    case 'q':
+    case 'x':
+      return 5;
+    case 'j':
+      return 6;
+    case 's':
+    case 'z':
+      return 7;
+    case 'n':
+    case 'l':
+      return 8;
+    case 'r':
+      return 9;
+    case 'a':
+      return 10;
+    case 'e':
+      return 11;
+    case 'i':
+    case 'y':
+      return 12;
+    case 'o':
+      return 13;
+    case 'u':
+    case 'w':
+      return 14;
+    default:
+      return -1;
   }
 }
 
@@ -107,7 +133,6 @@ std::string_view next_field(std::string_view line, std::size_t& at) {
   return line.substr(start, at - start);
 }
 
-
 }  // namespace
 
 int viseme_of_phoneme(std::string_view p) {
@@ -116,21 +141,13 @@ int viseme_of_phoneme(std::string_view p) {
   // and short variants together, diphthongs by their first vowel, Z with S, N with n, j with I,
   // w with U, h and the glottal stop silent (they have no mouth shape of their own).
   static const std::pair<std::string_view, int> kTable[] = {
-      {"_", 0}, {"#", 0}, {"h", 0}, {"?", 0},
-      {"p", 1}, {"b", 1}, {"m", 1},
-      {"f", 2}, {"v", 2},
-      {"T", 3}, {"D", 3},
-      {"t", 4}, {"d", 4},
-      {"k", 5}, {"g", 5}, {"x", 5},
-      {"tS", 6}, {"dZ", 6}, {"S", 6}, {"Z", 6},
-      {"s", 7}, {"z", 7},
-      {"n", 8}, {"l", 8}, {"N", 8},
-      {"r", 9}, {"R", 9},
-      {"A:", 10}, {"A", 10}, {"a", 10}, {"a:", 10}, {"V", 10}, {"aI", 10}, {"aU", 10},
-      {"e", 11}, {"e:", 11}, {"E", 11}, {"E:", 11}, {"@", 11}, {"3:", 11}, {"{", 11}, {"eI", 11}, {"e@", 11},
-      {"I", 12}, {"i", 12}, {"i:", 12}, {"j", 12}, {"I@", 12}, {"y", 12}, {"y:", 12},
-      {"Q", 13}, {"O", 13}, {"O:", 13}, {"o", 13}, {"o:", 13}, {"OI", 13}, {"@U", 13},
-      {"U", 14}, {"u", 14}, {"u:", 14}, {"w", 14}, {"U@", 14},
+      {"_", 0},   {"#", 0},   {"h", 0},   {"?", 0},   {"p", 1},   {"b", 1},   {"m", 1},   {"f", 2},   {"v", 2},
+      {"T", 3},   {"D", 3},   {"t", 4},   {"d", 4},   {"k", 5},   {"g", 5},   {"x", 5},   {"tS", 6},  {"dZ", 6},
+      {"S", 6},   {"Z", 6},   {"s", 7},   {"z", 7},   {"n", 8},   {"l", 8},   {"N", 8},   {"r", 9},   {"R", 9},
+      {"A:", 10}, {"A", 10},  {"a", 10},  {"a:", 10}, {"V", 10},  {"aI", 10}, {"aU", 10}, {"e", 11},  {"e:", 11},
+      {"E", 11},  {"E:", 11}, {"@", 11},  {"3:", 11}, {"{", 11},  {"eI", 11}, {"e@", 11}, {"I", 12},  {"i", 12},
+      {"i:", 12}, {"j", 12},  {"I@", 12}, {"y", 12},  {"y:", 12}, {"Q", 13},  {"O", 13},  {"O:", 13}, {"o", 13},
+      {"o:", 13}, {"OI", 13}, {"@U", 13}, {"U", 14},  {"u", 14},  {"u:", 14}, {"w", 14},  {"U@", 14},
   };
   for (const auto& [name, viseme] : kTable)
     if (name == p) return viseme;
@@ -180,10 +197,10 @@ Result<Speech> visemes_from_pho(std::string_view text, const std::string& file_n
     int viseme = viseme_of_phoneme(phoneme);
     if (viseme < 0) {
       if (unknown.insert(std::string(phoneme)).second) {
-        warnings.push_back(make_warning(codes::fml::phoneme_silence, Location::text(file_name, line_number, column(phoneme)),
-                                        "phoneme '" + std::string(phoneme) +
-                                            "' has no MPEG-4 viseme and is treated as silence",
-                                        std::string(line)));
+        warnings.push_back(
+            make_warning(codes::fml::phoneme_silence, Location::text(file_name, line_number, column(phoneme)),
+                         "phoneme '" + std::string(phoneme) + "' has no MPEG-4 viseme and is treated as silence",
+                         std::string(line)));
       }
       viseme = 0;
     }

@@ -1,6 +1,6 @@
 // What `talk` says, as MPEG-4 visemes in time (docs/fml.md, "talk"): text through a letter-to-viseme
-// approximation (the fallback when fapc is built without its speech engine), or phoneme timings from an MBROLA .pho file through
-// the standard's phoneme-to-viseme table. Times are seconds from the talk's start.
+// approximation (the fallback when fapc is built without its speech engine), or phoneme timings from an MBROLA .pho
+// file through the standard's phoneme-to-viseme table. Times are seconds from the talk's start.
 #pragma once
 
 #include <string>

@@ -88,9 +88,10 @@ class ApmlReader : public DocumentReader {
     if (const auto sec = xml::attribute(n, "sec")) {
       const auto value = xml::decimal(xml::trim(*sec));
       if (!value || *value < 0 || *value > options_.bml.max_speech_seconds)
-        return doc_.error(codes::intent::bad_value, n, "sec", "sec '" + *sec + "' is not a pause in seconds from 0 to " +
-                                        std::to_string(static_cast<long long>(options_.bml.max_speech_seconds)) +
-                                        " (--max-speech-seconds)");
+        return doc_.error(codes::intent::bad_value, n, "sec",
+                          "sec '" + *sec + "' is not a pause in seconds from 0 to " +
+                              std::to_string(static_cast<long long>(options_.bml.max_speech_seconds)) +
+                              " (--max-speech-seconds)");
       seconds = *value;
     }
     Segment next;
@@ -119,7 +120,8 @@ class ApmlReader : public DocumentReader {
     for (const char* attribute : kIntentionAttributes) {
       const auto v = xml::attribute(n, attribute);
       if (!v) continue;
-      Result<double> strength = read_strength(doc_, n, std::string_view(attribute) == "affect" ? "intensity" : "importance");
+      Result<double> strength =
+          read_strength(doc_, n, std::string_view(attribute) == "affect" ? "intensity" : "importance");
       if (!strength) return strength.error();
       intention(attribute, std::string(xml::trim(*v)), *strength);
       found.back().where = doc_.where(n, attribute);

@@ -18,19 +18,24 @@ DocumentReader::DocumentReader(const xml::XmlDocument& doc, const IntentOptions&
 
 Result<const xmlNode*> DocumentReader::root_named(std::string_view name) const {
   const xmlNode* root = doc_.root();
-  if (root == nullptr) return make_error(codes::intent::empty_document, Location{doc_.file(), 1, 1}, "an empty document");
+  if (root == nullptr)
+    return make_error(codes::intent::empty_document, Location{doc_.file(), 1, 1}, "an empty document");
   if (xml::local_name(root) != name)
-    return doc_.error(codes::intent::wrong_root, root, "the root element is <" + std::string(xml::local_name(root)) + ">, not <" + std::string(name) + ">");
+    return doc_.error(
+        codes::intent::wrong_root, root,
+        "the root element is <" + std::string(xml::local_name(root)) + ">, not <" + std::string(name) + ">");
   return root;
 }
 
 Status DocumentReader::count(const xmlNode* node, const char* what) {
   if (++counted_ <= options_.bml.max_behaviours) return ok_status();
-  return doc_.error(codes::limit::runs, node, "more than " + std::to_string(options_.bml.max_behaviours) + " " + what +
-                                      " (raise the limit with --max-runs)");
+  return doc_.error(
+      codes::limit::runs, node,
+      "more than " + std::to_string(options_.bml.max_behaviours) + " " + what + " (raise the limit with --max-runs)");
 }
 
-Result<IntentDocument> DocumentReader::draw_and_finish(std::vector<Intention> intentions, double end, Location end_where) {
+Result<IntentDocument> DocumentReader::draw_and_finish(std::vector<Intention> intentions, double end,
+                                                       Location end_where) {
   for (Intention& i : intentions) {
     realize(i, lexicon_, options_.bml.coarticulation, out_.timeline, once_, out_.warnings);
     if (i.end > end) {

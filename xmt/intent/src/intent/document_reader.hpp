@@ -49,7 +49,8 @@ Result<IntentDocument> read_document(std::string_view text, const std::string& f
 }
 
 template <class Reader>
-Result<IntentDocument> load_document(const std::string& path, const IntentOptions& options, const xml::BlankText& blank_text) {
+Result<IntentDocument> load_document(const std::string& path, const IntentOptions& options,
+                                     const xml::BlankText& blank_text) {
   const auto source = SourceText::open(path);
   if (!source) return source.error();
   return read_document<Reader>(source->bytes(), path, options, blank_text);

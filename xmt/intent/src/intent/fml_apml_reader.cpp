@@ -42,9 +42,10 @@ class FmlApmlReader : public DocumentReader {
       } else if (name == "fml") {
         fml_parts.push_back(part);
       } else {
-        once_.report("part " + std::string(name),
-                     with_code(doc_.warning(part, "<" + std::string(name) + "> is neither the bml nor the fml part: not read"),
-                               codes::intent::unknown_part));
+        once_.report(
+            "part " + std::string(name),
+            with_code(doc_.warning(part, "<" + std::string(name) + "> is neither the bml nor the fml part: not read"),
+                      codes::intent::unknown_part));
       }
     }
     for (const xmlNode* fml : fml_parts)
@@ -81,12 +82,14 @@ class FmlApmlReader : public DocumentReader {
     }
     for (Diagnostic& w : block->warnings) out_.warnings.push_back(std::move(w));
     for (const std::string& l : block->languages)
-      if (std::find(out_.languages.begin(), out_.languages.end(), l) == out_.languages.end()) out_.languages.push_back(l);
+      if (std::find(out_.languages.begin(), out_.languages.end(), l) == out_.languages.end())
+        out_.languages.push_back(l);
     for (const bml::ScheduledMark& m : block->marks) {
       marks_.emplace(std::make_pair(m.behaviour, m.id), m.time);
       mark_order_.push_back(m);
     }
-    for (const bml::ScheduledBehaviour& b : block->behaviours) behaviours_.emplace(b.id, std::make_pair(b.start, b.end));
+    for (const bml::ScheduledBehaviour& b : block->behaviours)
+      behaviours_.emplace(b.id, std::make_pair(b.start, b.end));
     return ok_status();
   }
 
@@ -102,14 +105,16 @@ class FmlApmlReader : public DocumentReader {
     if (!strength) return strength.error();
     i.strength = *strength;
     if (!xml::attribute(node, "start"))
-      return doc_.error(codes::intent::missing_attribute, node, "<" + i.type + "> needs start: a time in seconds or a speech mark such as s1:tm1");
+      return doc_.error(codes::intent::missing_attribute, node,
+                        "<" + i.type + "> needs start: a time in seconds or a speech mark such as s1:tm1");
     if (!i.id.empty()) {
       const auto [it, fresh] = intention_ids_.emplace(i.id, pending_.size());
       if (!fresh)
         once_.report("duplicate " + i.id,
-                     with_code(doc_.warning(node, "id", "a second intention with id '" + i.id + "' (the first is at line " +
-                                                            std::to_string(pending_[it->second].intention.where.line) +
-                                                            "): references name the first"),
+                     with_code(doc_.warning(node, "id",
+                                            "a second intention with id '" + i.id + "' (the first is at line " +
+                                                std::to_string(pending_[it->second].intention.where.line) +
+                                                "): references name the first"),
                                codes::intent::duplicate_id));
     }
     pending_.push_back(std::move(p));
@@ -125,25 +130,32 @@ class FmlApmlReader : public DocumentReader {
     // Beyond any animation fapc makes (--duration's bound): refused before it becomes a span whose
     // fractions a double cannot tell apart.
     if (std::abs(ref->offset) > kMaxSeconds)
-      return doc_.error(codes::intent::bad_time, p.node, attribute, std::string(attribute) + " '" + text + "' is beyond 10^7 seconds");
+      return doc_.error(codes::intent::bad_time, p.node, attribute,
+                        std::string(attribute) + " '" + text + "' is beyond 10^7 seconds");
     if (ref->absolute) {
-      if (ref->offset < 0) return doc_.error(codes::intent::bad_time, p.node, attribute, std::string(attribute) + " '" + text + "' is before the document's start");
+      if (ref->offset < 0)
+        return doc_.error(codes::intent::bad_time, p.node, attribute,
+                          std::string(attribute) + " '" + text + "' is before the document's start");
       return ref->offset;
     }
-    if (const auto mark = marks_.find({ref->behaviour, ref->sync}); mark != marks_.end()) return mark->second + ref->offset;
+    if (const auto mark = marks_.find({ref->behaviour, ref->sync}); mark != marks_.end())
+      return mark->second + ref->offset;
     const bool start = ref->sync == "start";
     if (!start && ref->sync != "end") {
-      return doc_.error(codes::intent::unknown_reference, p.node, attribute, "'" + text + "': no mark '" + ref->sync + "' in a speech '" + ref->behaviour +
-                                               "' (" + marks_of(ref->behaviour) + "), and a behaviour or intention is named by start or end");
+      return doc_.error(codes::intent::unknown_reference, p.node, attribute,
+                        "'" + text + "': no mark '" + ref->sync + "' in a speech '" + ref->behaviour + "' (" +
+                            marks_of(ref->behaviour) + "), and a behaviour or intention is named by start or end");
     }
     if (const auto b = behaviours_.find(ref->behaviour); b != behaviours_.end())
       return (start ? b->second.first : b->second.second) + ref->offset;
     const auto other = intention_ids_.find(ref->behaviour);
     if (other == intention_ids_.end())
-      return doc_.error(codes::intent::unknown_reference, p.node, attribute, "'" + text + "': no speech, behaviour or intention '" + ref->behaviour + "'");
+      return doc_.error(codes::intent::unknown_reference, p.node, attribute,
+                        "'" + text + "': no speech, behaviour or intention '" + ref->behaviour + "'");
     Pending& named = pending_[other->second];
     if (named.state == Pending::State::resolving)
-      return doc_.error(codes::intent::reference_cycle, p.node, attribute, "'" + text + "' refers back to itself through a cycle of intentions");
+      return doc_.error(codes::intent::reference_cycle, p.node, attribute,
+                        "'" + text + "' refers back to itself through a cycle of intentions");
     if (Status placed = place(named); !placed) return placed.error();
     return (start ? named.intention.start : named.intention.end) + ref->offset;
   }
@@ -175,8 +187,9 @@ class FmlApmlReader : public DocumentReader {
         return bml::parse_seconds(xml::attribute(p.node, a).value_or("")).has_value();
       };
       if (*e < *start && plain("start") && plain("end")) {
-        once_.report("relative end", with_code(doc_.warning(p.node, "end", "end is earlier than start: read as a time from "
-                                                                            "the intention's start (Greta 0.x)"),
+        once_.report("relative end", with_code(doc_.warning(p.node, "end",
+                                                            "end is earlier than start: read as a time from "
+                                                            "the intention's start (Greta 0.x)"),
                                                codes::intent::time_from_start));
         *e += *start;
       }
@@ -199,7 +212,8 @@ const xml::BlankText kBlankText{false, {"text", "speech"}};
 
 }  // namespace
 
-Result<IntentDocument> read_fml_apml(std::string_view text, const std::string& file_name, const IntentOptions& options) {
+Result<IntentDocument> read_fml_apml(std::string_view text, const std::string& file_name,
+                                     const IntentOptions& options) {
   return read_document<FmlApmlReader>(text, file_name, options, kBlankText);
 }
 

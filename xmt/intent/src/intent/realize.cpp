@@ -96,7 +96,8 @@ Result<double> read_strength(const xml::XmlDocument& doc, const xmlNode* node, c
   if (!text) return 1.0;
   const auto value = xml::decimal(xml::trim(*text));
   if (!value || *value < 0 || *value > 1)
-    return doc.error(codes::intent::bad_value, node, attribute, std::string(attribute) + " '" + *text + "' is not a number from 0 to 1");
+    return doc.error(codes::intent::bad_value, node, attribute,
+                     std::string(attribute) + " '" + *text + "' is not a number from 0 to 1");
   return *value;
 }
 

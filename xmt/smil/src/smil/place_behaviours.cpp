@@ -101,13 +101,14 @@ Result<PlacedScript> place_behaviours(const std::vector<SmilLeaf>& leaves, const
     if (!leaf.speech) continue;
     const bml::SpokenText& spoken = *leaves[*leaf.speech].spoken;
     const double from = (leaf.begin_mark ? spoken.mark_times[*leaf.begin_mark] : 0.0) + leaf.offset;
-    const double to = leaf.end_mark ? spoken.mark_times[*leaf.end_mark]
+    const double to = leaf.end_mark   ? spoken.mark_times[*leaf.end_mark]
                       : leaf.duration ? from + *leaf.duration
                                       : spoken.duration;
     if (to <= from) {
-      return make_error(codes::smil::empty_span, leaf.where, "this span is empty: its content-end comes " +
-                                        std::string(to < from ? "before" : "at the same time as") +
-                                        " its content-begin in the speech as spoken");
+      return make_error(codes::smil::empty_span, leaf.where,
+                        "this span is empty: its content-end comes " +
+                            std::string(to < from ? "before" : "at the same time as") +
+                            " its content-begin in the speech as spoken");
     }
     for (double begin : speech_runs[*leaf.speech])
       if (Status s = add_span(leaf, begin + from, begin + to); !s) return s.error();

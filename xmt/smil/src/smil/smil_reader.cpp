@@ -40,34 +40,48 @@ std::string lower(std::string_view s) {
 // system-language as Xface writes it (a language's English name) or as SMIL does (a code).
 std::optional<std::string> language_code(std::string_view written) {
   static const std::map<std::string, std::string> kNames = {
-      {"english", "en"}, {"italian", "it"}, {"french", "fr"},     {"german", "de"},    {"spanish", "es"},
-      {"portuguese", "pt"}, {"dutch", "nl"}, {"swedish", "sv"}, {"finnish", "fi"}, {"greek", "el"}};
+      {"english", "en"},    {"italian", "it"}, {"french", "fr"},  {"german", "de"},  {"spanish", "es"},
+      {"portuguese", "pt"}, {"dutch", "nl"},   {"swedish", "sv"}, {"finnish", "fi"}, {"greek", "el"}};
   const std::string w = lower(xml::trim(written));
   if (const auto found = kNames.find(w); found != kNames.end()) return found->second;
-  const bool code = w.size() >= 2 && w.size() <= 8 &&
-                    std::all_of(w.begin(), w.end(), [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '-'; });
+  const bool code = w.size() >= 2 && w.size() <= 8 && std::all_of(w.begin(), w.end(), [](char c) {
+                      return std::isalpha(static_cast<unsigned char>(c)) || c == '-';
+                    });
   if (code && w.find('-') != 0 && (w.size() <= 3 || w[2] == '-' || w[3] == '-')) return w;
   return std::nullopt;
 }
 
 // The attributes each element reads (docs/smil.md); others are reported once.
-const std::vector<std::string_view> kCommon = {"begin", "dur", "end", "repeat", "fill", "system-language", "channel",
-                                               "id", "title", "type", "system-required", "system-screen-size",
+const std::vector<std::string_view> kCommon = {"begin",
+                                               "dur",
+                                               "end",
+                                               "repeat",
+                                               "fill",
+                                               "system-language",
+                                               "channel",
+                                               "id",
+                                               "title",
+                                               "type",
+                                               "system-required",
+                                               "system-screen-size",
                                                "system-screen-depth"};
 const std::vector<std::string_view> kSpeech = {"affect", "file"};
-const std::vector<std::string_view> kAnchored = {"affect", "content-id", "content-begin", "content-end", "content",
-                                                 "intensity", "action-type"};
+const std::vector<std::string_view> kAnchored = {"affect",  "content-id", "content-begin", "content-end",
+                                                 "content", "intensity",  "action-type"};
 
 class SmilReader {
  public:
-  SmilReader(const xml::XmlDocument& doc, const SmilOptions& options) : doc_(doc), options_(options), once_(out_.warnings) {}
+  SmilReader(const xml::XmlDocument& doc, const SmilOptions& options)
+      : doc_(doc), options_(options), once_(out_.warnings) {}
 
   Result<SmilDocument> run() {
     const xmlNode* root = doc_.root();
-    if (root == nullptr) return make_error(codes::smil::empty_document, Location{doc_.file(), 1, 1}, "an empty document");
+    if (root == nullptr)
+      return make_error(codes::smil::empty_document, Location{doc_.file(), 1, 1}, "an empty document");
     const std::string_view name = xml::local_name(root);
     if (name != "par" && name != "seq")
-      return doc_.error(codes::smil::not_smil, root, "the root element is <" + std::string(name) + ">, not a SMIL-Agent par or seq");
+      return doc_.error(codes::smil::not_smil, root,
+                        "the root element is <" + std::string(name) + ">, not a SMIL-Agent par or seq");
     std::optional<ScheduleNode> tree = element(root, Context{options_.speech.language});
     if (error_) return *error_;
     if (Status s = resolve_anchors(); !s) return s.error();
@@ -140,12 +154,15 @@ class SmilReader {
       if (std::find(kCommon.begin(), kCommon.end(), name) != kCommon.end()) {
         if (name.starts_with("system-") && name != "system-language")
           warn("system test " + std::string(name), codes::smil::system_test_ignored,
-               doc_.warning(node, name, std::string(name) + " is not tested: fapc plays the element whatever the system"));
+               doc_.warning(node, name,
+                            std::string(name) + " is not tested: fapc plays the element whatever the system"));
         continue;
       }
       if (std::find(own.begin(), own.end(), name) != own.end()) continue;
       warn("attribute " + element + "@" + std::string(name), codes::smil::unknown_attribute,
-           doc_.warning(node, name, "attribute '" + std::string(name) + "' of " + element + " is not part of SMIL-Agent and was ignored"));
+           doc_.warning(
+               node, name,
+               "attribute '" + std::string(name) + "' of " + element + " is not part of SMIL-Agent and was ignored"));
     }
   }
 
@@ -163,9 +180,11 @@ class SmilReader {
         context.language = *code;
       } else {
         warn("language " + *lang, codes::smil::unknown_language,
-             doc_.warning(node, "system-language", "system-language '" + *lang + "' is not a language fapc knows by name "
-                                                   "(english, italian, ... or a code such as en, it): speech keeps " +
-                                                   context.language));
+             doc_.warning(node, "system-language",
+                          "system-language '" + *lang +
+                              "' is not a language fapc knows by name "
+                              "(english, italian, ... or a code such as en, it): speech keeps " +
+                              context.language));
       }
     }
     Result<xmt::FmlTiming> timing = xmt::read_fml_timing(doc_, node);
@@ -178,7 +197,8 @@ class SmilReader {
     if (name == "par" || name == "seq") {
       check_attributes(node, {});
       xmt::report_stray_text(doc_, node, once_);
-      placed = ScheduleNode::group(name == "par" ? Kind::parallel : Kind::sequence, xmt::group_timing(*timing), doc_.where(node));
+      placed = ScheduleNode::group(name == "par" ? Kind::parallel : Kind::sequence, xmt::group_timing(*timing),
+                                   doc_.where(node));
       for (const xmlNode* child : doc_.children(node)) {
         if (std::optional<ScheduleNode> inner = element(child, context)) placed->children.push_back(std::move(*inner));
         if (error_) return std::nullopt;
@@ -189,8 +209,9 @@ class SmilReader {
       placed = display(node, *timing);
     } else {
       warn("element " + std::string(name), codes::smil::unknown_element,
-           doc_.warning(node, "element '" + std::string(name) + "' is not part of SMIL-Agent (par, seq, speech, "
-                                                                  "speech-animation, action) and was skipped"));
+           doc_.warning(node, "element '" + std::string(name) +
+                                  "' is not part of SMIL-Agent (par, seq, speech, "
+                                  "speech-animation, action) and was skipped"));
       return std::nullopt;
     }
     if (!placed || error_) return std::nullopt;
@@ -205,7 +226,8 @@ class SmilReader {
     if (!text) return true;
     const std::string f = lower(xml::trim(*text));
     if (f == "freeze" || f == "hold" || f == "remove" || f == "auto" || f == "default") return true;
-    return fail(doc_.error(codes::smil::bad_value, node, "fill", "fill '" + *text + "' is not freeze, hold, remove, auto or default"));
+    return fail(doc_.error(codes::smil::bad_value, node, "fill",
+                           "fill '" + *text + "' is not freeze, hold, remove, auto or default"));
   }
 
   bool freezes(const xmlNode* node) const {
@@ -222,11 +244,14 @@ class SmilReader {
       return true;
     }
     const auto n = xml::decimal(xml::trim(*text));
-    if (!n || *n <= 0) return fail(doc_.error(codes::smil::bad_value, node, "repeat", "repeat '" + *text + "' is not a count above 0 or indefinite"));
+    if (!n || *n <= 0)
+      return fail(doc_.error(codes::smil::bad_value, node, "repeat",
+                             "repeat '" + *text + "' is not a count above 0 or indefinite"));
     if (*n > static_cast<double>(options_.max_runs)) {
       Limits limits;
       limits.max_runs = options_.max_runs;
-      return fail(limit_error(doc_.where(node, "repeat"), "repeat " + *text + " asks for more runs than allowed", Limit::runs, limits));
+      return fail(limit_error(doc_.where(node, "repeat"), "repeat " + *text + " asks for more runs than allowed",
+                              Limit::runs, limits));
     }
     timing.repeat = *n;
     return true;
@@ -250,7 +275,8 @@ class SmilReader {
         warn("speech text and file", codes::smil::speech_text_ignored,
              doc_.warning(node, "file", "this speech has a recording: its text is not spoken"));
       if (!leaf.text.mark_ids.empty()) {
-        fail(doc_.error(codes::smil::marks_without_words, node, "file", "a speech read from a recording has no words to place its marks at"));
+        fail(doc_.error(codes::smil::marks_without_words, node, "file",
+                        "a speech read from a recording has no words to place its marks at"));
         return std::nullopt;
       }
       if (!record(node, *file, leaf)) return std::nullopt;
@@ -263,7 +289,8 @@ class SmilReader {
       return std::nullopt;
     }
     out_.speeches.push_back(leaf.name);
-    if (const auto affect = xml::attribute(node, "affect")) said_affects_[leaves_.size()] = std::string(xml::trim(*affect));
+    if (const auto affect = xml::attribute(node, "affect"))
+      said_affects_[leaves_.size()] = std::string(xml::trim(*affect));
     // The duration is the speech's own, known once spoken (set_speech_durations); dur and end
     // place what follows it in a seq.
     const Timing t = xmt::move_timing(timing, 0);
@@ -294,7 +321,8 @@ class SmilReader {
       const std::string_view name = xml::local_name(n);
       if (name != "mark") {
         warn("in speech " + std::string(name), codes::smil::speech_markup_skipped,
-             doc_.warning(n, "<" + std::string(name) + "> in speech is not read (only mark is): its text is not spoken"));
+             doc_.warning(n,
+                          "<" + std::string(name) + "> in speech is not read (only mark is): its text is not spoken"));
         continue;
       }
       const std::string id(xml::trim(xml::attribute(n, "id").value_or("")));
@@ -310,18 +338,24 @@ class SmilReader {
   // speech file=: a 16-bit PCM WAV, read under the include rules; its mouth does not move (a
   // recording has no phonemes), which is said once.
   bool record(const xmlNode* node, const std::string& name, SmilLeaf& leaf) {
-    Result<std::string> path = resolve_include(xml::trim(name), doc_.file(), options_.includes, doc_.where(node, "file"));
+    Result<std::string> path =
+        resolve_include(xml::trim(name), doc_.file(), options_.includes, doc_.where(node, "file"));
     if (!path) return fail(path.error());
     Result<std::string> bytes = read_file_bytes(*path, options_.speech_limits);
-    if (!bytes) return fail(doc_.error(codes::smil::speech_file_unreadable, node, "file", "speech file '" + name + "': " + bytes.error().message));
+    if (!bytes)
+      return fail(doc_.error(codes::smil::speech_file_unreadable, node, "file",
+                             "speech file '" + name + "': " + bytes.error().message));
     Result<AudioClip> audio = read_wav(*bytes, *path);
     if (!audio) return fail(audio.error());
     if (static_cast<std::int64_t>(audio->samples.size()) > options_.speech_limits.max_audio_samples)
-      return fail(limit_error(doc_.where(node, "file"), "speech file '" + name + "' holds " + std::to_string(audio->samples.size()) + " samples",
+      return fail(limit_error(doc_.where(node, "file"),
+                              "speech file '" + name + "' holds " + std::to_string(audio->samples.size()) + " samples",
                               Limit::audio_samples, options_.speech_limits));
     out_.recordings.push_back(*path);
     warn("recording", codes::smil::recording_without_visemes,
-         doc_.warning(node, "file", "a recorded speech is played as it is: fapc does not find its phonemes, so the mouth does not follow it"));
+         doc_.warning(
+             node, "file",
+             "a recorded speech is played as it is: fapc does not find its phonemes, so the mouth does not follow it"));
     leaf.spoken = std::make_unique<bml::SpokenText>();
     audio->source = leaf.where;
     leaf.spoken->duration = static_cast<double>(audio->samples.size()) / audio->sample_rate;
@@ -341,7 +375,8 @@ class SmilReader {
     if (const auto text = xml::attribute(node, "intensity")) {
       const auto v = xml::decimal(xml::trim(*text));
       if (!v || *v < 0 || *v > 1) {
-        fail(doc_.error(codes::smil::bad_value, node, "intensity", "intensity '" + *text + "' is not a number from 0 to 1"));
+        fail(doc_.error(codes::smil::bad_value, node, "intensity",
+                        "intensity '" + *text + "' is not a number from 0 to 1"));
         return std::nullopt;
       }
       intensity = *v;
@@ -361,7 +396,8 @@ class SmilReader {
     } else {
       for (const char* mark : {"content-begin", "content-end"})
         if (xml::attribute(node, mark)) {
-          fail(doc_.error(codes::smil::missing_attribute, node, mark, std::string(mark) + " names a mark of a speech: it needs content-id, the speech"));
+          fail(doc_.error(codes::smil::missing_attribute, node, mark,
+                          std::string(mark) + " names a mark of a speech: it needs content-id, the speech"));
           return std::nullopt;
         }
     }
@@ -386,7 +422,8 @@ class SmilReader {
     if (leaf.behaviours.empty())
       warn("affect " + leaf.name, codes::smil::unknown_affect,
            doc_.warning(node, xml::attribute(node, "affect") ? "affect" : "",
-                        "affect '" + leaf.name + "' is not in fapc's smil_affects.tsv (docs/smil.md): its span is kept, nothing is drawn"));
+                        "affect '" + leaf.name +
+                            "' is not in fapc's smil_affects.tsv (docs/smil.md): its span is kept, nothing is drawn"));
   }
 
   bool read_action(const xmlNode* node, double intensity, SmilLeaf& leaf, double& intrinsic) {
@@ -399,13 +436,15 @@ class SmilReader {
     action.channel = channel_of(channel);
     if (action.channel == Channel::other) {
       warn("channel " + channel, codes::smil::unknown_channel,
-           doc_.warning(node, "channel", "channel '" + channel + "' is neither the eyes nor the head: the action turns the eyes"));
+           doc_.warning(node, "channel",
+                        "channel '" + channel + "' is neither the eyes nor the head: the action turns the eyes"));
       action.channel = Channel::eyes;
     }
     for (const xmlNode* child : doc_.children(node)) {
       if (xml::local_name(child) != "parameter") {
         warn("in action " + std::string(xml::local_name(child)), codes::smil::unknown_element,
-             doc_.warning(child, "<" + std::string(xml::local_name(child)) + "> in an action is not read (only parameter is)"));
+             doc_.warning(
+                 child, "<" + std::string(xml::local_name(child)) + "> in an action is not read (only parameter is)"));
         continue;
       }
       action.params.emplace_back(xml::trim(xml::text_content(child)));
@@ -417,7 +456,8 @@ class SmilReader {
     if (lower(xml::trim(action.type)).starts_with("blink")) intrinsic = kBlinkSeconds;
     if (leaf.behaviours.empty())
       warn("action " + leaf.name, codes::smil::unknown_action,
-           doc_.warning(node, xml::attribute(node, "action-type") ? "action-type" : "", why + ": its span is kept, nothing is drawn"));
+           doc_.warning(node, xml::attribute(node, "action-type") ? "action-type" : "",
+                        why + ": its span is kept, nothing is drawn"));
     return true;
   }
 
@@ -431,18 +471,22 @@ class SmilReader {
       if (speech == speeches_.end()) {
         std::string known;
         for (const auto& [name, i] : speeches_) known += (known.empty() ? "" : ", ") + name;
-        return doc_.error(codes::smil::unknown_reference, node, "content-id", "content-id '" + id + "' names no speech of this script" +
-                                                  (known.empty() ? std::string(" (it has no speech with an id)") : " (speeches: " + known + ")"));
+        return doc_.error(
+            codes::smil::unknown_reference, node, "content-id",
+            "content-id '" + id + "' names no speech of this script" +
+                (known.empty() ? std::string(" (it has no speech with an id)") : " (speeches: " + known + ")"));
       }
       leaf.speech = speech->second;
       const SmilLeaf& said = leaves_[speech->second];
-      for (const auto& [attribute, mark] : {std::pair{"content-begin", &leaf.begin_mark}, std::pair{"content-end", &leaf.end_mark}}) {
+      for (const auto& [attribute, mark] :
+           {std::pair{"content-begin", &leaf.begin_mark}, std::pair{"content-end", &leaf.end_mark}}) {
         const auto text = xml::attribute(node, attribute);
         if (!text) continue;
         const auto& ids = said.text.mark_ids;
         const auto found = std::find(ids.begin(), ids.end(), xml::trim(*text));
         if (found == ids.end())
-          return doc_.error(codes::smil::unknown_reference, node, attribute, std::string(attribute) + " '" + *text + "' is no mark of speech '" + id + "'");
+          return doc_.error(codes::smil::unknown_reference, node, attribute,
+                            std::string(attribute) + " '" + *text + "' is no mark of speech '" + id + "'");
         *mark = static_cast<std::size_t>(found - ids.begin());
       }
       if (leaf.kind == SmilLeaf::Kind::affect && !xml::attribute(node, "affect") && said_affects_.count(speech->second))
@@ -451,7 +495,9 @@ class SmilReader {
     for (std::size_t i = 0; i < leaves_.size(); ++i)
       if (leaves_[i].kind == SmilLeaf::Kind::affect && leaves_[i].name.empty())
         warn("no affect", codes::smil::no_affect,
-             with_line(make_warning(leaves_[i].where, "speech-animation without an affect, and no affect on its speech: its span is kept, nothing is drawn")));
+             with_line(make_warning(leaves_[i].where,
+                                    "speech-animation without an affect, and no affect on its speech: its span is "
+                                    "kept, nothing is drawn")));
     return ok_status();
   }
 
@@ -472,12 +518,14 @@ class SmilReader {
       bytes += static_cast<std::int64_t>(leaf.text.text.size());
       seconds += estimated_speech_seconds(leaf.text.text, options_.speech.words_per_minute);
       if (bytes > limits.max_speech_text_bytes)
-        return with_line(limit_error(leaf.where, "the speech text of this script reaches " + std::to_string(bytes) + " bytes",
+        return with_line(limit_error(leaf.where,
+                                     "the speech text of this script reaches " + std::to_string(bytes) + " bytes",
                                      Limit::speech_text, limits));
       if (seconds > limits.max_speech_seconds) {
         char shown[32];
         std::snprintf(shown, sizeof shown, "%.0f", seconds);
-        return with_line(limit_error(leaf.where, std::string("the speech of this script would last at least ") + shown + " s",
+        return with_line(limit_error(leaf.where,
+                                     std::string("the speech of this script would last at least ") + shown + " s",
                                      Limit::speech_seconds, limits));
       }
     }
@@ -490,7 +538,8 @@ class SmilReader {
     options.max_speech_seconds = std::min(options.max_speech_seconds, options_.speech_limits.max_speech_seconds);
     Result<bml::SpokenText> spoken = bml::speak(leaf.text, options, leaf.where, out_.warnings, warned_no_engine_);
     if (!spoken) return with_line(spoken.error());
-    if (options_.speech.synthesize && std::find(out_.languages.begin(), out_.languages.end(), leaf.language) == out_.languages.end())
+    if (options_.speech.synthesize &&
+        std::find(out_.languages.begin(), out_.languages.end(), leaf.language) == out_.languages.end())
       out_.languages.push_back(leaf.language);
     spoken->audio.source = leaf.where;
     leaf.spoken = std::make_unique<bml::SpokenText>(std::move(*spoken));
@@ -527,8 +576,9 @@ class SmilReader {
       if (leaf.kind != SmilLeaf::Kind::speech) continue;
       samples += static_cast<double>(leaf.spoken->audio.samples.size());
       if (samples > static_cast<double>(options_.speech_limits.max_audio_samples))
-        return with_line(limit_error(leaf.where, "the voice of this speech, once per run, adds up to " +
-                                                     std::to_string(static_cast<std::int64_t>(samples)) + " samples",
+        return with_line(limit_error(leaf.where,
+                                     "the voice of this speech, once per run, adds up to " +
+                                         std::to_string(static_cast<std::int64_t>(samples)) + " samples",
                                      Limit::audio_samples, options_.speech_limits));
     }
     return ok_status();

@@ -71,7 +71,8 @@ class Reader {
       expected += (i == 0 ? "" : i + 1 == allowed.size() ? " or " : ", ") + std::string(word);
       ++i;
     }
-    fail(codes::xmto::unsupported_keyword, name, std::string(name) + " '" + *text + "' is not supported: expected " + expected);
+    fail(codes::xmto::unsupported_keyword, name,
+         std::string(name) + " '" + *text + "' is not supported: expected " + expected);
     return *allowed.begin();
   }
 
@@ -95,8 +96,9 @@ bool has(const xmlNode* element, const char* name) { return xml::attribute(eleme
 void check_key_times(Reader& reader, const AnimationFunction& f) {
   const std::vector<double>& times = f.key_times;
   if (times.size() != f.values.size()) {
-    reader.fail(codes::xmto::bad_key_times, "keyTimes", "keyTimes has " + std::to_string(times.size()) + " times for " +
-                                std::to_string(f.values.size()) + " values");
+    reader.fail(
+        codes::xmto::bad_key_times, "keyTimes",
+        "keyTimes has " + std::to_string(times.size()) + " times for " + std::to_string(f.values.size()) + " values");
     return;
   }
   for (std::size_t i = 0; i < times.size(); ++i) {
@@ -112,8 +114,8 @@ void check_key_times(Reader& reader, const AnimationFunction& f) {
 
 }  // namespace
 
-Result<AnimationFunction> read_animate(const xml::XmlDocument& doc, const xmlNode* element,
-                                       std::optional<double> dur, Diagnostics& warnings) {
+Result<AnimationFunction> read_animate(const xml::XmlDocument& doc, const xmlNode* element, std::optional<double> dur,
+                                       Diagnostics& warnings) {
   Reader reader(doc, element);
   AnimationFunction f;
   f.simple_duration = dur;
@@ -171,8 +173,7 @@ Result<AnimationFunction> read_animate(const xml::XmlDocument& doc, const xmlNod
   return f;
 }
 
-Result<AnimationFunction> read_set(const xml::XmlDocument& doc, const xmlNode* element,
-                                   std::optional<double> dur) {
+Result<AnimationFunction> read_set(const xml::XmlDocument& doc, const xmlNode* element, std::optional<double> dur) {
   Reader reader(doc, element);
   const auto to = reader.value("to");
   if (reader.error) return *reader.error;
@@ -184,8 +185,8 @@ Result<AnimationFunction> read_set(const xml::XmlDocument& doc, const xmlNode* e
   return f;
 }
 
-Curve animation_curve(const AnimationShape& shape, std::span<const double> values,
-                      std::span<const double> key_times, double underlying, int iteration) {
+Curve animation_curve(const AnimationShape& shape, std::span<const double> values, std::span<const double> key_times,
+                      double underlying, int iteration) {
   std::vector<double> v(values.begin(), values.end());
   if (shape.to_animation) v.front() = underlying;
   const double shift = shape.accumulate ? iteration * v.back() : 0;

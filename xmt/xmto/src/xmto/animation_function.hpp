@@ -33,15 +33,14 @@ struct AnimationFunction : AnimationShape {
 
 // The curve of one run. `underlying` replaces values[0] of a to-animation; `iteration` is the
 // run's repeat index (accumulate).
-Curve animation_curve(const AnimationShape& shape, std::span<const double> values,
-                      std::span<const double> key_times, double underlying, int iteration);
+Curve animation_curve(const AnimationShape& shape, std::span<const double> values, std::span<const double> key_times,
+                      double underlying, int iteration);
 
 // Reads from/to/by/values/keyTimes/calcMode/additive/accumulate of an `animate` (warnings for
 // attributes SMIL says are ignored in that combination), or `to` of a `set`. Errors at the
 // attribute. `dur` comes from the element's timing.
-Result<AnimationFunction> read_animate(const xml::XmlDocument& doc, const xmlNode* element,
-                                       std::optional<double> dur, Diagnostics& warnings);
-Result<AnimationFunction> read_set(const xml::XmlDocument& doc, const xmlNode* element,
-                                   std::optional<double> dur);
+Result<AnimationFunction> read_animate(const xml::XmlDocument& doc, const xmlNode* element, std::optional<double> dur,
+                                       Diagnostics& warnings);
+Result<AnimationFunction> read_set(const xml::XmlDocument& doc, const xmlNode* element, std::optional<double> dur);
 
 }  // namespace fapc::xmt

@@ -18,7 +18,7 @@ struct Included {
 // Errors at the element or its src attribute: no src, a URL that is not a local file, a cycle
 // ("a.xmt -> b.xmt -> a.xmt"), nesting deeper than kMaxIncludeDepth, no loader, the loader's own
 // error (returned as it is).
-Result<Included> load_included(const xml::XmlDocument& doc, const xmlNode* element,
-                               const XmtoOptions& options, Diagnostics& warnings);
+Result<Included> load_included(const xml::XmlDocument& doc, const xmlNode* element, const XmtoOptions& options,
+                               Diagnostics& warnings);
 
 }  // namespace fapc::xmt

@@ -31,8 +31,7 @@ std::optional<AttributeTarget> resolve_attribute_name(std::string_view name, std
     return std::nullopt;
   }
   if (const auto weight = weight_target(name)) {
-    const std::string_view label =
-        weight->fap == 1 ? viseme_name(weight->number) : expression_name(weight->number);
+    const std::string_view label = weight->fap == 1 ? viseme_name(weight->number) : expression_name(weight->number);
     return AttributeTarget{std::string(weight->fap == 1 ? "viseme." : "expression.") + std::string(label), {}};
   }
   if (name.starts_with("viseme.") || name.starts_with("expression.")) {
@@ -48,7 +47,8 @@ std::optional<AttributeTarget> resolve_attribute_name(std::string_view name, std
   }
   const FapInfo* fap = find_fap_by_name_or_number(name);
   if (!fap) {
-    error = unknown_fap_message(name) + " (attributeName takes a FAP name or number 3..68, "
+    error = unknown_fap_message(name) +
+            " (attributeName takes a FAP name or number 3..68, "
             "viseme.<name> or expression.<name>)";
     return std::nullopt;
   }
@@ -61,8 +61,8 @@ std::optional<AttributeTarget> resolve_attribute_name(std::string_view name, std
   for (const auto& [ambiguous, bifs_fap] : kAmbiguousNames) {
     if (name == ambiguous) {
       out.warning = "'" + std::string(name) + "' is read as FAP " + std::to_string(fap->number) +
-                    " (ISO/IEC 14496-2 naming); in BIFS naming it is FAP " +
-                    std::to_string(bifs_fap) + ": write the number to say which";
+                    " (ISO/IEC 14496-2 naming); in BIFS naming it is FAP " + std::to_string(bifs_fap) +
+                    ": write the number to say which";
     }
   }
   return out;

@@ -34,9 +34,8 @@ Result<std::string> read_bounded(const xml::XmlDocument& doc, const xmlNode* ele
   if (!error && static_cast<std::int64_t>(size) > options.max_audio_bytes) {
     Limits limits;
     limits.max_decompressed_bytes = options.max_audio_bytes;
-    Diagnostic d = limit_error(doc.where(element, "src"),
-                               "audio '" + name + "' is " + std::to_string(size) + " bytes", Limit::decompressed_bytes,
-                               limits);
+    Diagnostic d = limit_error(doc.where(element, "src"), "audio '" + name + "' is " + std::to_string(size) + " bytes",
+                               Limit::decompressed_bytes, limits);
     d.source_line = doc.line_text(d.where.line);
     return d;
   }
@@ -57,8 +56,8 @@ Result<std::string> allowed(const xml::XmlDocument& doc, const xmlNode* element,
 
 }  // namespace
 
-Result<Recording> load_recording(const xml::XmlDocument& doc, const xmlNode* element,
-                                 const XmtoOptions& options, Diagnostics& warnings) {
+Result<Recording> load_recording(const xml::XmlDocument& doc, const xmlNode* element, const XmtoOptions& options,
+                                 Diagnostics& warnings) {
   const auto src = xml::attribute(element, "src");
   if (!src) return doc.error(codes::xmto::missing_attribute, element, "audio needs src naming a WAV file");
   std::string_view trimmed = xml::trim(*src);
@@ -66,7 +65,8 @@ Result<Recording> load_recording(const xml::XmlDocument& doc, const xmlNode* ele
   const std::string name(trimmed);
   if (name.empty()) return doc.error(codes::xmto::bad_source, element, "src", "src is empty");
   if (name.find("://") != std::string::npos)
-    return doc.error(codes::xmto::bad_source, element, "src", "src '" + name + "': only local files can be placed, not URLs");
+    return doc.error(codes::xmto::bad_source, element, "src",
+                     "src '" + name + "': only local files can be placed, not URLs");
   Result<std::string> path = allowed(doc, element, name, options);
   if (!path) return path.error();
   Result<std::string> bytes = read_bounded(doc, element, name, *path, options);
@@ -81,7 +81,9 @@ Result<Recording> load_recording(const xml::XmlDocument& doc, const xmlNode* ele
   double length = static_cast<double>(sound->samples.size()) / sound->sample_rate;
   if (const auto clip_end = xml::attribute(element, "clipEnd")) {
     const auto seconds = parse_clock_value(*clip_end);
-    if (!seconds) return doc.error(codes::xmto::bad_time, element, "clipEnd", "clipEnd '" + std::string(*clip_end) + "' is not a clock value");
+    if (!seconds)
+      return doc.error(codes::xmto::bad_time, element, "clipEnd",
+                       "clipEnd '" + std::string(*clip_end) + "' is not a clock value");
     length = std::min(length, *seconds);
   }
   recording.timeline.explicit_end = length;

@@ -1,7 +1,7 @@
 #include <algorithm>
 #include <cstdint>
-#include <span>
 #include <set>
+#include <span>
 #include <string_view>
 
 #include "fapc/transcoder/audio_mix.hpp"
@@ -75,8 +75,8 @@ void sort_by_leaf(TaggedClips& tagged) {
 }
 
 // The included animation's clips and audio for one run: shifted to the run's begin, cut at its end.
-void place_included(const Leaf& leaf, std::size_t id, const Occurrence& run,
-                    TaggedClips& out, std::vector<AudioClip>& audio) {
+void place_included(const Leaf& leaf, std::size_t id, const Occurrence& run, TaggedClips& out,
+                    std::vector<AudioClip>& audio) {
   const double shift = run.begin - run.curve_offset;
   for (const AudioClip& sound : leaf.included->audio)
     if (auto placed = placed_audio(sound, shift, run.begin, run.end)) audio.push_back(std::move(*placed));

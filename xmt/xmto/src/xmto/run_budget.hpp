@@ -14,7 +14,7 @@ namespace fapc::xmt {
 
 struct RunBudget {
   double available = std::numeric_limits<double>::infinity();  // time the parent leaves
-  double repeats = 1;  // product of the repeat factors of the ancestors
+  double repeats = 1;                                          // product of the repeat factors of the ancestors
 
   // The budget of an element's children (or, for a leaf, its own runs in `repeats`).
   // `implicit`: the simple duration when dur is absent (an included animation's length).

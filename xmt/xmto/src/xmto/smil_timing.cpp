@@ -5,9 +5,9 @@
 #include <cmath>
 #include <string>
 
+#include "fapc/xml/text.hpp"
 #include "fapc/xmto/codes.hpp"
 #include "fapc/xmto/xmto.hpp"
-#include "fapc/xml/text.hpp"
 
 namespace fapc::xmt {
 namespace {
@@ -63,8 +63,9 @@ class Reader {
     if (allow_media && s == "media") return;
     const auto seconds = parse_clock_value(s);
     if (!seconds) {
-      fail(codes::xmto::bad_time, name, std::string(name) + " '" + *text + "': expected " + kClockForms +
-                     (allow_media ? ", indefinite or media" : " or indefinite"));
+      fail(codes::xmto::bad_time, name,
+           std::string(name) + " '" + *text + "': expected " + kClockForms +
+               (allow_media ? ", indefinite or media" : " or indefinite"));
     } else if (*seconds <= 0) {
       fail(codes::xmto::bad_time, name, std::string(name) + " must be greater than 0, found '" + *text + "'");
     } else {
@@ -82,9 +83,9 @@ class Reader {
     }
     double count = 0;
     const auto [end, failure] = std::from_chars(s.data(), s.data() + s.size(), count);
-    if (s.empty() || failure != std::errc() || end != s.data() + s.size() || !std::isfinite(count) ||
-        count <= 0) {
-      fail(codes::xmto::bad_repeat, "repeatCount", "repeatCount '" + *text + "': expected a number greater than 0 or indefinite");
+    if (s.empty() || failure != std::errc() || end != s.data() + s.size() || !std::isfinite(count) || count <= 0) {
+      fail(codes::xmto::bad_repeat, "repeatCount",
+           "repeatCount '" + *text + "': expected a number greater than 0 or indefinite");
       return;
     }
     value = count;
@@ -101,7 +102,8 @@ class Reader {
     } else if (s == "auto") {
       timing.fill_auto = true;
     } else if (s != "default") {
-      fail(codes::xmto::unsupported_keyword, "fill", "fill '" + *text + "': expected freeze, remove, hold, transition, auto or default");
+      fail(codes::xmto::unsupported_keyword, "fill",
+           "fill '" + *text + "': expected freeze, remove, hold, transition, auto or default");
     }
   }
 

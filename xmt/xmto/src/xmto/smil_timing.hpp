@@ -12,7 +12,7 @@
 namespace fapc::xmt {
 
 struct SmilTiming {
-  std::optional<double> begin;   // signed offset; empty: no begin attribute
+  std::optional<double> begin;    // signed offset; empty: no begin attribute
   bool begin_indefinite = false;  // begin="indefinite": waits for an event that never comes
   std::optional<double> dur;      // a clock value (> 0)
   bool dur_indefinite = false;    // dur="indefinite"
@@ -27,8 +27,7 @@ struct SmilTiming {
   bool has_begin() const { return begin || begin_indefinite; }
   // Any of dur, repeatCount, repeatDur: with one of them, `end` only shortens (SMIL's min rule).
   bool has_duration_attribute() const {
-    return dur || dur_indefinite || repeat_count || repeat_count_indefinite || repeat_dur ||
-           repeat_dur_indefinite;
+    return dur || dur_indefinite || repeat_count || repeat_count_indefinite || repeat_dur || repeat_dur_indefinite;
   }
   // An end at or before the begin: SMIL creates no interval, the element never plays.
   bool never_plays() const { return end && *end <= begin.value_or(0); }

@@ -8,17 +8,17 @@
 #include <string>
 
 #include "fapc/codec/file_io.hpp"
+#include "fapc/transcoder/audio_mix.hpp"
+#include "fapc/xml/name_table.hpp"
+#include "fapc/xml/once_per_name.hpp"
+#include "fapc/xml/xml_document.hpp"
 #include "fapc/xmto/codes.hpp"
 #include "fapc/xmto/xmto.hpp"
-#include "fapc/transcoder/audio_mix.hpp"
 #include "fml/embedded_fml.hpp"
-#include "fapc/xml/name_table.hpp"
-#include "fapc/xml/xml_document.hpp"
 #include "xmto/animation_function.hpp"
 #include "xmto/animation_include.hpp"
-#include "xmto/audio_element.hpp"
 #include "xmto/attribute_target.hpp"
-#include "fapc/xml/once_per_name.hpp"
+#include "xmto/audio_element.hpp"
 #include "xmto/run_budget.hpp"
 #include "xmto/smil_timing.hpp"
 #include "xmto/xmto_tree.hpp"
@@ -28,8 +28,8 @@ namespace {
 
 using Kind = ScheduleNode::Kind;
 
-constexpr std::initializer_list<const char*> kTimingAttributes = {"begin", "dur", "end", "repeatCount",
-                                                                  "repeatDur", "fill"};
+constexpr std::initializer_list<const char*> kTimingAttributes = {"begin",       "dur",       "end",
+                                                                  "repeatCount", "repeatDur", "fill"};
 constexpr std::string_view kXmlNamespace = "http://www.w3.org/XML/1998/namespace";
 constexpr std::string_view kSchemaInstanceNamespace = "http://www.w3.org/2001/XMLSchema-instance";
 
@@ -44,12 +44,13 @@ class DocumentReader {
     const xmlNode* root = doc_.root();
     const std::string_view name = xml::local_name(root);
     if (name == "XMT-A") {
-      return doc_.error(codes::xmto::xmt_a_input, root, "XMT-A input is not supported: fapc writes XMT-A (.xmt output) but reads "
-                              "XMT-Omega, whose root is XMT-O");
+      return doc_.error(codes::xmto::xmt_a_input, root,
+                        "XMT-A input is not supported: fapc writes XMT-A (.xmt output) but reads "
+                        "XMT-Omega, whose root is XMT-O");
     }
     if (name != "XMT-O") {
-      return doc_.error(codes::xmto::not_xmto, root, "not an XMT-Omega document: the root element is '" + std::string(name) +
-                                  "', expected XMT-O");
+      return doc_.error(codes::xmto::not_xmto, root,
+                        "not an XMT-Omega document: the root element is '" + std::string(name) + "', expected XMT-O");
     }
     root_namespace_ = xml::namespace_uri(root);
     check_attributes(root, {});
@@ -116,8 +117,9 @@ class DocumentReader {
       for (const AudioClip& sound : leaf.included->audio) {
         samples += placed_samples(sound, run.begin - run.curve_offset, run.begin, run.end);
         if (samples > static_cast<double>(limits.max_audio_samples))
-          return limit_error(leaf.where, "the audio of this element, once per run, adds up to " +
-                                             std::to_string(static_cast<std::int64_t>(samples)) + " samples",
+          return limit_error(leaf.where,
+                             "the audio of this element, once per run, adds up to " +
+                                 std::to_string(static_cast<std::int64_t>(samples)) + " samples",
                              Limit::audio_samples, limits);
       }
     }
@@ -138,8 +140,8 @@ class DocumentReader {
   };
   xml::NameTable names_;
   std::vector<ElementFacts> element_facts_;  // by ScheduleNode::tag - 1: for schedule errors
-  double planned_clips_ = 0;  // upper bound, see run_budget.hpp
-  std::set<std::string> fml_expressions_;  // FAP 2 targets of the FML moves read so far
+  double planned_clips_ = 0;                 // upper bound, see run_budget.hpp
+  std::set<std::string> fml_expressions_;    // FAP 2 targets of the FML moves read so far
 
   std::optional<ScheduleNode> read_body(const xmlNode* body) {
     RunBudget budget;
@@ -165,8 +167,8 @@ class DocumentReader {
   // The scheduler's problem, its subject the element it is about.
   Diagnostic scheduler_error(const ScheduleError& problem) const {
     const bool named = problem.node_tag > 0 && problem.node_tag <= element_facts_.size();
-    Diagnostic d = problem.diagnostic(named ? names_.name(element_facts_[problem.node_tag - 1].name)
-                                        : std::string("the element"));
+    Diagnostic d =
+        problem.diagnostic(named ? names_.name(element_facts_[problem.node_tag - 1].name) : std::string("the element"));
     if (named && element_facts_[problem.node_tag - 1].repeats_indefinitely)
       d.message += " (repeatCount=\"indefinite\" needs an end: from a par with dur, end, repeatDur or --duration)";
     return with_source_line(std::move(d));
@@ -223,8 +225,8 @@ class DocumentReader {
       const std::string name = xml::qualified_name(attr);
       const std::string element_name(xml::local_name(element));
       once_.report("attribute " + element_name + "@" + name,
-                   doc_.warning(element, name, "attribute '" + name + "' of " + element_name +
-                                                   " is not supported and was ignored"));
+                   doc_.warning(element, name,
+                                "attribute '" + name + "' of " + element_name + " is not supported and was ignored"));
     }
   }
 
@@ -247,8 +249,7 @@ class DocumentReader {
   }
 
   // One element of the body; empty when it contributes nothing (skipped or never plays).
-  std::optional<ScheduleNode> element(const xmlNode* node, Fill inherited, bool in_excl,
-                                      const RunBudget& budget) {
+  std::optional<ScheduleNode> element(const xmlNode* node, Fill inherited, bool in_excl, const RunBudget& budget) {
     if (error_) return std::nullopt;
     if (is_fml(node)) return fml_move(node, budget);
     if (!is_xmto(node)) {
@@ -277,13 +278,14 @@ class DocumentReader {
   bool plays(const xmlNode* node, const SmilTiming& timing, bool in_excl) {
     const std::string name(xml::local_name(node));
     if (timing.begin_indefinite) {
-      result_.warnings.push_back(doc_.warning(node, "begin", name + " never plays: begin=\"indefinite\" waits "
-                                                             "for an event, and fapc has none"));
+      result_.warnings.push_back(doc_.warning(node, "begin",
+                                              name + " never plays: begin=\"indefinite\" waits "
+                                                     "for an event, and fapc has none"));
       return false;
     }
     if (in_excl && !timing.has_begin()) {
       result_.warnings.push_back(doc_.warning(node, name + " in excl never plays: without begin it waits "
-                                                          "for an event (SMIL); give it a begin"));
+                                                           "for an event (SMIL); give it a begin"));
       return false;
     }
     if (timing.never_plays()) {
@@ -299,8 +301,8 @@ class DocumentReader {
     const Kind kind = name == "par" ? Kind::parallel : name == "excl" ? Kind::exclusive : Kind::sequence;
     check_attributes(node, kTimingAttributes);
     check_text(node);
-    ScheduleNode group = scheduled_node(
-        ScheduleNode::group(kind, to_schedule_timing(timing, std::nullopt), doc_.where(node)), node);
+    ScheduleNode group =
+        scheduled_node(ScheduleNode::group(kind, to_schedule_timing(timing, std::nullopt), doc_.where(node)), node);
     // Streamed, the containers among the children are read child by child, and each child is
     // freed once read.
     static constexpr std::array<std::string_view, 3> kContainers{"par", "seq", "excl"};
@@ -320,9 +322,9 @@ class DocumentReader {
     const Diagnostic at = doc_.error(codes::limit::runs, node, "");
     Limits limits;
     limits.max_runs = options_.max_runs;
-    Diagnostic d = limit_error(at.where, std::string(xml::local_name(node)) +
-                                             " brings the document to too many clips (repeats of repeats?)",
-                               Limit::runs, limits);
+    Diagnostic d = limit_error(
+        at.where, std::string(xml::local_name(node)) + " brings the document to too many clips (repeats of repeats?)",
+        Limit::runs, limits);
     d.source_line = at.source_line;
     fail(std::move(d));
     return false;
@@ -355,15 +357,17 @@ class DocumentReader {
     if (is_set) {
       check_attributes(node, kTimingAttributes, {"attributeName", "attributeType", "to"});
     } else {
-      check_attributes(node, kTimingAttributes, {"attributeName", "attributeType", "from", "to", "by",
-                                                 "values", "keyTimes", "calcMode", "additive", "accumulate"});
+      check_attributes(node, kTimingAttributes,
+                       {"attributeName", "attributeType", "from", "to", "by", "values", "keyTimes", "calcMode",
+                        "additive", "accumulate"});
     }
     check_text(node);
     Leaf leaf;
     leaf.fill = fill;
     const auto attribute_name = xml::attribute(node, "attributeName");
     if (!attribute_name) {
-      fail(doc_.error(codes::xmto::missing_attribute, node, std::string(xml::local_name(node)) + " needs attributeName (a FAP name or number)"));
+      fail(doc_.error(codes::xmto::missing_attribute, node,
+                      std::string(xml::local_name(node)) + " needs attributeName (a FAP name or number)"));
       return std::nullopt;
     }
     std::string why;
@@ -375,8 +379,8 @@ class DocumentReader {
     if (!target->warning.empty()) {
       once_.report("name " + *attribute_name, doc_.warning(node, "attributeName", target->warning));
     }
-    Result<AnimationFunction> function = is_set ? read_set(doc_, node, timing.dur)
-                                                : read_animate(doc_, node, timing.dur, result_.warnings);
+    Result<AnimationFunction> function =
+        is_set ? read_set(doc_, node, timing.dur) : read_animate(doc_, node, timing.dur, result_.warnings);
     if (!function) {
       fail(function.error());
       return std::nullopt;
@@ -423,11 +427,13 @@ class DocumentReader {
         ScheduleNode group = ScheduleNode::group(Kind::parallel, move->timing, doc_.where(node));
         Timing child;
         child.duration = length;
-        for (const std::string& target : fml_expressions_) group.children.push_back(add_leaf(node, hold(target, 0), child));
+        for (const std::string& target : fml_expressions_)
+          group.children.push_back(add_leaf(node, hold(target, 0), child));
         return scheduled_node(std::move(group), node);
       }
       case FmlLeaf::Kind::talk:
-        leaf.included = std::make_unique<Timeline>(talk_timeline(*fml.talk, fml.where, length, options_.fml.coarticulation));
+        leaf.included =
+            std::make_unique<Timeline>(talk_timeline(*fml.talk, fml.where, length, options_.fml.coarticulation));
         break;
       case FmlLeaf::Kind::wait:
         leaf.included = std::make_unique<Timeline>(Timeline{{}, length, doc_.where(node)});
@@ -495,8 +501,7 @@ Result<XmtoDocument> read_xmto_text(std::string_view text, const std::string& fi
 
 }  // namespace
 
-Result<XmtoDocument> read_xmto(std::string_view text, const std::string& file_name,
-                               const XmtoOptions& options) {
+Result<XmtoDocument> read_xmto(std::string_view text, const std::string& file_name, const XmtoOptions& options) {
   return read_xmto_text(text, file_name, options, {});
 }
 

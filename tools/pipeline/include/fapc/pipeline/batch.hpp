@@ -38,15 +38,15 @@ Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs,
 class CompletionRecords;  // batch_resume.hpp
 
 struct BatchOutcome {
-  bool ran = false;  // false: stopped before this job started, or up to date
+  bool ran = false;         // false: stopped before this job started, or up to date
   bool up_to_date = false;  // not run: its completion record says its outputs are complete
   ConvertResult result;
   double seconds = 0;
 };
 
 struct BatchRunOptions {
-  int threads = 1;           // 0: one per core
-  bool keep_going = false;   // false: the first failure stops jobs not yet started
+  int threads = 1;          // 0: one per core
+  bool keep_going = false;  // false: the first failure stops jobs not yet started
   // Set (by a signal handler, say) to stop: jobs not started are skipped, outputs of running
   // jobs are finished or not written at all (never a partial or temporary file).
   const std::atomic<bool>* stop = nullptr;

@@ -20,11 +20,13 @@ struct ReportText {
 struct MergedReport {
   // The batch report's shape (docs/json.md) with "shard": null and a "merged" object.
   nlohmann::ordered_json report;
-  std::vector<std::string> failed;             // inputs whose best result is a failure
-  std::vector<std::string> no_result;          // inputs planned, in a report, but never converted
-  std::vector<std::size_t> missing_shards;     // shard indexes with no report: their jobs are unknown
-  std::size_t unnamed_without_result = 0;      // planned jobs in no report at all (missing shards)
-  bool complete() const { return failed.empty() && no_result.empty() && missing_shards.empty() && !unnamed_without_result; }
+  std::vector<std::string> failed;          // inputs whose best result is a failure
+  std::vector<std::string> no_result;       // inputs planned, in a report, but never converted
+  std::vector<std::size_t> missing_shards;  // shard indexes with no report: their jobs are unknown
+  std::size_t unnamed_without_result = 0;   // planned jobs in no report at all (missing shards)
+  bool complete() const {
+    return failed.empty() && no_result.empty() && missing_shards.empty() && !unnamed_without_result;
+  }
 };
 
 // Errors: a report that is not JSON (bad_input, at its byte), not a batch report, or reports of

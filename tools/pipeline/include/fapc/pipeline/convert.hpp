@@ -36,13 +36,11 @@ FramesSeen frames_seen(const Loaded& loaded);
 Result<const OutputFormat*> writer_for(const OutputRequest& request);
 
 // The bytes of `loaded` as the requested output.
-Result<std::string> render_output(const Loaded& loaded, const OutputRequest& request,
-                                  const ConvertOptions& options);
+Result<std::string> render_output(const Loaded& loaded, const OutputRequest& request, const ConvertOptions& options);
 
 // Writes `loaded` to each output in turn (atomically: a failed output leaves no file), stopping at
 // the first error. Every writer is found before anything is written.
-ConvertResult write_outputs(Loaded loaded, const std::vector<OutputRequest>& outputs,
-                            const ConvertOptions& options);
+ConvertResult write_outputs(Loaded loaded, const std::vector<OutputRequest>& outputs, const ConvertOptions& options);
 
 // Loads `input` once and writes every output. Under options.strict a warning is an error and
 // nothing is written.

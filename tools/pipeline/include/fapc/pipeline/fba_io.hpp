@@ -6,10 +6,10 @@
 #include <string>
 
 #include "fapc/codec/fba.hpp"
-#include "fapc/pipeline/loaded.hpp"
-#include "fapc/pipeline/options.hpp"
 #include "fapc/mpeg4/fba_track.hpp"
 #include "fapc/mpeg4/mp4_reader.hpp"
+#include "fapc/pipeline/loaded.hpp"
+#include "fapc/pipeline/options.hpp"
 
 namespace fapc::pipeline {
 
@@ -32,8 +32,8 @@ std::function<Location(std::int64_t, int)> frame_locator(const std::vector<std::
 // Encodes the frames of `loaded`, which came from `input`: errors name the input (a frame rate
 // the stream cannot code, the place the input wrote it). With options.verify, the stream is
 // decoded and checked too (ErrorKind::verification_failed when it does not match).
-Result<EncodedFba> encode_checked(const Loaded& loaded, const ConvertOptions& options,
-                                  const std::string& input, bool align_planes = false);
+Result<EncodedFba> encode_checked(const Loaded& loaded, const ConvertOptions& options, const std::string& input,
+                                  bool align_planes = false);
 
 // The MP4 FBA track of an encoding made with align_planes: each plane, started by its start
 // code and byte-aligned, becomes one sample lasting the frames it covers (timescale = fps).

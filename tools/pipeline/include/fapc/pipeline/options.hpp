@@ -36,7 +36,7 @@ struct ConvertOptions {
   // --from: the kind of the top input whatever its name (standard input has none); empty: from the
   // extension. Inputs it includes never inherit it.
   std::string input_kind;
-  ProgressFn progress;  // empty: nobody is told
+  ProgressFn progress;                        // empty: nobody is told
   PictureSettings picture;                    // the face outputs
   std::optional<std::string> profile;         // a profile file; empty: the default profile
   std::optional<std::string> lexicon;         // a behaviour lexicon (--lexicon); empty: fapc's own
@@ -56,12 +56,12 @@ struct ConvertOptions {
   FapFlavour fap_flavour = FapFlavour::safe;  // the .fap layout of a player family
   bool strict = false;                        // warnings are errors; nothing is written
   bool verify = false;                        // encoded streams are decoded and checked
-  Limits limits;  // --max-frames, --max-runs, --max-decompressed-bytes, --max-expansion
+  Limits limits;                              // --max-frames, --max-runs, --max-decompressed-bytes, --max-expansion
   // Which files includes may read (docs/security.md): load() adds the top input's folder.
   IncludePolicy includes;
   // What a load does beyond the frames (see Loaded):
-  bool facts = false;   // fill Loaded::facts (what `fapc info` shows of the format)
-  bool render = true;   // false: timeline inputs stop at the timeline (no frames, no curves)
+  bool facts = false;  // fill Loaded::facts (what `fapc info` shows of the format)
+  bool render = true;  // false: timeline inputs stop at the timeline (no frames, no curves)
   // With render false: the caller renders the timeline itself at fps (the streamed compile), so
   // the frame limit still applies and front ends check it as soon as they know the end.
   bool renders_later = false;

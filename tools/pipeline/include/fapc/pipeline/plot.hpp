@@ -11,7 +11,7 @@
 namespace fapc::pipeline {
 
 struct PlotOptions {
-  std::string title;    // above the figure; empty: none
+  std::string title;  // above the figure; empty: none
   // Which parameters: comma-separated FAP names or numbers, ranges ("19-30"), groups of the FAP
   // table ("lips", "jaw", "eyes", "brows", "mouth"..., docs/fap-table.md section 3), "viseme",
   // "expression", or any other target name of the input. Empty: every one.

@@ -28,16 +28,15 @@ struct InputFormat {
   std::string kind;                     // "fap", "fba", "mimic", ...
   std::vector<std::string> extensions;  // ".fap", ".fap.gz"
   std::function<Result<Loaded>(const std::string& path, const ConvertOptions&)> load;
-  std::string carries{};                // what a file of this kind holds, for `fapc formats`
-  std::vector<std::string> options{};   // the command-line options that change how it is read
+  std::string carries{};               // what a file of this kind holds, for `fapc formats`
+  std::vector<std::string> options{};  // the command-line options that change how it is read
 
   // Capabilities: what the one engine (convert, docs/architecture.md) may do besides loading.
   // A script: lowered to a timeline (ConvertOptions::render false), then rendered frame by frame.
   bool timeline = false;
   // Frames read one at a time from the mapped file (gzip and empty files are loaded whole); null
   // for a reader that only loads.
-  std::function<std::unique_ptr<FrameSource>(MappedFile file, const std::string& path, const ConvertOptions&)>
-      frames{};
+  std::function<std::unique_ptr<FrameSource>(MappedFile file, const std::string& path, const ConvertOptions&)> frames{};
   // An FBA stream, bare or in a container: `fapc decode` reads it, and `verify` checks with this
   // that it re-encodes to the same bytes; null for every other input (encoded, then checked).
   std::function<VerifyResult(const std::string& path, const Limits&)> verify_stream{};
@@ -69,8 +68,8 @@ struct OutputFormat {
   bool picture = false;
   // It takes the frames one at a time: the writer of output `path` made from `input` whose frames
   // come from `source`. With every requested writer so, convert() streams; null: it needs them all.
-  std::function<std::unique_ptr<FrameWriter>(const std::string& path, const std::string& input,
-                                             const ConvertOptions&, FrameSource& source)>
+  std::function<std::unique_ptr<FrameWriter>(const std::string& path, const std::string& input, const ConvertOptions&,
+                                             FrameSource& source)>
       frame_writer{};
   // What this output cannot carry of the frames, as warnings (docs/bridges.md); computed for every
   // output before any is written, so that --strict refuses before writing. Empty: nothing lost.

@@ -8,8 +8,8 @@
 #include <optional>
 #include <string>
 
-#include "fapc/pipeline/options.hpp"
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/pipeline/options.hpp"
 
 namespace fapc::pipeline {
 

@@ -21,8 +21,8 @@ const FapValues& expression_displacements(int expression);
 
 // FAP 1's and 2's fields turned into low-level values: viseme1 x blend/63 + viseme2 x
 // (1 - blend/63); expression1 x intensity1/63 + expression2 x intensity2/63.
-FapValues high_level_values(const VisemeFields& viseme, bool has_viseme,
-                            const ExpressionFields& expression, bool has_expression);
+FapValues high_level_values(const VisemeFields& viseme, bool has_viseme, const ExpressionFields& expression,
+                            bool has_expression);
 
 class FaceTrack {
  public:

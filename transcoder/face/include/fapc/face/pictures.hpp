@@ -35,12 +35,10 @@ Status check_picture_options(const PictureOptions& options, const std::string& w
 // The frame `--frame`/`--time` picks (frame 0 when neither is given), or a contact sheet when
 // `sheet` is set: N times spread evenly from 0 to the last frame, each cell of width x height, in
 // a grid about as square as the cells allow, each stamped with its time.
-Result<Image> render_picture(const FaceTrack& track, const PictureOptions& options,
-                             const std::string& where);
+Result<Image> render_picture(const FaceTrack& track, const PictureOptions& options, const std::string& where);
 
 // The .png output of a sequence: the picture render_picture draws, as PNG bytes.
-Result<std::string> face_png(const FapSequence& sequence, const PictureOptions& options,
-                             const std::string& where);
+Result<std::string> face_png(const FapSequence& sequence, const PictureOptions& options, const std::string& where);
 
 // The times of a sheet's cells: N instants from 0 to the start of the last frame, evenly spread.
 std::vector<double> sheet_times(const FaceTrack& track, int cells);

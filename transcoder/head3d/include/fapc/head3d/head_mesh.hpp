@@ -31,9 +31,9 @@ struct Part {
 // either a feature (or contour) point of fapc::face, or a point the 3D head adds that follows one of
 // them by a weight (the lid quarter points), or a fixed point of the skull.
 struct Anchor {
-  Vec3 position;          // neutral, millimetres, face coordinates
-  int point = -1;         // fapc::face::P it follows, or -1 for a fixed point
-  double weight = 1;      // how much of that point's displacement it takes
+  Vec3 position;      // neutral, millimetres, face coordinates
+  int point = -1;     // fapc::face::P it follows, or -1 for a fixed point
+  double weight = 1;  // how much of that point's displacement it takes
 };
 
 // Up to four anchors per vertex, weights summing to 1.
@@ -47,7 +47,7 @@ struct HeadMesh {
   std::vector<Vec3> normals;    // unit, smooth (area-weighted face normals)
   std::vector<Binding> bindings;
   std::vector<Anchor> anchors;
-  std::vector<Part> parts;      // the head's skin (closed with its eye and mouth pockets), teeth, tongue, ears
+  std::vector<Part> parts;  // the head's skin (closed with its eye and mouth pockets), teeth, tongue, ears
   // Vertices that lie on an eyelid (index into `positions`), with the eye they belong to (0 left,
   // 1 right): a lid's targets keep them outside the eyeball.
   std::vector<std::pair<std::uint32_t, int>> lid_vertices;

@@ -21,10 +21,10 @@ namespace fapc::head3d {
 inline constexpr double kTargetUnits = 1024;  // FAP units a target stands for
 
 struct MorphTarget {
-  std::string name;      // the FAP's standard name ("open_jaw"), "viseme_PP", "expression_joy"
-  int fap = 0;           // 3..68 for a FAP's target; 0 for a viseme's or an expression's
-  int viseme = 0;        // 1..14
-  int expression = 0;    // 1..6
+  std::string name;                     // the FAP's standard name ("open_jaw"), "viseme_PP", "expression_joy"
+  int fap = 0;                          // 3..68 for a FAP's target; 0 for a viseme's or an expression's
+  int viseme = 0;                       // 1..14
+  int expression = 0;                   // 1..6
   std::vector<std::uint32_t> vertices;  // the vertices it moves, ascending
   std::vector<Vec3> displacements;      // millimetres, one per entry of `vertices`
 };

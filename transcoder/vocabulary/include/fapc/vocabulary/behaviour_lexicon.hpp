@@ -16,22 +16,22 @@ namespace fapc::vocabulary {
 
 // What a row draws, in BML's terms.
 enum class LexiconBehaviour {
-  lexeme,    // a BML faceLexeme (bml_lexemes.tsv); amount is its weight
-  unit,      // a FACS action unit (au_faps.tsv), L/R prefix for one side; amount 0..1 of full intensity
-  head,      // a BML head lexeme (NOD, SHAKE, TILT, TILT_LEFT, TILT_RIGHT), `*N` for N repetitions; amount as BML's
-  gaze,      // the eyes turned towards a direction (LEFT, RIGHT, UP, DOWN, UPLEFT, ...); amount in degrees
-  head_turn, // the head turned towards a direction and back; amount in degrees
-  none,      // nothing drawn on purpose (an arm gesture, the listener straight ahead): the span is kept
+  lexeme,     // a BML faceLexeme (bml_lexemes.tsv); amount is its weight
+  unit,       // a FACS action unit (au_faps.tsv), L/R prefix for one side; amount 0..1 of full intensity
+  head,       // a BML head lexeme (NOD, SHAKE, TILT, TILT_LEFT, TILT_RIGHT), `*N` for N repetitions; amount as BML's
+  gaze,       // the eyes turned towards a direction (LEFT, RIGHT, UP, DOWN, UPLEFT, ...); amount in degrees
+  head_turn,  // the head turned towards a direction and back; amount in degrees
+  none,       // nothing drawn on purpose (an arm gesture, the listener straight ahead): the span is kept
 };
 
 struct LexiconRow {
   std::string intention;  // "emotion", "performative", ... (as the element or attribute names it)
   std::string value;      // "joy", "inform", ...; "*" for every value of the intention
   LexiconBehaviour behaviour = LexiconBehaviour::none;
-  std::string name;       // the lexeme, head lexeme or direction as written
-  int unit = 0;           // LexiconBehaviour::unit: the action unit
-  char side = 'B';        // LexiconBehaviour::unit: L, R or B
-  int repetition = 1;     // LexiconBehaviour::head
+  std::string name;    // the lexeme, head lexeme or direction as written
+  int unit = 0;        // LexiconBehaviour::unit: the action unit
+  char side = 'B';     // LexiconBehaviour::unit: L, R or B
+  int repetition = 1;  // LexiconBehaviour::head
   double amount = 0;
   // Fractions of the span (0..1, non-decreasing): the behaviour starts, reaches its peak (BML's
   // ready, a nod's first extreme), starts to relax, and ends.

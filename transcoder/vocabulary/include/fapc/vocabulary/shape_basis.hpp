@@ -35,14 +35,14 @@ class ShapeBasis {
 
  private:
   struct Entry {
-    int fap_index;   // 0-based
-    double amount;   // FAP units at weight 1
+    int fap_index;  // 0-based
+    double amount;  // FAP units at weight 1
   };
   std::vector<std::string> keys_;
   std::vector<std::vector<Entry>> columns_;  // per key
   std::vector<double> column_norms_;         // per key, sum of (amount / scale)^2
   std::vector<int> faps_moved_;
-  FapVector inverse_scale_squared_{};        // 1 / legal_max^2 per FAP
+  FapVector inverse_scale_squared_{};  // 1 / legal_max^2 per FAP
 };
 
 // ARKit's 52 shapes, in arkit_shape_names()'s order, over the bundled arkit_faps.tsv; built once.

@@ -14,9 +14,9 @@ namespace fapc::vocabulary {
 inline constexpr int kVisemeCount = 15;
 
 struct VisemeRow {
-  int viseme = 0;       // FAP 1's viseme_select, 0..14
-  std::string mpeg4;    // the standard's name: "none", "PP", ... "ou"
-  std::string openxr;   // the lip-sync engines' name: "sil", "PP", ... "ou"
+  int viseme = 0;      // FAP 1's viseme_select, 0..14
+  std::string mpeg4;   // the standard's name: "none", "PP", ... "ou"
+  std::string openxr;  // the lip-sync engines' name: "sil", "PP", ... "ou"
   std::string reason;
   int line = 0;
 };

@@ -59,13 +59,13 @@ struct ScheduledMark {
 
 struct BmlDocument {
   Timeline timeline;
-  std::string dialect;                      // "BML 1.0", ...
-  std::vector<std::string> blocks;          // block ids in order
-  std::vector<std::string> characters;      // characterId of each block ("" when none)
+  std::string dialect;                  // "BML 1.0", ...
+  std::vector<std::string> blocks;      // block ids in order
+  std::vector<std::string> characters;  // characterId of each block ("" when none)
   std::vector<ScheduledBehaviour> behaviours;
   std::vector<ScheduledMark> marks;
-  std::vector<std::string> languages;       // the languages speech was spoken in
-  std::vector<std::string> recordings;      // the audio files of recorded speech that were read
+  std::vector<std::string> languages;   // the languages speech was spoken in
+  std::vector<std::string> recordings;  // the audio files of recorded speech that were read
   Diagnostics warnings;
 };
 

@@ -12,9 +12,9 @@
 #include <utility>
 #include <vector>
 
-#include "fapc/codec/limits.hpp"
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/include_policy.hpp"
+#include "fapc/codec/limits.hpp"
 #include "fapc/transcoder/frame_budget.hpp"
 #include "fapc/transcoder/profile.hpp"
 #include "fapc/transcoder/speech.hpp"
@@ -56,12 +56,12 @@ struct FmlOptions {
 };
 
 struct FmlDocument {
-  Timeline timeline;  // explicit_end: the story's end
-  std::string character;                                   // model <character name>
+  Timeline timeline;                                        // explicit_end: the story's end
+  std::string character;                                    // model <character name>
   std::vector<std::pair<std::string, std::string>> events;  // name, the value used ("" when none)
-  std::vector<std::string> templates;                      // model template names
-  std::vector<std::string> phoneme_files;                  // resolved paths of talk file=
-  std::vector<std::string> languages;                      // the languages talk text was spoken in
+  std::vector<std::string> templates;                       // model template names
+  std::vector<std::string> phoneme_files;                   // resolved paths of talk file=
+  std::vector<std::string> languages;                       // the languages talk text was spoken in
   Diagnostics warnings;
 };
 

@@ -25,12 +25,12 @@ struct IntentOptions {
 // One intention as placed, for `fapc info` and the tests.
 struct Intention {
   std::string id;
-  std::string type;   // "emotion", "performative", "emphasis", "affect", ...
-  std::string value;  // "joy", "inform", "Hstar", ...; "" when none is given
+  std::string type;     // "emotion", "performative", "emphasis", "affect", ...
+  std::string value;    // "joy", "inform", "Hstar", ...; "" when none is given
   double strength = 1;  // importance (FML-APML), intensity or activation (APML): scales the amounts
   double start = 0;     // seconds
   double end = 0;
-  int behaviours = 0;   // lexicon rows drawn for it (0: unknown or drawn as nothing)
+  int behaviours = 0;  // lexicon rows drawn for it (0: unknown or drawn as nothing)
   Location where;
 };
 
@@ -50,9 +50,11 @@ inline constexpr double kPointSpanSeconds = 0.5;
 // references in a cycle, an end before its start, importance or intensity outside 0..1, more
 // intentions than options.bml.max_behaviours (--max-runs), a document longer than the frames.
 // Unknown intentions and values are warnings (intent.unknown_intention) and keep their span.
-Result<IntentDocument> read_fml_apml(std::string_view text, const std::string& file_name, const IntentOptions& options = {});
+Result<IntentDocument> read_fml_apml(std::string_view text, const std::string& file_name,
+                                     const IntentOptions& options = {});
 Result<IntentDocument> load_fml_apml(const std::string& path, const IntentOptions& options = {});
-Result<IntentDocument> read_apml(std::string_view text, const std::string& file_name, const IntentOptions& options = {});
+Result<IntentDocument> read_apml(std::string_view text, const std::string& file_name,
+                                 const IntentOptions& options = {});
 Result<IntentDocument> load_apml(const std::string& path, const IntentOptions& options = {});
 
 }  // namespace fapc::intent

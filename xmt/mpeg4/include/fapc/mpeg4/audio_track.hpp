@@ -11,14 +11,14 @@
 
 namespace fapc::xmt {
 
-inline constexpr std::uint8_t kAudioStream = 0x05;        // streamType
+inline constexpr std::uint8_t kAudioStream = 0x05;         // streamType
 inline constexpr std::uint8_t kAudio14496_3Object = 0x40;  // objectTypeIndication: MPEG-4 audio
 
 struct AudioTrackInput {
-  Bytes decoder_specific_info;  // AudioSpecificConfig
+  Bytes decoder_specific_info;    // AudioSpecificConfig
   std::uint32_t sample_rate = 0;  // the track's timescale
   int channels = 1;
-  std::vector<Bytes> samples;           // one access unit each
+  std::vector<Bytes> samples;             // one access unit each
   std::uint32_t samples_per_unit = 1024;  // every access unit's duration, in samples
   // Where the sound starts in the media (samples to skip: the encoder's priming) and how many
   // samples are sound. The edit list says both.

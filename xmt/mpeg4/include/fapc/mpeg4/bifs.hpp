@@ -33,12 +33,11 @@ Result<BifsConfig> decode_bifs_config(const Bytes& bytes, std::uint64_t base, co
 // One access unit: SceneReplace of `top` (an SFTopNode), with DEF names kept (USENAMES) when
 // `use_names`. DEF'd nodes get IDs 1, 2, ... in document order. Errors name the node or field
 // the subset cannot code, or a node ID that does not fit config.node_id_bits.
-Result<Bytes> encode_scene_replace(const SceneNode& top, const BifsConfig& config,
-                                   bool use_names = true);
+Result<Bytes> encode_scene_replace(const SceneNode& top, const BifsConfig& config, bool use_names = true);
 
 // The scene of an access unit that holds one SceneReplace command and nothing after it. Errors
 // carry the file offset of the byte where decoding stopped.
-Result<SceneNode> decode_scene_replace(const Bytes& bytes, const BifsConfig& config,
-                                       std::uint64_t base, const std::string& file);
+Result<SceneNode> decode_scene_replace(const Bytes& bytes, const BifsConfig& config, std::uint64_t base,
+                                       const std::string& file);
 
 }  // namespace fapc::xmt

@@ -36,7 +36,7 @@ struct FbaSample {
 };
 
 struct FbaTrackInput {
-  Bytes decoder_specific_info;  // fba_decoder_specific_info() for streams of this project
+  Bytes decoder_specific_info;   // fba_decoder_specific_info() for streams of this project
   std::uint32_t timescale = 25;  // ticks per second: the frame rate when it is an integer
   std::vector<FbaSample> samples;
   friend bool operator==(const FbaTrackInput&, const FbaTrackInput&) = default;
@@ -62,8 +62,7 @@ Bytes fba_decoder_specific_info(std::uint8_t profile_level = kSimpleFbaL1);
 
 // The profile_and_level_indication of a decoder configuration that begins with a visual object
 // sequence header; an error naming the byte offset when it does not.
-Result<std::uint8_t> fba_profile_level(const Bytes& decoder_specific_info,
-                                       const std::string& file = {});
+Result<std::uint8_t> fba_profile_level(const Bytes& decoder_specific_info, const std::string& file = {});
 
 // "Simple FBA @ L1" for 0x63, and the other face animation profile-levels; "" for any other.
 std::string_view fba_profile_name(std::uint8_t profile_level);

@@ -28,7 +28,7 @@ struct Mp4Sample {
 
 // One entry of a track's edit list (edts/elst), version 0 or 1.
 struct Mp4Edit {
-  std::uint64_t duration = 0;  // in the movie's timescale
+  std::uint64_t duration = 0;    // in the movie's timescale
   std::int64_t media_time = -1;  // in the track's timescale; -1: an empty edit
   friend bool operator==(const Mp4Edit&, const Mp4Edit&) = default;
 };
@@ -36,12 +36,12 @@ struct Mp4Edit {
 struct Mp4Track {
   std::uint64_t box_offset = 0;  // where its trak box starts
   std::uint32_t id = 0;
-  std::string handler;       // "sdsm", "odsm", "vide", ...
+  std::string handler;  // "sdsm", "odsm", "vide", ...
   std::uint32_t timescale = 0;
-  std::uint64_t duration = 0;  // in the track's timescale (mdhd)
-  std::string sample_entry;    // "mp4v", "mp4s", ...
-  std::optional<EsDescriptor> es;  // from the sample entry's esds box
-  std::uint64_t es_offset = 0;     // file offset of that ES_Descriptor
+  std::uint64_t duration = 0;       // in the track's timescale (mdhd)
+  std::string sample_entry;         // "mp4v", "mp4s", ...
+  std::optional<EsDescriptor> es;   // from the sample entry's esds box
+  std::uint64_t es_offset = 0;      // file offset of that ES_Descriptor
   std::vector<std::uint32_t> mpod;  // tref/mpod: the tracks an OD stream's ES_ID_Refs index
   std::vector<Mp4Edit> edits;       // applied to the audio track only (see Mp4File::warnings)
   std::uint64_t edits_offset = 0;   // where the elst box starts

@@ -84,14 +84,11 @@ Bytes encode_object_descriptor_update(const std::vector<ObjectDescriptor>& ods);
 
 // Decoders. `base` is the file offset of bytes[0], so errors name file offsets. Descriptors the
 // project does not use (IPMP, OCI, language...) are skipped by their size.
-Result<EsDescriptor> decode_es_descriptor(const Bytes& bytes, std::uint64_t base,
-                                          const std::string& file);
-Result<InitialObjectDescriptor> decode_initial_object_descriptor(const Bytes& bytes,
-                                                                 std::uint64_t base,
+Result<EsDescriptor> decode_es_descriptor(const Bytes& bytes, std::uint64_t base, const std::string& file);
+Result<InitialObjectDescriptor> decode_initial_object_descriptor(const Bytes& bytes, std::uint64_t base,
                                                                  const std::string& file);
 // Every ObjectDescriptorUpdate in an OD access unit, flattened; other commands are an error.
-Result<std::vector<ObjectDescriptor>> decode_object_descriptor_updates(const Bytes& bytes,
-                                                                      std::uint64_t base,
-                                                                      const std::string& file);
+Result<std::vector<ObjectDescriptor>> decode_object_descriptor_updates(const Bytes& bytes, std::uint64_t base,
+                                                                       const std::string& file);
 
 }  // namespace fapc::xmt

@@ -15,8 +15,8 @@ namespace fapc::xmt {
 struct SceneField;
 
 struct SceneNode {
-  std::string type;        // "Group", "Face", "FAP", ...
-  std::string def_name;    // empty when the node is not DEF'd
+  std::string type;                // "Group", "Face", "FAP", ...
+  std::string def_name;            // empty when the node is not DEF'd
   std::vector<SceneField> fields;  // only fields that differ from their defaults, in node order
 
   const SceneField* field(std::string_view name) const;

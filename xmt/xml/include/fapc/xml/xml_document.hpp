@@ -142,9 +142,9 @@ class XmlDocument {
   std::vector<std::uint32_t> line_starts_;
   mutable std::size_t line_hint_ = 1;  // where at_offset() found the last line: 1 + its index
   // Positions, by element number: element k (in document order, kept in its node's _private as
-  // (k + 1) << 1; bit 0 marks an element whose end tag a streamed parse has read) starts at tag_offsets_[k]; its attributes, as written, start at the offsets
-  // attribute_offsets_[first_attribute_[k] .. first_attribute_[k + 1]). A few bytes per element
-  // and attribute, where a map from nodes to Locations cost hundreds.
+  // (k + 1) << 1; bit 0 marks an element whose end tag a streamed parse has read) starts at tag_offsets_[k]; its
+  // attributes, as written, start at the offsets attribute_offsets_[first_attribute_[k] .. first_attribute_[k + 1]). A
+  // few bytes per element and attribute, where a map from nodes to Locations cost hundreds.
   std::vector<std::uint32_t> tag_offsets_;
   std::vector<std::uint32_t> first_attribute_;
   std::vector<std::uint32_t> attribute_offsets_;
@@ -168,7 +168,8 @@ class XmlDocument {
   std::size_t number_of(const xmlNode* element) const;
   void index_positions();
   void index_lines();
-  void add_tag(std::size_t offset, std::size_t parent, const std::vector<std::pair<std::string_view, std::size_t>>& attributes);
+  void add_tag(std::size_t offset, std::size_t parent,
+               const std::vector<std::pair<std::string_view, std::size_t>>& attributes);
   void shrink_positions();
   void drop_positions();  // frees the position tables
   Diagnostic with_line(Diagnostic d) const;

@@ -11,9 +11,9 @@
 #include <utility>
 #include <vector>
 
-#include "fapc/codec/limits.hpp"
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/include_policy.hpp"
+#include "fapc/codec/limits.hpp"
 #include "fapc/fml/fml.hpp"
 #include "fapc/transcoder/frame_budget.hpp"
 #include "fapc/transcoder/timeline.hpp"
@@ -68,8 +68,7 @@ struct XmtoDocument {
 
 // Errors (file:line:col): not well-formed XML, a root other than XMT-O (XMT-A says it is not an
 // input), malformed timing or values, an unknown attributeName, a failed include.
-Result<XmtoDocument> read_xmto(std::string_view text, const std::string& file_name,
-                               const XmtoOptions& options = {});
+Result<XmtoDocument> read_xmto(std::string_view text, const std::string& file_name, const XmtoOptions& options = {});
 Result<XmtoDocument> load_xmto(const std::string& path, const XmtoOptions& options = {});
 
 // The XMT-Omega namespace (presumed by analogy with XMT-A; documents are recognised by the root

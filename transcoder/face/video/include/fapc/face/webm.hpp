@@ -47,8 +47,8 @@ Status check_video(std::int64_t frames, int fps, const VideoOptions& options, co
 // `where` names the output in errors. Usage errors for odd sizes (4:2:0 video needs even sides)
 // and bad rates; limit_exceeded past kMaxVideoSeconds; unsupported when libav lacks libvpx-vp9
 // (or libopus, for audio). Without audio the bytes are what they were before audio existed.
-Result<std::string> encode_webm(const FaceTrack& track, const VideoOptions& options,
-                                const AudioInput* audio, const std::string& where);
+Result<std::string> encode_webm(const FaceTrack& track, const VideoOptions& options, const AudioInput* audio,
+                                const std::string& where);
 
 }  // namespace fapc::face
 
@@ -60,12 +60,12 @@ namespace fapc::face {
 // The .webm and .html outputs of a sequence (size and frame rate from `options`; the still-picture
 // choices --frame/--time/--sheet do not apply). The page embeds the video it encodes.
 // `audio`, when given, plays beside the face (and unmutes the page's video).
-Result<std::string> face_webm(const FapSequence& sequence, const PictureOptions& options,
-                              const AudioInput* audio, const std::string& where);
+Result<std::string> face_webm(const FapSequence& sequence, const PictureOptions& options, const AudioInput* audio,
+                              const std::string& where);
 // `view` and `head_glb` as in PreviewOptions: the 3D view plays that .glb (made by the caller,
 // fapc::head3d, from the same sequence).
-Result<std::string> face_html(const FapSequence& sequence, const PictureOptions& options,
-                              const AudioInput* audio, const std::string& title, const std::string& where,
-                              PreviewView view = PreviewView::two_d, std::string head_glb = {});
+Result<std::string> face_html(const FapSequence& sequence, const PictureOptions& options, const AudioInput* audio,
+                              const std::string& title, const std::string& where, PreviewView view = PreviewView::two_d,
+                              std::string head_glb = {});
 
 }  // namespace fapc::face
