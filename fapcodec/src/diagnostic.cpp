@@ -25,7 +25,7 @@ const char* error_kind_name(ErrorKind kind) {
   return "bad_input";
 }
 
-std::string format_diagnostic(const Diagnostic& d) {
+std::string format_diagnostic(const Diagnostic& d, ShowCode show) {
   std::string out = d.where.file;
   if (d.where.line > 0) {
     out += ':' + std::to_string(d.where.line);
@@ -33,7 +33,9 @@ std::string format_diagnostic(const Diagnostic& d) {
   } else if (d.where.byte_offset >= 0) {
     out += ": byte " + std::to_string(d.where.byte_offset);
   }
-  out += d.severity == Severity::error ? ": error: " : ": warning: ";
+  out += d.severity == Severity::error ? ": error" : ": warning";
+  if (show == ShowCode::yes && !d.code.empty()) out += '[' + d.code + ']';
+  out += ": ";
   out += d.message;
   return out;
 }
@@ -74,8 +76,8 @@ std::size_t forward(const std::string& s, std::size_t at, int count) {
 
 }  // namespace
 
-std::string render_with_caret(const Diagnostic& d) {
-  std::string out = format_diagnostic(d);
+std::string render_with_caret(const Diagnostic& d, ShowCode show) {
+  std::string out = format_diagnostic(d, show);
   if (d.source_line.empty() || d.where.column <= 0) return out;
   const std::string& line = d.source_line;
   const auto column_byte = static_cast<std::size_t>(d.where.column - 1);

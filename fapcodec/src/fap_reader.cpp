@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "fap_text_lines.hpp"
+#include "fapc/codec/codes.hpp"
 #include "fapc/codec/fap_file.hpp"
 
 namespace fapc {
@@ -75,8 +76,8 @@ class Reader {
 
  private:
   template <class AnyLine>
-  Diagnostic error_at(const AnyLine& line, int column, const std::string& message) const {
-    return make_error(Location::text(file_, line.number, column), message, std::string(line.text));
+  Diagnostic error_at(ErrorCode code, const AnyLine& line, int column, const std::string& message) const {
+    return make_error(code, Location::text(file_, line.number, column), message, std::string(line.text));
   }
   template <class AnyLine>
   void warn_at(WarningCode code, const AnyLine& line, int column, const std::string& message) {
@@ -84,7 +85,7 @@ class Reader {
         make_warning(code, Location::text(file_, line.number, column), message, std::string(line.text)));
   }
   void warn_file(WarningCode code, const std::string& message) {
-    out_.warnings.push_back(make_warning(code, Location{file_, 0, 0, -1}, message));
+    out_.warnings.push_back(make_warning(code, Location::whole_file(file_), message));
   }
 
   std::optional<Diagnostic> read_header(const Line& line);
@@ -147,11 +148,11 @@ std::optional<Diagnostic> Reader::read_header(const Line& line) {
   const auto fps = parse_number(fps_token.text);
   // Frame rates are integers once read (docs/fap-files.md), so below 0.5 would round to 0.
   if (!fps || *fps < 0.5 || *fps > 1000)
-    return error_at(line, fps_token.column,
+    return error_at(codes::fap::bad_frame_rate, line, fps_token.column,
                     "header frame rate must be a number from 1 to 1000, found '" + std::string(fps_token.text) + "'");
   const auto count = parse_integer(count_token.text);
   if (!count || *count < 0)
-    return error_at(line, count_token.column,
+    return error_at(codes::fap::bad_frame_count, line, count_token.column,
                     "header frame count must be a non-negative integer, found '" + std::string(count_token.text) + "'");
   facts.header_fps = *fps;
   facts.header_fps_at = Location::text(file_, line.number, fps_token.column);
@@ -170,14 +171,14 @@ std::optional<Diagnostic> Reader::read_header(const Line& line) {
   out_.sequence.fps = static_cast<int>(std::lround(*fps));
   if (std::floor(*fps) != *fps)
     warn_at(
-        {"fap.fractional_fps"}, line, fps_token.column,
+        codes::fap::fractional_fps, line, fps_token.column,
         "frame rate " + std::string(fps_token.text) + " is not an integer; using " + std::to_string(out_.sequence.fps));
   if (facts.version == "2.0") {
-    warn_at({"fap.vreng_v20"}, line, tokens.front().column,
+    warn_at(codes::fap::vreng_v20, line, tokens.front().column,
             options_.vreng_divide_v20 ? "version 2.0: values divided by 20 (VREng's convention, as asked)"
                                       : "version 2.0: values kept as written (VREng divides them by 20)");
   } else if (facts.version != "2.1") {
-    warn_at({"fap.version"}, line, tokens.front().column,
+    warn_at(codes::fap::version, line, tokens.front().column,
             "version " + facts.version + " (2.1 expected); reading it as 2.1");
   }
   return std::nullopt;
@@ -188,12 +189,12 @@ std::optional<Diagnostic> Reader::read_mask(const Line& line, std::bitset<kFapCo
   if (tokens.size() == 69 && tokens.back().text == "0") {
     if (!out_.facts.mask_69_tokens)  // once per file, without the (long) source line
       out_.warnings.push_back(
-          make_warning({"fap.mask_69_values"}, Location::text(file_, line.number, tokens.back().column),
+          make_warning(codes::fap::mask_69_values, Location::text(file_, line.number, tokens.back().column),
                        "mask lines have 69 values (Greta's writer); the 69th, always 0, is ignored"));
     out_.facts.mask_69_tokens = true;
   } else if (tokens.size() != 68) {
     const int column = tokens.size() > 68 ? tokens[68].column : static_cast<int>(line.text.size()) + 1;
-    return error_at(line, column,
+    return error_at(codes::fap::mask_length, line, column,
                     "mask line has " + std::to_string(tokens.size()) + " values; expected 68 (one 0 or 1 per FAP)");
   }
   mask.reset();
@@ -203,7 +204,7 @@ std::optional<Diagnostic> Reader::read_mask(const Line& line, std::bitset<kFapCo
       mask.set(i);
     } else if (t.text != "0") {
       return error_at(
-          line, t.column,
+          codes::fap::mask_value, line, t.column,
           "mask value for FAP " + std::to_string(i + 1) + " must be 0 or 1, found '" + std::string(t.text) + "'");
     }
   }
@@ -226,19 +227,20 @@ std::optional<Diagnostic> Reader::read_value(const Line& line, const Token& toke
   } else if (const auto real = parse_number(token.text)) {
     number = *real;
     if (!warned_float_)
-      warn_at({"fap.value"}, line, token.column,
+      warn_at(codes::fap::value, line, token.column,
               "value '" + std::string(token.text) + "' is not an integer; values are rounded half away from zero");
     warned_float_ = true;
     out_.facts.float_values = true;
   } else {
-    return error_at(line, token.column, what() + " must be a number, found '" + std::string(token.text) + "'");
+    return error_at(codes::fap::not_a_number, line, token.column,
+                    what() + " must be a number, found '" + std::string(token.text) + "'");
   }
   // VREng's private scaling applies to FAP values, not to the viseme and expression fields.
   if (scaled) number /= 20;
   const double rounded = std::round(number);  // std::round: halves away from zero
   if (rounded < static_cast<double>(low) || rounded > static_cast<double>(high))
     return error_at(
-        line, token.column,
+        codes::fap::value_out_of_range, line, token.column,
         what() + " " + std::string(token.text) + " is outside " + std::to_string(low) + ".." + std::to_string(high));
   value = static_cast<std::int32_t>(rounded);
   return std::nullopt;
@@ -249,12 +251,12 @@ std::optional<Diagnostic> Reader::read_values(const Line& line, const std::bitse
   const auto number = parse_integer(tokens.front().text);
   if (!number)
     return error_at(
-        line, tokens.front().column,
+        codes::fap::bad_frame_number, line, tokens.front().column,
         "a value line must start with an integer frame number, found '" + std::string(tokens.front().text) + "'");
   // Bounded before any arithmetic on it (gaps, millisecond grids, renumbering): 10^15 is 31,000
   // years of millisecond stamps, and differences of such numbers cannot overflow.
   if (*number > kMaxFrameNumber || *number < -kMaxFrameNumber)
-    return error_at(line, tokens.front().column,
+    return error_at(codes::fap::frame_number_out_of_range, line, tokens.front().column,
                     "frame number " + std::string(tokens.front().text) + " is outside -" +
                         std::to_string(kMaxFrameNumber) + ".." + std::to_string(kMaxFrameNumber));
   frame.number = *number;
@@ -276,7 +278,7 @@ std::optional<Diagnostic> Reader::read_values(const Line& line, const std::bitse
                                                       std::to_string(single) + " (one value each)";
     const int column = given > full ? tokens[full + 1].column : static_cast<int>(line.text.size()) + 1;
     return error_at(
-        line, column,
+        codes::fap::value_count, line, column,
         "value line has " + std::to_string(given) + " values after the frame number; its mask needs " + expected);
   }
   std::size_t next = 1;
@@ -320,7 +322,7 @@ std::optional<Diagnostic> Reader::place_frames_in_time() {
   for (std::size_t i = 1; i < frames.size(); ++i)
     if (frames[i] <= frames[i - 1]) {
       const FrameLine line = frame_line(i);
-      return error_at(line, line.first_column,
+      return error_at(codes::fap::frame_order, line, line.first_column,
                       "frame number " + std::to_string(frames[i]) + " does not follow frame " +
                           std::to_string(frames[i - 1]) + "; frame numbers must ascend");
     }
@@ -342,7 +344,7 @@ std::optional<Diagnostic> Reader::place_frames_in_time() {
       const long long offset = frames[i] - first;
       if (offset % step != 0) {
         const FrameLine line = frame_line(i);
-        return error_at(line, line.first_column,
+        return error_at(codes::fap::off_grid, line, line.first_column,
                         "time stamp " + std::to_string(frames[i]) + " ms is not on the " + std::to_string(step) +
                             " ms grid of the first frame");
       }
@@ -378,7 +380,7 @@ std::optional<Diagnostic> Reader::place_frames_in_time() {
   const std::vector<FrameLine> lines = frame_lines(after_gap);
   for (std::size_t g = 0; g < after_gap.size(); ++g) {
     const std::size_t i = after_gap[g];
-    warn_at({"fap.missing_frames"}, lines[g], lines[g].first_column,
+    warn_at(codes::fap::missing_frames, lines[g], lines[g].first_column,
             "frames " + std::to_string(frames[i - 1] + 1) + " to " + std::to_string(frames[i] - 1) + " are absent");
   }
   return std::nullopt;
@@ -489,7 +491,7 @@ Result<FapReadResult> Reader::run() {
     if (line.first_is_comment()) {
       ++facts.comment_lines;
       if (expect != Expect::header && !warned_comment_after_header_) {
-        warn_at({"fap.comment_after_header"}, line, line.tokens.front().column,
+        warn_at(codes::fap::comment_after_header, line, line.tokens.front().column,
                 "comment line after the header (Xface and Greta's Java reader cannot read it)");
         warned_comment_after_header_ = true;
       }
@@ -523,7 +525,7 @@ Result<FapReadResult> Reader::run() {
   }
   facts.crlf = lines_.crlf();
   if (expect == Expect::values)
-    return error_at(mask_line, static_cast<int>(mask_line.text.size()) + 1,
+    return error_at(codes::fap::mask_without_values, mask_line, static_cast<int>(mask_line.text.size()) + 1,
                     "mask line without the value line that must follow it");
   if (auto e = place_frames_in_time()) return *e;
   // The frames carry their numbers as written; only stamps and numbering from 1 changed them (a
@@ -532,9 +534,9 @@ Result<FapReadResult> Reader::run() {
     for (std::size_t k = 0; k < out_.sequence.frames.size(); ++k) out_.sequence.frames[k].number = numbers_[k];
   const auto frames = static_cast<long long>(numbers_.size());
   if (facts.has_header && facts.header_count != frames)
-    warn_at({"fap.frame_count"}, header_count_at_, header_count_at_.first_column,
+    warn_at(codes::fap::frame_count, header_count_at_, header_count_at_.first_column,
             "header says " + std::to_string(facts.header_count) + " frames, file has " + std::to_string(frames));
-  if (frames == 0) warn_file({"fap.no_frames"}, "file has no frames");
+  if (frames == 0) warn_file(codes::fap::no_frames, "file has no frames");
   if (out_.sequence.name.empty()) out_.sequence.name = file_;
   out_.value_lines = std::move(value_lines_);
   return std::move(out_);

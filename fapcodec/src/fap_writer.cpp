@@ -4,6 +4,7 @@
 #include <charconv>
 #include <string>
 
+#include "fapc/codec/codes.hpp"
 #include "fapc/codec/fap_file.hpp"
 
 namespace fapc {
@@ -96,7 +97,7 @@ void append_frame(std::string& out, const FapFrame& frame, long long number, con
 }
 
 Diagnostic cannot_carry(FapFlavour flavour, const std::string& what) {
-  return make_error(ErrorKind::unsupported, Location{},
+  return make_error(codes::fap::flavour_cannot_carry, Location{},
                     "the " + std::string(fap_flavour_name(flavour)) + " .fap flavour cannot carry " + what);
 }
 

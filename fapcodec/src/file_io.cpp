@@ -17,6 +17,8 @@
 #include <system_error>
 #include <utility>
 
+#include "fapc/codec/codes.hpp"
+
 namespace fapc {
 
 namespace {
@@ -27,8 +29,8 @@ bool ends_with(std::string_view s, std::string_view suffix) {
 
 // The system's reason by generic_category (strerror_r underneath): strerror may fill a buffer
 // shared by every thread, and the batch reads and writes on several.
-Diagnostic io_error(const std::string& path, const std::string& what) {
-  return make_error(ErrorKind::io, Location{path, 0, 0, -1}, what + ": " + std::generic_category().message(errno));
+Diagnostic io_error(ErrorCode code, const std::string& path, const std::string& what) {
+  return make_error(code, Location::whole_file(path), what + ": " + std::generic_category().message(errno));
 }
 
 // Why a file of this type cannot be read as an input, or nullptr for a regular file.
@@ -61,14 +63,14 @@ class Descriptor {
 // descriptor, in case the name changed in between. O_NONBLOCK: opening a FIFO without a writer
 // would otherwise wait forever.
 Result<int> open_input(const std::string& path, struct stat& info) {
-  const Location whole_file{path, 0, 0, -1};
+  const Location whole_file = Location::whole_file(path);
   if (::stat(path.c_str(), &info) == 0) {
-    if (const char* why = not_readable_type(info.st_mode)) return make_error(ErrorKind::io, whole_file, why);
+    if (const char* why = not_readable_type(info.st_mode)) return make_error(codes::io::not_a_file, whole_file, why);
   }
   Descriptor file(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
-  if (file.get() < 0) return io_error(path, "cannot open file");
-  if (::fstat(file.get(), &info) != 0) return io_error(path, "cannot read file");
-  if (const char* why = not_readable_type(info.st_mode)) return make_error(ErrorKind::io, whole_file, why);
+  if (file.get() < 0) return io_error(codes::io::cannot_open, path, "cannot open file");
+  if (::fstat(file.get(), &info) != 0) return io_error(codes::io::cannot_read, path, "cannot read file");
+  if (const char* why = not_readable_type(info.st_mode)) return make_error(codes::io::not_a_file, whole_file, why);
   return file.release();
 }
 
@@ -105,7 +107,7 @@ Result<std::string> gunzip(std::string_view bytes, const std::string& file, cons
       static_cast<std::size_t>(ratio_binds ? by_ratio : static_cast<double>(limits.max_decompressed_bytes));
   z_stream z{};
   if (inflateInit2(&z, 15 + 32) != Z_OK)  // +32: accept gzip and zlib headers
-    return make_error(Location::binary(file, 0), "cannot start the gzip decoder");
+    return make_error(codes::gzip::bad_data, Location::binary(file, 0), "cannot start the gzip decoder");
   std::string out;
   char buffer[65536];
   z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
@@ -119,7 +121,7 @@ Result<std::string> gunzip(std::string_view bytes, const std::string& file, cons
       const auto offset = static_cast<std::int64_t>(bytes.size() - z.avail_in);
       if (!is_gzip(bytes.substr(static_cast<std::size_t>(offset)))) {
         inflateEnd(&z);
-        return make_error(Location::binary(file, offset),
+        return make_error(codes::gzip::trailing_bytes, Location::binary(file, offset),
                           "gzip: " + std::to_string(z.avail_in) + " bytes after the end of the gzip data");
       }
       inflateReset(&z);
@@ -131,7 +133,7 @@ Result<std::string> gunzip(std::string_view bytes, const std::string& file, cons
       const auto offset = static_cast<std::int64_t>(bytes.size() - z.avail_in);
       const std::string why = z.msg ? z.msg : (rc == Z_BUF_ERROR ? "truncated gzip data" : "bad gzip data");
       inflateEnd(&z);
-      return make_error(Location::binary(file, offset), "gzip: " + why);
+      return make_error(codes::gzip::bad_data, Location::binary(file, offset), "gzip: " + why);
     }
     const std::size_t produced = sizeof buffer - z.avail_out;
     if (out.size() + produced > allowed) {
@@ -177,7 +179,7 @@ Result<std::string> read_file_bytes(const std::string& path, const Limits& limit
     if (got == 0) break;
     if (got < 0) {
       if (errno == EINTR) continue;
-      return io_error(path, "cannot read file");
+      return io_error(codes::io::cannot_read, path, "cannot read file");
     }
     used += static_cast<std::size_t>(got);
   }
@@ -194,7 +196,7 @@ Result<MappedFile> MappedFile::open(const std::string& path) {
   const auto size = static_cast<std::size_t>(info.st_size);
   if (size == 0) return MappedFile(nullptr, 0);
   void* data = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, file.get(), 0);
-  if (data == MAP_FAILED) return io_error(path, "cannot read file");
+  if (data == MAP_FAILED) return io_error(codes::io::cannot_read, path, "cannot read file");
   ::madvise(data, size, MADV_SEQUENTIAL);
   return MappedFile(static_cast<const char*>(data), size);
 }
@@ -277,7 +279,7 @@ Status write_whole(int fd, std::string_view bytes, const std::string& path) {
   while (!bytes.empty()) {
     const ssize_t put = ::write(fd, bytes.data(), bytes.size());
     if (put < 0 && errno == EINTR) continue;
-    if (put <= 0) return io_error(path, "cannot write output");
+    if (put <= 0) return io_error(codes::io::cannot_write_output, path, "cannot write output");
     bytes.remove_prefix(static_cast<std::size_t>(put));
   }
   return ok_status();
@@ -288,11 +290,11 @@ Status write_whole(int fd, std::string_view bytes, const std::string& path) {
 // was looked at. Opening a FIFO waits for its reader, as the shell's `>` does.
 Result<int> open_stream(const std::string& path, const std::string& file) {
   Descriptor out(::open(file.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC));
-  if (out.get() < 0) return io_error(path, "cannot open output");
+  if (out.get() < 0) return io_error(codes::io::cannot_create_output, path, "cannot open output");
   struct stat info {};
-  if (::fstat(out.get(), &info) != 0) return io_error(path, "cannot open output");
+  if (::fstat(out.get(), &info) != 0) return io_error(codes::io::cannot_create_output, path, "cannot open output");
   if (!S_ISCHR(info.st_mode) && !S_ISFIFO(info.st_mode))
-    return make_error(ErrorKind::io, Location{path, 0, 0, -1},
+    return make_error(codes::io::output_changed, Location::whole_file(path),
                       "is no longer a character device or a FIFO; nothing written");
   return out.release();
 }
@@ -302,7 +304,8 @@ Result<int> open_stream(const std::string& path, const std::string& file) {
 Status still_replaceable(const std::string& path, const std::string& file) {
   struct stat info {};
   if (::lstat(file.c_str(), &info) == 0 && !S_ISREG(info.st_mode))
-    return make_error(ErrorKind::io, Location{path, 0, 0, -1}, "is no longer a regular file; nothing written");
+    return make_error(codes::io::output_changed, Location::whole_file(path),
+                      "is no longer a regular file; nothing written");
   return ok_status();
 }
 
@@ -316,13 +319,13 @@ Result<AtomicFile> AtomicFile::create(const std::string& path) {
     std::FILE* file = fd < 0 ? nullptr : ::fdopen(fd, "w+");
     if (!file) {
       if (fd >= 0) ::close(fd);
-      return io_error(path, "cannot create output");
+      return io_error(codes::io::cannot_create_output, path, "cannot create output");
     }
     return AtomicFile(path, std::move(*target), std::string(), file);
   }
   std::string temp = temporary_path(target->file);
   const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
-  if (fd < 0) return io_error(path, "cannot create output");
+  if (fd < 0) return io_error(codes::io::cannot_create_output, path, "cannot create output");
   // A file replaced keeps its permissions: a private output stays private.
   struct stat existing {};
   if (::stat(target->file.c_str(), &existing) == 0 && S_ISREG(existing.st_mode)) ::fchmod(fd, existing.st_mode & 0777);
@@ -330,7 +333,7 @@ Result<AtomicFile> AtomicFile::create(const std::string& path) {
   if (!file) {
     ::close(fd);
     std::remove(temp.c_str());
-    return io_error(path, "cannot create output");
+    return io_error(codes::io::cannot_create_output, path, "cannot create output");
   }
   return AtomicFile(path, std::move(*target), std::move(temp), file);
 }
@@ -351,18 +354,18 @@ AtomicFile::~AtomicFile() {
 
 Status AtomicFile::write(std::string_view bytes) {
   if (!file_ || std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size())
-    return io_error(path_, "cannot write output");
+    return io_error(codes::io::cannot_write_output, path_, "cannot write output");
   return ok_status();
 }
 
 Status AtomicFile::commit() {
-  if (!file_) return io_error(path_, "cannot write output");
+  if (!file_) return io_error(codes::io::cannot_write_output, path_, "cannot write output");
   if (target_.way == OutputTarget::Way::stream) return commit_to_stream();
   const bool flushed = std::fflush(file_) == 0 && !std::ferror(file_);
   const bool closed = std::fclose(file_) == 0;
   file_ = nullptr;
   if (!flushed || !closed) {
-    const Diagnostic error = io_error(path_, "cannot write output");
+    const Diagnostic error = io_error(codes::io::cannot_write_output, path_, "cannot write output");
     std::remove(temp_.c_str());
     return error;
   }
@@ -371,7 +374,7 @@ Status AtomicFile::commit() {
     return replaceable;
   }
   if (std::rename(temp_.c_str(), target_.file.c_str()) != 0) {
-    const Diagnostic error = io_error(path_, "cannot replace output");
+    const Diagnostic error = io_error(codes::io::cannot_replace_output, path_, "cannot replace output");
     std::remove(temp_.c_str());
     return error;
   }
@@ -384,7 +387,7 @@ Status AtomicFile::commit_to_stream() {
   std::FILE* scratch = std::exchange(file_, nullptr);
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> closing(scratch, &std::fclose);
   if (std::fflush(scratch) != 0 || std::ferror(scratch) || std::fseek(scratch, 0, SEEK_SET) != 0)
-    return io_error(path_, "cannot write output");
+    return io_error(codes::io::cannot_write_output, path_, "cannot write output");
   auto opened = open_stream(path_, target_.file);
   if (!opened) return opened.error();
   const Descriptor out(*opened);
@@ -395,7 +398,7 @@ Status AtomicFile::commit_to_stream() {
       if (auto written = write_whole(out.get(), {buffer.data(), got}, path_); !written) return written;
     if (got < buffer.size()) break;
   }
-  if (std::ferror(scratch)) return io_error(path_, "cannot write output");
+  if (std::ferror(scratch)) return io_error(codes::io::cannot_write_output, path_, "cannot write output");
   return ok_status();
 }
 
@@ -422,11 +425,11 @@ Status write_file_atomic(const std::string& path, std::string_view bytes) {
 
 Result<ScratchFile> ScratchFile::create(const std::string& output) {
   const int fd = open_unnamed(scratch_folder_for(output));
-  if (fd < 0) return io_error(output, "cannot create output");
+  if (fd < 0) return io_error(codes::io::cannot_create_output, output, "cannot create output");
   std::FILE* file = ::fdopen(fd, "w+");
   if (!file) {
     ::close(fd);
-    return io_error(output, "cannot create output");
+    return io_error(codes::io::cannot_create_output, output, "cannot create output");
   }
   return ScratchFile(output, file);
 }
@@ -441,13 +444,13 @@ ScratchFile::~ScratchFile() {
 
 Status ScratchFile::write(std::string_view bytes) {
   if (!file_ || std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size())
-    return io_error(output_, "cannot write output");
+    return io_error(codes::io::cannot_write_output, output_, "cannot write output");
   return ok_status();
 }
 
 Status ScratchFile::read_back(const std::function<Status(std::string_view)>& sink) {
   if (!file_ || std::fflush(file_) != 0 || std::fseek(file_, 0, SEEK_SET) != 0)
-    return io_error(output_, "cannot write output");
+    return io_error(codes::io::cannot_write_output, output_, "cannot write output");
   std::string buffer(std::size_t{1} << 20, '\0');
   for (;;) {
     const std::size_t got = std::fread(buffer.data(), 1, buffer.size(), file_);
@@ -455,7 +458,7 @@ Status ScratchFile::read_back(const std::function<Status(std::string_view)>& sin
       if (auto status = sink({buffer.data(), got}); !status) return status;
     if (got < buffer.size()) break;
   }
-  if (std::ferror(file_)) return io_error(output_, "cannot write output");
+  if (std::ferror(file_)) return io_error(codes::io::cannot_write_output, output_, "cannot write output");
   return ok_status();
 }
 

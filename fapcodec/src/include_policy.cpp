@@ -2,6 +2,8 @@
 
 #include <filesystem>
 
+#include "fapc/codec/codes.hpp"
+
 namespace fapc {
 namespace {
 
@@ -38,7 +40,8 @@ Result<std::string> resolve_include(std::string_view name, const std::string& in
   std::error_code error;
   const fs::path target = resolved(joined, error);
   if (error) {
-    return make_error(ErrorKind::io, where, "cannot resolve '" + std::string(name) + "': " + error.message());
+    return make_error(codes::include::unresolvable, where,
+                      "cannot resolve '" + std::string(name) + "': " + error.message());
   }
   std::vector<std::string> allowed = policy.allowed_folders;
   if (allowed.empty()) allowed.push_back(base.string());
@@ -50,7 +53,7 @@ Result<std::string> resolve_include(std::string_view name, const std::string& in
   std::string folders;
   for (const std::string& folder : allowed) folders += (folders.empty() ? "'" : ", '") + shown(folder) + "'";
   const char* how = written.is_absolute() ? "is an absolute path outside" : "leads outside";
-  return make_error(ErrorKind::bad_input, where,
+  return make_error(codes::include::outside_allowed, where,
                     "'" + std::string(name) + "' " + how + " the folders a script may include from (" + folders +
                         "); --allow-include DIR allows another (docs/security.md)");
 }

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "fapc/codec/codes.hpp"
+
 namespace fapc {
 
 const char* limit_option(Limit which) {
@@ -61,6 +63,33 @@ std::string limit_value(Limit which, const Limits& limits) {
 
 namespace {
 
+// The error code of passing each limit (codes.def): a user raises each with its own option.
+ErrorCode limit_code(Limit which) {
+  switch (which) {
+    case Limit::frames:
+      return codes::limit::frames;
+    case Limit::runs:
+      return codes::limit::runs;
+    case Limit::decompressed_bytes:
+      return codes::limit::decompressed_bytes;
+    case Limit::expansion:
+      return codes::limit::expansion;
+    case Limit::audio_samples:
+      return codes::limit::audio_samples;
+    case Limit::speech_text:
+      return codes::limit::speech_text;
+    case Limit::speech_seconds:
+      return codes::limit::speech_seconds;
+    case Limit::frame_pixels:
+      return codes::limit::frame_pixels;
+    case Limit::sheet_pixels:
+      return codes::limit::sheet_pixels;
+    case Limit::video_pixels:
+      return codes::limit::video_pixels;
+  }
+  return codes::limit::frames;
+}
+
 const char* unit(Limit which) {
   switch (which) {
     case Limit::frames:
@@ -88,7 +117,7 @@ const char* unit(Limit which) {
 }  // namespace
 
 Diagnostic limit_error(Location where, const std::string& what, Limit which, const Limits& limits) {
-  return make_error(ErrorKind::limit_exceeded, std::move(where),
+  return make_error(limit_code(which), std::move(where),
                     what + ": more than the limit of " + limit_value(which, limits) + unit(which) + " (" +
                         limit_option(which) + " N raises it)");
 }

@@ -8,6 +8,8 @@
 #include <cstdlib>
 #include <memory>
 
+#include "fapc/codec/codes.hpp"
+
 namespace fapc {
 
 namespace {
@@ -15,7 +17,7 @@ namespace {
 constexpr const char* kWhatTakesOutput = " (an output is written to a file, a character device or a FIFO)";
 
 Diagnostic refused(const std::string& path, const std::string& why) {
-  return make_error(ErrorKind::io, Location{path, 0, 0, -1}, why);
+  return make_error(codes::io::output_refused, Location::whole_file(path), why);
 }
 
 // Why a file of this type takes no output, or nullptr when it does.

@@ -2,6 +2,7 @@
 // docs/algebra.md): refused at the operator's column before the frames are allocated.
 #include <gtest/gtest.h>
 
+#include "fapc/codec/codes.hpp"
 #include "fapc/transcoder/algebra_expression.hpp"
 
 namespace fapc::algebra {
@@ -103,7 +104,7 @@ TEST(AlgebraLimits, MeetingOnTheHigherRateCountsAgainstTheLimit) {
 
 TEST(AlgebraLimits, AnOperandThatCannotBeReadIsReportedWhereTheExpressionNamesIt) {
   const OperandLoader missing = [](const std::string& name, int) -> Result<Value> {
-    return make_error(ErrorKind::io, Location{"folder/" + name, 0, 0, -1},
+    return make_error(codes::io::cannot_open, Location::whole_file("folder/" + name),
                       "cannot open file: No such file or directory");
   };
   const auto r = evaluate("0.5 * nothere.fap", missing);

@@ -15,6 +15,7 @@
 #include "fapc/bml/bml.hpp"
 #include "fapc/pipeline/convert.hpp"
 #include "fapc/pipeline/registry.hpp"
+#include "fapc/speech/codes.hpp"
 #include "fapc/transcoder/wav.hpp"
 #include "fapc/vocabulary/mapping_table.hpp"
 #include "support/sync_to_word.hpp"
@@ -87,7 +88,7 @@ ReaderOptions no_synthesis(int& calls) {
   ReaderOptions options;
   options.speech.synthesize = [&calls](const SpeechRequest&) -> Result<Utterance> {
     ++calls;
-    return make_error(Location{}, "recorded speech must not be synthesised");
+    return make_error(codes::speech::engine_failed, Location{}, "recorded speech must not be synthesised");
   };
   return options;
 }

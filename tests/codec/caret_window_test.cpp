@@ -8,13 +8,15 @@
 #include <string>
 #include <vector>
 
+#include "fapc/codec/codes.hpp"
 #include "fapc/codec/diagnostic.hpp"
 
 namespace fapc {
 namespace {
 
 Diagnostic at_column(std::string line, int column) {
-  return make_error(Location::text("in.mimic", 1, column), "unexpected character", std::move(line));
+  return make_error(codes::fap::not_a_number, Location::text("in.mimic", 1, column), "unexpected character",
+                    std::move(line));
 }
 
 // The rendered diagnostic's shown line and caret line.

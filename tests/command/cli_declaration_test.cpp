@@ -16,21 +16,9 @@ constexpr const char* kBegin = "<!-- fapc help --markdown: begin -->\n";
 constexpr const char* kEnd = "<!-- fapc help --markdown: end -->\n";
 
 TEST(CliDeclaration, DocsTablesAreTheDeclaration) {
-  const std::string path = test::source_dir() + "/docs/cli.md";
-  const std::string doc = test::read_text(path);
-  const std::size_t begin = doc.find(kBegin), end = doc.find(kEnd);
-  ASSERT_NE(begin, std::string::npos) << path << " has no '" << kBegin << "' marker";
-  ASSERT_NE(end, std::string::npos) << path << " has no '" << kEnd << "' marker";
   const test::CommandRun run = test::run_fapc("help --markdown");
   ASSERT_EQ(run.exit_status, 0) << run.err;
-  const std::size_t from = begin + std::string(kBegin).size();
-  const std::string documented = doc.substr(from, end - from);
-  if (const char* regenerate = std::getenv("FAPC_REGENERATE_GOLDEN"); regenerate && std::string(regenerate) == "1") {
-    std::ofstream(path, std::ios::binary) << doc.substr(0, from) << run.out << doc.substr(end);
-    return;
-  }
-  EXPECT_EQ(documented, run.out) << "docs/cli.md's tables differ from the declaration in tools/fapc/cli_spec.cpp; "
-                                    "regenerate with FAPC_REGENERATE_GOLDEN=1 (docs/testing.md) and review the diff";
+  test::expect_generated_region("docs/cli.md", kBegin, kEnd, run.out, "the declaration in tools/fapc/cli_spec.cpp");
 }
 
 // The subcommands `fapc help --markdown` lists (the first column of its first table).

@@ -57,9 +57,11 @@ TEST(JsonContract, ErrorsUnderJsonAreADiagnosticObject) {
   const nlohmann::json missing = run_json("info corpus/no-such-file.fap --json", 1);
   EXPECT_EQ(joined(folder.validate(missing, "error.schema.json")), "");
   EXPECT_EQ(missing["error"]["kind"], "io");
+  EXPECT_EQ(missing["error"]["code"], "io.cannot_open");
   const nlohmann::json truncated = run_json("info corpus/fba-bad/truncated.fba --json", 1);
   EXPECT_EQ(joined(folder.validate(truncated, "error.schema.json")), "");
   EXPECT_TRUE(truncated["error"]["byte"].is_number_integer()) << truncated.dump();
+  EXPECT_EQ(truncated["error"]["code"], "fba.truncated");
 }
 
 TEST(JsonContract, VerifyMatchesItsSchema) {
@@ -89,6 +91,10 @@ TEST(JsonContract, BatchReportMatchesItsSchema) {
   EXPECT_EQ(report["totals"]["jobs"], 6);
   EXPECT_EQ(report["totals"]["failed"], 1);
   EXPECT_EQ(report["totals"]["converted"], 5);
+  std::set<std::string> codes;  // the failed job's error says what failed, by its code
+  for (const nlohmann::json& job : report["jobs"])
+    if (job["error"].is_object()) codes.insert(job["error"]["code"].get<std::string>());
+  EXPECT_EQ(codes, std::set<std::string>{"fba.truncated"});
   std::filesystem::remove_all(dir);
 }
 
@@ -114,6 +120,7 @@ TEST(JsonContract, TheValidatorRejectsWhatItMust) {
                          {"error",
                           {{"severity", "error"},
                            {"kind", "io"},
+                           {"code", "io.cannot_open"},
                            {"file", "x"},
                            {"line", nullptr},
                            {"column", nullptr},
@@ -137,6 +144,11 @@ TEST(JsonContract, TheValidatorRejectsWhatItMust) {
   bad = good;
   bad["error"]["kind"] = "oops";
   EXPECT_NE(joined(folder.validate(bad, "error.schema.json")).find("is not one of"), std::string::npos);
+  bad = good;
+  bad["error"]["code"] = nullptr;  // an error always has a code; only a warning may lack one
+  EXPECT_NE(joined(folder.validate(bad, "error.schema.json")).find("oneOf"), std::string::npos);
+  bad["error"]["severity"] = "warning";
+  EXPECT_EQ(joined(folder.validate(bad, "error.schema.json")), "");
   bad = good;
   bad["schema_version"] = 2;
   EXPECT_FALSE(folder.validate(bad, "error.schema.json").empty());

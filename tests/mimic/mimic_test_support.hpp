@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "fapc/codec/codes.hpp"
 #include "fapc/transcoder/mimic.hpp"
 #include "fapc/transcoder/render.hpp"
 #include "support/test_support.hpp"
@@ -16,7 +17,7 @@ inline Result<MimicProgram> compile(const std::string& source, const std::map<st
   ReaderOptions options;
   options.read_file = [files](const std::string& path) -> Result<std::string> {
     const auto found = files.find(path);
-    if (found == files.end()) return make_error(Location{path, 0, 0, -1}, "no such file");
+    if (found == files.end()) return make_error(codes::io::cannot_open, Location::whole_file(path), "no such file");
     return found->second;
   };
   return compile_mimic(source, "t.mimic", options);

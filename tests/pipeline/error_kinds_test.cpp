@@ -1,5 +1,5 @@
-// Typical failures and the kind each one carries: the kind, not the wording, is what callers
-// (the program's exit status, a batch's summary) decide by.
+// Typical failures and the kind and code each one carries: the kind and the code (docs/errors.md),
+// not the wording, are what callers (the program's exit status, a batch's summary) decide by.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -23,13 +23,23 @@ ErrorKind load_error_kind(const std::string& path) {
   return loaded ? ErrorKind::bad_input : loaded.error().kind;
 }
 
-TEST(ErrorKinds, AMissingFileIsIo) { EXPECT_EQ(load_error_kind("/nonexistent/x.fap"), ErrorKind::io); }
+std::string load_error_code(const std::string& path) {
+  auto loaded = pipeline::load(path, ConvertOptions{});
+  return loaded ? "(loaded)" : loaded.error().code;
+}
+
+TEST(ErrorKinds, AMissingFileIsIo) {
+  EXPECT_EQ(load_error_kind("/nonexistent/x.fap"), ErrorKind::io);
+  EXPECT_EQ(load_error_code("/nonexistent/x.fap"), "io.cannot_open");
+}
 
 TEST(ErrorKinds, AnUnknownExtensionIsUnsupported) {
   EXPECT_EQ(load_error_kind(test::corpus_dir() + "/catalog.tsv"), ErrorKind::unsupported);
+  EXPECT_EQ(load_error_code(test::corpus_dir() + "/catalog.tsv"), "format.unknown_extension");
   const auto result = pipeline::convert(test::corpus_dir() + "/examples/fap/anger.fap", {{"x.unknown", ""}}, {});
   ASSERT_FALSE(result.ok());
   EXPECT_EQ(result.error->kind, ErrorKind::unsupported);
+  EXPECT_EQ(result.error->code, "format.unknown_extension");
 }
 
 TEST(ErrorKinds, AStreamCutShortIsTruncated) {
@@ -38,6 +48,7 @@ TEST(ErrorKinds, AStreamCutShortIsTruncated) {
   const std::string whole = test::read_text(tmp / "a.fba");
   ASSERT_TRUE(write_file_atomic(tmp / "cut.fba", whole.substr(0, whole.size() / 2)));
   EXPECT_EQ(load_error_kind(tmp / "cut.fba"), ErrorKind::truncated);
+  EXPECT_EQ(load_error_code(tmp / "cut.fba"), "fba.truncated");
 }
 
 TEST(ErrorKinds, AStreamFapcDidNotWriteFailsVerification) {
@@ -45,12 +56,14 @@ TEST(ErrorKinds, AStreamFapcDidNotWriteFailsVerification) {
   const auto verified = pipeline::verify(test::corpus_dir() + "/fba/time-code-29.97fps.fba", {});
   ASSERT_FALSE(verified.ok());
   EXPECT_EQ(verified.error->kind, ErrorKind::verification_failed);
+  EXPECT_EQ(verified.error->code, "verify.fba_foreign");
 }
 
 TEST(ErrorKinds, AStoryThatNeverEndsIsBadInputAtTheElement) {
   auto loaded = pipeline::load(test::corpus_dir() + "/fml-bad/indefinite-without-end.fml", {});
   ASSERT_FALSE(loaded);
   EXPECT_EQ(loaded.error().kind, ErrorKind::bad_input);
+  EXPECT_EQ(loaded.error().code, "timeline.endless_repeat");
   EXPECT_EQ(loaded.error().where.line, 2);
   EXPECT_EQ(loaded.error().message.substr(0, 7), "action ");
 }

@@ -43,20 +43,7 @@ std::string matrix() {
 }
 
 TEST(FormatMatrix, TheArchitectureTourShowsTheTable) {
-  const std::string path = test::source_dir() + "/docs/architecture.md";
-  const std::string doc = test::read_text(path);
-  const std::size_t begin = doc.find(kBegin), end = doc.find(kEnd);
-  ASSERT_NE(begin, std::string::npos) << path << " has no '" << kBegin << "' marker";
-  ASSERT_NE(end, std::string::npos) << path << " has no '" << kEnd << "' marker";
-  const std::size_t from = begin + std::string(kBegin).size();
-  const std::string made = matrix();
-  if (const char* regenerate = std::getenv("FAPC_REGENERATE_GOLDEN"); regenerate && std::string(regenerate) == "1") {
-    std::ofstream(path, std::ios::binary) << doc.substr(0, from) << made << doc.substr(end);
-    return;
-  }
-  EXPECT_EQ(doc.substr(from, end - from), made)
-      << "docs/architecture.md's format matrix differs from the reader/writer table; regenerate with "
-         "FAPC_REGENERATE_GOLDEN=1 (docs/testing.md) and review the diff";
+  test::expect_generated_region("docs/architecture.md", kBegin, kEnd, matrix(), "the reader/writer table");
 }
 
 }  // namespace

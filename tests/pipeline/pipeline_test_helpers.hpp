@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "fapc/pipeline/codes.hpp"
 #include "fapc/pipeline/convert.hpp"
 #include "support/test_support.hpp"
 
@@ -57,7 +58,7 @@ inline LoadedWay load_then_write(const std::string& input, const std::vector<pip
   out.frames = loaded->frames.frames.size();
   if (options.strict && !loaded->warnings.empty()) {
     out.error = make_error(
-        ErrorKind::bad_input, Location{input, 0, 0, -1},
+        codes::output::strict_warnings, Location::whole_file(input),
         std::to_string(loaded->warnings.size()) + " warning(s) treated as errors (--strict); nothing written");
     return out;
   }

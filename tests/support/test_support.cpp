@@ -55,6 +55,23 @@ void expect_golden(const std::string& path, const std::string& actual) {
   EXPECT_EQ(read_text(full), actual) << "golden file " << path << " differs";
 }
 
+void expect_generated_region(const std::string& path, const std::string& begin, const std::string& end,
+                             const std::string& made, const std::string& source) {
+  const std::string full = source_dir() + "/" + path;
+  const std::string doc = read_text(full);
+  const std::size_t first = doc.find(begin), last = doc.find(end);
+  ASSERT_NE(first, std::string::npos) << path << " has no '" << begin << "' marker";
+  ASSERT_NE(last, std::string::npos) << path << " has no '" << end << "' marker";
+  const std::size_t from = first + begin.size();
+  if (const char* regenerate = std::getenv("FAPC_REGENERATE_GOLDEN"); regenerate && std::string(regenerate) == "1") {
+    std::ofstream(full, std::ios::binary) << doc.substr(0, from) << made << doc.substr(last);
+    return;
+  }
+  EXPECT_EQ(doc.substr(from, last - from), made) << path << " differs from " << source
+                                                 << "; regenerate with FAPC_REGENERATE_GOLDEN=1 (docs/testing.md) "
+                                                    "and review the diff";
+}
+
 namespace {
 std::string slurp_and_remove(const std::string& path) {
   std::string text = read_text(path);

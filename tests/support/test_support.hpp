@@ -23,6 +23,12 @@ std::vector<std::string> files_under(const std::string& folder, const std::strin
 // review the result with `git diff corpus/` before committing (docs/testing.md).
 void expect_golden(const std::string& path, const std::string& actual);
 
+// Compares the part of the document at `path` (from the source folder) between the lines `begin`
+// and `end` with `made`, the text generated from `source` (named in the failure); with
+// FAPC_REGENERATE_GOLDEN=1 that part is rewritten instead.
+void expect_generated_region(const std::string& path, const std::string& begin, const std::string& end,
+                             const std::string& made, const std::string& source);
+
 struct CommandRun {
   int exit_status = -1;
   std::string out;

@@ -40,7 +40,7 @@ std::string read_bytes(const std::string& input) {
 
 void expect_frames_dump(const std::string& kind, const std::string& input, const FapSequence& frames) {
   ASSERT_FALSE(frames.frames.empty()) << input;
-  test::expect_golden(golden_for(kind, input), dump(timeline_from_frames(frames, 0, Location{input, 0, 0, -1})));
+  test::expect_golden(golden_for(kind, input), dump(timeline_from_frames(frames, 0, Location::whole_file(input))));
 }
 
 TEST(ReaderTimelines, Mimic) {

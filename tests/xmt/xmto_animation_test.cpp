@@ -4,6 +4,7 @@
 // it returns a known timeline and records what it was asked for.
 #include <gtest/gtest.h>
 
+#include "fapc/xmto/codes.hpp"
 #include "xmto_test_helpers.hpp"
 
 namespace fapc::xmto {
@@ -52,7 +53,8 @@ TEST(XmtoAnimation, PlacedAtTheElementsBeginWithAPathRelativeToTheDocument) {
   const auto doc = read(R"(<animation src="sub/a.fap" begin="2s"/>)", recorder);
   ASSERT_TRUE(doc.ok()) << format_diagnostic(doc.error());
   EXPECT_EQ(recorder.paths, std::vector<std::string>{"dir/sub/a.fap"});
-  EXPECT_EQ(format_diagnostic(make_error(recorder.places.at(0), "here")), "dir/t.xmt:3:12: error: here");
+  EXPECT_EQ(format_diagnostic(make_error(codes::xmto::bad_time, recorder.places.at(0), "here")),
+            "dir/t.xmt:3:12: error: here");
   EXPECT_EQ(spans(doc->timeline), (Spans{{"open_jaw", 2, 3}}));
   EXPECT_EQ(doc->timeline.explicit_end, 3.5);  // the included input's own end, shifted
   EXPECT_EQ(doc->included, std::vector<std::string>{"dir/sub/a.fap"});
@@ -131,7 +133,7 @@ TEST(XmtoAnimation, ToAnimationStartsFromTheIncludedValue) {
 TEST(XmtoAnimation, TheLoadersErrorIsReturnedAsItIs) {
   XmtoOptions options;
   options.load_animation = [](const std::string& path, const Location&) -> Result<IncludedAnimation> {
-    return make_error(Location::text(path, 4, 2), "bad frame");
+    return make_error(codes::fap::value_count, Location::text(path, 4, 2), "bad frame");
   };
   EXPECT_EQ(read_error(document(R"(<animation src="a.fap"/>)"), options), "a.fap:4:2: error: bad frame");
 }

@@ -43,12 +43,12 @@ Result<IncludedAnimation> load(const std::string& path, std::vector<std::string>
     options.file = path;
     auto decoded = decode_fba(std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()), options);
     if (!decoded) return decoded.error();
-    return IncludedAnimation{timeline_from_frames(decoded->sequence, 0, Location{path, 0, 0, -1}),
+    return IncludedAnimation{timeline_from_frames(decoded->sequence, 0, Location::whole_file(path)),
                              std::move(decoded->warnings)};
   }
   auto frames = read_fap_text(text, path);
   if (!frames) return frames.error();
-  return IncludedAnimation{timeline_from_frames(frames->sequence, 0, Location{path, 0, 0, -1}),
+  return IncludedAnimation{timeline_from_frames(frames->sequence, 0, Location::whole_file(path)),
                            std::move(frames->warnings)};
 }
 

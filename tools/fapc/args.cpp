@@ -7,6 +7,7 @@
 #include "fapc/cli_spec.hpp"
 #include "fapc/codec/did_you_mean.hpp"
 #include "fapc/commands.hpp"
+#include "fapc/report.hpp"
 
 namespace fapc::cli {
 
@@ -62,13 +63,13 @@ void Args::take(const std::string& command, const std::vector<std::string>& argv
     }
   }
   if (!option || !option->applies_to(command)) {
-    fail(unknown_option_message(command, attached ? arg.substr(0, arg.find('=')) : arg));
+    fail(codes::cli::unknown_option, unknown_option_message(command, attached ? arg.substr(0, arg.find('=')) : arg));
     return;
   }
   const std::string name(option->name);
   if (!option->takes_value()) {
     if (attached) {
-      fail("option --" + name + " takes no value");
+      fail(codes::cli::bad_option, "option --" + name + " takes no value");
       return;
     }
     flags_seen_.insert(name);
@@ -79,7 +80,7 @@ void Args::take(const std::string& command, const std::vector<std::string>& argv
   } else if (i + 1 < argv.size()) {
     values_[name].push_back(argv[++i]);
   } else {
-    fail("option --" + name + " needs a value (" + std::string(option->value_name) + ")");
+    fail(codes::cli::bad_option, "option --" + name + " needs a value (" + std::string(option->value_name) + ")");
   }
 }
 
@@ -114,8 +115,8 @@ int Args::integer(const std::string& name, int fallback, int low, int high) {
   int parsed = 0;
   const auto [end, ec] = std::from_chars(text->data(), text->data() + text->size(), parsed);
   if (ec != std::errc{} || end != text->data() + text->size() || parsed < low || parsed > high) {
-    fail("--" + name + " takes an integer from " + std::to_string(low) + " to " + std::to_string(high) + ", not '" +
-         *text + "'");
+    fail(codes::cli::bad_option_value, "--" + name + " takes an integer from " + std::to_string(low) + " to " +
+                                           std::to_string(high) + ", not '" + *text + "'");
     return fallback;
   }
   return parsed;
@@ -129,17 +130,34 @@ std::optional<double> Args::decimal(const std::string& name, double low, double 
   if (ec != std::errc{} || end != text->data() + text->size() || !(parsed >= low && parsed <= high)) {
     std::ostringstream message;
     message << "--" << name << " takes a number from " << low << " to " << high << ", not '" << *text << "'";
-    fail(message.str());
+    fail(codes::cli::bad_option_value, message.str());
     return std::nullopt;
   }
   return parsed;
 }
 
-int usage_error(const std::string& command, const std::string& message) {
-  std::cerr << "fapc " << command << ": " << message << '\n';
+namespace {
+
+// -v names the code (docs/errors.md) as a diagnostic does: "fapc compile: error[cli.operands]: ...".
+int print_usage_error(const std::string& command, const std::string& code, const std::string& message) {
+  std::cerr << "fapc " << command << ": ";
+  if (verbosity() == Verbosity::verbose && !code.empty()) std::cerr << "error[" << code << "]: ";
+  std::cerr << message << '\n';
   if (const CommandSpec* spec = find_command_spec(command))
     std::cerr << "usage: " << usage_line(*spec) << " (fapc " << command << " --help lists them)\n";
   return kExitUsage;
+}
+
+}  // namespace
+
+int usage_error(const std::string& command, ErrorCode code, const std::string& message) {
+  return print_usage_error(command, code.name, message);
+}
+int usage_error(const std::string& command, const Args& args) {
+  return print_usage_error(command, args.error_code().name, args.error());
+}
+int usage_error(const std::string& command, const Diagnostic& error) {
+  return print_usage_error(command, error.code, error.message);
 }
 
 }  // namespace fapc::cli

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "fapc/cli_codes.hpp"
+
 namespace fapc::cli {
 
 class Args {
@@ -19,6 +21,7 @@ class Args {
 
   bool ok() const { return error_.empty(); }
   const std::string& error() const { return error_; }
+  ErrorCode error_code() const { return error_code_; }  // what error() is (cli_codes.def)
 
   const std::vector<std::string>& positionals() const { return positionals_; }
   bool flag(const std::string& name) const { return flags_seen_.count(name) > 0; }
@@ -29,8 +32,10 @@ class Args {
   // A decimal option in [low, high]; empty when absent; sets error() when it is not one.
   std::optional<double> decimal(const std::string& name, double low, double high);
   // Records a usage error (the first one wins).
-  void fail(std::string message) {
-    if (error_.empty()) error_ = std::move(message);
+  void fail(ErrorCode code, std::string message) {
+    if (!error_.empty()) return;
+    error_ = std::move(message);
+    error_code_ = code;
   }
 
  private:
@@ -40,12 +45,16 @@ class Args {
   std::map<std::string, std::vector<std::string>> values_;
   std::set<std::string> flags_seen_;
   std::string error_;
+  ErrorCode error_code_ = codes::cli::bad_option;
 };
 
 // "unknown option --fsp; did you mean --fps?" (and where an option of another subcommand belongs).
 std::string unknown_option_message(const std::string& command, const std::string& option);
 
 // Prints "fapc COMMAND: USAGE-ERROR" and the command's usage line; returns kExitUsage.
-int usage_error(const std::string& command, const std::string& message);
+int usage_error(const std::string& command, ErrorCode code, const std::string& message);
+// The same for the error of parsing the command line, or of a library's usage error.
+int usage_error(const std::string& command, const Args& args);
+int usage_error(const std::string& command, const Diagnostic& error);
 
 }  // namespace fapc::cli

@@ -17,6 +17,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "fapc/cli_codes.hpp"
 #include "fapc/cli_spec.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "fapc/commands.hpp"
@@ -53,7 +54,9 @@ Result<std::vector<std::string>> read_list(const std::string& list) {
   std::ifstream file;
   if (list != "-") {
     file.open(list, std::ios::binary);
-    if (!file) return make_error(ErrorKind::io, Location{list, 0, 0, -1}, "cannot open the --files-from list");
+    if (!file)
+      return make_error(codes::cli::files_from_unreadable, Location::whole_file(list),
+                        "cannot open the --files-from list");
   }
   std::istream& in = list == "-" ? std::cin : file;
   std::vector<std::string> paths;
@@ -111,7 +114,7 @@ Result<std::optional<pipeline::Shard>> chosen_shard(Args& args) {
   std::optional<std::size_t> shards;
   if (args.value("shards"))
     shards = static_cast<std::size_t>(args.integer("shards", 1, 1, static_cast<int>(pipeline::kMaxShards)));
-  if (!args.ok()) return make_error(ErrorKind::usage, Location{}, args.error());
+  if (!args.ok()) return make_error(codes::cli::bad_option, Location{}, args.error());
   return pipeline::shard_from_environment([](const char* name) { return std::getenv(name); }, shards);
 }
 
@@ -129,9 +132,9 @@ int run_batch(const std::vector<std::string>& argv) {
   Args args("batch", argv);
   ConvertOptions options = convert_options(args);
   const int threads = args.integer("jobs", 0, 1, 256);  // absent: one per core
-  if (!args.ok()) return usage_error("batch", args.error());
+  if (!args.ok()) return usage_error("batch", args);
   const auto out_dir = args.value("output");
-  if (!out_dir) return usage_error("batch", "missing -o DIR");
+  if (!out_dir) return usage_error("batch", codes::cli::missing_output, "missing -o DIR");
   std::vector<std::string> inputs = args.positionals();
   std::optional<std::vector<std::string>> listed;
   if (const auto list = args.value("files-from")) {
@@ -144,14 +147,14 @@ int run_batch(const std::vector<std::string>& argv) {
   for (const char* report : {"report", "report-json"})
     if (const auto path = args.value(report))
       if (auto writable = check_output_path(*path); !writable) return report_outcome({}, writable.error());
-  if (inputs.empty()) return usage_error("batch", "expected at least one INPUT");
+  if (inputs.empty()) return usage_error("batch", codes::cli::operands, "expected at least one INPUT");
   auto shard = chosen_shard(args);
-  if (!shard) return usage_error("batch", shard.error().message);
+  if (!shard) return usage_error("batch", shard.error());
   auto planned =
       pipeline::plan_batch(inputs, *out_dir, split_list(args.value("to").value_or("fap")), listed ? &*listed : nullptr);
   if (!planned) {
     // A usage error about a named path is reported as a diagnostic on that path.
-    if (planned.error().where.file.empty()) return usage_error("batch", planned.error().message);
+    if (planned.error().where.file.empty()) return usage_error("batch", planned.error());
     return report_outcome({}, planned.error());
   }
   const std::vector<pipeline::BatchJob> jobs = *shard ? pipeline::select_shard(*planned, **shard) : *planned;

@@ -17,11 +17,12 @@ namespace {
 
 int run_batch_report(const std::vector<std::string>& argv) {
   Args args("batch-report", argv);
-  if (!args.ok()) return usage_error("batch-report", args.error());
+  if (!args.ok()) return usage_error("batch-report", args);
   const std::vector<std::string>& operands = args.positionals();
   if (operands.empty() || operands.front() != "merge")
-    return usage_error("batch-report", "expected merge REPORT.json... (the one action so far)");
-  if (operands.size() < 2) return usage_error("batch-report", "expected at least one REPORT.json to merge");
+    return usage_error("batch-report", codes::cli::operands, "expected merge REPORT.json... (the one action so far)");
+  if (operands.size() < 2)
+    return usage_error("batch-report", codes::cli::operands, "expected at least one REPORT.json to merge");
   std::vector<pipeline::ReportText> reports;
   for (std::size_t i = 1; i < operands.size(); ++i) {
     auto text = read_file_bytes(operands[i]);

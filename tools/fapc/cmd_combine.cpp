@@ -42,11 +42,12 @@ int print_state(const Value& value, const Args& args) {
 int run_combine(const std::vector<std::string>& argv) {
   Args args("combine", argv);
   const ConvertOptions options = convert_options(args);
-  if (!args.ok()) return usage_error("combine", args.error());
-  if (args.positionals().size() != 1) return usage_error("combine", "expected one EXPRESSION (quote it)");
+  if (!args.ok()) return usage_error("combine", args);
+  if (args.positionals().size() != 1)
+    return usage_error("combine", codes::cli::operands, "expected one EXPRESSION (quote it)");
   const bool states = args.flag("states");
   const auto output = args.value("output");
-  if (!states && !output) return usage_error("combine", "missing -o OUTPUT (or --states)");
+  if (!states && !output) return usage_error("combine", codes::cli::missing_output, "missing -o OUTPUT (or --states)");
   Diagnostics warnings;
   Result<Value> value = pipeline::evaluate_combination(args.positionals().front(), "", options, warnings);
   if (!value) return report_outcome(warnings, value.error());
@@ -56,7 +57,7 @@ int run_combine(const std::vector<std::string>& argv) {
   loaded.origin = "<expression>";  // what errors about the frames name, as expression errors do
   loaded.frames = pipeline::frames_of(*value, options.fps, std::filesystem::path(*output).stem().string());
   const std::string to = output_kind(args, *output);
-  if (!args.ok()) return usage_error("combine", args.error());
+  if (!args.ok()) return usage_error("combine", args);
   const pipeline::ConvertResult result = pipeline::write_outputs(std::move(loaded), {{*output, to}}, options);
   const int status = report_outcome({}, result.error);
   if (status == kExitOk && *output == "-" && !write_standard_output(result.standard_output)) return kExitBadInput;

@@ -15,15 +15,16 @@ namespace {
 int run_encode(const std::vector<std::string>& argv) {
   Args args("encode", argv);
   ConvertOptions options = convert_options(args);
-  if (!args.ok()) return usage_error("encode", args.error());
-  if (args.positionals().size() != 1) return usage_error("encode", "expected one input file");
+  if (!args.ok()) return usage_error("encode", args);
+  if (args.positionals().size() != 1) return usage_error("encode", codes::cli::operands, "expected one input file");
   const auto output = args.value("output");
-  if (!output) return usage_error("encode", "missing -o OUT.fba");
+  if (!output) return usage_error("encode", codes::cli::missing_output, "missing -o OUT.fba");
   // An output that cannot be written is refused before the work (it is checked again when written).
   if (auto writable = check_output_path(*output); !writable) return report_outcome({}, writable.error());
   std::string input = args.positionals().front();
   StandardInputCopy copy;
-  if (const auto error = resolve_input(args, input, options, copy)) return usage_error("encode", *error);
+  if (const auto error = resolve_input(args, input, options, copy))
+    return usage_error("encode", codes::cli::standard_input, *error);
 
   auto loaded = pipeline::load(input, options);
   if (!loaded) return report_outcome({}, loaded.error());

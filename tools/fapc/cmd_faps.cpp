@@ -15,8 +15,8 @@ namespace {
 
 int run_faps(const std::vector<std::string>& argv) {
   Args args("faps", argv);
-  if (!args.ok()) return usage_error("faps", args.error());
-  if (!args.positionals().empty()) return usage_error("faps", "takes no operands");
+  if (!args.ok()) return usage_error("faps", args);
+  if (!args.positionals().empty()) return usage_error("faps", codes::cli::operands, "takes no operands");
   if (args.flag("json")) {
     nlohmann::ordered_json out = nlohmann::ordered_json::array();
     for (const FapInfo& f : fap_table()) {

@@ -38,8 +38,8 @@ void print_table(const char* title, const std::vector<Format>& table) {
 
 int run_formats(const std::vector<std::string>& argv) {
   Args args("formats", argv);
-  if (!args.ok()) return usage_error("formats", args.error());
-  if (!args.positionals().empty()) return usage_error("formats", "takes no operands");
+  if (!args.ok()) return usage_error("formats", args);
+  if (!args.positionals().empty()) return usage_error("formats", codes::cli::operands, "takes no operands");
   const pipeline::Registry& registry = pipeline::formats();
   if (args.flag("json")) {
     nlohmann::ordered_json out = {{"inputs", nlohmann::ordered_json::array()},

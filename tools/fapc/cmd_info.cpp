@@ -80,11 +80,12 @@ void print_text(const nlohmann::ordered_json& info) {
 int run_info(const std::vector<std::string>& argv) {
   Args args("info", argv);
   ConvertOptions parsed = convert_options(args);
-  if (!args.ok()) return usage_error("info", args.error());
-  if (args.positionals().size() != 1) return usage_error("info", "expected one FILE");
+  if (!args.ok()) return usage_error("info", args);
+  if (args.positionals().size() != 1) return usage_error("info", codes::cli::operands, "expected one FILE");
   std::string input = args.positionals().front();
   StandardInputCopy copy;
-  if (const auto error = resolve_input(args, input, parsed, copy)) return usage_error("info", *error);
+  if (const auto error = resolve_input(args, input, parsed, copy))
+    return usage_error("info", codes::cli::standard_input, *error);
   auto info = pipeline::describe(input, parsed.limits, parsed.input_kind);
   if (!info) {
     if (args.flag("json")) std::cout << pipeline::error_document(info.error()).dump(2) << '\n';

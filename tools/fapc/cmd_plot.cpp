@@ -20,20 +20,22 @@ namespace {
 int run_plot(const std::vector<std::string>& argv) {
   Args args("plot", argv);
   ConvertOptions options = convert_options(args);
-  if (!args.ok()) return usage_error("plot", args.error());
-  if (args.positionals().size() != 1) return usage_error("plot", "expected one INPUT");
+  if (!args.ok()) return usage_error("plot", args);
+  if (args.positionals().size() != 1) return usage_error("plot", codes::cli::operands, "expected one INPUT");
   const auto output = args.value("output");
-  if (!output) return usage_error("plot", "missing -o OUT (.svg, .png, .pdf or .csv)");
+  if (!output) return usage_error("plot", codes::cli::missing_output, "missing -o OUT (.svg, .png, .pdf or .csv)");
   // --to names the kind as an extension would; -o - without it is SVG.
   const std::string to = output_kind(args, *output, *output == "-" ? "svg" : "");
   pipeline::PlotKind kind{};
   if (!pipeline::plot_kind_for(to.empty() ? *output : "x." + to, kind))
-    return usage_error("plot", "the output must be .svg, .png, .pdf or .csv: '" + (to.empty() ? *output : to) + "'");
+    return usage_error("plot", codes::cli::output_kind,
+                       "the output must be .svg, .png, .pdf or .csv: '" + (to.empty() ? *output : to) + "'");
   // An output that cannot be written is refused before the work (it is checked again when written).
   if (auto writable = check_output_path(*output); !writable) return report_outcome({}, writable.error());
   std::string input = args.positionals().front();
   StandardInputCopy copy;
-  if (const auto error = resolve_input(args, input, options, copy)) return usage_error("plot", *error);
+  if (const auto error = resolve_input(args, input, options, copy))
+    return usage_error("plot", codes::cli::standard_input, *error);
 
   // A .csv is the frames as a table; the other plots draw a script's curves, or the frames of an
   // input without a timeline (which always has them).

@@ -27,8 +27,8 @@ bool validate_one(const std::string& path, const std::string& named) {
 
 int run_validate(const std::vector<std::string>& argv) {
   Args args("validate", argv);
-  if (!args.ok()) return usage_error("validate", args.error());
-  if (args.positionals().empty()) return usage_error("validate", "expected at least one FILE");
+  if (!args.ok()) return usage_error("validate", args);
+  if (args.positionals().empty()) return usage_error("validate", codes::cli::operands, "expected at least one FILE");
   bool all_valid = true;
   StandardInputCopy copy;
   for (const std::string& path : args.positionals()) {

@@ -19,14 +19,15 @@ namespace {
 int run_verify(const std::vector<std::string>& argv) {
   Args args("verify", argv);
   ConvertOptions options = convert_options(args);
-  if (!args.ok()) return usage_error("verify", args.error());
-  if (args.positionals().empty()) return usage_error("verify", "expected at least one FILE");
+  if (!args.ok()) return usage_error("verify", args);
+  if (args.positionals().empty()) return usage_error("verify", codes::cli::operands, "expected at least one FILE");
   int status = kExitOk;
   std::vector<nlohmann::ordered_json> results;
   StandardInputCopy copy;
   for (const std::string& path : args.positionals()) {
     std::string input = path;
-    if (const auto error = resolve_input(args, input, options, copy)) return usage_error("verify", *error);
+    if (const auto error = resolve_input(args, input, options, copy))
+      return usage_error("verify", codes::cli::standard_input, *error);
     const pipeline::VerifyResult verified = pipeline::verify(input, options);
     const int file_status = report_outcome(verified.warnings, verified.error);
     status = worse_status(status, file_status);

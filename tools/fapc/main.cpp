@@ -31,7 +31,9 @@ int unknown_command(const std::string& name, const std::vector<std::string>& arg
     for (std::size_t i = 1; i < args.size(); ++i) hint += " " + args[i];
     hint += "?";
   }
-  std::cerr << "fapc: unknown command '" << name << "'" << hint << " (try fapc --help)\n";
+  std::cerr << "fapc: ";
+  if (verbosity() == Verbosity::verbose) std::cerr << "error[" << fapc::codes::cli::unknown_command.name << "]: ";
+  std::cerr << "unknown command '" << name << "'" << hint << " (try fapc --help)\n";
   return kExitUsage;
 }
 

@@ -42,7 +42,8 @@ ConvertOptions convert_options(Args& args) {
     const auto value = args.value(name);
     if (!value) return true;
     if (*value != first && *value != second) {
-      args.fail(std::string("--") + name + " takes " + first + " or " + second + ", not '" + *value + "'");
+      args.fail(codes::cli::bad_option_value,
+                std::string("--") + name + " takes " + first + " or " + second + ", not '" + *value + "'");
       return false;
     }
     into = *value;
@@ -55,7 +56,7 @@ ConvertOptions convert_options(Args& args) {
     char x = 0, rest = 0;
     if (std::sscanf(size->c_str(), "%d%c%d%c", &w, &x, &h, &rest) != 3 || x != 'x' || w < 16 || h < 16 || w > 7680 ||
         h > 7680) {
-      args.fail("--size takes WIDTHxHEIGHT, each 16 to 7680 pixels, not '" + *size + "'");
+      args.fail(codes::cli::bad_option_value, "--size takes WIDTHxHEIGHT, each 16 to 7680 pixels, not '" + *size + "'");
       return options;
     }
     options.picture.width = w;
@@ -67,7 +68,7 @@ ConvertOptions convert_options(Args& args) {
   options.picture.points = args.flag("points");
   if (const auto view = args.value("view")) {
     if (*view != "2d" && *view != "3d" && *view != "both") {
-      args.fail("--view takes 2d, 3d or both, not '" + *view + "'");
+      args.fail(codes::cli::bad_option_value, "--view takes 2d, 3d or both, not '" + *view + "'");
       return options;
     }
     options.picture.view = *view;
@@ -81,15 +82,15 @@ ConvertOptions convert_options(Args& args) {
       std::vector<std::string> names;
       std::istringstream all(fap_flavour_names());
       for (std::string name; std::getline(all, name, '|');) names.push_back(name);
-      args.fail("--fap-flavour takes " + fap_flavour_names() + ", not '" + *flavour + "'" +
-                did_you_mean(*flavour, names));
+      args.fail(codes::cli::bad_option_value, "--fap-flavour takes " + fap_flavour_names() + ", not '" + *flavour +
+                                                  "'" + did_you_mean(*flavour, names));
     }
     options.fap_flavour = known.value_or(FapFlavour::safe);
   }
   for (const std::string& event : args.values("event")) {
     const auto eq = event.find('=');
     if (eq == std::string::npos || eq == 0) {
-      args.fail("--event takes NAME=VALUE, not '" + event + "'");
+      args.fail(codes::cli::bad_option_value, "--event takes NAME=VALUE, not '" + event + "'");
       return options;
     }
     options.events[event.substr(0, eq)] = event.substr(eq + 1);

@@ -33,13 +33,15 @@ void report(const Diagnostic& d) {
     // -v shows every warning; otherwise the first few of each code.
     if (!d.code.empty() && ++seen_per_code[d.code] > kMaxShownPerCode && level != Verbosity::verbose) return;
   }
+  // -v names each diagnostic's code ("error[fba.truncated]: "), as docs/errors.md lists them.
+  const ShowCode show = level == Verbosity::verbose ? ShowCode::yes : ShowCode::no;
   if (const auto alias = shown_names.find(d.where.file); alias != shown_names.end()) {
     Diagnostic renamed = d;
     renamed.where.file = alias->second;
-    std::cerr << render_with_caret(renamed) << '\n';
+    std::cerr << render_with_caret(renamed, show) << '\n';
     return;
   }
-  std::cerr << render_with_caret(d) << '\n';
+  std::cerr << render_with_caret(d, show) << '\n';
 }
 
 void show_file_as(const std::string& path, const std::string& shown) {

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <system_error>
 
+#include "fapc/cli_codes.hpp"
 #include "fapc/pipeline/registry.hpp"
 #include "fapc/report.hpp"
 
@@ -50,7 +51,7 @@ std::optional<std::string> resolve_input(Args& args, std::string& operand, pipel
 std::string output_kind(Args& args, const std::string& output, const std::string& default_kind) {
   const auto to = args.value("to");
   if (!to) {
-    if (output == "-" && default_kind.empty()) args.fail("-o - needs --to KIND");
+    if (output == "-" && default_kind.empty()) args.fail(codes::cli::bad_option_value, "-o - needs --to KIND");
     return default_kind;
   }
   return *to;  // an unknown kind is the writer's error (unsupported, with the closest kinds)
@@ -61,7 +62,7 @@ bool write_standard_output(const std::string& bytes) {
   std::cout.flush();
   if (std::cout) return true;
   report(make_error(
-      ErrorKind::io, Location{"<standard output>", 0, 0, -1},
+      codes::cli::standard_output_closed, Location::whole_file("<standard output>"),
       std::string("cannot write: ") + std::strerror(errno ? errno : EPIPE) + " (the reading end of the pipe closed)"));
   return false;
 }

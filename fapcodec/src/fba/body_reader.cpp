@@ -10,13 +10,16 @@ Status BodyReader::read_intra_header() {
     if (auto status = c_.read_marker("before a BAP mask type"); !status) return status;
     const std::int64_t type_byte = c_.in.byte_offset();
     const auto type = c_.in.read_bits(kMaskTypeBits);
-    if (type == kMaskListedInterpolate) return c_.error_at(type_byte, "BAP mask type 10 is not defined");
+    if (type == kMaskListedInterpolate)
+      return c_.error_at(codes::fba::undefined_bap_mask, type_byte, "BAP mask type 10 is not defined");
     for (int j = 0; j < size; ++j, ++at)
       state_.mask[at] = type == kMaskAll || (type == kMaskListed && c_.in.read_bit());
   }
   c_.in.read_bit();  // fba_suggested_gender
   const std::int64_t coding_type_byte = c_.in.byte_offset();
-  if (c_.in.read_bit() == 1) return c_.error_at(coding_type_byte, "BAP coding type 1 (DCT segments) is not supported");
+  if (c_.in.read_bit() == 1)
+    return c_.error_at(codes::fba::dct_unsupported, coding_type_byte,
+                       "BAP coding type 1 (DCT segments) is not supported");
   bool present[kRangeListCount];
   for (bool& flag : present) flag = c_.in.read_bit() == 1;
   for (int list = 0; list < kRangeListCount; ++list) {
@@ -40,7 +43,8 @@ Status BodyReader::read_intra_header() {
     if (!state_.mask[b]) continue;
     for (const auto& set : state_.range_set)
       if (!set[b])
-        return c_.error_here("a masked BAP has no signalled range (body streams must send all four range lists)");
+        return c_.error_here(codes::fba::bap_range_missing,
+                             "a masked BAP has no signalled range (body streams must send all four range lists)");
     state_.pred_models[b].reset(state_.range[kPredMax][b] - state_.range[kPredMin][b] + 1);
   }
   state_.started = true;
@@ -51,7 +55,8 @@ Status BodyReader::skip(bool intra) {
   if (intra) {
     if (auto status = read_intra_header(); !status) return status;
   } else if (!state_.started) {
-    return c_.error_here("a predictive body plane comes before the first intra body plane");
+    return c_.error_here(codes::fba::predictive_before_intra,
+                         "a predictive body plane comes before the first intra body plane");
   }
   c_.coder.start();
   for (std::size_t b = 0; b < kBapCount; ++b) {

@@ -45,7 +45,7 @@ Status FaceReader::read_intra_header() {
   c_.in.read_bit();  // fba_suggested_gender: no effect on decoding
   const std::int64_t coding_type_byte = c_.in.byte_offset();
   if (c_.in.read_bit() == 1)
-    return c_.error_at(coding_type_byte,
+    return c_.error_at(codes::fba::dct_unsupported, coding_type_byte,
                        "FAP coding type 1 (DCT segments) is not supported: no public description of "
                        "its code tables exists");
   bool present[kRangeListCount];
@@ -123,7 +123,9 @@ Status FaceReader::read_values(bool intra, FapFrame& frame) {
     });
   }
   if (auto status = c_.finish_segment("FAP"); !status) return status;
-  if (overflow) return c_.error_at(segment_byte, "a decoded FAP value overflows 32 bits (corrupt stream?)");
+  if (overflow)
+    return c_.error_at(codes::fba::value_overflow, segment_byte,
+                       "a decoded FAP value overflows 32 bits (corrupt stream?)");
   return ok_status();
 }
 

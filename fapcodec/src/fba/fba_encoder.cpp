@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 
+#include "fapc/codec/codes.hpp"
 #include "fapc/codec/fba.hpp"
 #include "fba/gop_planner.hpp"
 #include "fba/mask_fitter.hpp"
@@ -15,8 +16,9 @@ namespace {
 // Longer gaps would cost 4 bits per 15 frames for nothing; a gap this long is a broken input.
 
 // An error about FAP `fap` of `frame`, placed where the caller says the frame came from.
-Diagnostic input_error(const FbaEncodeOptions& options, const FapFrame& frame, int fap, const std::string& message) {
-  return make_error(options.locate ? options.locate(frame.number, fap) : Location{},
+Diagnostic input_error(ErrorCode code, const FbaEncodeOptions& options, const FapFrame& frame, int fap,
+                       const std::string& message) {
+  return make_error(code, options.locate ? options.locate(frame.number, fap) : Location{},
                     "frame " + std::to_string(frame.number) + ": " + message);
 }
 
@@ -45,21 +47,25 @@ Status check_fields(const FbaEncodeOptions& options, const FapFrame& f) {
   };
   for (const Field& field : fields)
     if (field.present && (field.value < 0 || field.value > field.high))
-      return input_error(options, f, field.fap, outside(field.name, field.value, field.high));
+      return input_error(codes::fba::field_out_of_range, options, f, field.fap,
+                         outside(field.name, field.value, field.high));
   return ok_status();
 }
 
 Status check_options(const FbaEncodeOptions& options) {
   if (options.quant < 0 || options.quant > fba::kMaxFapQuant)
-    return make_error(Location{}, "fap_quant must be 0..31, not " + std::to_string(options.quant));
-  if (options.intra_period < 0) return make_error(Location{}, "the intra period must not be negative");
+    return make_error(codes::fba::bad_quant, Location{},
+                      "fap_quant must be 0..31, not " + std::to_string(options.quant));
+  if (options.intra_period < 0)
+    return make_error(codes::fba::bad_intra_period, Location{}, "the intra period must not be negative");
   return ok_status();
 }
 
 Status check_rate(int fps) {
   if (fps < 1 || fps >= (1 << fba::kFrameRateBits))
-    return make_error(Location{}, "frame rate " + std::to_string(fps) +
-                                      " cannot be coded (the stream carries 1 to 255 frames per second)");
+    return make_error(
+        codes::fba::frame_rate_not_codable, Location{},
+        "frame rate " + std::to_string(fps) + " cannot be coded (the stream carries 1 to 255 frames per second)");
   return ok_status();
 }
 
@@ -114,7 +120,8 @@ Status FbaEncoder::check(const FapFrame& frame) {
   if (!s.setup) return s.setup;
   if (s.checked == 0) s.first_number = frame.number;
   if (s.checked > 0) {
-    if (frame.number - s.previous_number - 1 < 0) return input_error(s.options, frame, 0, "frame numbers must ascend");
+    if (frame.number - s.previous_number - 1 < 0)
+      return input_error(codes::fba::frames_not_ascending, s.options, frame, 0, "frame numbers must ascend");
     // Gaps cost 4 bits per 15 skipped frames; the span bounds them all.
     if (frame.number - s.first_number >= s.options.max_frames) {
       Limits limits;
@@ -135,9 +142,10 @@ Status FbaEncoder::check(const FapFrame& frame) {
 Status FbaEncoder::add(const FapFrame& frame) {
   State& s = *state_;
   if (!s.setup) return s.setup;
-  if (!s.writer) return make_error(ErrorKind::usage, Location{}, "FbaEncoder: a frame added before start()");
+  if (!s.writer) return make_error(codes::fba::encoder_misuse, Location{}, "FbaEncoder: a frame added before start()");
   if (s.added >= s.checked)
-    return make_error(ErrorKind::usage, Location{}, "FbaEncoder: a frame added that the first pass did not check");
+    return make_error(codes::fba::encoder_misuse, Location{},
+                      "FbaEncoder: a frame added that the first pass did not check");
   if (s.masks && !s.fitter) s.fitter.emplace(std::move(*s.masks).finish());
   if (s.added == 0) s.writer->reserve(s.checked);  // a plane a frame
   ++s.added;
@@ -154,9 +162,9 @@ Status FbaEncoder::add(const FapFrame& frame) {
 Result<EncodedFba> FbaEncoder::finish() {
   State& s = *state_;
   if (!s.setup) return s.setup.error();
-  if (!s.writer) return make_error(ErrorKind::usage, Location{}, "FbaEncoder: finished before start()");
+  if (!s.writer) return make_error(codes::fba::encoder_misuse, Location{}, "FbaEncoder: finished before start()");
   if (s.added != s.checked)
-    return make_error(ErrorKind::usage, Location{},
+    return make_error(codes::fba::encoder_misuse, Location{},
                       "FbaEncoder: the second pass added fewer frames than the first checked");
   if (auto status = s.write_groups(true); !status) return status.error();
   return s.writer->finish();

@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 
+#include "fapc/codec/codes.hpp"
 #include "fapc/codec/fba.hpp"
 #include "fba/fba_quant.hpp"
 #include "fba/shown_values.hpp"
@@ -11,8 +12,8 @@ namespace fapc {
 
 namespace {
 
-Diagnostic failure(const std::string& file, const std::string& message) {
-  return make_error(ErrorKind::verification_failed, Location{file, 0, 0, -1}, "verification failed: " + message);
+Diagnostic failure(ErrorCode code, const std::string& file, const std::string& message) {
+  return make_error(code, Location::whole_file(file), "verification failed: " + message);
 }
 
 std::string at_frame(const FapFrame& frame) { return "frame " + std::to_string(frame.number) + ": "; }
@@ -104,18 +105,22 @@ Status verify_fba(std::size_t count, int fps, const FbaInputFrames& next, const 
       if (auto status = again.check(out); !status) again_error = status.error();
     return ok_status();
   });
-  if (!decoded) return failure(file, "the stream does not decode: " + format_diagnostic(decoded.error()));
+  if (!decoded)
+    return failure(codes::verify::fba_does_not_decode, file,
+                   "the stream does not decode: " + format_diagnostic(decoded.error()));
   if (decoded_frames != count)
-    return failure(file, std::to_string(decoded_frames) + " frames decoded, " + std::to_string(count) + " encoded");
+    return failure(codes::verify::fba_differs, file,
+                   std::to_string(decoded_frames) + " frames decoded, " + std::to_string(count) + " encoded");
   // The rate travels in intra planes, so a stream without planes has none.
   if (count > 0 && decoded->sequence.fps != fps)
     return failure(
-        file, "frame rate " + std::to_string(decoded->sequence.fps) + " decoded, " + std::to_string(fps) + " encoded");
-  if (!first_difference.empty()) return failure(file, first_difference);
+        codes::verify::fba_differs, file,
+        "frame rate " + std::to_string(decoded->sequence.fps) + " decoded, " + std::to_string(fps) + " encoded");
+  if (!first_difference.empty()) return failure(codes::verify::fba_differs, file, first_difference);
   // Second decoding: the frames coded again (as encode_fba would: the rate first, then every
   // frame checked, then added), and the bytes compared.
   const auto not_again = [&](const Diagnostic& error) {
-    return failure(file, "the decoded frames do not encode again: " + error.message);
+    return failure(codes::verify::fba_differs, file, "the decoded frames do not encode again: " + error.message);
   };
   if (auto started = again.start(decoded->sequence.fps); !started) return not_again(started.error());
   if (again_error) return not_again(*again_error);
@@ -124,14 +129,17 @@ Status verify_fba(std::size_t count, int fps, const FbaInputFrames& next, const 
       if (auto status = again.add(out); !status) again_error = status.error();
     return ok_status();
   });
-  if (!redecoded) return failure(file, "the stream does not decode: " + format_diagnostic(redecoded.error()));
+  if (!redecoded)
+    return failure(codes::verify::fba_does_not_decode, file,
+                   "the stream does not decode: " + format_diagnostic(redecoded.error()));
   if (again_error) return not_again(*again_error);
   auto bytes = again.finish();
   if (!bytes) return not_again(bytes.error());
   if (bytes->bytes != encoded.bytes) {
     std::size_t at = 0;
     while (at < bytes->bytes.size() && at < encoded.bytes.size() && bytes->bytes[at] == encoded.bytes[at]) ++at;
-    return failure(file, "re-encoding the decoded frames gives different bytes from byte " + std::to_string(at));
+    return failure(codes::verify::fba_differs, file,
+                   "re-encoding the decoded frames gives different bytes from byte " + std::to_string(at));
   }
   return ok_status();
 }

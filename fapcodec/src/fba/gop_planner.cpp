@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "fapc/codec/codes.hpp"
 #include "fba/fba_quant.hpp"
 #include "fba/level_rule.hpp"
 
@@ -62,7 +63,7 @@ Status GopPlanner::check_intra(const Gop& gop) const {
     if (within(nearest_[j])) continue;
     const int fap = gop.faps[j];
     const FapInfo& info = fap_table()[FaceState::index(fap)];
-    return make_error(options_.locate ? options_.locate(frame.number, fap) : Location{},
+    return make_error(codes::fba::value_beyond_range, options_.locate ? options_.locate(frame.number, fap) : Location{},
                       "frame " + std::to_string(frame.number) + ": FAP " + std::to_string(fap) + " (" +
                           std::string(info.name) + ") value " + std::to_string(frame.value(fap)) +
                           " is beyond the largest range the bitstream carries (+-" +

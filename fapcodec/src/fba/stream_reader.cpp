@@ -42,12 +42,14 @@ Status StreamReader::read_stream_headers() {
     const std::int64_t type_byte = c_.in.byte_offset();
     const auto type = c_.in.read_bits(kVisualObjectTypeBits);
     if (type != kVisualObjectTypeFba)
-      return c_.error_at(type_byte, "visual object type " + std::to_string(type) + " is not FBA (4)");
+      return c_.error_at(codes::fba::not_fba_object, type_byte,
+                         "visual object type " + std::to_string(type) + " is not FBA (4)");
     // next_start_code(): a 0, then 1s to the byte boundary.
     const std::int64_t stuffing_byte = c_.in.byte_offset();
     bool stuffing_ok = c_.in.read_bit() == 0;
     while (!c_.in.aligned()) stuffing_ok = c_.in.read_bit() == 1 && stuffing_ok;
-    if (!stuffing_ok) return c_.error_at(stuffing_byte, "bad stuffing after the visual object header");
+    if (!stuffing_ok)
+      return c_.error_at(codes::fba::bad_stuffing, stuffing_byte, "bad stuffing after the visual object header");
     out_.info.visual_object_header = true;
     skip_user_data();
   }
@@ -55,7 +57,8 @@ Status StreamReader::read_stream_headers() {
   const std::uint32_t code = c_.in.read_bits(kStartCodeBits);
   if (auto status = c_.check_inside("the stream header"); !status) return status;
   if (code != kFbaObjectStartCode && code != kLegacyObjectStartCode)
-    return c_.error_at(byte, "expected the FBA object start code 0x000001BA, found " + hex_code(code));
+    return c_.error_at(codes::fba::no_object_start, byte,
+                       "expected the FBA object start code 0x000001BA, found " + hex_code(code));
   return ok_status();
 }
 
@@ -89,7 +92,8 @@ Result<StreamReader::Next> StreamReader::next_part() {
     ++out_.info.plane_start_codes;
     return Next::plane;
   }
-  return c_.error_at(code_byte, "unexpected start code " + hex_code(code) + " inside the FBA object");
+  return c_.error_at(codes::fba::unexpected_start_code, code_byte,
+                     "unexpected start code " + hex_code(code) + " inside the FBA object");
 }
 
 void StreamReader::set_frame_rate(double rate) {
@@ -99,7 +103,7 @@ void StreamReader::set_frame_rate(double rate) {
     info.frame_rate_sent = true;
   } else if (rate != info.frame_rate && !rate_change_warned_) {
     out_.warnings.push_back(
-        make_warning({"fba.frame_rate_change"}, Location::binary(c_.file, c_.in.byte_offset()),
+        make_warning(codes::fba::frame_rate_change, Location::binary(c_.file, c_.in.byte_offset()),
                      "the frame rate changes to " + std::to_string(rate) + "; frames keep counting at the first rate"));
     rate_change_warned_ = true;
   }
@@ -113,7 +117,8 @@ Status StreamReader::read_temporal_header(bool intra, TemporalHeader& header) {
     const bool ntsc = c_.in.read_bit() == 1;  // 1000/1001 in floating point (D7)
     const double value = (rate + sixteenths / 16.0) * (ntsc ? 1000.0 / 1001.0 : 1.0);
     if (value < 0.5)
-      return c_.error_at(byte, "frame rate " + std::to_string(value) + " is below 0.5 frames per second");
+      return c_.error_at(codes::fba::frame_rate_too_low, byte,
+                         "frame rate " + std::to_string(value) + " is below 0.5 frames per second");
     set_frame_rate(value);
   }
   if (intra && c_.in.read_bit() == 1) {  // is_time_code
@@ -159,7 +164,8 @@ Status StreamReader::read_plane() {
   const bool intra = c_.in.read_bit() == 1;
   const auto object_mask = c_.in.read_bits(kObjectMaskBits);
   if (object_mask == 0)
-    return c_.error_at(start_byte, "plane with fba_object_mask 00 (neither face nor body data; corrupt stream?)");
+    return c_.error_at(codes::fba::empty_plane_mask, start_byte,
+                       "plane with fba_object_mask 00 (neither face nor body data; corrupt stream?)");
   TemporalHeader header;
   if (auto status = read_temporal_header(intra, header); !status) return status;
   ++out_.info.planes;
@@ -171,13 +177,14 @@ Status StreamReader::read_plane() {
     if (intra) {
       if (auto status = reader.read_intra_header(); !status) return status;
     } else if (!face_.started) {
-      return c_.error_at(start_byte, "a predictive face plane comes before the first intra plane");
+      return c_.error_at(codes::fba::predictive_before_intra, start_byte,
+                         "a predictive face plane comes before the first intra plane");
     }
     if (auto status = reader.read_values(intra, frame); !status) return status;
   }
   if (object_mask & kObjectMaskBody) {
     if (!body_warned_) {
-      out_.warnings.push_back(make_warning({"fba.body_ignored"}, Location::binary(c_.file, start_byte),
+      out_.warnings.push_back(make_warning(codes::fba::body_ignored, Location::binary(c_.file, start_byte),
                                            "body animation (BAP) data is parsed and ignored: fapc handles faces only"));
       body_warned_ = true;
     }
@@ -191,7 +198,8 @@ Status StreamReader::read_plane() {
   const auto rate = info.frame_rate;
   frame.number = header.time_code ? std::llround(static_cast<double>(header.time_code_seconds) * rate) : next_number_;
   if (any_frame_ && frame.number <= last_number_)
-    return c_.error_at(start_byte, "the time code goes back to frame " + std::to_string(frame.number));
+    return c_.error_at(codes::fba::time_code_backwards, start_byte,
+                       "the time code goes back to frame " + std::to_string(frame.number));
   // The frames the planes span so far, this one's skips included: a decoded sequence is written
   // gap-filled (.fap) and re-encoded, so skips count like frames (Limits::max_frames). Skips grow
   // by at most 255 per byte and time codes stay below 2^27 frames: no overflow here.
@@ -236,17 +244,17 @@ Result<DecodedFba> StreamReader::run() {
   }
   if (!c_.in.at_end())
     out_.warnings.push_back(
-        make_warning({"fba.trailing_bytes"}, Location::binary(c_.file, c_.in.byte_offset()),
+        make_warning(codes::fba::trailing_bytes, Location::binary(c_.file, c_.in.byte_offset()),
                      std::to_string(c_.in.size_bits() / 8 - static_cast<std::size_t>(c_.in.byte_offset())) +
                          " bytes after the end code are ignored"));
   FbaStreamInfo& info = out_.info;
   if (!info.frame_rate_sent && any_frame_)
-    out_.warnings.push_back(make_warning({"fba.no_frame_rate"}, Location::binary(c_.file, 0),
+    out_.warnings.push_back(make_warning(codes::fba::no_frame_rate, Location::binary(c_.file, 0),
                                          "the stream never gives its frame rate; assuming 30 frames per second"));
   out_.sequence.fps = static_cast<int>(std::lround(info.frame_rate));
   if (std::abs(info.frame_rate - out_.sequence.fps) > 1e-9)
     out_.warnings.push_back(make_warning(
-        {"fba.frame_rate_rounded"}, Location::binary(c_.file, 0),
+        codes::fba::frame_rate_rounded, Location::binary(c_.file, 0),
         "frame rate " + std::to_string(info.frame_rate) + " rounded to " + std::to_string(out_.sequence.fps)));
   return std::move(out_);
 }

@@ -13,7 +13,7 @@ Result<std::optional<mpeg4::AudioTrackInput>> pack_audio_track(const AudioTrack&
   std::size_t length = audio.samples.size();
   const double face_end = std::round((face_seconds - audio.start) * audio.sample_rate);
   if (face_end > static_cast<double>(limits.max_audio_samples))
-    return limit_error(Location{where, 0, 0, -1},
+    return limit_error(Location::whole_file(where),
                        "the voice track would run to the face's end, " +
                            std::to_string(static_cast<std::int64_t>(face_end)) + " samples at " +
                            std::to_string(audio.sample_rate) + " Hz",
@@ -39,7 +39,7 @@ Result<std::optional<mpeg4::AudioTrackInput>> pack_audio_track(const AudioTrack&
 
 Result<AudioTrack> unpack_audio_track(const mpeg4::AudioTrackInput& track, const std::string& where,
                                       const Limits& limits) {
-  const Location at{where, 0, 0, -1};
+  const Location at = Location::whole_file(where);
   if (static_cast<double>(track.length) > static_cast<double>(limits.max_audio_samples))
     return limit_error(at, "the audio track holds " + std::to_string(track.length) + " samples", Limit::audio_samples,
                        limits);

@@ -12,6 +12,7 @@
 
 #include "fapc/pipeline/batch_merge.hpp"
 #include "fapc/pipeline/batch_resume.hpp"
+#include "fapc/pipeline/codes.hpp"
 #include "fapc/pipeline/json_access.hpp"
 #include "fapc/pipeline/json_output.hpp"
 #include "fapc/speech/engine.hpp"
@@ -22,7 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-Diagnostic usage(const std::string& message) { return make_error(ErrorKind::usage, Location{}, message); }
+Diagnostic usage(ErrorCode code, const std::string& message) { return make_error(code, Location{}, message); }
 
 std::string without_input_extension(const std::string& path) {
   if (const InputFormat* format = formats().input_for(path))
@@ -49,15 +50,17 @@ Result<std::vector<std::string>> listed_files(const std::string& base, const fs:
     fs::path relative = fs::path(entry).lexically_normal();
     if (relative.is_absolute()) {
       const fs::path canonical = fs::weakly_canonical(relative);
-      if (!contains(canonical_base, canonical)) return usage("listed file " + entry + " is not inside " + base);
+      if (!contains(canonical_base, canonical))
+        return usage(codes::batch::listed_outside, "listed file " + entry + " is not inside " + base);
       relative = canonical.lexically_relative(canonical_base);
     }
-    if (relative.empty() || *relative.begin() == "..") return usage("listed file " + entry + " is not inside " + base);
+    if (relative.empty() || *relative.begin() == "..")
+      return usage(codes::batch::listed_outside, "listed file " + entry + " is not inside " + base);
     std::error_code ec;
     if (!fs::is_regular_file(fs::path(base) / relative, ec))
-      return usage("listed file " + entry + " is not a file under " + base);
+      return usage(codes::batch::listed_outside, "listed file " + entry + " is not a file under " + base);
     if (contains(out_folder, canonical_base / relative))
-      return usage("listed file " + entry + " is inside the output folder");
+      return usage(codes::batch::inside_output, "listed file " + entry + " is inside the output folder");
     files.push_back(relative.string());
   }
   return files;
@@ -71,16 +74,17 @@ Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs,
   std::vector<const OutputFormat*> writers;
   for (const std::string& kind : kinds) {
     const OutputFormat* writer = formats().output_named(kind);
-    if (!writer) return usage(unknown_kind_message(kind, true));
+    if (!writer) return usage(codes::batch::unknown_output_kind, unknown_kind_message(kind, true));
     writers.push_back(writer);
   }
-  if (kinds.empty()) return usage("no output kind in --to");
+  if (kinds.empty()) return usage(codes::batch::no_output_kind, "no output kind in --to");
   std::error_code ec;
   if (listed && (inputs.size() != 1 || !fs::is_directory(inputs.front(), ec)))
-    return usage("--files-from takes one folder INPUT, the one its paths are relative to (none: the current folder)");
+    return usage(codes::batch::files_from_folder,
+                 "--files-from takes one folder INPUT, the one its paths are relative to (none: the current folder)");
   // Checked here, not by the command line, so every caller gets it: the error names the file.
   if (fs::exists(out_dir, ec) && !fs::is_directory(out_dir, ec))
-    return make_error(ErrorKind::usage, Location{out_dir, 0, 0, -1},
+    return make_error(codes::batch::output_not_folder, Location::whole_file(out_dir),
                       "-o names an existing file, not a folder (batch writes into a folder)");
   const fs::path out_folder = fs::weakly_canonical(out_dir);
   struct Found {
@@ -90,9 +94,10 @@ Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs,
   };
   std::vector<Found> found;
   for (const std::string& input : inputs) {
-    if (!fs::exists(input, ec)) return usage("no such file or folder: " + input);
+    if (!fs::exists(input, ec)) return usage(codes::batch::no_such_input, "no such file or folder: " + input);
     if (!fs::is_directory(input, ec)) {
-      if (inside(input, out_folder)) return usage(input + " is inside the output folder " + out_dir);
+      if (inside(input, out_folder))
+        return usage(codes::batch::inside_output, input + " is inside the output folder " + out_dir);
       found.push_back({input, fs::path(without_input_extension(input)).filename().string(), {}});
       continue;
     }
@@ -151,10 +156,10 @@ Result<std::vector<BatchJob>> plan_batch(const std::vector<std::string>& inputs,
     for (const std::string& input : writers_of) shared += " " + input;
   }
   if (!shared.empty())
-    return usage(
-        "inputs would overwrite each other's outputs; nothing converted (rename one, or convert them "
-        "in separate runs):" +
-        shared);
+    return usage(codes::batch::outputs_collide,
+                 "inputs would overwrite each other's outputs; nothing converted (rename one, or convert them "
+                 "in separate runs):" +
+                     shared);
   return jobs;
 }
 
@@ -217,8 +222,8 @@ BatchOutcome run_job(const BatchJob& job, const ConvertOptions& options, const B
       const fs::path folder = fs::path(output.path).parent_path();
       if (!folder.empty()) folders.make(folder, ec);
       if (ec) {
-        outcome.result.error =
-            make_error(ErrorKind::io, Location{folder.string(), 0, 0, -1}, "cannot create the folder: " + ec.message());
+        outcome.result.error = make_error(codes::batch::folder_not_created, Location::whole_file(folder.string()),
+                                          "cannot create the folder: " + ec.message());
         break;
       }
     }
@@ -227,10 +232,10 @@ BatchOutcome run_job(const BatchJob& job, const ConvertOptions& options, const B
     if (run.records && outcome.result.ok())
       if (Status recorded = run.records->record(job, input_stamp); !recorded) outcome.result.error = recorded.error();
   } catch (const std::exception& e) {
-    outcome.result.error = make_error(ErrorKind::bad_input, Location{job.input, 0, 0, -1},
+    outcome.result.error = make_error(codes::batch::internal_error, Location::whole_file(job.input),
                                       std::string("internal error while converting: ") + e.what());
   } catch (...) {
-    outcome.result.error = make_error(ErrorKind::bad_input, Location{job.input, 0, 0, -1},
+    outcome.result.error = make_error(codes::batch::internal_error, Location::whole_file(job.input),
                                       "internal error while converting (unknown exception)");
   }
   return finish();

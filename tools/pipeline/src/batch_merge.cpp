@@ -5,6 +5,7 @@
 #include <set>
 
 #include "fapc/codec/xml_escape.hpp"
+#include "fapc/pipeline/codes.hpp"
 #include "fapc/pipeline/json_access.hpp"
 #include "fapc/pipeline/json_output.hpp"
 
@@ -28,7 +29,8 @@ std::string job_key(const json& job) {
 }
 
 Diagnostic not_a_report(const std::string& path, const std::string& why) {
-  return make_error(ErrorKind::bad_input, Location{path, 0, 0, -1}, "not a fapc batch report (docs/json.md): " + why);
+  return make_error(codes::batch::not_a_report, Location::whole_file(path),
+                    "not a fapc batch report (docs/json.md): " + why);
 }
 
 // The report's shape as far as the merge relies on it.
@@ -50,7 +52,7 @@ std::optional<std::string> shape_problem(const json& report) {
 }  // namespace
 
 Result<MergedReport> merge_batch_reports(const std::vector<ReportText>& reports) {
-  if (reports.empty()) return make_error(ErrorKind::usage, Location{}, "no report to merge");
+  if (reports.empty()) return make_error(codes::batch::no_report, Location{}, "no report to merge");
   std::optional<std::size_t> shard_count, planned;
   std::set<std::size_t> shards_seen;
   std::map<std::string, json> best;  // by job key, in the order jobs are dealt
@@ -60,7 +62,7 @@ Result<MergedReport> merge_batch_reports(const std::vector<ReportText>& reports)
     try {
       report = json::parse(file.text);
     } catch (const json::parse_error& e) {
-      return make_error(ErrorKind::bad_input, Location{file.path, 0, 0, static_cast<std::int64_t>(e.byte)},
+      return make_error(codes::batch::not_a_report, Location{file.path, 0, 0, static_cast<std::int64_t>(e.byte)},
                         "not JSON: " + std::string(e.what()));
     }
     if (const auto problem = shape_problem(report)) return not_a_report(file.path, *problem);
@@ -68,11 +70,11 @@ Result<MergedReport> merge_batch_reports(const std::vector<ReportText>& reports)
     const std::size_t count = shard.is_null() ? 1 : shard["count"].get<std::size_t>();
     const std::size_t total = report.value("planned", report["jobs"].size());
     if (shard_count && *shard_count != count)
-      return make_error(ErrorKind::usage, Location{file.path, 0, 0, -1},
+      return make_error(codes::batch::reports_disagree, Location::whole_file(file.path),
                         "a report of " + std::to_string(count) + " shards among reports of " +
                             std::to_string(*shard_count) + ": reports of different batches");
     if (planned && *planned != total)
-      return make_error(ErrorKind::usage, Location{file.path, 0, 0, -1},
+      return make_error(codes::batch::reports_disagree, Location::whole_file(file.path),
                         "a report of a batch of " + std::to_string(total) + " jobs among reports of " +
                             std::to_string(*planned) + ": reports of different batches");
     shard_count = count;
@@ -151,8 +153,11 @@ std::string junit_from_report(const JsonValue& value) {
     const json& error = job.value("error", json());
     const std::string kind = error.is_object() ? error.value("kind", std::string("bad_input")) : "bad_input";
     const std::string text = error.is_object() ? error.value("text", std::string()) : std::string();
+    // The error's code (docs/errors.md) after the input: what to look up, whatever the wording.
+    const json code = error.is_object() ? error.value("code", json()) : json();
+    const std::string shown_code = code.is_string() ? " [" + code.get<std::string>() + "]" : "";
     cases += "><failure type=\"" + kind + "\" message=\"" + xml_escape(text, XmlPlace::attribute) + "\">" +
-             xml_escape("FAILED " + input) + "</failure></testcase>\n";
+             xml_escape("FAILED " + input + shown_code) + "</failure></testcase>\n";
   }
   if (merged) {
     const std::size_t count = report["merged"].value("shards", std::size_t{1});

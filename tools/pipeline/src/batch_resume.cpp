@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fapc/codec/file_io.hpp"
+#include "fapc/pipeline/codes.hpp"
 
 namespace fapc::pipeline {
 
@@ -131,7 +132,8 @@ std::optional<FileStamp> CompletionRecords::prepare(const BatchJob& job) const {
 Status CompletionRecords::record(const BatchJob& job, const std::optional<FileStamp>& input) const {
   const std::string path = record_path(job);
   const auto failed = [&](const std::string& why) {
-    return make_error(ErrorKind::io, Location{path, 0, 0, -1}, "cannot write the completion record: " + why);
+    return make_error(codes::batch::record_not_written, Location::whole_file(path),
+                      "cannot write the completion record: " + why);
   };
   if (!input) return failed("the input " + job.input + " is no longer a readable file");
   json outputs = json::array();

@@ -4,11 +4,13 @@
 #include <charconv>
 #include <numeric>
 
+#include "fapc/pipeline/codes.hpp"
+
 namespace fapc::pipeline {
 
 namespace {
 
-Diagnostic usage(const std::string& message) { return make_error(ErrorKind::usage, Location{}, message); }
+Diagnostic usage(const std::string& message) { return make_error(codes::batch::bad_shard, Location{}, message); }
 
 // A whole decimal number, nothing around it.
 std::optional<std::size_t> whole_number(std::string_view text) {

@@ -2,6 +2,7 @@
 
 #include "fapc/codec/file_io.hpp"
 #include "fapc/codec/include_policy.hpp"
+#include "fapc/pipeline/codes.hpp"
 #include "fapc/pipeline/registry.hpp"
 #include "fapc/transcoder/expression_file.hpp"
 #include "input_chain.hpp"
@@ -33,10 +34,11 @@ Result<algebra::Value> load_operand(const std::string& path, const Location& whe
   // slot, and a late last frame costs as much as a long animation.
   if (const auto& frames = loaded->frames.frames; !frames.empty()) {
     if (frames.front().number < 0)
-      return make_error(Location{path, 0, 0, -1}, "frame " + std::to_string(frames.front().number) +
-                                                      " is before time 0: an operand's frames start at 0 or later");
+      return make_error(codes::combine::before_zero, Location::whole_file(path),
+                        "frame " + std::to_string(frames.front().number) +
+                            " is before time 0: an operand's frames start at 0 or later");
     if (frames.back().number >= options.limits.max_frames)
-      return limit_error(Location{path, 0, 0, -1},
+      return limit_error(Location::whole_file(path),
                          "its frames run to number " + std::to_string(frames.back().number) + ", a grid of " +
                              std::to_string(frames.back().number + 1) + " frames",
                          Limit::frames, options.limits);

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "fapc/pipeline/codes.hpp"
+
 namespace fapc::pipeline {
 
 FapWriteOptions fap_write_options(const ConvertOptions& options) {
@@ -11,7 +13,7 @@ FapWriteOptions fap_write_options(const ConvertOptions& options) {
 }
 
 Diagnostic fap_writer_error_at(const Diagnostic& error, const std::string& path) {
-  return Diagnostic{error.severity, Location{path, 0, 0, -1}, error.message, {}, error.kind};
+  return retold(error, Location::whole_file(path), error.message);
 }
 
 FapTextOutputs::FapTextOutputs(const std::string& name, int fps, std::size_t frames, std::int64_t first_number,
@@ -67,7 +69,7 @@ void FapTextOutputs::flush() {
 }
 
 Diagnostic strict_error(const std::string& input, std::size_t warnings) {
-  return make_error(ErrorKind::bad_input, Location{input, 0, 0, -1},
+  return make_error(codes::output::strict_warnings, Location::whole_file(input),
                     std::to_string(warnings) + " warning(s) treated as errors (--strict); nothing written");
 }
 

@@ -4,6 +4,7 @@
 
 #include "fapc/codec/file_io.hpp"
 #include "fapc/mpeg4/mp4_reader.hpp"
+#include "fapc/pipeline/codes.hpp"
 
 namespace fapc::pipeline {
 
@@ -62,7 +63,7 @@ std::optional<Diagnostic> fba_rate_error(int fps, const Location& rate_at, int r
   // input's, refused where the input wrote it (or, set by --fps, against the input as a whole).
   if (fps >= 1 && fps <= kMaxFbaFrameRate) return std::nullopt;
   const bool written = !rate_at.file.empty() && rate_written == fps;
-  return make_error(written ? rate_at : Location{input, 0, 0, -1},
+  return make_error(codes::fba_output::frame_rate, written ? rate_at : Location::whole_file(input),
                     "frame rate " + std::to_string(fps) + " cannot be coded in an FBA stream (1 to " +
                         std::to_string(kMaxFbaFrameRate) + " frames per second)" +
                         (written ? "" : "; --fps sets another"));
@@ -73,7 +74,7 @@ std::function<Location(std::int64_t, int)> frame_locator(const std::vector<std::
   if (lines.size() != numbers.size()) return {};
   return [&numbers, &lines, &input](std::int64_t number, int) {
     const auto at = std::lower_bound(numbers.begin(), numbers.end(), number);
-    if (at == numbers.end() || *at != number) return Location{input, 0, 0, -1};
+    if (at == numbers.end() || *at != number) return Location::whole_file(input);
     return Location::text(input, lines[static_cast<std::size_t>(at - numbers.begin())], 1);
   };
 }

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "fapc/codec/deep_stack.hpp"
+#include "fapc/pipeline/codes.hpp"
 #include "fapc/pipeline/registry.hpp"
 
 namespace fapc::pipeline {
@@ -54,10 +55,10 @@ Result<Loaded> load_included_input(const std::string& path, const Location& wher
   for (const Reading& r : reading_chain) chain += r.path + " -> ";
   chain += path;
   for (const Reading& r : reading_chain) {
-    if (r.resolved == resolved) return make_error(where, "include cycle: " + chain);
+    if (r.resolved == resolved) return make_error(codes::input::include_cycle, where, "include cycle: " + chain);
   }
   if (reading_chain.size() >= kMaxIncludeDepth) {
-    return make_error(ErrorKind::limit_exceeded, where,
+    return make_error(codes::limit::nesting_depth, where,
                       "inputs included more than " + std::to_string(kMaxIncludeDepth) +
                           " levels deep (the include depth limit): " + chain);
   }

@@ -10,6 +10,7 @@ json diagnostic_json(const Diagnostic& d) {
   const bool error = d.severity == Severity::error;
   return {{"severity", error ? "error" : "warning"},
           {"kind", error ? json(error_kind_name(d.kind)) : json(nullptr)},
+          {"code", d.code.empty() ? json(nullptr) : json(d.code)},
           {"file", d.where.file},
           {"line", d.where.line > 0 ? json(d.where.line) : json(nullptr)},
           {"column", d.where.line > 0 && d.where.column > 0 ? json(d.where.column) : json(nullptr)},

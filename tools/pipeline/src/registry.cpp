@@ -5,6 +5,7 @@
 #include <initializer_list>
 
 #include "fapc/codec/did_you_mean.hpp"
+#include "fapc/pipeline/codes.hpp"
 #include "formats/bridges.hpp"
 #include "input_chain.hpp"
 
@@ -213,11 +214,11 @@ std::vector<std::string> extensions_of(const std::vector<const Format*>& rows) {
 // An unknown kind by name (usage: what the caller typed) or by extension (unsupported: the file).
 template <class Format>
 Diagnostic unknown_kind(const std::vector<Format>& table, const std::string& path, const std::string& kind,
-                        bool outputs, ErrorKind named_kind) {
-  if (!kind.empty()) return make_error(named_kind, Location{path, 0, 0, -1}, unknown_kind_message(kind, outputs));
+                        bool outputs, ErrorCode named_code) {
+  if (!kind.empty()) return make_error(named_code, Location::whole_file(path), unknown_kind_message(kind, outputs));
   const auto rows = rows_where<Format>(table, {});
   const std::string extension = std::filesystem::path(path).extension().string();
-  return make_error(ErrorKind::unsupported, Location{path, 0, 0, -1},
+  return make_error(codes::format::unknown_extension, Location::whole_file(path),
                     std::string(outputs ? "unknown output kind" : "unknown input kind") + " (expected " +
                         spelt_out(extensions_of(rows)) + ")" +
                         (extension.empty() ? std::string() : did_you_mean(extension, extensions_of(rows))));
@@ -243,11 +244,11 @@ std::string unknown_kind_message(const std::string& kind, bool outputs) {
 }
 
 Diagnostic unknown_input_kind(const std::string& path, const ConvertOptions& options) {
-  return unknown_kind(formats().inputs(), path, options.input_kind, false, ErrorKind::usage);
+  return unknown_kind(formats().inputs(), path, options.input_kind, false, codes::format::unknown_input_kind);
 }
 
 Diagnostic unknown_output_kind(const std::string& path, const std::string& kind) {
-  return unknown_kind(formats().outputs(), path, kind, true, ErrorKind::unsupported);
+  return unknown_kind(formats().outputs(), path, kind, true, codes::format::unknown_output_kind);
 }
 
 Result<Loaded> load(const std::string& path, const ConvertOptions& options) {

@@ -71,7 +71,7 @@ Result<Loaded> loaded_from_timeline(Timeline timeline, const std::string& name, 
                                     const ConvertOptions& options, Diagnostics warnings, nlohmann::ordered_json facts) {
   if (options.duration) {
     timeline.explicit_end = *options.duration;
-    timeline.end_source = Location{name, 0, 0, -1};  // the whole input, ended by --duration
+    timeline.end_source = Location::whole_file(name);  // the whole input, ended by --duration
   }
   if (!options.render) {  // an XMT-Omega include: its clips are placed, its frames never used
     Loaded loaded;

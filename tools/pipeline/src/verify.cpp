@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "fapc/codec/file_io.hpp"
+#include "fapc/pipeline/codes.hpp"
 #include "fapc/pipeline/fba_io.hpp"
 #include "fapc/pipeline/registry.hpp"
 #include "verify_streams.hpp"
@@ -85,7 +86,7 @@ VerifyResult reencode_matches(const std::string& path, const DecodedFba& decoded
                               const std::function<bool(const EncodedFba&)>& same, std::size_t bytes) {
   const FbaStreamInfo& info = decoded.info;
   const auto failure = [&](const std::string& why) {
-    return failed(make_error(ErrorKind::verification_failed, Location{path, 0, 0, -1}, "verification failed: " + why),
+    return failed(make_error(codes::verify::fba_foreign, Location::whole_file(path), "verification failed: " + why),
                   decoded.warnings);
   };
   if (info.body_planes > 0) return failure("the stream carries body data, which fapc does not write");
@@ -162,7 +163,7 @@ std::optional<Diagnostic> audio_mismatch(const std::string& path, const mpeg4::M
   else if (std::abs(end - face_end) > tolerance)
     why = "the audio track ends at " + seconds(end) + ", the face track at " + seconds(face_end);
   if (why.empty()) return std::nullopt;
-  return make_error(ErrorKind::verification_failed, Location{path, 0, 0, -1},
+  return make_error(codes::verify::audio_misaligned, Location::whole_file(path),
                     "verification failed: " + why + " (more than one frame, " + seconds(frame) + ", apart)");
 }
 

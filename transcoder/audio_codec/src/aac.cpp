@@ -11,6 +11,8 @@ extern "C" {
 #include <array>
 #include <cmath>
 
+#include "fapc/audio_codec/codes.hpp"
+
 namespace fapc::audio_codec {
 
 namespace {
@@ -59,18 +61,18 @@ std::vector<std::uint8_t> aac_lc_mono_config(int sample_rate) {
 
 Result<AacStream> encode_aac(const AudioTrack& track, const std::string& where, int bit_rate, std::size_t length,
                              AacCoder coder) {
-  const Location at{where, 0, 0, -1};
+  const Location at = Location::whole_file(where);
   if (aac_frequency_index(track.sample_rate) < 0)
-    return make_error(ErrorKind::unsupported, track.source.file.empty() ? at : track.source,
+    return make_error(codes::aac::sample_rate, track.source.file.empty() ? at : track.source,
                       "audio at " + std::to_string(track.sample_rate) +
                           " Hz: AAC takes 7350, 8000, 11025, 12000, 16000, 22050, 24000, 32000, 44100, "
                           "48000, 64000, 88200 or 96000 Hz");
   auto failed = [&](const std::string& what, int code) {
-    return make_error(ErrorKind::io, at, what + ": " + av_message(code));
+    return make_error(codes::aac::encoder_failed, at, what + ": " + av_message(code));
   };
   av_log_set_level(AV_LOG_QUIET);  // a library does not print; errors come back as codes
   const AVCodec* aac = avcodec_find_encoder(AV_CODEC_ID_AAC);
-  if (!aac) return make_error(ErrorKind::unsupported, at, "this libavcodec has no AAC encoder");
+  if (!aac) return make_error(codes::aac::no_codec, at, "this libavcodec has no AAC encoder");
   Coder c;
   c.context = avcodec_alloc_context3(aac);
   c.context->sample_rate = track.sample_rate;
@@ -94,11 +96,11 @@ Result<AacStream> encode_aac(const AudioTrack& track, const std::string& where, 
   out.audio_specific_config = aac_lc_mono_config(track.sample_rate);
   const std::vector<std::uint8_t> given(c.context->extradata, c.context->extradata + c.context->extradata_size);
   if (given != out.audio_specific_config)
-    return make_error(ErrorKind::unsupported, at,
+    return make_error(codes::aac::encoder_unexpected, at,
                       "libavcodec's AAC encoder announced a configuration other than mono AAC-LC");
   const int frame_size = c.context->frame_size > 0 ? c.context->frame_size : kAacFrameLength;
   if (frame_size != kAacFrameLength)
-    return make_error(ErrorKind::unsupported, at,
+    return make_error(codes::aac::encoder_unexpected, at,
                       "libavcodec's AAC encoder uses " + std::to_string(frame_size) + "-sample frames");
 
   c.frame = av_frame_alloc();
@@ -133,12 +135,12 @@ Result<AacStream> encode_aac(const AudioTrack& track, const std::string& where, 
   if (int e = avcodec_send_frame(c.context, nullptr); e < 0) return failed("AAC encoding failed", e);
   if (int e = drain(); e < 0) return failed("AAC encoding failed", e);
   if (out.frames.size() * kAacFrameLength < out.priming + out.length)
-    return make_error(ErrorKind::io, at, "the AAC encoder gave fewer frames than the audio needs");
+    return make_error(codes::aac::encoder_failed, at, "the AAC encoder gave fewer frames than the audio needs");
   return out;
 }
 
 Result<std::vector<std::int16_t>> decode_aac(const AacStream& stream, const std::string& where) {
-  const Location at{where, 0, 0, -1};
+  const Location at = Location::whole_file(where);
   const Location config_at = stream.config_offset >= 0 ? Location::binary(where, stream.config_offset) : at;
   // Access unit i (from 0), or the last one for an error at the stream's end.
   auto unit_at = [&](std::size_t i) {
@@ -147,11 +149,11 @@ Result<std::vector<std::int16_t>> decode_aac(const AacStream& stream, const std:
         where, static_cast<std::int64_t>(stream.frame_offsets[std::min(i, stream.frame_offsets.size() - 1)]));
   };
   auto failed_at = [](const Location& place, const std::string& what, int code) {
-    return make_error(ErrorKind::bad_input, place, what + ": " + av_message(code));
+    return make_error(codes::aac::does_not_decode, place, what + ": " + av_message(code));
   };
   av_log_set_level(AV_LOG_QUIET);
   const AVCodec* aac = avcodec_find_decoder(AV_CODEC_ID_AAC);
-  if (!aac) return make_error(ErrorKind::unsupported, at, "this libavcodec has no AAC decoder");
+  if (!aac) return make_error(codes::aac::no_codec, at, "this libavcodec has no AAC decoder");
   Coder c;
   c.context = avcodec_alloc_context3(aac);
   c.context->sample_rate = stream.sample_rate;
@@ -205,7 +207,7 @@ Result<std::vector<std::int16_t>> decode_aac(const AacStream& stream, const std:
     if (int t = take(); t < 0) return failed_at(unit_at(last), "the AAC stream's end does not decode", t);
   }
   if (samples.size() < want)
-    return make_error(ErrorKind::truncated, unit_at(last),
+    return make_error(codes::aac::truncated, unit_at(last),
                       "the AAC track decodes to " + std::to_string(samples.size()) + " samples; its edit list says " +
                           std::to_string(want));
   return samples;

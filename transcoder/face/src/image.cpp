@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "fapc/face/codes.hpp"
+
 namespace fapc::face {
 
 namespace {
@@ -40,7 +42,8 @@ Result<std::string> encode_png(const Image& image) {
   const cairo_status_t status = cairo_surface_write_to_png_stream(surface, append, &out);
   cairo_surface_destroy(surface);
   if (status != CAIRO_STATUS_SUCCESS)
-    return make_error(ErrorKind::io, Location{}, std::string("cannot encode PNG: ") + cairo_status_to_string(status));
+    return make_error(codes::picture::encode_failed, Location{},
+                      std::string("cannot encode PNG: ") + cairo_status_to_string(status));
   return out;
 }
 
@@ -49,7 +52,7 @@ Result<Image> decode_png(std::string_view bytes, const std::string& file) {
   cairo_surface_t* surface = cairo_image_surface_create_from_png_stream(take, &reader);
   if (cairo_surface_status(surface) != CAIRO_STATUS_SUCCESS) {
     cairo_surface_destroy(surface);
-    return make_error(ErrorKind::bad_input, Location{file, 0, 0, -1}, "not a PNG image cairo can read");
+    return make_error(codes::picture::not_png, Location::whole_file(file), "not a PNG image cairo can read");
   }
   Image image(cairo_image_surface_get_width(surface), cairo_image_surface_get_height(surface));
   const int stride = cairo_image_surface_get_stride(surface);

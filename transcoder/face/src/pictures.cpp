@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "fapc/face/codes.hpp"
 #include "fapc/face/renderer.hpp"
 #include "stroke_text.hpp"
 
@@ -26,9 +27,9 @@ void stamp(cairo_t* cr, double seconds, double x, double y, double h) {
 }  // namespace
 
 Status check_picture_options(const PictureOptions& o, const std::string& where) {
-  const Location at{where, 0, 0, -1};
+  const Location at = Location::whole_file(where);
   if (o.width < kMinSide || o.height < kMinSide || o.width > kMaxSide || o.height > kMaxSide)
-    return make_error(ErrorKind::usage, at,
+    return make_error(codes::picture::bad_size, at,
                       "--size " + std::to_string(o.width) + "x" + std::to_string(o.height) + ": each side must be " +
                           std::to_string(kMinSide) + " to " + std::to_string(kMaxSide) + " pixels");
   const std::string size = std::to_string(o.width) + "x" + std::to_string(o.height);
@@ -36,20 +37,20 @@ Status check_picture_options(const PictureOptions& o, const std::string& where) 
     return limit_error(
         at, "--size " + size + " is " + std::to_string(std::int64_t{o.width} * o.height) + " pixels a picture",
         Limit::frame_pixels, o.limits);
-  if (o.frame && o.time) return make_error(ErrorKind::usage, at, "give --frame or --time, not both");
+  if (o.frame && o.time) return make_error(codes::picture::conflicting_options, at, "give --frame or --time, not both");
   if (o.sheet && (o.frame || o.time))
-    return make_error(ErrorKind::usage, at, "--sheet picks its own frames; drop --frame/--time");
-  if (o.frame && *o.frame < 0) return make_error(ErrorKind::usage, at, "--frame must be 0 or more");
-  if (o.time && !(*o.time >= 0)) return make_error(ErrorKind::usage, at, "--time must be 0 or more seconds");
+    return make_error(codes::picture::conflicting_options, at, "--sheet picks its own frames; drop --frame/--time");
+  if (o.frame && *o.frame < 0) return make_error(codes::picture::bad_frame, at, "--frame must be 0 or more");
+  if (o.time && !(*o.time >= 0)) return make_error(codes::picture::bad_frame, at, "--time must be 0 or more seconds");
   if (o.sheet && (*o.sheet < 1 || *o.sheet > kMaxSheetFrames))
     return make_error(
-        ErrorKind::limit_exceeded, at,
+        codes::picture::sheet_cells, at,
         "--sheet " + std::to_string(*o.sheet) + ": a sheet holds 1 to " + std::to_string(kMaxSheetFrames) + " frames");
   if (o.sheet) {
     const int columns = static_cast<int>(std::ceil(std::sqrt(double(*o.sheet))));
     const int rows = (*o.sheet + columns - 1) / columns;
     if (std::int64_t(columns) * o.width > 16384 || std::int64_t(rows) * o.height > 16384)
-      return make_error(ErrorKind::limit_exceeded, at,
+      return make_error(codes::picture::sheet_too_wide, at,
                         "a contact sheet of " + std::to_string(*o.sheet) + " cells at --size " +
                             std::to_string(o.width) + "x" + std::to_string(o.height) +
                             " would pass 16384 pixels on a side; use a smaller --size");

@@ -17,6 +17,8 @@
 #define TINYGLTF_NO_EXTERNAL_IMAGE
 #include <tiny_gltf.h>
 
+#include "fapc/head3d/codes.hpp"
+
 namespace fapc::head3d {
 
 namespace {
@@ -157,7 +159,7 @@ Result<std::string> head_gltf(const FapSequence& sequence, const GltfOptions& op
   const std::int64_t frames = sequence.frames.empty() ? 0 : sequence.frames.back().number + 1;
   const double frame_bytes = 4.0 * (static_cast<double>(targets.size()) + 13);
   if (static_cast<double>(frames) * frame_bytes > 2e9)
-    return make_error(ErrorKind::limit_exceeded, Location{where, 0, 0, -1},
+    return make_error(codes::gltf::too_long, Location::whole_file(where),
                       "a glTF animation of " + std::to_string(frames) +
                           " frames would pass glTF's 32-bit buffer sizes; split the input");
 
@@ -268,7 +270,7 @@ Result<std::string> head_gltf(const FapSequence& sequence, const GltfOptions& op
   std::ostringstream out;
   tinygltf::TinyGLTF writer;
   if (!writer.WriteGltfSceneToStream(&model, out, !options.binary, options.binary))
-    return make_error(ErrorKind::io, Location{where, 0, 0, -1}, "tinygltf could not write the glTF");
+    return make_error(codes::gltf::write_failed, Location::whole_file(where), "tinygltf could not write the glTF");
   return out.str();
 }
 

@@ -22,6 +22,7 @@
 
 #include "engine_messages.hpp"
 #include "engine_output.hpp"
+#include "fapc/speech/codes.hpp"
 #include "fapc/speech/phoneme_visemes.hpp"
 #include "fapc/speech/speakable_text.hpp"
 #include "speaker_process.hpp"
@@ -191,30 +192,30 @@ Result<Utterance> speak(const SpeechRequest& request) {
   const std::lock_guard lock(engine_mutex());
   const Engine& engine = started();
   if (engine.sample_rate == 0)
-    return make_error(ErrorKind::unsupported, request.where,
+    return make_error(codes::speech::engine_missing, request.where,
                       "the speech engine (eSpeak NG) could not start: is espeak-ng-data installed?");
   if (!plain_name(request.language))
-    return make_error(ErrorKind::bad_input, request.where,
+    return make_error(codes::speech::bad_language, request.where,
                       "'" + request.language + "' is not a language name (like en, en-us, fr, de)");
   if (!request.voice.empty() && (!plain_name(request.voice) ||
                                  !std::filesystem::is_regular_file(engine.data / "voices" / "!v" / request.voice))) {
-    return make_error(ErrorKind::bad_input, request.where,
+    return make_error(codes::speech::unknown_voice, request.where,
                       "unknown voice '" + request.voice +
                           "' (voice variants of eSpeak NG: m1..m7, f1..f5, klatt, whisper, ...; `espeak-ng "
                           "--voices=variant` lists them)");
   }
   const std::string language = lower(request.language);
   if (engine.mbrola.count(language) != 0 || language.rfind("mb-", 0) == 0)
-    return make_error(ErrorKind::bad_input, request.where,
+    return make_error(codes::speech::mbrola_voice, request.where,
                       "'" + request.language +
                           "' is an MBROLA voice: fapc speaks only with eSpeak NG's own voices "
                           "(an MBROLA voice runs an outside program; `espeak-ng --voices` lists the others)");
   if (engine.own.count(language) == 0)
-    return make_error(ErrorKind::bad_input, request.where,
+    return make_error(codes::speech::unknown_language, request.where,
                       "unknown language '" + request.language + "' (`espeak-ng --voices` lists the languages)");
   const int rate = static_cast<int>(request.words_per_minute + 0.5);
   if (rate < espeakRATE_MINIMUM || rate > espeakRATE_MAXIMUM)
-    return make_error(ErrorKind::bad_input, request.where,
+    return make_error(codes::speech::rate_out_of_range, request.where,
                       "the speech rate " + std::to_string(rate) + " words per minute is outside 80 to 450");
 
   const auto max_samples = static_cast<std::size_t>(std::max(0.0, request.max_seconds) * engine.sample_rate);
@@ -222,33 +223,34 @@ Result<Utterance> speak(const SpeechRequest& request) {
   // other threads by now, a risk taken once, never again for its utterances.
   if (start_speaker(kSpeakerWork, true) != SpeakerStart::started)
     return make_error(
-        ErrorKind::io, request.where,
+        codes::speech::engine_failed, request.where,
         std::string("the speech engine (eSpeak NG) could not start a process (") + std::strerror(errno) + ")");
   const ForkedOutcome forked =
       ask_speaker(kSpeakerWork, encode(EngineRequest{request.language, request.voice, rate, max_samples, request.text}),
                   // The samples, and a generous bound on the events (a few per character of text).
                   max_samples * sizeof(std::int16_t) + 64 * request.text.size() + 4096, kMaxEngineMessageBytes);
   if (forked.end != ForkedOutcome::End::finished)
-    return make_error(ErrorKind::io, request.where,
+    return make_error(codes::speech::engine_failed, request.where,
                       "the speech engine (eSpeak NG) " + failure(forked) + " on this text");
   std::optional<EngineOutput> collected = decode_engine_output(forked.output);
   if (!collected)
-    return make_error(ErrorKind::io, request.where, "the speech engine (eSpeak NG) sent back a malformed result");
+    return make_error(codes::speech::engine_failed, request.where,
+                      "the speech engine (eSpeak NG) sent back a malformed result");
   switch (collected->stop) {
     case EngineOutput::Stop::spoken:
       break;
     case EngineOutput::Stop::language_refused:
-      return make_error(ErrorKind::bad_input, request.where,
+      return make_error(codes::speech::unknown_language, request.where,
                         "unknown language '" + request.language + "' (`espeak-ng --voices` lists the languages)");
     case EngineOutput::Stop::voice_refused:
-      return make_error(ErrorKind::bad_input, request.where,
+      return make_error(codes::speech::unknown_voice, request.where,
                         "eSpeak NG refused the voice '" + request.language + "+" + request.voice + "'");
     case EngineOutput::Stop::too_long:
-      return make_error(ErrorKind::limit_exceeded, request.where,
+      return make_error(codes::limit::speech_seconds, request.where,
                         "the speech would last more than " + std::to_string(request.max_seconds) + " s");
     case EngineOutput::Stop::synth_failed:
       return make_error(
-          ErrorKind::io, request.where,
+          codes::speech::engine_failed, request.where,
           "eSpeak NG failed to synthesise this text (error " + std::to_string(collected->synth_status) + ")");
   }
   EngineOutput& spoken = *collected;

@@ -3,11 +3,12 @@
 #include <set>
 #include <string>
 
+#include "fapc/speech/codes.hpp"
+
 namespace fapc::speech {
 namespace {
 
 constexpr std::size_t kMaxQuotedBytes = 200;
-constexpr WarningCode kEngineMessage{"speech.engine_message"};
 
 std::string quoted(std::string_view line) {
   std::string out(line.substr(0, kMaxQuotedBytes));
@@ -29,12 +30,12 @@ Diagnostics engine_message_warnings(std::string_view messages, std::size_t dropp
     while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.remove_suffix(1);
     if (line.empty() || !seen.insert(line).second) continue;
     out.push_back(make_warning(
-        kEngineMessage, where,
+        codes::speech::engine_message, where,
         "the speech engine (eSpeak NG) reported: " + quoted(line) + " (the voice may not sound as it should)"));
   }
   if (dropped > 0)
     out.push_back(make_warning(
-        kEngineMessage, where,
+        codes::speech::engine_message, where,
         "the speech engine (eSpeak NG) wrote " + std::to_string(dropped) + " more bytes of messages, not shown"));
   return out;
 }

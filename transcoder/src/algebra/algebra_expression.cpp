@@ -12,6 +12,7 @@
 #include <cstdio>
 
 #include "fapc/codec/nesting_limit.hpp"
+#include "fapc/transcoder/codes.hpp"
 
 namespace fapc::algebra {
 namespace {
@@ -53,9 +54,10 @@ class Evaluator {
     Result<Term> result = overlap();
     if (!result) return result.error();
     skip_blanks();
-    if (at_ < text_.size()) return error(at_, "unexpected '" + std::string(1, text_[at_]) + "'");
+    if (at_ < text_.size())
+      return error(codes::algebra::unexpected_character, at_, "unexpected '" + std::string(1, text_[at_]) + "'");
     if (result->priority)
-      return error(static_cast<std::size_t>(result->column - 1),
+      return error(codes::algebra::priority_outside_overlap, static_cast<std::size_t>(result->column - 1),
                    "'@' gives a priority to an operand of '|'; there is no '|' here");
     if (result->mask) return masked(*result);
     return result->value;
@@ -106,7 +108,7 @@ class Evaluator {
                   "(--max-frames N raises it)",
                   made_, kWorkFactor, static_cast<long long>(max_frames_));
     Diagnostic d =
-        make_error(ErrorKind::limit_exceeded, Location::text("<expression>", 1, static_cast<int>(offset) + 1), what);
+        make_error(codes::limit::frames, Location::text("<expression>", 1, static_cast<int>(offset) + 1), what);
     d.source_line = std::string(text_);
     return d;
   }
@@ -119,8 +121,12 @@ class Evaluator {
     return d;
   }
 
-  Diagnostic error(std::size_t offset, const std::string& message) const {
-    return make_error(Location::text("<expression>", 1, static_cast<int>(offset) + 1), message, std::string(text_));
+  Diagnostic error(ErrorCode code, std::size_t offset, const std::string& message) const {
+    return make_error(code, Location::text("<expression>", 1, static_cast<int>(offset) + 1), message,
+                      std::string(text_));
+  }
+  Diagnostic retold_at(const Diagnostic& inner, std::size_t offset, const std::string& message) const {
+    return retold(inner, Location::text("<expression>", 1, static_cast<int>(offset) + 1), message, std::string(text_));
   }
   void skip_blanks() {
     while (at_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[at_]))) ++at_;
@@ -137,7 +143,8 @@ class Evaluator {
     const std::size_t start = at_;
     double value = 0;
     const auto [end, status] = std::from_chars(text_.data() + at_, text_.data() + text_.size(), value);
-    if (status != std::errc{} || !std::isfinite(value)) return error(start, "expected a number");
+    if (status != std::errc{} || !std::isfinite(value))
+      return error(codes::algebra::expected_number, start, "expected a number");
     at_ = static_cast<std::size_t>(end - text_.data());
     return value;
   }
@@ -169,14 +176,16 @@ class Evaluator {
     std::vector<LayeredAnimation> layers;
     for (const Term& t : terms) {
       if (!t.priority) {
-        return error(static_cast<std::size_t>(t.column - 1), "every operand of '|' needs a priority ('@2')");
+        return error(codes::algebra::priority_missing, static_cast<std::size_t>(t.column - 1),
+                     "every operand of '|' needs a priority ('@2')");
       }
       layers.push_back(
           LayeredAnimation{t.value.state ? broadcast(*t.value.state, grid ? *grid : Animation{}) : t.value.animation,
                            t.mask.value_or(Mask::all()), *t.priority});
     }
     Result<Animation> folded = fapc::algebra::overlap(layers);
-    if (!folded) return error(static_cast<std::size_t>(terms.front().column - 1), folded.error().message);
+    if (!folded)
+      return retold_at(folded.error(), static_cast<std::size_t>(terms.front().column - 1), folded.error().message);
     Term out;
     out.column = terms.front().column;
     if (!grid) {
@@ -198,9 +207,10 @@ class Evaluator {
       if (accept("[")) {
         Result<double> weight = number();
         if (!weight) return weight.error();
-        if (*weight < 0 || *weight > 1) return error(at, "the sum's weight must be within 0..1");
+        if (*weight < 0 || *weight > 1)
+          return error(codes::algebra::weight_out_of_range, at, "the sum's weight must be within 0..1");
         v = *weight;
-        if (!accept("]")) return error(at_, "expected ']' after the sum's weight");
+        if (!accept("]")) return error(codes::algebra::syntax, at_, "expected ']' after the sum's weight");
       }
       Result<Term> right = product();
       if (!right) return right.error();
@@ -217,7 +227,7 @@ class Evaluator {
       const std::size_t w_at = at_;
       Result<double> w = number();
       if (!w) return w.error();
-      if (!accept("*")) return error(at_, "expected '*' after the amplifier " + format(*w));
+      if (!accept("*")) return error(codes::algebra::syntax, at_, "expected '*' after the amplifier " + format(*w));
       if (depth_ >= kMaxNestingDepth) return too_deep(at_);
       ++depth_;
       Result<Term> operand = product();
@@ -253,27 +263,31 @@ class Evaluator {
       const std::size_t at = at_;
       if (accept("[")) {
         const std::size_t close = text_.find(']', at_);
-        if (close == std::string_view::npos) return error(at, "'[' without ']'");
+        if (close == std::string_view::npos) return error(codes::algebra::syntax, at, "'[' without ']'");
         Result<Mask> mask = parse_mask(text_.substr(at_, close - at_));
-        if (!mask) return error(at_ + static_cast<std::size_t>(mask.error().where.column), mask.error().message);
+        if (!mask)
+          return retold_at(mask.error(), at_ + static_cast<std::size_t>(mask.error().where.column),
+                           mask.error().message);
         term->mask = *mask;
         at_ = close + 1;
       } else if (accept("@")) {
         skip_blanks();
         int priority = 0;
         const auto [end, status] = std::from_chars(text_.data() + at_, text_.data() + text_.size(), priority);
-        if (status != std::errc{}) return error(at_, "expected an integer priority after '@'");
+        if (status != std::errc{}) return error(codes::algebra::syntax, at_, "expected an integer priority after '@'");
         at_ = static_cast<std::size_t>(end - text_.data());
         term->priority = priority;
       } else if (accept(">>")) {
         Result<double> seconds = number();
         if (!seconds) return seconds.error();
-        if (term->value.state) return error(at, "'>>' delays an animation; this operand is a state");
+        if (term->value.state)
+          return error(codes::algebra::delay_of_state, at, "'>>' delays an animation; this operand is a state");
         // A day of frames is already more than any face animation; beyond it is a typo. A
         // negative delay would cut the animation's start away (all of it, for a short one): the
         // operator only delays (docs/algebra.md).
         if (*seconds < 0 || *seconds > 86400)
-          return error(at, "a delay is from 0 to 86400 s (a day); " + format(*seconds) + " is not");
+          return error(codes::algebra::delay_out_of_range, at,
+                       "a delay is from 0 to 86400 s (a day); " + format(*seconds) + " is not");
         const long frames = std::lround(*seconds * term->value.animation.fps);
         const double slots = static_cast<double>(term->value.animation.size()) + static_cast<double>(delay_frames) +
                              static_cast<double>(frames);
@@ -305,7 +319,7 @@ class Evaluator {
       Result<Term> inner = overlap();
       --depth_;
       if (!inner) return inner.error();
-      if (!accept(")")) return error(at_, "expected ')'");
+      if (!accept(")")) return error(codes::algebra::syntax, at_, "expected ')'");
       inner->column = static_cast<int>(start) + 1;
       if (inner->mask) {
         inner->value = masked(*inner);
@@ -317,7 +331,7 @@ class Evaluator {
     std::string name;
     if (accept("\"")) {
       const std::size_t close = text_.find('"', at_);
-      if (close == std::string_view::npos) return error(start, "'\"' without a closing '\"'");
+      if (close == std::string_view::npos) return error(codes::algebra::syntax, start, "'\"' without a closing '\"'");
       name = std::string(text_.substr(at_, close - at_));
       at_ = close + 1;
     } else {
@@ -325,9 +339,9 @@ class Evaluator {
       name = std::string(text_.substr(start, at_ - start));
     }
     if (name.empty()) {
-      return error(start, at_ < text_.size()
-                              ? "expected a file, a number or '(', found '" + std::string(1, text_[at_]) + "'"
-                              : "expected a file, a number or '(' at the end");
+      return error(codes::algebra::syntax, start,
+                   at_ < text_.size() ? "expected a file, a number or '(', found '" + std::string(1, text_[at_]) + "'"
+                                      : "expected a file, a number or '(' at the end");
     }
     Result<Value> value = load_(name, static_cast<int>(start) + 1);
     if (value && !value->state)
@@ -337,16 +351,15 @@ class Evaluator {
       // where the expression names it; a problem inside it, at its own place.
       const Diagnostic& inner = value.error();
       if (inner.where.line > 0 || inner.where.byte_offset >= 0) return inner;
-      Diagnostic d = error(start, "operand '" + inner.where.file + "': " + inner.message);
-      d.kind = inner.kind;
-      return d;
+      return retold_at(inner, start, "operand '" + inner.where.file + "': " + inner.message);
     }
     return Term{std::move(*value), std::nullopt, std::nullopt, static_cast<int>(start) + 1};
   }
 
   std::optional<Diagnostic> overlap_only(const Term& t) const {
     if (!t.mask && !t.priority) return std::nullopt;
-    return error(static_cast<std::size_t>(t.column - 1), "masks '[...]' and priorities '@N' belong to operands of '|'");
+    return error(codes::algebra::mask_outside_overlap, static_cast<std::size_t>(t.column - 1),
+                 "masks '[...]' and priorities '@N' belong to operands of '|'");
   }
 
   static Value masked(const Term& t) {
@@ -371,9 +384,10 @@ class Evaluator {
       for (int fap = 3; fap <= kFapCount; ++fap) {
         const double product = std::round(w * s.at(fap));
         if (product <= 2147483647.0 && product >= -2147483648.0) continue;
-        return error(offset, "the amplifier " + format(w) + " takes FAP " + std::to_string(fap) + " from " +
-                                 std::to_string(s.at(fap)) + " to " + format(product) +
-                                 ", beyond the 32-bit range of FAP values");
+        return error(codes::algebra::value_overflow, offset,
+                     "the amplifier " + format(w) + " takes FAP " + std::to_string(fap) + " from " +
+                         std::to_string(s.at(fap)) + " to " + format(product) +
+                         ", beyond the 32-bit range of FAP values");
       }
       return std::nullopt;
     };

@@ -5,6 +5,7 @@
 
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/transcoder/algebra.hpp"
+#include "fapc/transcoder/codes.hpp"
 
 namespace fapc::algebra {
 
@@ -57,9 +58,10 @@ Result<Layer> overlap(const Layer& a, const Layer& b) {
       out.state.values[i] = s + t;
       out.priority[i] = s != 0 ? a.priority[i] : b.priority[i];
     } else if (a.priority[i] == b.priority[i]) {
-      return make_error(Location{}, "equal priorities (" + std::to_string(a.priority[i]) + ") overlap on " +
-                                        std::string(find_fap(static_cast<int>(i) + 3)->name) +
-                                        ": give the operands different priorities");
+      return make_error(codes::algebra::equal_priorities, Location{},
+                        "equal priorities (" + std::to_string(a.priority[i]) + ") overlap on " +
+                            std::string(find_fap(static_cast<int>(i) + 3)->name) +
+                            ": give the operands different priorities");
     } else {
       const bool first = a.priority[i] > b.priority[i];
       out.state.values[i] = first ? s : t;
@@ -73,11 +75,14 @@ Result<FacialState> state_from_entries(const std::vector<ExpressionEntry>& entri
   std::array<double, kStateSize> sums{};
   for (const ExpressionEntry& entry : entries) {
     const std::vector<FapContribution> drives = resolve_target(entry.parameter, profile);
-    if (drives.empty()) return make_error(entry.where, unknown_parameter_message(entry.parameter, profile));
+    if (drives.empty())
+      return make_error(codes::profile::unknown_parameter, entry.where,
+                        unknown_parameter_message(entry.parameter, profile));
     for (const FapContribution& c : drives) {
       if (c.fap < 3) {
-        return make_error(entry.where, "'" + entry.parameter + "' is FAP " + std::to_string(c.fap) +
-                                           "; a facial state holds FAPs 3 to 68");
+        return make_error(
+            codes::algebra::not_a_state_fap, entry.where,
+            "'" + entry.parameter + "' is FAP " + std::to_string(c.fap) + "; a facial state holds FAPs 3 to 68");
       }
       sums[static_cast<std::size_t>(c.fap - 3)] += entry.value * c.scale;
     }

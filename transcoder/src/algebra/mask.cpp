@@ -4,6 +4,7 @@
 
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/transcoder/algebra.hpp"
+#include "fapc/transcoder/codes.hpp"
 
 namespace fapc::algebra {
 namespace {
@@ -58,8 +59,8 @@ Result<Mask> parse_mask(std::string_view text) {
     const std::size_t start = at;
     while (at < text.size() && text[at] != ',' && !std::isspace(static_cast<unsigned char>(text[at]))) ++at;
     std::string_view item = text.substr(start, at - start);
-    const auto fail = [&](const std::string& why) {
-      return make_error(Location{"", 0, static_cast<int>(start), -1}, why);
+    const auto fail = [&](ErrorCode code, const std::string& why) {
+      return make_error(code, Location{"", 0, static_cast<int>(start), -1}, why);
     };
     const bool remove = item.starts_with('!');
     if (remove) item.remove_prefix(1);
@@ -68,20 +69,23 @@ Result<Mask> parse_mask(std::string_view text) {
       const auto first = number(item.substr(0, dash));
       const auto last = number(item.substr(dash + 1));
       if (!first || !last || *first < 3 || *last > 68 || *first > *last) {
-        return fail("'" + std::string(item) + "' is not a FAP range within 3-68");
+        return fail(codes::algebra::bad_mask, "'" + std::string(item) + "' is not a FAP range within 3-68");
       }
       faps = range(*first, *last);
     } else if (const FapInfo* fap = find_fap_by_name_or_number(item)) {
-      if (fap->number < 3) return fail("FAP " + std::to_string(fap->number) + " is not part of a facial state (3-68)");
+      if (fap->number < 3)
+        return fail(codes::algebra::bad_mask,
+                    "FAP " + std::to_string(fap->number) + " is not part of a facial state (3-68)");
       faps = {fap->number};
     } else {
       for (const auto& [name, members] : mask_group_names()) {
         if (name == item) faps = members;
       }
       if (faps.empty()) {
-        return fail("unknown mask item '" + std::string(item) +
-                    "' (a group: jaw, lips, eyes, brows, cheeks, tongue, head, outer_lips, nose, "
-                    "ears, mouth, all; a FAP name or number; or a range like 19-30)");
+        return fail(codes::algebra::bad_mask,
+                    "unknown mask item '" + std::string(item) +
+                        "' (a group: jaw, lips, eyes, brows, cheeks, tongue, head, outer_lips, nose, "
+                        "ears, mouth, all; a FAP name or number; or a range like 19-30)");
       }
     }
     for (const int f : faps) {
@@ -93,7 +97,7 @@ Result<Mask> parse_mask(std::string_view text) {
     }
     any = true;
   }
-  if (!any) return make_error(Location{}, "an empty mask covers nothing");
+  if (!any) return make_error(codes::algebra::empty_mask, Location{}, "an empty mask covers nothing");
   return mask;
 }
 

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "fapc/transcoder/audio_mix.hpp"
+#include "fapc/transcoder/codes.hpp"
 
 namespace fapc {
 namespace {
@@ -71,7 +72,7 @@ Result<std::optional<AudioTrack>> mix_audio(const std::vector<AudioClip>& clips,
   }
   if (first) return none;
   if (end - start > max_seconds) {
-    return make_error(ErrorKind::limit_exceeded, furthest->source,
+    return make_error(codes::limit::frames, furthest->source,
                       "the audio would last " + std::to_string(end - start) + " s, more than the limit of " +
                           std::to_string(max_seconds) + " s (the frame limit, --max-frames, at the frame rate)");
   }

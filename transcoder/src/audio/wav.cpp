@@ -2,6 +2,7 @@
 // an even length). PCM is format tag 1 (or WAVE_FORMAT_EXTENSIBLE 0xFFFE with the PCM subformat).
 #include <cstring>
 
+#include "fapc/transcoder/codes.hpp"
 #include "fapc/transcoder/wav.hpp"
 
 namespace fapc {
@@ -24,15 +25,15 @@ void put16(std::string& out, std::uint16_t v) {
   out.push_back(static_cast<char>(v >> 8));
 }
 
-Diagnostic at(const std::string& file, std::size_t byte, std::string message) {
-  return make_error(Location{file, 0, 0, static_cast<std::int64_t>(byte)}, std::move(message));
+Diagnostic at(ErrorCode code, const std::string& file, std::size_t byte, std::string message) {
+  return make_error(code, Location{file, 0, 0, static_cast<std::int64_t>(byte)}, std::move(message));
 }
 
 }  // namespace
 
 Result<AudioClip> read_wav(std::string_view b, const std::string& file) {
   if (b.size() < 12 || b.substr(0, 4) != "RIFF" || b.substr(8, 4) != "WAVE")
-    return at(file, 0, "not a WAV file (no RIFF WAVE header)");
+    return at(codes::wav::not_wav, file, 0, "not a WAV file (no RIFF WAVE header)");
   std::size_t pos = 12;
   bool have_format = false;
   int channels = 0;
@@ -43,9 +44,10 @@ Result<AudioClip> read_wav(std::string_view b, const std::string& file) {
     const std::uint64_t size = u32(b, pos + 4);
     const std::size_t body = pos + 8;
     if (body + size > b.size())
-      return at(file, pos, "the WAV chunk '" + std::string(id) + "' runs past the end of the file");
+      return at(codes::wav::truncated_chunk, file, pos,
+                "the WAV chunk '" + std::string(id) + "' runs past the end of the file");
     if (id == "fmt ") {
-      if (size < 16) return at(file, pos, "the WAV fmt chunk is too short");
+      if (size < 16) return at(codes::wav::bad_format_chunk, file, pos, "the WAV fmt chunk is too short");
       format_at = pos;
       int tag = u16(b, body);
       channels = u16(b, body + 2);
@@ -58,21 +60,24 @@ Result<AudioClip> read_wav(std::string_view b, const std::string& file) {
                            : tag == 7 ? "mu-law"
                            : tag == 2 ? "ADPCM"
                                       : "non-PCM";
-        return at(file, body,
+        return at(codes::wav::unsupported_format, file, body,
                   std::string("the WAV file is ") + name + " (format " + std::to_string(tag) +
                       "); fapc reads 16-bit PCM WAV only: convert it, e.g. ffmpeg -i IN -c:a pcm_s16le OUT.wav");
       }
       if (bits != 16)
-        return at(file, body + 14,
+        return at(codes::wav::unsupported_format, file, body + 14,
                   "the WAV file is " + std::to_string(bits) +
                       "-bit PCM; fapc reads 16-bit PCM WAV only: convert it, e.g. ffmpeg -i IN -c:a pcm_s16le OUT.wav");
       if (channels < 1 || channels > 64)
-        return at(file, body + 2, "the WAV file has " + std::to_string(channels) + " channels (1 to 64)");
+        return at(codes::wav::bad_format_chunk, file, body + 2,
+                  "the WAV file has " + std::to_string(channels) + " channels (1 to 64)");
       if (rate < 1 || rate > 384000)
-        return at(file, body + 4, "the WAV sample rate " + std::to_string(rate) + " Hz is outside 1 to 384000");
+        return at(codes::wav::bad_format_chunk, file, body + 4,
+                  "the WAV sample rate " + std::to_string(rate) + " Hz is outside 1 to 384000");
       have_format = true;
     } else if (id == "data") {
-      if (!have_format) return at(file, pos, "the WAV data chunk comes before any fmt chunk");
+      if (!have_format)
+        return at(codes::wav::data_before_format, file, pos, "the WAV data chunk comes before any fmt chunk");
       AudioClip clip;
       clip.sample_rate = rate;
       clip.source = Location{file, 0, 0, static_cast<std::int64_t>(format_at)};
@@ -89,7 +94,8 @@ Result<AudioClip> read_wav(std::string_view b, const std::string& file) {
     }
     pos = body + size + (size & 1);
   }
-  return at(file, b.size(), have_format ? "the WAV file has no data chunk" : "the WAV file has no fmt chunk");
+  return at(codes::wav::missing_chunk, file, b.size(),
+            have_format ? "the WAV file has no data chunk" : "the WAV file has no fmt chunk");
 }
 
 std::string wav_bytes(const AudioTrack& track) {

@@ -2,6 +2,8 @@
 
 #include <array>
 
+#include "fapc/transcoder/codes.hpp"
+
 namespace fapc::mimic {
 namespace {
 
@@ -86,30 +88,31 @@ Result<ActionParams> read_params(const std::vector<Param>& params, const ErrorAt
   for (const Param& p : params) {
     const N n = p.id;
     if (std::optional<Number>* number = number_slot(out, n)) {
-      if (*number) return error(p.at, "'" + p.name() + "' is given twice");
+      if (*number) return error(codes::mimic::parameter_twice, p.at, "'" + p.name() + "' is given twice");
       *number = p.value.value_or(Number{0, p.at});
     } else if (n == N::connect) {
-      if (out.connect) return error(p.at, "'connect' is given twice");
+      if (out.connect) return error(codes::mimic::parameter_twice, p.at, "'connect' is given twice");
       out.connect = p;
     } else {
       const bool function = is_function(n);
       std::optional<Param>& slot = function ? out.function : out.blend;
       if (slot) {
-        return error(p.at, "'" + p.name() + "' conflicts with '" + slot->name() + "': one " +
-                               (function ? "fading function" : "blend mode") + " per action");
+        return error(codes::mimic::parameter_conflict, p.at,
+                     "'" + p.name() + "' conflicts with '" + slot->name() + "': one " +
+                         (function ? "fading function" : "blend mode") + " per action");
       }
       slot = p;
     }
     if (is_fade_param(n) && !out.first_fade) out.first_fade = &p;
     if (is_periodic_param(n) && !out.first_periodic) out.first_periodic = &p;
     if ((n == N::left && out.right) || (n == N::right && out.left)) {
-      return error(p.at, "'left' and 'right' together: an action is aligned one way");
+      return error(codes::mimic::parameter_conflict, p.at, "'left' and 'right' together: an action is aligned one way");
     }
     if (p.value && is_length(n) && p.value->value < 0) {
-      return error(p.value->at, "'" + p.name() + "' must not be negative");
+      return error(codes::mimic::parameter_out_of_range, p.value->at, "'" + p.name() + "' must not be negative");
     }
     if (p.value && (n == N::freq || n == N::period) && p.value->value == 0) {
-      return error(p.value->at, "'" + p.name() + "' must be greater than 0");
+      return error(codes::mimic::parameter_out_of_range, p.value->at, "'" + p.name() + "' must be greater than 0");
     }
   }
   return out;

@@ -26,8 +26,8 @@ struct ActionParams {
   std::optional<BlendMode> blend_mode() const;
 };
 
-// `error(position, message)` builds the diagnostic (the caller knows the file and source).
-using ErrorAt = std::function<Diagnostic(Position, const std::string&)>;
+// `error(code, position, message)` builds the diagnostic (the caller knows the file and source).
+using ErrorAt = std::function<Diagnostic(ErrorCode, Position, const std::string&)>;
 Result<ActionParams> read_params(const std::vector<Param>& params, const ErrorAt& error);
 
 }  // namespace fapc::mimic

@@ -4,6 +4,8 @@
 #include <charconv>
 #include <cmath>
 
+#include "fapc/transcoder/codes.hpp"
+
 namespace fapc {
 
 Result<std::vector<ExpressionEntry>> parse_expression_file(std::string_view text, const std::string& file_name) {
@@ -27,18 +29,18 @@ Result<std::vector<ExpressionEntry>> parse_expression_file(std::string_view text
       fields.emplace_back(line.substr(start, i - start), static_cast<int>(start) + 1);
     }
     if (fields.empty()) continue;
-    const auto error = [&](int column, std::string message) {
-      return make_error(Location::text(file_name, line_number, column), std::move(message), std::string(line));
+    const auto error = [&](ErrorCode code, int column, std::string message) {
+      return make_error(code, Location::text(file_name, line_number, column), std::move(message), std::string(line));
     };
     if (fields.size() != 2) {
-      return error(fields.size() > 2 ? fields[2].second : fields[0].second,
+      return error(codes::expression::field_count, fields.size() > 2 ? fields[2].second : fields[0].second,
                    "expected 'parameter value', found " + std::to_string(fields.size()) + " fields");
     }
     const std::string_view number = fields[1].first;
     double value = 0;
     const auto [stop, status] = std::from_chars(number.data(), number.data() + number.size(), value);
     if (status != std::errc{} || stop != number.data() + number.size() || !std::isfinite(value)) {
-      return error(fields[1].second, "'" + std::string(number) + "' is not a number");
+      return error(codes::expression::not_a_number, fields[1].second, "'" + std::string(number) + "' is not a number");
     }
     entries.push_back(
         ExpressionEntry{std::string(fields[0].first), value, Location::text(file_name, line_number, fields[0].second)});

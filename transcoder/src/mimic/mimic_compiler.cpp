@@ -19,6 +19,7 @@
 #include "fapc/codec/include_policy.hpp"
 #include "fapc/codec/nesting_limit.hpp"
 #include "fapc/transcoder/algebra.hpp"
+#include "fapc/transcoder/codes.hpp"
 #include "fapc/transcoder/expression_file.hpp"
 #include "fapc/transcoder/mimic.hpp"
 #include "fapc/transcoder/schedule.hpp"
@@ -143,9 +144,13 @@ class Compiler final : public MainSink {
     Result<ActionParams> main = read(main_params);
     if (!main) return hold(main.error(), Rank::other);
     if (main->right)
-      return hold(error(main->right->at, "'right' needs a parallel around it; main has none"), Rank::other);
+      return hold(error(codes::mimic::misplaced_parameter, main->right->at,
+                        "'right' needs a parallel around it; main has none"),
+                  Rank::other);
     if (const Param* p = atomic_param(*main)) {
-      return hold(error(p->at, "'" + p->name() + "' applies to atomic actions, not to main"), Rank::other);
+      return hold(
+          error(codes::mimic::misplaced_parameter, p->at, "'" + p->name() + "' applies to atomic actions, not to main"),
+          Rank::other);
     }
     main_params_ = std::move(*main);
   }
@@ -364,8 +369,8 @@ class Compiler final : public MainSink {
     return action;
   }
 
-  Diagnostic error(Position at, const std::string& message) const {
-    return make_error(location(at), message, source_line(source_, at.line));
+  Diagnostic error(ErrorCode code, Position at, const std::string& message) const {
+    return make_error(code, location(at), message, source_line(source_, at.line));
   }
   Diagnostic with_source_line(Diagnostic d) const {
     if (d.where.file == file_) d.source_line = source_line(source_, d.where.line);
@@ -379,7 +384,8 @@ class Compiler final : public MainSink {
   }
 
   Result<ActionParams> read(const std::vector<Param>& params) const {
-    return read_params(params, [this](Position at, const std::string& m) { return error(at, m); });
+    return read_params(params,
+                       [this](ErrorCode code, Position at, const std::string& m) { return error(code, at, m); });
   }
 
   // The first parameter that only an atomic action may have.
@@ -391,9 +397,11 @@ class Compiler final : public MainSink {
 
   Status collect_definitions() {
     for (const Definition& d : program_.definitions) {
-      if (macros_.contains(d.name)) return error(d.at, "'" + d.name + "' is defined twice");
+      if (macros_.contains(d.name))
+        return error(codes::mimic::defined_twice, d.at, "'" + d.name + "' is defined twice");
       if (!resolve_target(d.name, profile_).empty()) {
-        return error(d.at, "'" + d.name + "' is an animation parameter; a definition needs another name");
+        return error(codes::mimic::definition_name, d.at,
+                     "'" + d.name + "' is an animation parameter; a definition needs another name");
       }
       macros_[d.name] = &d;
       if (!d.expression) continue;
@@ -415,11 +423,14 @@ class Compiler final : public MainSink {
     const std::string& path = *resolved;
     Result<std::string> text = options_.read_file ? options_.read_file(path) : read_file_bytes(path);
     if (!text) {
-      return error(d.file_at, "cannot read the expression file '" + d.file + "': " + text.error().message);
+      return error(codes::mimic::expression_file_unreadable, d.file_at,
+                   "cannot read the expression file '" + d.file + "': " + text.error().message);
     }
     Result<std::vector<ExpressionEntry>> entries = parse_expression_file(*text, path);
     if (!entries) return entries.error();
-    if (entries->empty()) return error(d.file_at, "the expression file '" + d.file + "' sets no parameter");
+    if (entries->empty())
+      return error(codes::mimic::expression_file_empty, d.file_at,
+                   "the expression file '" + d.file + "' sets no parameter");
     Result<algebra::FacialState> state = algebra::state_from_entries(*entries, profile_);
     if (!state) {
       Diagnostic problem = state.error();
@@ -469,7 +480,8 @@ class Compiler final : public MainSink {
     if (params->left) prepared.timing.offset = params->left->value;
     if (params->right) {
       if (context.parent != Action::Kind::parallel) {
-        return error(params->right->at, "right alignment is only allowed in a parallel, not in a sequence");
+        return error(codes::mimic::misplaced_parameter, params->right->at,
+                     "right alignment is only allowed in a parallel, not in a sequence");
       }
       prepared.timing.align_right = params->right->value;
     }
@@ -481,7 +493,8 @@ class Compiler final : public MainSink {
   // A group's node, without its children.
   Result<ScheduleNode> group_node(const Action& group, const Prepared& prepared) const {
     if (const Param* p = atomic_param(prepared.params)) {
-      return error(p->at, "'" + p->name() + "' applies to atomic actions, not to a group");
+      return error(codes::mimic::misplaced_parameter, p->at,
+                   "'" + p->name() + "' applies to atomic actions, not to a group");
     }
     return ScheduleNode::group(group.kind == Action::Kind::sequence ? Kind::sequence : Kind::parallel, prepared.timing,
                                location(group.at));
@@ -490,14 +503,18 @@ class Compiler final : public MainSink {
   Result<ScheduleNode> instantiate(const Action& action, const Definition& macro, const ActionParams& params,
                                    const Timing& timing, const Context& body_context) {
     if (const Param* p = atomic_param(params)) {
-      return error(p->at, "'" + p->name() + "' does not apply to '" + macro.name +
-                              "', a macro: give it alignment and blend parameters only");
+      return error(codes::mimic::misplaced_parameter, p->at,
+                   "'" + p->name() + "' does not apply to '" + macro.name +
+                       "', a macro: give it alignment and blend parameters only");
     }
-    if (action.has_list) return error(action.list_at, "'" + macro.name + "' is a macro; it takes no time-value list");
+    if (action.has_list)
+      return error(codes::mimic::macro_with_list, action.list_at,
+                   "'" + macro.name + "' is a macro; it takes no time-value list");
     if (std::find(stack_.begin(), stack_.end(), macro.name) != stack_.end()) {
       std::string chain;
       for (const std::string& name : stack_) chain += name + " -> ";
-      return error(action.at, "the macro '" + macro.name + "' uses itself (" + chain + macro.name + ")");
+      return error(codes::mimic::recursive_macro, action.at,
+                   "the macro '" + macro.name + "' uses itself (" + chain + macro.name + ")");
     }
     stack_.push_back(macro.name);
     Result<ScheduleNode> body = build(macro.group, body_context);
@@ -525,17 +542,19 @@ class Compiler final : public MainSink {
       }
       leaf.target_count = static_cast<std::uint32_t>(targets_.size() - leaf.first_target);
     } else if (const std::uint32_t id = name_id(action.name); contributions(id).empty()) {
-      return error(action.at, unknown_parameter_message(action.name, profile_));
+      return error(codes::profile::unknown_parameter, action.at, unknown_parameter_message(action.name, profile_));
     } else {
       leaf.first_target = id;
       leaf.target_count = 1;
     }
     if (action.has_list) {
       if (expression != expressions_.end()) {
-        return error(action.list_at, "'" + action.name + "' is an expression; fade it with <in=..., value=...>");
+        return error(codes::mimic::expression_with_list, action.list_at,
+                     "'" + action.name + "' is an expression; fade it with <in=..., value=...>");
       }
       if (const Param* p = atomic_param(params)) {
-        return error(p->at, "'" + p->name() + "' does not apply to a time-value list");
+        return error(codes::mimic::misplaced_parameter, p->at,
+                     "'" + p->name() + "' does not apply to a time-value list");
       }
       if (auto checked = check_list(action); !checked) return checked.error();
       leaf.shape = Leaf::Shape::list;
@@ -546,15 +565,18 @@ class Compiler final : public MainSink {
                                     params.first_fade->at.column > params.first_periodic->at.column)
                                ? params.first_fade
                                : params.first_periodic;
-      return error(later->at, "'" + later->name() +
-                                  "' mixes a fade (in, hold, out, value) with a "
-                                  "periodic action (min, max, freq, period, duration)");
+      return error(codes::mimic::mixed_shapes, later->at,
+                   "'" + later->name() +
+                       "' mixes a fade (in, hold, out, value) with a "
+                       "periodic action (min, max, freq, period, duration)");
     } else if (params.first_fade || expression != expressions_.end()) {
       if (params.first_periodic) {
-        return error(params.first_periodic->at,
+        return error(codes::mimic::misplaced_parameter, params.first_periodic->at,
                      "'" + params.first_periodic->name() + "' does not apply to an expression fade");
       }
-      if (!params.value) return error(action.at, "a fade needs value=... (and in, hold, out as needed)");
+      if (!params.value)
+        return error(codes::mimic::fade_without_value, action.at,
+                     "a fade needs value=... (and in, hold, out as needed)");
       leaf.shape = Leaf::Shape::fade;
       timing.duration = value_or_zero(params.in) + value_or_zero(params.hold) + value_or_zero(params.out);
     } else if (params.first_periodic) {
@@ -562,9 +584,10 @@ class Compiler final : public MainSink {
       leaf.shape = Leaf::Shape::periodic;
       if (params.duration) timing.duration = params.duration->value;
     } else {
-      return error(action.at, "'" + action.name +
-                                  "' needs a fade (in, hold, out, value), a periodic "
-                                  "function (min, max, freq or period) or a time-value list");
+      return error(codes::mimic::no_shape, action.at,
+                   "'" + action.name +
+                       "' needs a fade (in, hold, out, value), a periodic "
+                       "function (min, max, freq or period) or a time-value list");
     }
     leaf.curve = curve_of(leaf.shape, params);
     if (leaf.shape == Leaf::Shape::list) {
@@ -616,33 +639,41 @@ class Compiler final : public MainSink {
 
   Status check_list(const Action& action) const {
     if (action.times.size() != action.values.size()) {
-      return error(action.list_at, std::to_string(action.times.size()) + " times but " +
-                                       std::to_string(action.values.size()) +
-                                       " values: a time-value list needs one value per time");
+      return error(codes::mimic::list_length, action.list_at,
+                   std::to_string(action.times.size()) + " times but " + std::to_string(action.values.size()) +
+                       " values: a time-value list needs one value per time");
     }
     for (std::size_t i = 0; i < action.times.size(); ++i) {
       const Number& t = action.times[i];
-      if (t.value < 0) return error(t.at, "times are offsets from the action's start and must not be negative");
+      if (t.value < 0)
+        return error(codes::mimic::list_time, t.at,
+                     "times are offsets from the action's start and must not be negative");
       if (i > 0 && t.value < action.times[i - 1].value) {
-        return error(t.at, "time " + format_number(t.value) + " comes before the previous time " +
-                               format_number(action.times[i - 1].value) + ": times must not decrease");
+        return error(codes::mimic::list_time, t.at,
+                     "time " + format_number(t.value) + " comes before the previous time " +
+                         format_number(action.times[i - 1].value) + ": times must not decrease");
       }
     }
     return ok_status();
   }
 
   Status check_periodic(const Action& action, const ActionParams& p, const Context& context) const {
-    if (!p.freq && !p.period) return error(action.at, "a periodic action needs freq=... or period=...");
+    if (!p.freq && !p.period)
+      return error(codes::mimic::periodic_incomplete, action.at, "a periodic action needs freq=... or period=...");
     if (p.freq && p.period && std::abs(p.freq->value * p.period->value - 1) > 1e-9) {
-      return error(p.period->at, "freq=" + format_number(p.freq->value) + " and period=" +
-                                     format_number(p.period->value) + " disagree (freq x period must be 1)");
+      return error(codes::mimic::parameter_conflict, p.period->at,
+                   "freq=" + format_number(p.freq->value) + " and period=" + format_number(p.period->value) +
+                       " disagree (freq x period must be 1)");
     }
-    if (!p.max) return error(action.at, "a periodic action needs max=... (min defaults to 0)");
+    if (!p.max)
+      return error(codes::mimic::periodic_incomplete, action.at, "a periodic action needs max=... (min defaults to 0)");
     if (p.function && p.function->id != ParamName::sin && p.function->id != ParamName::linear) {
-      return error(p.function->at, "a periodic action oscillates with sin or linear, not " + p.function->name());
+      return error(codes::mimic::bad_function, p.function->at,
+                   "a periodic action oscillates with sin or linear, not " + p.function->name());
     }
     if (!p.duration && context.parent != Action::Kind::parallel) {
-      return error(action.at, "a periodic action without duration= must be in a parallel, which gives its length");
+      return error(codes::mimic::periodic_without_length, action.at,
+                   "a periodic action without duration= must be in a parallel, which gives its length");
     }
     return ok_status();
   }
@@ -667,7 +698,7 @@ class Compiler final : public MainSink {
           const double fap_value = written * target.factor * c.scale;
           if (fap_value >= low && fap_value <= high) continue;
           warnings_.push_back(make_warning(
-              {"mimic.out_of_range"}, location(n->at),
+              codes::mimic::out_of_range, location(n->at),
               "value " + format_number(n->value) + " of '" + names_[target.name] + "' is " + format_number(fap_value) +
                   " in " + std::string(find_fap(c.fap)->name) + " units, outside " + std::to_string(low) + ".." +
                   std::to_string(high) + " (it will be clamped)",

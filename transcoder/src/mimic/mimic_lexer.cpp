@@ -3,6 +3,8 @@
 #include <charconv>
 #include <string>
 
+#include "fapc/transcoder/codes.hpp"
+
 namespace fapc::mimic {
 
 const char* describe(TokenKind kind) {
@@ -117,13 +119,14 @@ Token Lexer::next() {
     token.text = source_.substr(at_, 1);
     ++at_;
   } else {
-    return fail(token.line, token.column, std::string("unexpected character '") + c + "'");
+    return fail(codes::mimic::unexpected_character, token.line, token.column,
+                std::string("unexpected character '") + c + "'");
   }
   return token;
 }
 
-Token Lexer::fail(int line, int col, std::string message) {
-  error_ = make_error(Location::text(file_, line, col), std::move(message), source_line(source_, line));
+Token Lexer::fail(ErrorCode code, int line, int col, std::string message) {
+  error_ = make_error(code, Location::text(file_, line, col), std::move(message), source_line(source_, line));
   return Token{TokenKind::error, {}, 0, line, col};
 }
 
@@ -148,7 +151,7 @@ bool Lexer::skip_blanks_and_comments() {
       at_ += 2;
       while (at_ < source_.size() && source_.substr(at_, 2) != "*/") advance();
       if (at_ >= source_.size()) {
-        fail(line, col, "unterminated comment: '/*' without '*/'");
+        fail(codes::mimic::unterminated, line, col, "unterminated comment: '/*' without '*/'");
         return false;
       }
       at_ += 2;
@@ -180,11 +183,12 @@ bool Lexer::read_number(Token& token) {
   if (text.starts_with('+')) text.remove_prefix(1);
   const auto [stop, status] = std::from_chars(text.data(), text.data() + text.size(), token.number);
   if (status != std::errc{} || stop != text.data() + text.size()) {
-    fail(token.line, token.column, "'" + token.str() + "' is not a number");
+    fail(codes::mimic::bad_number, token.line, token.column, "'" + token.str() + "' is not a number");
     return false;
   }
   if (at_ < source_.size() && starts_identifier(source_[at_])) {
-    fail(line_, column(), "a number must not run into a name ('" + token.str() + source_[at_] + "...')");
+    fail(codes::mimic::bad_number, line_, column(),
+         "a number must not run into a name ('" + token.str() + source_[at_] + "...')");
     return false;
   }
   token.kind = TokenKind::number;
@@ -196,7 +200,7 @@ bool Lexer::read_string(Token& token) {
   const std::size_t start = at_;
   while (at_ < source_.size() && source_[at_] != '"' && source_[at_] != '\n') ++at_;
   if (at_ >= source_.size() || source_[at_] != '"') {
-    fail(token.line, token.column, "unterminated file name: '\"' without a closing '\"'");
+    fail(codes::mimic::unterminated, token.line, token.column, "unterminated file name: '\"' without a closing '\"'");
     return false;
   }
   token.kind = TokenKind::string;

@@ -58,7 +58,7 @@ class Lexer {
   Diagnostic error_;
 
   int column() const { return static_cast<int>(at_ - line_start_) + 1; }
-  Token fail(int line, int column, std::string message);
+  Token fail(ErrorCode code, int line, int column, std::string message);
   void advance();
   bool skip_blanks_and_comments();
   bool number_follows() const;

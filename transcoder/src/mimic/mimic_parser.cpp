@@ -2,6 +2,7 @@
 
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/codec/nesting_limit.hpp"
+#include "fapc/transcoder/codes.hpp"
 #include "mimic_lexer.hpp"
 
 namespace fapc::mimic {
@@ -66,8 +67,8 @@ class Parser {
   }
   static Position position(const Token& t) { return Position{t.line, t.column}; }
 
-  Diagnostic error_at(const Token& t, std::string message) const {
-    return make_error(Location::text(file_, t.line, t.column), std::move(message), source_line(source_, t.line));
+  Diagnostic error_at(ErrorCode code, const Token& t, std::string message) const {
+    return make_error(code, Location::text(file_, t.line, t.column), std::move(message), source_line(source_, t.line));
   }
   Diagnostic unexpected(const std::string& wanted) const {
     const Token& t = peek();
@@ -75,7 +76,7 @@ class Parser {
     const std::string found = t.kind == TokenKind::end_of_input ? "the end of the program"
                               : t.kind == TokenKind::string     ? "\"" + t.str() + "\""
                                                                 : "'" + t.str() + "'";
-    return error_at(t, "expected " + wanted + ", found " + found);
+    return error_at(codes::mimic::syntax, t, "expected " + wanted + ", found " + found);
   }
 
   Result<Token> expect(TokenKind kind, const std::string& wanted) {
@@ -88,7 +89,8 @@ class Parser {
     definition.expression = next().text == "defxpr";
     Result<Token> name = expect(TokenKind::identifier, "a name to define");
     if (!name) return name.error();
-    if (is_keyword(name->text)) return error_at(*name, "'" + name->str() + "' is a keyword, not a name");
+    if (is_keyword(name->text))
+      return error_at(codes::mimic::keyword_as_name, *name, "'" + name->str() + "' is a keyword, not a name");
     definition.name = name->str();
     definition.at = position(*name);
     if (definition.expression) {
@@ -127,14 +129,14 @@ class Parser {
     const TokenKind close = group.kind == Action::Kind::sequence ? TokenKind::right_brace : TokenKind::right_bracket;
     next();
     if (peek().kind == close) {
-      return error_at(peek(), std::string("an empty ") +
-                                  (group.kind == Action::Kind::sequence ? "sequence" : "parallel") +
-                                  ": a group needs at least one action");
+      return error_at(codes::mimic::empty_group, peek(),
+                      std::string("an empty ") + (group.kind == Action::Kind::sequence ? "sequence" : "parallel") +
+                          ": a group needs at least one action");
     }
     if (streaming_) sink_.open_group(group);
     while (peek().kind != close) {
       if (peek().kind == TokenKind::end_of_input) {
-        return error_at(open,
+        return error_at(codes::mimic::unclosed_group, open,
                         std::string("this '") + (close == TokenKind::right_brace ? "{" : "[") + "' is never closed");
       }
       Result<Action> child = action(close);
@@ -164,7 +166,8 @@ class Parser {
     Result<Token> name = expect(TokenKind::identifier, "an action (a name, '{', '[' or '<')");
     if (!name) return name.error();
     if (is_keyword(name->text)) {
-      return error_at(*name, "'" + name->str() + "' must come before main, at the top of the program");
+      return error_at(codes::mimic::definition_after_main, *name,
+                      "'" + name->str() + "' must come before main, at the top of the program");
     }
     Action atomic;
     atomic.kind = Action::Kind::named;
@@ -218,25 +221,28 @@ class Parser {
       if (!name) return name.error();
       const std::optional<ParamName> id = param_name(name->text);
       if (!id) {
-        return error_at(*name, "unknown parameter " + quoted_name(name->text) +
-                                   " (expected left, right, in, hold, out, value, connect, "
-                                   "duration, freq, period, min, max, linear, sin, log, exp, "
-                                   "average, add or overwrite)");
+        return error_at(codes::mimic::unknown_parameter, *name,
+                        "unknown parameter " + quoted_name(name->text) +
+                            " (expected left, right, in, hold, out, value, connect, "
+                            "duration, freq, period, min, max, linear, sin, log, exp, "
+                            "average, add or overwrite)");
       }
       Param param{*id, position(*name), std::nullopt};
       if (peek().kind == TokenKind::equals) {
         if (takes_no_value(param.id)) {
-          return error_at(peek(), "'" + param.name() + "' takes no value");
+          return error_at(codes::mimic::parameter_value, peek(), "'" + param.name() + "' takes no value");
         }
         next();
         if (peek().kind == TokenKind::identifier) {
-          return error_at(peek(), "'" + param.name() + "' takes a number, not the name '" + peek().str() + "'");
+          return error_at(codes::mimic::parameter_value, peek(),
+                          "'" + param.name() + "' takes a number, not the name '" + peek().str() + "'");
         }
         Result<Token> value = expect(TokenKind::number, "a number after '" + param.name() + "='");
         if (!value) return value.error();
         param.value = Number{value->number, position(*value)};
       } else if (needs_value(param.id)) {
-        return error_at(*name, "'" + param.name() + "' needs a value ('" + param.name() + "=...')");
+        return error_at(codes::mimic::parameter_value, *name,
+                        "'" + param.name() + "' needs a value ('" + param.name() + "=...')");
       }
       params.push_back(std::move(param));
       if (peek().kind == TokenKind::comma) {

@@ -6,6 +6,7 @@
 #include <span>
 #include <sstream>
 
+#include "fapc/transcoder/codes.hpp"
 #include "fapc/transcoder/frame_budget.hpp"
 #include "timeline_index.hpp"
 
@@ -47,7 +48,7 @@ class FrameRenderer {
       Driver driver{&target_index, resolve_target(target, profile), -1};
       if (driver.contributions.empty()) {
         const Clip& first = index_.clips[target_index.clips.front()];
-        return make_error(first.source, unknown_parameter_message(target, profile));
+        return make_error(codes::profile::unknown_parameter, first.source, unknown_parameter_message(target, profile));
       }
       if (const std::optional<WeightTarget> weight = weight_target(target)) {
         driver.weight_slot = weight->number;
@@ -122,7 +123,7 @@ class FrameRenderer {
       std::ostringstream message;
       message << what << " of '" << clip.target << "' reaches " << rounded << " at " << t << " s, outside " << low
               << ".." << high << "; clamped";
-      warnings_.push_back(make_warning({"render.clamped"}, clip.source, message.str()));
+      warnings_.push_back(make_warning(codes::render::clamped, clip.source, message.str()));
     }
     return static_cast<int>(std::clamp(rounded, double(low), double(high)));
   }
@@ -151,7 +152,7 @@ FrameStream& FrameStream::operator=(FrameStream&&) noexcept = default;
 FrameStream::~FrameStream() = default;
 
 Result<FrameStream> FrameStream::start(const Timeline& timeline, const RenderOptions& options) {
-  if (options.fps <= 0) return make_error(ErrorKind::usage, Location{}, "the frame rate must be positive");
+  if (options.fps <= 0) return make_error(codes::render::bad_frame_rate, Location{}, "the frame rate must be positive");
   const FrameBudget budget{options.fps, options.max_frames};
   if (budget.exceeded_by(timeline.end())) return frame_budget_error(timeline.end(), where_it_ends(timeline), budget);
   const auto count = static_cast<std::int64_t>(std::ceil(timeline.end() * options.fps - 1e-9));

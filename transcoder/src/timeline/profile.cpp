@@ -7,6 +7,7 @@
 
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/codec/file_io.hpp"
+#include "fapc/transcoder/codes.hpp"
 
 namespace fapc {
 namespace {
@@ -61,28 +62,30 @@ Result<Profile> parse_profile(std::string_view text, const std::string& file_nam
     if (line.ends_with('\r')) line.remove_suffix(1);
     const std::vector<Field> fields = split_fields(line);
     if (fields.empty()) continue;
-    const auto error = [&](const Field& at, std::string message) {
-      return make_error(Location::text(file_name, line_number, at.column), std::move(message), std::string(line));
+    const auto error = [&](ErrorCode code, const Field& at, std::string message) {
+      return make_error(code, Location::text(file_name, line_number, at.column), std::move(message), std::string(line));
     };
     if (fields.size() != 3) {
-      return error(fields.size() > 3 ? fields[3] : fields.back(),
+      return error(codes::profile::field_count, fields.size() > 3 ? fields[3] : fields.back(),
                    "expected 'name fap scale', found " + std::to_string(fields.size()) + " fields");
     }
     const FapInfo* fap = find_fap_by_name_or_number(fields[1].text);
     if (fap == nullptr || fap->number <= 2) {
-      return error(fields[1], fap ? "FAP 1 and 2 are not scalar parameters; use viseme.<name> or "
-                                    "expression.<name> targets"
-                                  : unknown_fap_message(fields[1].text));
+      return error(codes::profile::bad_fap, fields[1],
+                   fap ? "FAP 1 and 2 are not scalar parameters; use viseme.<name> or "
+                         "expression.<name> targets"
+                       : unknown_fap_message(fields[1].text));
     }
     double scale = 0;
     const Field& scale_field = fields[2];
     const char* end = scale_field.text.data() + scale_field.text.size();
     const auto [stop, status] = std::from_chars(scale_field.text.data(), end, scale);
     if (status != std::errc{} || stop != end || !std::isfinite(scale)) {
-      return error(scale_field, "the scale '" + std::string(scale_field.text) + "' is not a number");
+      return error(codes::profile::bad_scale, scale_field,
+                   "the scale '" + std::string(scale_field.text) + "' is not a number");
     }
     if (find_fap_by_name_or_number(fields[0].text) != nullptr) {
-      return error(fields[0],
+      return error(codes::profile::standard_name, fields[0],
                    "'" + std::string(fields[0].text) + "' is a standard FAP name; a profile maps other names");
     }
     profile.parameters[std::string(fields[0].text)].push_back(FapContribution{fap->number, scale});

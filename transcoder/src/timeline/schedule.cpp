@@ -9,6 +9,8 @@
 #include <limits>
 #include <sstream>
 
+#include "fapc/transcoder/codes.hpp"
+
 namespace fapc {
 namespace {
 
@@ -343,10 +345,34 @@ ScheduleNode ScheduleNode::group(Kind kind, Timing timing, Location source) {
   return node;
 }
 
+namespace {
+
+// Each problem's code (codes.def): a user mends each differently.
+ErrorCode schedule_code(ScheduleProblem problem) {
+  switch (problem) {
+    case ScheduleProblem::no_duration:
+      return codes::timeline::no_duration;
+    case ScheduleProblem::starts_before_zero:
+      return codes::timeline::starts_before_zero;
+    case ScheduleProblem::ends_too_late:
+      return codes::timeline::ends_too_late;
+    case ScheduleProblem::endless_repeat:
+      return codes::timeline::endless_repeat;
+    case ScheduleProblem::too_many_runs:
+      return codes::limit::runs;
+    case ScheduleProblem::right_without_end:
+      return codes::timeline::right_without_end;
+    case ScheduleProblem::right_in_sequence:
+      return codes::timeline::right_in_sequence;
+  }
+  return codes::timeline::no_duration;
+}
+
+}  // namespace
+
 Diagnostic ScheduleError::diagnostic(std::string_view subject) const {
-  const ErrorKind kind = problem == ScheduleProblem::too_many_runs ? ErrorKind::limit_exceeded : ErrorKind::bad_input;
   std::string message = subject.empty() ? predicate : std::string(subject) + ' ' + predicate;
-  return make_error(kind, where, std::move(message));
+  return make_error(schedule_code(problem), where, std::move(message));
 }
 
 Result<Schedule> schedule(const ScheduleNode& root, const ScheduleOptions& options) {

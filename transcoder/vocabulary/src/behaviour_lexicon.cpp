@@ -7,6 +7,7 @@
 #include <set>
 
 #include "fapc/codec/did_you_mean.hpp"
+#include "fapc/vocabulary/codes.hpp"
 #include "fapc/vocabulary/mapping_table.hpp"
 #include "tsv_lines.hpp"
 
@@ -50,7 +51,7 @@ Result<LexiconBehaviour> behaviour_of(const std::string& file, const TsvLine& li
       {"headturn", LexiconBehaviour::head_turn}, {"none", LexiconBehaviour::none}};
   for (const auto& [name, kind] : kinds)
     if (cell.text == name) return kind;
-  return cell_error(file, line, cell,
+  return cell_error(codes::vocabulary::unknown_name, file, line, cell,
                     "'" + std::string(cell.text) + "' is not a behaviour: lexeme, au, head, gaze, headturn or none" +
                         did_you_mean(cell.text, {"lexeme", "au", "head", "gaze", "headturn", "none"}));
 }
@@ -61,7 +62,7 @@ Status check_name(const std::string& file, const TsvLine& line, const TsvCell& c
   auto unknown = [&](const std::string& what, const std::vector<std::string>& known) {
     std::string list;
     for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-    return cell_error(file, line, cell,
+    return cell_error(codes::vocabulary::unknown_name, file, line, cell,
                       "'" + name + "' is not " + what + " (" + list + ")" + did_you_mean(name, known));
   };
   switch (row.behaviour) {
@@ -80,11 +81,12 @@ Status check_name(const std::string& file, const TsvLine& line, const TsvCell& c
       const char* end = digits.data() + digits.size();
       const auto [ptr, ec] = std::from_chars(digits.data(), end, row.unit);
       if (ec != std::errc{} || ptr != end || row.unit < 1 || row.unit > 99)
-        return cell_error(file, line, cell, "'" + name + "' is not an action unit: 1-99, L or R in front for one side");
+        return cell_error(codes::vocabulary::bad_value, file, line, cell,
+                          "'" + name + "' is not an action unit: 1-99, L or R in front for one side");
       const MappingTable& units = action_unit_table();
       const std::string key = std::to_string(row.unit);
       if (!units.has_key(key) || units.is_lost(key))
-        return cell_error(file, line, cell,
+        return cell_error(codes::vocabulary::draws_nothing, file, line, cell,
                           "action unit " + key + " moves no FAP in au_faps.tsv: it would draw nothing");
       break;
     }
@@ -95,7 +97,7 @@ Status check_name(const std::string& file, const TsvLine& line, const TsvCell& c
         const std::string_view count = std::string_view(name).substr(star + 1);
         const auto [ptr, ec] = std::from_chars(count.data(), count.data() + count.size(), row.repetition);
         if (ec != std::errc{} || ptr != count.data() + count.size() || row.repetition < 1 || row.repetition > 20)
-          return cell_error(file, line, cell,
+          return cell_error(codes::vocabulary::bad_value, file, line, cell,
                             "'" + name + "': the repetitions after '*' are a whole number from 1 to 20");
       }
       const auto& known = head_lexemes();
@@ -111,7 +113,8 @@ Status check_name(const std::string& file, const TsvLine& line, const TsvCell& c
       break;
     }
     case LexiconBehaviour::none:
-      if (name != "-") return cell_error(file, line, cell, "a `none` row names nothing: write '-'");
+      if (name != "-")
+        return cell_error(codes::vocabulary::bad_value, file, line, cell, "a `none` row names nothing: write '-'");
       break;
   }
   row.name = name;
@@ -169,18 +172,23 @@ Result<BehaviourLexicon> parse_behaviour_lexicon(std::string_view text, const st
     row.line = line.line;
     row.intention = std::string(cells[0].text);
     row.value = std::string(cells[1].text);
-    if (row.intention.empty()) return cell_error(file, line, cells[0], "the intention is empty");
-    if (row.value.empty()) return cell_error(file, line, cells[1], "the value is empty: write '*' for every value");
+    if (row.intention.empty())
+      return cell_error(codes::vocabulary::empty_cell, file, line, cells[0], "the intention is empty");
+    if (row.value.empty())
+      return cell_error(codes::vocabulary::empty_cell, file, line, cells[1],
+                        "the value is empty: write '*' for every value");
     Result<LexiconBehaviour> behaviour = behaviour_of(file, line, cells[2]);
     if (!behaviour) return behaviour.error();
     row.behaviour = *behaviour;
     if (Status name = check_name(file, line, cells[3], row); !name) return name.error();
     const auto amount = finite_number(cells[4].text);
-    if (!amount) return cell_error(file, line, cells[4], "'" + std::string(cells[4].text) + "' is not a number");
+    if (!amount)
+      return cell_error(codes::vocabulary::bad_value, file, line, cells[4],
+                        "'" + std::string(cells[4].text) + "' is not a number");
     const double limit =
         row.behaviour == LexiconBehaviour::gaze || row.behaviour == LexiconBehaviour::head_turn ? 60 : 2;
     if (std::abs(*amount) > limit)
-      return cell_error(file, line, cells[4],
+      return cell_error(codes::vocabulary::bad_value, file, line, cells[4],
                         "the amount " + std::string(cells[4].text) + " is beyond " +
                             (limit == 60 ? "60 degrees" : "twice the behaviour's full size"));
     row.amount = *amount;
@@ -190,16 +198,20 @@ Result<BehaviourLexicon> parse_behaviour_lexicon(std::string_view text, const st
       const TsvCell& cell = cells[5 + static_cast<std::size_t>(f)];
       const auto fraction = finite_number(cell.text);
       if (!fraction || *fraction < 0 || *fraction > 1)
-        return cell_error(file, line, cell, "'" + std::string(cell.text) + "' is not a fraction of the span (0 to 1)");
+        return cell_error(codes::vocabulary::bad_value, file, line, cell,
+                          "'" + std::string(cell.text) + "' is not a fraction of the span (0 to 1)");
       if (*fraction < previous)
-        return cell_error(file, line, cell,
+        return cell_error(codes::vocabulary::bad_value, file, line, cell,
                           "the fractions start, ready, relax, end must not decrease: " + std::string(cell.text) +
                               " comes after " + std::to_string(previous));
       *fractions[f] = previous = *fraction;
     }
-    if (row.end <= row.start) return cell_error(file, line, cells[8], "the behaviour must end after it starts");
+    if (row.end <= row.start)
+      return cell_error(codes::vocabulary::bad_value, file, line, cells[8], "the behaviour must end after it starts");
     row.reason = std::string(cells[9].text);
-    if (row.reason.empty()) return cell_error(file, line, cells[9], "every row says why it holds: the reason is empty");
+    if (row.reason.empty())
+      return cell_error(codes::vocabulary::no_reason, file, line, cells[9],
+                        "every row says why it holds: the reason is empty");
     lexicon.rows.push_back(std::move(row));
   }
   return lexicon;

@@ -10,6 +10,7 @@
 #include "fapc/codec/did_you_mean.hpp"
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/vocabulary/arkit_shapes.hpp"
+#include "fapc/vocabulary/codes.hpp"
 #include "tsv_lines.hpp"
 
 namespace fapc::vocabulary {
@@ -42,13 +43,14 @@ Result<std::string> check_key(const std::string& file, const TsvLine& line, cons
     const char* end = cell.text.data() + cell.text.size();
     const auto [ptr, ec] = std::from_chars(cell.text.data(), end, au);
     if (ec != std::errc{} || ptr != end || au < 1 || au > 99) {
-      return cell_error(file, line, cell, "'" + std::string(cell.text) + "' is not an action unit number (1-99)");
+      return cell_error(codes::vocabulary::bad_value, file, line, cell,
+                        "'" + std::string(cell.text) + "' is not an action unit number (1-99)");
     }
     return std::to_string(au);
   }
   const std::optional<int> shape = find_arkit_shape(cell.text);
   if (!shape || arkit_shape_names()[static_cast<std::size_t>(*shape)] != cell.text) {
-    return cell_error(file, line, cell,
+    return cell_error(codes::vocabulary::unknown_name, file, line, cell,
                       "'" + std::string(cell.text) + "' is not one of ARKit's 52 shape names (camelCase)" +
                           did_you_mean(cell.text, arkit_candidates()));
   }
@@ -62,13 +64,14 @@ Status check_motion(const std::string& file, const TsvLine& line, MappingRow& ro
   const TsvCell& amount_cell = line.cells[3];
   if (fap_cell.text == "-") {
     if (direction_cell.text != "-" || amount_cell.text != "0") {
-      return cell_error(file, line, direction_cell, "a row without a FAP ('-') has direction '-' and amount 0");
+      return cell_error(codes::vocabulary::bad_value, file, line, direction_cell,
+                        "a row without a FAP ('-') has direction '-' and amount 0");
     }
     return ok_status();
   }
   const FapInfo* info = find_fap_by_name_or_number(fap_cell.text);
   if (!info || info->number < 3) {
-    return cell_error(file, line, fap_cell,
+    return cell_error(codes::vocabulary::bad_value, file, line, fap_cell,
                       info
                           ? "FAP " + std::to_string(info->number) + " is high-level; a table row names one of FAPs 3-68"
                           : unknown_fap_message(fap_cell.text));
@@ -76,17 +79,18 @@ Status check_motion(const std::string& file, const TsvLine& line, MappingRow& ro
   row.fap = info->number;
   const std::optional<double> amount = finite_number(amount_cell.text);
   if (!amount || *amount == 0) {
-    return cell_error(file, line, amount_cell, "'" + std::string(amount_cell.text) + "' is not a non-zero number");
+    return cell_error(codes::vocabulary::bad_value, file, line, amount_cell,
+                      "'" + std::string(amount_cell.text) + "' is not a non-zero number");
   }
   if (std::abs(*amount) > info->legal_max()) {
-    return cell_error(file, line, amount_cell,
+    return cell_error(codes::vocabulary::bad_value, file, line, amount_cell,
                       std::string(amount_cell.text) + " is outside " + std::string(info->name) +
                           "'s legal range of +-" + std::to_string(info->legal_max()));
   }
   row.amount = *amount;
   const std::string_view expected = *amount > 0 ? info->positive_motion : opposite(info->positive_motion);
   if (direction_cell.text != expected) {
-    return cell_error(file, line, direction_cell,
+    return cell_error(codes::vocabulary::bad_value, file, line, direction_cell,
                       "direction '" + std::string(direction_cell.text) + "' disagrees with amount " +
                           std::string(amount_cell.text) + ": a " + (*amount > 0 ? "positive " : "negative ") +
                           std::string(info->name) + " moves " + std::string(expected));
@@ -148,16 +152,17 @@ Result<MappingTable> parse_mapping_table(std::string_view text, const std::strin
     MappingRow row{*key, 0, 0, std::string(line.cells[4].text), line.line};
     if (Status motion = check_motion(file, line, row); !motion) return motion.error();
     if (row.reason.empty())
-      return cell_error(file, line, line.cells[4], "every row says why it holds: the reason is empty");
+      return cell_error(codes::vocabulary::no_reason, file, line, line.cells[4],
+                        "every row says why it holds: the reason is empty");
     const auto [it, fresh] = seen.emplace(std::make_pair(row.key, row.fap), line.line);
     if (!fresh) {
-      return cell_error(file, line, line.cells[1],
+      return cell_error(codes::vocabulary::duplicate_row, file, line, line.cells[1],
                         "'" + row.key + "' and " + std::string(line.cells[1].text) + " are already given on line " +
                             std::to_string(it->second));
     }
     (row.fap == 0 ? keys_lost : keys_with_fap).insert(row.key);
     if (keys_lost.count(row.key) > 0 && keys_with_fap.count(row.key) > 0) {
-      return cell_error(file, line, line.cells[1],
+      return cell_error(codes::vocabulary::duplicate_row, file, line, line.cells[1],
                         "'" + row.key + "' has both a row without a FAP ('-') and rows with FAPs");
     }
     table.rows.push_back(std::move(row));
@@ -165,7 +170,7 @@ Result<MappingTable> parse_mapping_table(std::string_view text, const std::strin
   if (kind == TableKind::arkit_shapes) {
     for (std::string_view shape : arkit_shape_names()) {
       if (!table.has_key(shape)) {
-        return make_error(Location::text(file, lines->front().line, 1),
+        return make_error(codes::vocabulary::missing_row, Location::text(file, lines->front().line, 1),
                           "shape '" + std::string(shape) +
                               "' has no row: every one of the 52 shapes needs one "
                               "(a row with fap '-' if no FAP carries it)",

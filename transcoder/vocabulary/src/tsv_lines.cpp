@@ -4,6 +4,8 @@
 #include <charconv>
 #include <cmath>
 
+#include "fapc/vocabulary/codes.hpp"
+
 namespace fapc::vocabulary {
 
 Result<std::vector<TsvLine>> split_tsv(std::string_view text, const std::string& file, std::size_t max_lines) {
@@ -17,7 +19,7 @@ Result<std::vector<TsvLine>> split_tsv(std::string_view text, const std::string&
   }
   if (rows > max_lines) {
     return make_error(
-        ErrorKind::limit_exceeded, Location::text(file, 1, 1),
+        codes::vocabulary::too_many_lines, Location::text(file, 1, 1),
         "the table has " + std::to_string(rows) + " lines, more than the limit of " + std::to_string(max_lines));
   }
   std::vector<TsvLine> lines;
@@ -35,8 +37,8 @@ Result<std::vector<TsvLine>> split_tsv(std::string_view text, const std::string&
       continue;
     }
     if (const std::size_t cr = line.find('\r'); cr != std::string_view::npos) {
-      return make_error(Location::text(file, number, static_cast<int>(cr) + 1), "a carriage return inside a line",
-                        std::string(line));
+      return make_error(codes::vocabulary::carriage_return, Location::text(file, number, static_cast<int>(cr) + 1),
+                        "a carriage return inside a line", std::string(line));
     }
     TsvLine parsed{number, line, {}};
     for (std::size_t start = 0;;) {
@@ -60,8 +62,9 @@ std::optional<double> finite_number(std::string_view text) {
   return value;
 }
 
-Diagnostic cell_error(const std::string& file, const TsvLine& line, const TsvCell& cell, std::string message) {
-  return make_error(Location::text(file, line.line, cell.column), std::move(message), std::string(line.whole));
+Diagnostic cell_error(ErrorCode code, const std::string& file, const TsvLine& line, const TsvCell& cell,
+                      std::string message) {
+  return make_error(code, Location::text(file, line.line, cell.column), std::move(message), std::string(line.whole));
 }
 
 Status check_columns(const std::vector<TsvLine>& lines, const std::string& file,
@@ -69,28 +72,31 @@ Status check_columns(const std::vector<TsvLine>& lines, const std::string& file,
   std::string wanted;
   for (std::string_view name : expected) wanted += (wanted.empty() ? "" : " ") + std::string(name);
   if (lines.empty()) {
-    return make_error(Location::text(file, 1, 1), "no header line: expected the columns " + wanted);
+    return make_error(codes::vocabulary::bad_header, Location::text(file, 1, 1),
+                      "no header line: expected the columns " + wanted);
   }
   const TsvLine& header = lines.front();
   for (std::size_t i = 0; i < expected.size(); ++i) {
     if (i >= header.cells.size()) {
-      return make_error(Location::text(file, header.line, static_cast<int>(header.whole.size()) + 1),
+      return make_error(codes::vocabulary::bad_header,
+                        Location::text(file, header.line, static_cast<int>(header.whole.size()) + 1),
                         "the header ends before column '" + std::string(expected[i]) + "' (expected " + wanted + ")",
                         std::string(header.whole));
     }
     if (header.cells[i].text != expected[i]) {
-      return cell_error(file, header, header.cells[i],
+      return cell_error(codes::vocabulary::bad_header, file, header, header.cells[i],
                         "column " + std::to_string(i + 1) + " is '" + std::string(header.cells[i].text) +
                             "', expected '" + std::string(expected[i]) + "' (the columns are " + wanted + ")");
     }
   }
   for (const TsvLine& line : lines) {
     if (line.cells.size() > expected.size()) {
-      return cell_error(file, line, line.cells[expected.size()],
+      return cell_error(codes::vocabulary::cell_count, file, line, line.cells[expected.size()],
                         "more than " + std::to_string(expected.size()) + " tab-separated cells");
     }
     if (line.cells.size() < expected.size()) {
-      return make_error(Location::text(file, line.line, static_cast<int>(line.whole.size()) + 1),
+      return make_error(codes::vocabulary::cell_count,
+                        Location::text(file, line.line, static_cast<int>(line.whole.size()) + 1),
                         std::to_string(line.cells.size()) + " tab-separated cells, expected " +
                             std::to_string(expected.size()) + " (" + wanted + ")",
                         std::string(line.whole));

@@ -31,7 +31,8 @@ Result<std::vector<TsvLine>> split_tsv(std::string_view text, const std::string&
 std::optional<double> finite_number(std::string_view text);
 
 // An error at a cell of a line.
-Diagnostic cell_error(const std::string& file, const TsvLine& line, const TsvCell& cell, std::string message);
+Diagnostic cell_error(ErrorCode code, const std::string& file, const TsvLine& line, const TsvCell& cell,
+                      std::string message);
 
 // Checks that `header` names exactly `expected` in order, and that every later line has as many
 // cells.

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "fapc/codec/fap_table.hpp"
+#include "fapc/vocabulary/codes.hpp"
 #include "fapc/vocabulary/mapping_table.hpp"
 #include "tsv_lines.hpp"
 
@@ -23,31 +24,34 @@ Result<std::vector<VisemeRow>> parse_viseme_table(std::string_view text, const s
     int viseme = -1;
     const auto [ptr, ec] = std::from_chars(number.text.data(), number.text.data() + number.text.size(), viseme);
     if (ec != std::errc{} || ptr != number.text.data() + number.text.size() || viseme < 0 || viseme >= kVisemeCount) {
-      return cell_error(file, line, number, "'" + std::string(number.text) + "' is not a viseme number (0-14)");
+      return cell_error(codes::vocabulary::bad_value, file, line, number,
+                        "'" + std::string(number.text) + "' is not a viseme number (0-14)");
     }
     VisemeRow& row = rows[static_cast<std::size_t>(viseme)];
     if (row.line != 0) {
-      return cell_error(file, line, number,
+      return cell_error(codes::vocabulary::duplicate_row, file, line, number,
                         "viseme " + std::to_string(viseme) + " is already given on line " + std::to_string(row.line));
     }
     if (line.cells[1].text != viseme_name(viseme)) {
-      return cell_error(file, line, line.cells[1],
+      return cell_error(codes::vocabulary::bad_value, file, line, line.cells[1],
                         "viseme " + std::to_string(viseme) + " is '" + std::string(viseme_name(viseme)) +
                             "' in the standard, not '" + std::string(line.cells[1].text) + "'");
     }
     const std::string_view openxr = line.cells[2].text;
-    if (openxr.empty()) return cell_error(file, line, line.cells[2], "the OpenXR name is empty");
+    if (openxr.empty())
+      return cell_error(codes::vocabulary::empty_cell, file, line, line.cells[2], "the OpenXR name is empty");
     if (const auto [it, fresh] = openxr_lines.emplace(openxr, line.line); !fresh) {
-      return cell_error(file, line, line.cells[2],
+      return cell_error(codes::vocabulary::duplicate_row, file, line, line.cells[2],
                         "'" + std::string(openxr) + "' is already given on line " + std::to_string(it->second));
     }
-    if (line.cells[3].text.empty()) return cell_error(file, line, line.cells[3], "the reason is empty");
+    if (line.cells[3].text.empty())
+      return cell_error(codes::vocabulary::no_reason, file, line, line.cells[3], "the reason is empty");
     row = VisemeRow{viseme, std::string(line.cells[1].text), std::string(openxr), std::string(line.cells[3].text),
                     line.line};
   }
   for (int v = 0; v < kVisemeCount; ++v) {
     if (rows[static_cast<std::size_t>(v)].line == 0) {
-      return make_error(Location::text(file, lines->front().line, 1),
+      return make_error(codes::vocabulary::missing_row, Location::text(file, lines->front().line, 1),
                         "viseme " + std::to_string(v) + " (" + std::string(viseme_name(v)) + ") has no row",
                         std::string(lines->front().whole));
     }

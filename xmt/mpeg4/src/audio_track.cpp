@@ -3,6 +3,8 @@
 #include <array>
 #include <string>
 
+#include "fapc/mpeg4/codes.hpp"
+
 namespace fapc::mpeg4 {
 
 namespace {
@@ -47,19 +49,24 @@ std::uint8_t aac_profile_level(std::uint32_t sample_rate) { return sample_rate <
 
 Status check_audio_track(const AudioTrackInput& t) {
   const Location nowhere{};
-  if (t.decoder_specific_info.empty()) return make_error(nowhere, "audio track without a decoder configuration");
-  if (t.sample_rate == 0) return make_error(nowhere, "audio track with a sample rate of 0");
-  if (t.samples.empty()) return make_error(nowhere, "audio track without access units");
-  if (t.samples_per_unit == 0) return make_error(nowhere, "audio access units of 0 samples");
-  if (t.length == 0) return make_error(nowhere, "audio track without sound (length 0)");
+  if (t.decoder_specific_info.empty())
+    return make_error(codes::mp4::bad_audio_track, nowhere, "audio track without a decoder configuration");
+  if (t.sample_rate == 0)
+    return make_error(codes::mp4::bad_audio_track, nowhere, "audio track with a sample rate of 0");
+  if (t.samples.empty()) return make_error(codes::mp4::bad_audio_track, nowhere, "audio track without access units");
+  if (t.samples_per_unit == 0)
+    return make_error(codes::mp4::bad_audio_track, nowhere, "audio access units of 0 samples");
+  if (t.length == 0) return make_error(codes::mp4::bad_audio_track, nowhere, "audio track without sound (length 0)");
   // A version 0 edit list holds the media time in 32 signed bits.
   if (t.media_start > 0x7FFFFFFF)
-    return make_error(nowhere, "audio track: the sound starts " + std::to_string(t.media_start) +
-                                   " samples into its media, more than an edit list says");
+    return make_error(codes::mp4::bad_audio_track, nowhere,
+                      "audio track: the sound starts " + std::to_string(t.media_start) +
+                          " samples into its media, more than an edit list says");
   const std::uint64_t media = t.samples.size() * std::uint64_t{t.samples_per_unit};
   if (t.media_start + t.length > media)
-    return make_error(nowhere, "audio track: " + std::to_string(t.media_start + t.length) +
-                                   " samples of sound in access units holding " + std::to_string(media));
+    return make_error(codes::mp4::bad_audio_track, nowhere,
+                      "audio track: " + std::to_string(t.media_start + t.length) +
+                          " samples of sound in access units holding " + std::to_string(media));
   return ok_status();
 }
 

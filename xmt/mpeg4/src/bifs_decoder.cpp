@@ -7,6 +7,7 @@
 #include "bifs_nodes.hpp"
 #include "bit_io.hpp"
 #include "fapc/mpeg4/bifs.hpp"
+#include "fapc/mpeg4/codes.hpp"
 
 namespace fapc::mpeg4 {
 
@@ -30,20 +31,20 @@ class SceneDecoder {
 
   Result<SceneNode> node(Ndt ndt, int depth) {
     if (depth > kMaxDepth) {
-      Diagnostic deep = fail("scene nested deeper than " + std::to_string(kMaxDepth) + " levels (the depth limit)");
-      deep.kind = ErrorKind::limit_exceeded;
-      return deep;
+      return fail(codes::limit::nesting_depth,
+                  "scene nested deeper than " + std::to_string(kMaxDepth) + " levels (the depth limit)");
     }
     const bifs::NdtSpec& table = bifs::ndt_spec(ndt);
-    if (in_.get_bit()) return fail("USE of a node: fapc decodes only scenes without USE");
+    if (in_.get_bit()) return fail(codes::bifs::not_decoded, "USE of a node: fapc decodes only scenes without USE");
     const std::uint32_t code = in_.get(table.bits);
     if (in_.failed()) return cut_short();
     if (code == 0)
-      return fail(std::string(table.name) + " node from a later BIFS version: fapc decodes " + "version 1 nodes only");
+      return fail(codes::bifs::not_decoded,
+                  std::string(table.name) + " node from a later BIFS version: fapc decodes " + "version 1 nodes only");
     const NodeSpec* spec = bifs::node_for_code(ndt, code);
     if (!spec)
-      return fail(std::string(table.name) + " node type " + std::to_string(code) +
-                  " is outside the node subset fapc decodes");
+      return fail(codes::bifs::bad_node, std::string(table.name) + " node type " + std::to_string(code) +
+                                             " is outside the node subset fapc decodes");
     SceneNode n{std::string(spec->name), {}, {}};
     if (in_.get_bit()) {
       const std::uint32_t id = in_.get(config_.node_id_bits) + 1;
@@ -51,7 +52,7 @@ class SceneDecoder {
       if (use_names_) {
         n.def_name.clear();
         for (std::uint32_t c = in_.get(8); c != 0 && !in_.failed(); c = in_.get(8)) {
-          if (n.def_name.size() == kMaxName) return fail("DEF name longer than 1024 bytes");
+          if (n.def_name.size() == kMaxName) return fail(codes::bifs::bad_node, "DEF name longer than 1024 bytes");
           n.def_name += static_cast<char>(c);
         }
       }
@@ -61,11 +62,11 @@ class SceneDecoder {
     return n;
   }
 
-  Diagnostic fail(const std::string& message) const {
-    return make_error(Location::binary(file_, static_cast<std::int64_t>(base_ + in_.bit_position() / 8)),
+  Diagnostic fail(ErrorCode code, const std::string& message) const {
+    return make_error(code, Location::binary(file_, static_cast<std::int64_t>(base_ + in_.bit_position() / 8)),
                       "BIFS: " + message);
   }
-  Diagnostic cut_short() const { return fail("scene access unit ends inside a node"); }
+  Diagnostic cut_short() const { return fail(codes::bifs::truncated, "scene access unit ends inside a node"); }
 
  private:
   Status fields(SceneNode& n, const NodeSpec& spec, int depth) {
@@ -73,7 +74,9 @@ class SceneDecoder {
     std::vector<std::pair<std::uint32_t, SceneField>> found;
     auto read_one = [&](std::uint32_t index) -> Status {
       for (const auto& [i, f] : found)
-        if (i == index) return fail("field " + std::string(spec.fields[index].name) + " of " + n.type + " coded twice");
+        if (i == index)
+          return fail(codes::bifs::bad_node,
+                      "field " + std::string(spec.fields[index].name) + " of " + n.type + " coded twice");
       SceneField field{std::string(spec.fields[index].name), 0};
       if (Status s = value(spec.fields[index], depth, field.value); !s) return s;
       found.emplace_back(index, std::move(field));
@@ -89,7 +92,7 @@ class SceneDecoder {
       while (!in_.get_bit()) {
         if (in_.failed()) return cut_short();
         const std::uint32_t i = in_.get(index_bits);
-        if (i >= count) return fail(n.type + " has no field number " + std::to_string(i));
+        if (i >= count) return fail(codes::bifs::bad_node, n.type + " has no field number " + std::to_string(i));
         if (Status s = read_one(i); !s) return s;
       }
     }
@@ -114,7 +117,7 @@ class SceneDecoder {
       case FieldKind::mf_url:
         return urls(out);
       case FieldKind::uncoded:
-        return fail("field " + std::string(spec.name) + " is not decoded by fapc");
+        return fail(codes::bifs::not_decoded, "field " + std::string(spec.name) + " is not decoded by fapc");
       case FieldKind::sf_node:
       case FieldKind::mf_node:
         break;
@@ -154,7 +157,7 @@ class SceneDecoder {
   Status urls(FieldValue& out) {
     std::vector<ObjectUrl> list;
     auto read_url = [&]() -> Status {
-      if (!in_.get_bit()) return fail("URL strings in an MFURL are not decoded by fapc");
+      if (!in_.get_bit()) return fail(codes::bifs::not_decoded, "URL strings in an MFURL are not decoded by fapc");
       list.push_back({static_cast<std::uint16_t>(in_.get(10))});
       return ok_status();
     };
@@ -190,10 +193,10 @@ Result<BifsConfig> decode_bifs_config(const Bytes& bytes, std::uint64_t base, co
     }
   }
   if (in.failed())
-    return make_error(Location::binary(file, static_cast<std::int64_t>(base)),
+    return make_error(codes::bifs::truncated, Location::binary(file, static_cast<std::int64_t>(base)),
                       "BIFSConfig cut short (" + std::to_string(bytes.size()) + " bytes)");
   if (!c.command_stream)
-    return make_error(Location::binary(file, static_cast<std::int64_t>(base)),
+    return make_error(codes::bifs::not_decoded, Location::binary(file, static_cast<std::int64_t>(base)),
                       "BIFS animation-mask streams (BIFS-Anim) are not decoded by fapc");
   return c;
 }
@@ -202,18 +205,19 @@ Result<SceneNode> decode_scene_replace(const Bytes& bytes, const BifsConfig& con
                                        const std::string& file) {
   SceneDecoder decoder(bytes, config, base, file);
   BitReader& in = decoder.bits();
-  if (in.get(2) != 3) return decoder.fail("the scene access unit does not start with SceneReplace");
+  if (in.get(2) != 3)
+    return decoder.fail(codes::bifs::bad_command, "the scene access unit does not start with SceneReplace");
   in.get(6);  // reserved
   decoder.use_names(in.get_bit());
-  if (in.get_bit()) return decoder.fail("PROTO declarations are not decoded by fapc");
+  if (in.get_bit()) return decoder.fail(codes::bifs::not_decoded, "PROTO declarations are not decoded by fapc");
   auto top = decoder.node(Ndt::top, 0);
   if (!top) return top.error();
-  if (in.get_bit()) return decoder.fail("ROUTEs are not decoded by fapc");
-  if (in.get_bit()) return decoder.fail("more than one command in the scene access unit");
+  if (in.get_bit()) return decoder.fail(codes::bifs::not_decoded, "ROUTEs are not decoded by fapc");
+  if (in.get_bit()) return decoder.fail(codes::bifs::bad_command, "more than one command in the scene access unit");
   if (in.failed()) return decoder.cut_short();
   // Zero bytes may follow the command frame (the project's writer adds one, see mp4_writer.cpp).
   while (in.bits_left() > 0)
-    if (in.get_bit()) return decoder.fail("data after the SceneReplace command");
+    if (in.get_bit()) return decoder.fail(codes::bifs::bad_command, "data after the SceneReplace command");
   return std::move(*top);
 }
 

@@ -7,6 +7,7 @@
 #include "bifs_nodes.hpp"
 #include "bit_io.hpp"
 #include "fapc/mpeg4/bifs.hpp"
+#include "fapc/mpeg4/codes.hpp"
 
 namespace fapc::mpeg4 {
 
@@ -147,7 +148,9 @@ class SceneEncoder {
     });
   }
 
-  static Diagnostic fail(const std::string& message) { return make_error(Location{}, "BIFS encoding: " + message); }
+  static Diagnostic fail(const std::string& message) {
+    return make_error(codes::bifs::cannot_encode, Location{}, "BIFS encoding: " + message);
+  }
 
   const BifsConfig& config_;
   bool use_names_;

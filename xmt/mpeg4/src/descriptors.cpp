@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "byte_io.hpp"
+#include "fapc/mpeg4/codes.hpp"
 
 namespace fapc::mpeg4 {
 
@@ -54,22 +55,23 @@ class DescriptorParser {
       const std::uint32_t b = in.u8();
       size = (size << 7) | (b & 0x7F);
       if ((b & 0x80) == 0) break;
-      if (i == 3) return error(in.offset() - 1, "descriptor size longer than 4 bytes");
+      if (i == 3) return error(codes::mp4::bad_descriptor, in.offset() - 1, "descriptor size longer than 4 bytes");
     }
-    if (in.failed()) return error(in.failed_at(), "descriptor header cut short");
+    if (in.failed()) return error(codes::mp4::descriptor_truncated, in.failed_at(), "descriptor header cut short");
     if (size > in.remaining())
-      return error(d.offset, "descriptor (tag 0x" + hex(d.tag) + ") of " + std::to_string(size) +
-                                 " bytes overruns its container (" + std::to_string(in.remaining()) + " bytes left)");
+      return error(codes::mp4::bad_descriptor, d.offset,
+                   "descriptor (tag 0x" + hex(d.tag) + ") of " + std::to_string(size) +
+                       " bytes overruns its container (" + std::to_string(in.remaining()) + " bytes left)");
     d.body = ByteReader(in.here(), size, in.offset());
     in.skip(size);
     return d;
   }
 
-  Diagnostic error(std::uint64_t offset, const std::string& message) const {
-    return make_error(Location::binary(file_, static_cast<std::int64_t>(offset)), message);
+  Diagnostic error(ErrorCode code, std::uint64_t offset, const std::string& message) const {
+    return make_error(code, Location::binary(file_, static_cast<std::int64_t>(offset)), message);
   }
   Diagnostic cut_short(const ByteReader& in, const std::string& what) const {
-    return error(in.failed_at(), what + " cut short");
+    return error(codes::mp4::descriptor_truncated, in.failed_at(), what + " cut short");
   }
 
   static std::string hex(std::uint32_t v) {
@@ -152,7 +154,8 @@ Result<EsDescriptor> decode_es_descriptor(const Bytes& bytes, std::uint64_t base
   auto d = p.next(outer);
   if (!d) return d.error();
   if (d->tag != kEsDescriptorTag)
-    return p.error(d->offset, "expected an ES_Descriptor (tag 0x03), found tag 0x" + p.hex(d->tag));
+    return p.error(codes::mp4::unexpected_descriptor, d->offset,
+                   "expected an ES_Descriptor (tag 0x03), found tag 0x" + p.hex(d->tag));
   ByteReader& in = d->body;
   EsDescriptor es;
   es.es_id = static_cast<std::uint16_t>(in.u16());
@@ -175,7 +178,8 @@ Result<EsDescriptor> decode_es_descriptor(const Bytes& bytes, std::uint64_t base
       if (sub->body.failed()) return p.cut_short(sub->body, "SLConfigDescriptor");
     }
   }
-  if (!have_config) return p.error(d->offset, "ES_Descriptor without a DecoderConfigDescriptor");
+  if (!have_config)
+    return p.error(codes::mp4::missing_descriptor, d->offset, "ES_Descriptor without a DecoderConfigDescriptor");
   return es;
 }
 
@@ -187,7 +191,8 @@ Result<InitialObjectDescriptor> decode_initial_object_descriptor(const Bytes& by
   if (!d) return d.error();
   // 0x02 is the IOD form outside MP4 files; it has the same header.
   if (d->tag != kMp4IodTag && d->tag != 0x02)
-    return p.error(d->offset, "expected an initial object descriptor (tag 0x10), found tag 0x" + p.hex(d->tag));
+    return p.error(codes::mp4::unexpected_descriptor, d->offset,
+                   "expected an initial object descriptor (tag 0x10), found tag 0x" + p.hex(d->tag));
   ByteReader& in = d->body;
   InitialObjectDescriptor iod;
   const std::uint32_t head = in.u16();
@@ -220,14 +225,16 @@ Result<std::vector<ObjectDescriptor>> decode_object_descriptor_updates(const Byt
     auto command = p.next(commands);
     if (!command) return command.error();
     if (command->tag != kObjectDescriptorUpdateTag)
-      return p.error(command->offset, "OD command with tag 0x" + p.hex(command->tag) +
-                                          " is not an ObjectDescriptorUpdate; fapc reads only those");
+      return p.error(
+          codes::mp4::unexpected_descriptor, command->offset,
+          "OD command with tag 0x" + p.hex(command->tag) + " is not an ObjectDescriptorUpdate; fapc reads only those");
     ByteReader& list = command->body;
     while (list.remaining() > 0) {
       auto d = p.next(list);
       if (!d) return d.error();
       if (d->tag != kMp4OdTag && d->tag != 0x01)
-        return p.error(d->offset, "expected an object descriptor (tag 0x11), found tag 0x" + p.hex(d->tag));
+        return p.error(codes::mp4::unexpected_descriptor, d->offset,
+                       "expected an object descriptor (tag 0x11), found tag 0x" + p.hex(d->tag));
       ByteReader& in = d->body;
       ObjectDescriptor od;
       const std::uint32_t head = in.u16();

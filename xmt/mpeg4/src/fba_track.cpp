@@ -1,5 +1,7 @@
 #include "fapc/mpeg4/fba_track.hpp"
 
+#include "fapc/mpeg4/codes.hpp"
+
 namespace fapc::mpeg4 {
 
 namespace {
@@ -29,7 +31,7 @@ Bytes fba_decoder_specific_info(std::uint8_t profile_level) {
 
 Result<std::uint8_t> fba_profile_level(const Bytes& dsi, const std::string& file) {
   if (!starts_with_start_code(dsi, kVisualObjectSequenceStartCode) || dsi.size() < 5)
-    return make_error(Location::binary(file, 0),
+    return make_error(codes::mp4::bad_fba_config, Location::binary(file, 0),
                       "FBA decoder configuration does not start with a visual object sequence "
                       "header (00 00 01 B0 and a profile-level byte)");
   return dsi[4];
@@ -73,14 +75,17 @@ Status check_fba_track(const FbaTrackInput& track) { return check_fba_track(view
 
 Status check_fba_track(const FbaTrackView& track) {
   if (auto pl = fba_profile_level(track.decoder_specific_info); !pl) return pl.error();
-  if (track.timescale == 0) return make_error(Location{}, "FBA track timescale is 0");
-  if (track.samples.empty()) return make_error(Location{}, "FBA track has no samples");
+  if (track.timescale == 0) return make_error(codes::mp4::bad_fba_track, Location{}, "FBA track timescale is 0");
+  if (track.samples.empty()) return make_error(codes::mp4::bad_fba_track, Location{}, "FBA track has no samples");
   for (std::size_t i = 0; i < track.samples.size(); ++i) {
     const FbaSampleView& s = track.samples[i];
     if (!starts_with_start_code(s.bytes, kFbaObjectPlaneStartCode))
       return make_error(
-          Location{}, "FBA sample " + std::to_string(i + 1) + " does not start with the plane start code 00 00 01 BB");
-    if (s.duration == 0) return make_error(Location{}, "FBA sample " + std::to_string(i + 1) + " lasts 0 ticks");
+          codes::mp4::bad_fba_track, Location{},
+          "FBA sample " + std::to_string(i + 1) + " does not start with the plane start code 00 00 01 BB");
+    if (s.duration == 0)
+      return make_error(codes::mp4::bad_fba_track, Location{},
+                        "FBA sample " + std::to_string(i + 1) + " lasts 0 ticks");
   }
   return ok_status();
 }

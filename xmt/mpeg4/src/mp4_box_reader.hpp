@@ -7,6 +7,7 @@
 
 #include "byte_io.hpp"
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/mpeg4/codes.hpp"
 
 namespace fapc::mpeg4 {
 
@@ -19,8 +20,8 @@ struct Box {
 // The boxes one after another in `range` (whose file offset is range.offset()).
 Result<std::vector<Box>> read_boxes(ByteReader range, const std::string& file);
 
-inline Diagnostic box_error(const std::string& file, std::uint64_t offset, const std::string& message) {
-  return make_error(Location::binary(file, static_cast<std::int64_t>(offset)), message);
+inline Diagnostic box_error(ErrorCode code, const std::string& file, std::uint64_t offset, const std::string& message) {
+  return make_error(code, Location::binary(file, static_cast<std::int64_t>(offset)), message);
 }
 
 }  // namespace fapc::mpeg4

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "fapc/mpeg4/codes.hpp"
 #include "mp4_box_reader.hpp"
 
 namespace fapc::mpeg4 {
@@ -39,14 +40,14 @@ class Mp4Parser {
       if (box.type == "ftyp") {
         if (Status s = ftyp(box); !s) return s;
       } else if (box.type == "moov") {
-        if (have_moov) return error(box.offset, "second 'moov' box");
+        if (have_moov) return error(codes::mp4::second_moov, box.offset, "second 'moov' box");
         have_moov = true;
         if (Status s = moov(box); !s) return s;
       } else if (box.type == "moof") {
         warn(box.offset, "movie fragment ('moof') ignored: fapc reads only the samples described in 'moov'");
       }
     }
-    if (!have_moov) return error(0, "no 'moov' box: not an MP4 file, or one without a movie");
+    if (!have_moov) return error(codes::mp4::no_moov, 0, "no 'moov' box: not an MP4 file, or one without a movie");
     return ok_status();
   }
 
@@ -56,7 +57,7 @@ class Mp4Parser {
     out_.major_brand = fourcc(in);
     in.u32();  // minor version
     while (in.remaining() >= 4) out_.compatible_brands.push_back(fourcc(in));
-    if (in.failed()) return error(box.offset, "'ftyp' box shorter than 8 bytes");
+    if (in.failed()) return error(codes::mp4::box_truncated, box.offset, "'ftyp' box shorter than 8 bytes");
     return ok_status();
   }
 
@@ -73,11 +74,11 @@ class Mp4Parser {
         in.skip(version == 1 ? 16 : 8);
         out_.timescale = in.u32();
         out_.duration = version == 1 ? in.u64() : in.u32();
-        if (in.failed()) return error(child.offset, "'mvhd' box cut short");
+        if (in.failed()) return error(codes::mp4::box_truncated, child.offset, "'mvhd' box cut short");
       } else if (child.type == "iods") {
         ByteReader& in = child.body;
         in.u32();  // version, flags
-        if (in.failed()) return error(child.offset, "'iods' box cut short");
+        if (in.failed()) return error(codes::mp4::box_truncated, child.offset, "'iods' box cut short");
         auto iod = decode_initial_object_descriptor(in.bytes(in.remaining()), child.offset + 12, file_);
         if (!iod) return iod.error();
         out_.iod = std::move(*iod);
@@ -85,7 +86,7 @@ class Mp4Parser {
         if (Status s = trak(child); !s) return s;
       }
     }
-    if (!have_mvhd) return error(box.offset, "'moov' box without 'mvhd'");
+    if (!have_mvhd) return error(codes::mp4::missing_box, box.offset, "'moov' box without 'mvhd'");
     return ok_status();
   }
 
@@ -105,7 +106,7 @@ class Mp4Parser {
         in.u24();
         in.skip(version == 1 ? 16 : 8);
         track.id = in.u32();
-        if (in.failed()) return error(child.offset, "'tkhd' box cut short");
+        if (in.failed()) return error(codes::mp4::box_truncated, child.offset, "'tkhd' box cut short");
       } else if (child.type == "tref") {
         auto refs = read_boxes(child.body, file_);
         if (!refs) return refs.error();
@@ -120,8 +121,8 @@ class Mp4Parser {
         if (Status s = mdia(child, track, tables); !s) return s;
       }
     }
-    if (!have_tkhd) return error(box.offset, "'trak' box without 'tkhd'");
-    if (!have_mdia) return error(box.offset, "'trak' box without 'mdia'");
+    if (!have_tkhd) return error(codes::mp4::missing_box, box.offset, "'trak' box without 'tkhd'");
+    if (!have_mdia) return error(codes::mp4::missing_box, box.offset, "'trak' box without 'mdia'");
     if (Status s = resolve_samples(track, tables); !s) return s;
     // Only the voice's edit list is applied (read_audio_track); other tracks' times are the
     // sample table's.
@@ -141,12 +142,15 @@ class Mp4Parser {
       const std::uint32_t version = in.u8();
       in.u24();
       const std::uint32_t count = in.u32();
-      if (in.failed()) return error(child.offset, "'elst' box cut short");
-      if (version > 1) return error(child.offset, "'elst' version " + std::to_string(version) + " is unknown");
+      if (in.failed()) return error(codes::mp4::box_truncated, child.offset, "'elst' box cut short");
+      if (version > 1)
+        return error(codes::mp4::bad_edit_list, child.offset,
+                     "'elst' version " + std::to_string(version) + " is unknown");
       const std::size_t entry = version == 1 ? 20 : 12;
       if (count > in.remaining() / entry)
-        return error(child.offset, "'elst' claims " + std::to_string(count) + " entries; its box holds " +
-                                       std::to_string(in.remaining() / entry));
+        return error(codes::mp4::bad_edit_list, child.offset,
+                     "'elst' claims " + std::to_string(count) + " entries; its box holds " +
+                         std::to_string(in.remaining() / entry));
       track.edits_offset = child.offset;
       for (std::uint32_t i = 0; i < count; ++i) {
         Mp4Edit e;
@@ -159,7 +163,8 @@ class Mp4Parser {
         }
         const std::uint32_t rate = in.u32();
         if (rate != 0x00010000 && e.media_time != -1)
-          return error(child.offset, "'elst' entry " + std::to_string(i + 1) + " plays at a rate other than 1");
+          return error(codes::mp4::bad_edit_list, child.offset,
+                       "'elst' entry " + std::to_string(i + 1) + " plays at a rate other than 1");
         track.edits.push_back(e);
       }
     }
@@ -179,13 +184,13 @@ class Mp4Parser {
         in.skip(version == 1 ? 16 : 8);
         track.timescale = in.u32();
         track.duration = version == 1 ? in.u64() : in.u32();
-        if (in.failed()) return error(child.offset, "'mdhd' box cut short");
-        if (track.timescale == 0) return error(child.offset, "'mdhd' timescale is 0");
+        if (in.failed()) return error(codes::mp4::box_truncated, child.offset, "'mdhd' box cut short");
+        if (track.timescale == 0) return error(codes::mp4::bad_timescale, child.offset, "'mdhd' timescale is 0");
       } else if (child.type == "hdlr") {
         ByteReader& in = child.body;
         in.skip(8);  // version, flags, pre_defined
         track.handler = fourcc(in);
-        if (in.failed()) return error(child.offset, "'hdlr' box cut short");
+        if (in.failed()) return error(codes::mp4::box_truncated, child.offset, "'hdlr' box cut short");
       } else if (child.type == "minf") {
         auto minf = read_boxes(child.body, file_);
         if (!minf) return minf.error();
@@ -196,8 +201,8 @@ class Mp4Parser {
           }
       }
     }
-    if (!have_mdhd) return error(box.offset, "'mdia' box without 'mdhd'");
-    if (!have_stbl) return error(box.offset, "'mdia' box without 'minf/stbl'");
+    if (!have_mdhd) return error(codes::mp4::missing_box, box.offset, "'mdia' box without 'mdhd'");
+    if (!have_stbl) return error(codes::mp4::missing_box, box.offset, "'mdia' box without 'minf/stbl'");
     return ok_status();
   }
 
@@ -212,7 +217,8 @@ class Mp4Parser {
           type != "co64" && type != "stz2")
         continue;
       in.u32();  // version, flags
-      if (type == "stz2") return error(child.offset, "compact sample sizes ('stz2') are not supported");
+      if (type == "stz2")
+        return error(codes::mp4::compact_sizes, child.offset, "compact sample sizes ('stz2') are not supported");
       if (type == "stsd") {
         if (Status s = stsd(child, track); !s) return s;
         continue;
@@ -224,14 +230,15 @@ class Mp4Parser {
         if (fixed != 0) {
           // One size for all: the count is bounded by what the file can hold, not by this box.
           if (count > out_.data.size())
-            return error(child.offset, "'stsz' sample count " + std::to_string(count) + " exceeds the file size");
+            return error(codes::mp4::bad_sample_table, child.offset,
+                         "'stsz' sample count " + std::to_string(count) + " exceeds the file size");
           t.sizes.assign(count, fixed);
           count = 0;
         }
       }
       const std::size_t entry = type == "stts" ? 8 : type == "stsc" ? 12 : type == "co64" ? 8 : 4;
       if (in.failed() || count > in.remaining() / entry)
-        return error(child.offset,
+        return error(codes::mp4::bad_sample_table, child.offset,
                      "'" + type + "' box holds fewer entries than its count (" + std::to_string(count) + ")");
       for (std::uint32_t i = 0; i < count; ++i) {
         if (type == "stts") {
@@ -244,8 +251,9 @@ class Mp4Parser {
           const std::uint32_t first = in.u32(), per_chunk = in.u32();
           in.u32();  // sample description index
           if (first == 0 || (!t.stsc.empty() && first <= t.stsc.back().first_chunk))
-            return error(child.offset, "'stsc' entry " + std::to_string(i + 1) + " has first chunk " +
-                                           std::to_string(first) + ", not after the previous entry");
+            return error(codes::mp4::bad_sample_table, child.offset,
+                         "'stsc' entry " + std::to_string(i + 1) + " has first chunk " + std::to_string(first) +
+                             ", not after the previous entry");
           t.stsc.push_back({first, per_chunk});
         } else if (type == "stsz") {
           t.sizes.push_back(in.u32());
@@ -269,11 +277,12 @@ class Mp4Parser {
   Status stsd(Box& box, Mp4Track& track) {
     ByteReader& in = box.body;
     const std::uint32_t count = in.u32();
-    if (in.failed() || count == 0) return error(box.offset, "'stsd' box without a sample entry");
+    if (in.failed() || count == 0)
+      return error(codes::mp4::missing_box, box.offset, "'stsd' box without a sample entry");
     if (count > 1) warn(box.offset, "only the first of " + std::to_string(count) + " sample entries is read");
     auto entries = read_boxes(ByteReader(in.here(), in.remaining(), in.offset()), file_);
     if (!entries) return entries.error();
-    if (entries->empty()) return error(box.offset, "'stsd' box without a sample entry");
+    if (entries->empty()) return error(codes::mp4::missing_box, box.offset, "'stsd' box without a sample entry");
     Box& entry = entries->front();
     track.sample_entry = entry.type;
     // Bytes before the child boxes: SampleEntry (8), plus VisualSampleEntry (70) or
@@ -288,20 +297,22 @@ class Mp4Parser {
     else
       return ok_status();  // not an MPEG-4 systems sample entry: no ES descriptor to read
     ByteReader& e = entry.body;
-    if (e.remaining() < fixed) return error(entry.offset, "sample entry '" + entry.type + "' cut short");
+    if (e.remaining() < fixed)
+      return error(codes::mp4::box_truncated, entry.offset, "sample entry '" + entry.type + "' cut short");
     e.skip(fixed);
     auto children = read_boxes(ByteReader(e.here(), e.remaining(), e.offset()), file_);
     if (!children) return children.error();
     for (Box& child : *children) {
       if (child.type != "esds") continue;
       child.body.u32();  // version, flags
-      if (child.body.failed()) return error(child.offset, "'esds' box cut short");
+      if (child.body.failed()) return error(codes::mp4::box_truncated, child.offset, "'esds' box cut short");
       track.es_offset = child.body.offset();
       auto es = decode_es_descriptor(child.body.bytes(child.body.remaining()), track.es_offset, file_);
       if (!es) return es.error();
       track.es = std::move(*es);
     }
-    if (!track.es) return error(entry.offset, "sample entry '" + entry.type + "' without an 'esds' box");
+    if (!track.es)
+      return error(codes::mp4::missing_box, entry.offset, "sample entry '" + entry.type + "' without an 'esds' box");
     return ok_status();
   }
 
@@ -309,7 +320,7 @@ class Mp4Parser {
     const std::uint64_t at = t.stbl_offset;
     const std::string id = "track " + std::to_string(track.id);
     if (!t.have_stsz || !t.have_stco || !t.have_stts || !t.have_stsc)
-      return error(at, id + ": sample table lacks one of 'stts', 'stsc', 'stsz', 'stco'");
+      return error(codes::mp4::missing_box, at, id + ": sample table lacks one of 'stts', 'stsc', 'stsz', 'stco'");
     const std::size_t n = t.sizes.size();
     track.samples.resize(n);
     // Decoding times from stts runs; the counts must add up to the sample count exactly.
@@ -317,7 +328,8 @@ class Mp4Parser {
     std::uint64_t time = 0;
     for (const auto& [count, duration] : t.stts) {
       if (count > n - i)
-        return error(t.stts_at, id + ": 'stts' describes more samples than 'stsz' (" + std::to_string(n) + ")");
+        return error(codes::mp4::bad_sample_table, t.stts_at,
+                     id + ": 'stts' describes more samples than 'stsz' (" + std::to_string(n) + ")");
       for (std::uint32_t k = 0; k < count; ++k, ++i) {
         track.samples[i].decode_time = time;
         track.samples[i].duration = duration;
@@ -325,12 +337,14 @@ class Mp4Parser {
       }
     }
     if (i != n)
-      return error(t.stts_at, id + ": 'stts' describes " + std::to_string(i) + " samples, 'stsz' " + std::to_string(n));
+      return error(codes::mp4::bad_sample_table, t.stts_at,
+                   id + ": 'stts' describes " + std::to_string(i) + " samples, 'stsz' " + std::to_string(n));
     if (t.stss) {
       for (Mp4Sample& s : track.samples) s.sync = false;
       for (std::uint32_t number : *t.stss) {
         if (number == 0 || number > n)
-          return error(t.stss_at, id + ": 'stss' names sample " + std::to_string(number) + " of " + std::to_string(n));
+          return error(codes::mp4::bad_sample_table, t.stss_at,
+                       id + ": 'stss' names sample " + std::to_string(number) + " of " + std::to_string(n));
         track.samples[number - 1].sync = true;
       }
     }
@@ -347,13 +361,14 @@ class Mp4Parser {
         s.offset = offset;
         s.size = t.sizes[i];
         if (offset > out_.data.size() || s.size > out_.data.size() - offset)
-          return error(t.stco_at, id + ": sample " + std::to_string(i + 1) + " (" + std::to_string(s.size) +
-                                      " bytes at offset " + std::to_string(offset) + ") lies outside the file");
+          return error(codes::mp4::bad_sample_table, t.stco_at,
+                       id + ": sample " + std::to_string(i + 1) + " (" + std::to_string(s.size) + " bytes at offset " +
+                           std::to_string(offset) + ") lies outside the file");
         offset += s.size;
       }
     }
     if (i != n)
-      return error(t.stsc_at,
+      return error(codes::mp4::bad_sample_table, t.stsc_at,
                    id + ": 'stsc' and 'stco' place " + std::to_string(i) + " of " + std::to_string(n) + " samples");
     return ok_status();
   }
@@ -366,10 +381,12 @@ class Mp4Parser {
     }
     return s;
   }
-  Diagnostic error(std::uint64_t offset, const std::string& message) const { return box_error(file_, offset, message); }
+  Diagnostic error(ErrorCode code, std::uint64_t offset, const std::string& message) const {
+    return box_error(code, file_, offset, message);
+  }
   void warn(std::uint64_t offset, const std::string& message) {
     out_.warnings.push_back(
-        make_warning({"mp4.ignored"}, Location::binary(file_, static_cast<std::int64_t>(offset)), message));
+        make_warning(codes::mp4::ignored, Location::binary(file_, static_cast<std::int64_t>(offset)), message));
   }
 
   Mp4File& out_;

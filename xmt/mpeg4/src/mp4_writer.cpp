@@ -11,6 +11,7 @@
 #include <string>
 
 #include "box_writer.hpp"
+#include "fapc/mpeg4/codes.hpp"
 #include "fapc/mpeg4/object_descriptors.hpp"
 #include "fapc/mpeg4/scene.hpp"
 
@@ -419,7 +420,8 @@ Status write_mp4(const FbaTrackView& fba, const AudioTrackInput* audio, const Mp
     for (const Piece& s : tracks[i].samples) at += s.size();
   }
   if (at > std::numeric_limits<std::uint32_t>::max())
-    return make_error(Location{}, "MP4 output would exceed 4 GiB; fapc writes 32-bit offsets only");
+    return make_error(codes::mp4::too_large, Location{},
+                      "MP4 output would exceed 4 GiB; fapc writes 32-bit offsets only");
 
   PieceOut file(sink);
   ByteWriter mdat_header;

@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "fapc/codec/nesting_limit.hpp"
+#include "fapc/xml/codes.hpp"
 #include "xml_tag_scan.hpp"
 
 namespace fapc::xml {
@@ -96,10 +97,10 @@ void collect_error(void* user_data, xmlErrorPtr error) {
   const Location where = Location::text(report->file, std::max(0, error->line), std::max(0, error->int2));
   const std::string message = trimmed_message(error->message);
   if (error->level == XML_ERR_WARNING) {
-    report->warnings.push_back(make_warning({"xml.parser"}, where, "XML: " + message));
+    report->warnings.push_back(make_warning(codes::xml::parser, where, "XML: " + message));
   } else if (!report->first_error) {
     const char* kind = error->domain == XML_FROM_NAMESPACE ? "XML namespace error: " : "not well-formed XML: ";
-    report->first_error = make_error(where, kind + message);
+    report->first_error = make_error(codes::xml::not_well_formed, where, kind + message);
   }
 }
 
@@ -207,14 +208,16 @@ Status check_element_depth(std::string_view text, const std::string& file_name) 
 Result<XmlDocument> XmlDocument::parse(std::string_view text, const std::string& file_name,
                                        const BlankText& blank_text) {
   if (text.size() > static_cast<std::size_t>(INT_MAX)) {
-    return make_error(ErrorKind::limit_exceeded, Location{file_name, 0, 0, -1}, "file too large for the XML parser");
+    return make_error(codes::xml::too_large, Location::whole_file(file_name), "file too large for the XML parser");
   }
   // Every walk over the tree recurses; its depth is bounded here, with fapc's error and kind,
   // before libxml2 (which stops at the same depth with a message of its own) sees the text.
   if (Status depth = check_element_depth(text, file_name); !depth) return depth.error();
   xmlInitParser();
   std::unique_ptr<xmlParserCtxt, void (*)(xmlParserCtxtPtr)> context(xmlNewParserCtxt(), xmlFreeParserCtxt);
-  if (!context) return make_error(Location{file_name, 0, 0, -1}, "out of memory starting the XML parser");
+  if (!context)
+    return make_error(codes::xml::parser_failed, Location::whole_file(file_name),
+                      "out of memory starting the XML parser");
   ParseReport report{file_name, std::nullopt, {}, &blank_text};
   context->_private = &report;
   context->sax->serror = collect_error;
@@ -235,7 +238,7 @@ Result<XmlDocument> XmlDocument::parse(std::string_view text, const std::string&
   document.index_lines();
   if (report.first_error) return document.with_line(std::move(*report.first_error));
   if (!parsed || !document.root()) {
-    return make_error(Location::text(file_name, 1, 1), "not well-formed XML: no root element");
+    return make_error(codes::xml::no_root, Location::text(file_name, 1, 1), "not well-formed XML: no root element");
   }
   document.warnings_ = std::move(report.warnings);
   document.index_positions();
@@ -274,7 +277,7 @@ bool StreamState::feed() {
 Result<XmlDocument> XmlDocument::stream(std::string_view text, const std::string& file_name,
                                         const BlankText& blank_text, TextReleaser release_text) {
   if (text.size() > static_cast<std::size_t>(INT_MAX)) {
-    return make_error(ErrorKind::limit_exceeded, Location{file_name, 0, 0, -1}, "file too large for the XML parser");
+    return make_error(codes::xml::too_large, Location::whole_file(file_name), "file too large for the XML parser");
   }
   xmlInitParser();
   XmlDocument document;
@@ -290,7 +293,7 @@ Result<XmlDocument> XmlDocument::stream(std::string_view text, const std::string
     document.add_tag(tag.offset, tag.parent, *tag.attributes);
   });
   if (too_deep)
-    return make_error(ErrorKind::limit_exceeded, Location::text(file_name, 1, 1), "elements nested too deep");
+    return make_error(codes::limit::nesting_depth, Location::text(file_name, 1, 1), "elements nested too deep");
   document.shrink_positions();
   // The scans touched every page; the parser reads them again one part at a time.
   if (release_text) release_text(text.size());
@@ -309,7 +312,9 @@ Result<XmlDocument> XmlDocument::stream(std::string_view text, const std::string
   state->context.reset(
       xmlCreatePushParserCtxt(nullptr, nullptr, text.data(), static_cast<int>(state->fed), file_name.c_str()));
   xmlParserCtxtPtr context = state->context.get();
-  if (!context) return make_error(Location{file_name, 0, 0, -1}, "out of memory starting the XML parser");
+  if (!context)
+    return make_error(codes::xml::parser_failed, Location::whole_file(file_name),
+                      "out of memory starting the XML parser");
   xmlCtxtUseOptions(context, XML_PARSE_NONET | XML_PARSE_COMPACT);
   context->_private = report.get();
   context->sax->serror = collect_error;
@@ -329,7 +334,7 @@ Result<XmlDocument> XmlDocument::stream(std::string_view text, const std::string
   }
   if (context->myDoc) document.doc_ = std::shared_ptr<xmlDoc>(context->myDoc, [](xmlDocPtr d) { xmlFreeDoc(d); });
   if (!document.root() || !document.stream_->faithful)
-    return make_error(Location::text(file_name, 1, 1), "not well-formed XML: no root element");
+    return make_error(codes::xml::no_root, Location::text(file_name, 1, 1), "not well-formed XML: no root element");
   return document;
 }
 
@@ -508,11 +513,12 @@ Diagnostic XmlDocument::with_line(Diagnostic d) const {
   return d;
 }
 
-Diagnostic XmlDocument::error(const xmlNode* element, std::string message) const {
-  return with_line(make_error(where(element), std::move(message)));
+Diagnostic XmlDocument::error(ErrorCode code, const xmlNode* element, std::string message) const {
+  return with_line(make_error(code, where(element), std::move(message)));
 }
-Diagnostic XmlDocument::error(const xmlNode* element, std::string_view attribute, std::string message) const {
-  return with_line(make_error(where(element, attribute), std::move(message)));
+Diagnostic XmlDocument::error(ErrorCode code, const xmlNode* element, std::string_view attribute,
+                              std::string message) const {
+  return with_line(make_error(code, where(element, attribute), std::move(message)));
 }
 Diagnostic XmlDocument::warning(const xmlNode* element, std::string message) const {
   return with_line(make_warning(where(element), std::move(message)));

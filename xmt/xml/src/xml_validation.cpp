@@ -32,6 +32,7 @@
 #include <xercesc/validators/schema/SchemaSymbols.hpp>
 
 #include "fapc/codec/deep_stack.hpp"
+#include "fapc/xml/codes.hpp"
 #include "fapc/xml/xml_document.hpp"
 #include "schema_registry.hpp"
 #include "xml_tag_scan.hpp"
@@ -186,7 +187,7 @@ class Collector : public xc::DefaultHandler, public xc::PSVIHandler {
   }
   void warning(const xc::SAXParseException& e) override { add(Severity::warning, e); }
   void error(const xc::SAXParseException& e) override { add(Severity::error, e); }
-  void fatalError(const xc::SAXParseException& e) override { add(Severity::error, e); }
+  void fatalError(const xc::SAXParseException& e) override { add(Severity::error, e, codes::xml::not_well_formed); }
 
   // Called after a start tag's attributes are validated: their problems are reported by then, at
   // the end of the start tag, where the locator still is.
@@ -234,8 +235,9 @@ class Collector : public xc::DefaultHandler, public xc::PSVIHandler {
     std::set<std::string> named;
     for (const auto& [where, target] : references_)
       if (!ids_.count(target.token) && named.insert(target.token).second)
-        found.push_back(
-            {make_error(where, "ID attribute '" + target.token + "' is referenced but was never declared"), target});
+        found.push_back({make_error(codes::xml::undeclared_id, where,
+                                    "ID attribute '" + target.token + "' is referenced but was never declared"),
+                         target});
     if (found.size() != reported.size()) return;
     for (std::size_t k = 0; k < reported.size(); ++k) {
       problems[reported[k]] = found[k].first;
@@ -282,18 +284,17 @@ class Collector : public xc::DefaultHandler, public xc::PSVIHandler {
       if (is_number_list(value)) continue;
       const std::string shown = value.size() > 40 ? value.substr(0, 40) + "..." : value;
       targets[problems.size()] = {name, false, {}};
-      problems.push_back(
-          make_error(here(), "'" + name + "': '" + shown + "' is not a list of numbers separated by ';'"));
+      problems.push_back(make_error(codes::xml::not_a_number_list, here(),
+                                    "'" + name + "': '" + shown + "' is not a list of numbers separated by ';'"));
       codes_.push_back({});
     }
   }
 
-  void add(Severity severity, const xc::SAXParseException& e) {
-    problems.push_back(
-        Diagnostic{severity,
-                   Location::text(file_, static_cast<int>(e.getLineNumber()), static_cast<int>(e.getColumnNumber())),
-                   text(e.getMessage()),
-                   {}});
+  void add(Severity severity, const xc::SAXParseException& e, ErrorCode code = codes::xml::not_valid) {
+    const Location at =
+        Location::text(file_, static_cast<int>(e.getLineNumber()), static_cast<int>(e.getColumnNumber()));
+    problems.push_back(severity == Severity::error ? make_error(code, at, text(e.getMessage()))
+                                                   : make_warning(at, text(e.getMessage())));
     codes_.push_back(next_code);
   }
   const std::string& file_;
@@ -427,19 +428,21 @@ Result<ValidationReport> validate_with_xerces(std::string_view text_in, const st
   }
   if (!first.root_seen) {
     if (!first.problems.empty()) return first.problems.front();
-    return make_error(Location::text(file, 1, 1), "no root element");
+    return make_error(codes::xml::no_root, Location::text(file, 1, 1), "no root element");
   }
   const SchemaBinding* binding = schema_for_root(first.root_name, first.root_ns);
   if (!binding) {
     std::string known;
     for (const std::string& k : validated_document_kinds()) known += (known.empty() ? "" : ", ") + k;
-    return make_error(Location::text(file, 1, 1), "no schema for root element '" + first.root_name + "'" +
-                                                      (first.root_ns.empty() ? "" : " in namespace " + first.root_ns) +
-                                                      "; fapc validates " + known);
+    return make_error(codes::xml::no_schema, Location::text(file, 1, 1),
+                      "no schema for root element '" + first.root_name + "'" +
+                          (first.root_ns.empty() ? "" : " in namespace " + first.root_ns) + "; fapc validates " +
+                          known);
   }
   const auto schema = embedded_schemas().find(std::string(binding->schema));
   if (schema == embedded_schemas().end())
-    return make_error(Location{file, 0, 0, -1}, "schema " + std::string(binding->schema) + " was not built in");
+    return make_error(codes::xml::schema_missing, Location::whole_file(file),
+                      "schema " + std::string(binding->schema) + " was not built in");
 
   // Pass 2: validate against the cached grammar.
   Collector collector(file, binding->schema == "xmt-o.xsd");
@@ -452,7 +455,7 @@ Result<ValidationReport> validate_with_xerces(std::string_view text_in, const st
   collector.serving_schemas = false;
   if (!loaded || !collector.problems.empty()) {
     const std::string why = collector.problems.empty() ? "" : ": " + collector.problems.front().message;
-    return make_error(Location{file, 0, 0, -1},
+    return make_error(codes::xml::schema_missing, Location::whole_file(file),
                       "built-in schema " + std::string(binding->schema) + " does not load" + why);
   }
   xc::MemBufInputSource in(reinterpret_cast<const XMLByte*>(text_in.data()), text_in.size(), id.get(), false);
@@ -498,9 +501,9 @@ Result<ValidationReport> validate_xml(std::string_view text_in, const std::strin
     try {
       outcome.emplace(validate_with_xerces(text_in, file));
     } catch (const xc::XMLException& e) {
-      outcome.emplace(make_error(Location::text(file, 1, 1), text(e.getMessage())));
+      outcome.emplace(make_error(codes::xml::not_well_formed, Location::text(file, 1, 1), text(e.getMessage())));
     } catch (const xc::SAXException& e) {
-      outcome.emplace(make_error(Location::text(file, 1, 1), text(e.getMessage())));
+      outcome.emplace(make_error(codes::xml::not_well_formed, Location::text(file, 1, 1), text(e.getMessage())));
     }
   });
   return std::move(*outcome);

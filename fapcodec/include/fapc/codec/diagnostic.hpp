@@ -24,6 +24,7 @@ struct Location {
 
   static Location text(std::string file, int line, int column) { return Location{std::move(file), line, column, -1}; }
   static Location binary(std::string file, std::int64_t offset) { return Location{std::move(file), 0, 0, offset}; }
+  static Location whole_file(std::string file) { return Location{std::move(file), 0, 0, -1}; }
 };
 
 // What went wrong, as a value callers decide by (the exit status, whether to retry, whether a
@@ -48,25 +49,39 @@ struct Diagnostic {
   // The source line the diagnostic points into, when there is one, so a caret can be drawn.
   std::string source_line;
   ErrorKind kind = ErrorKind::bad_input;  // meaningful for errors; warnings keep the default
-  // What sort of warning this is, as a stable dotted name ("mimic.value_clamped"): the command
-  // line counts repeated warnings by it (never by their wording). Empty for errors.
+  // What went wrong, as a stable dotted name ("fba.truncated", "mimic.out_of_range"): every
+  // error has one (make_error takes it); the command line counts repeated warnings by it (never by
+  // their wording). A warning made without a code has none.
   std::string code{};
 };
 
-// A warning's code, a type of its own so that it cannot be mistaken for a message.
+// An error's code and the kind of failure it is. Written only in a library's code table
+// (fapc/<library>/codes.def, listed in docs/errors.md), where a constant codes::fba::truncated
+// is declared for the code "fba.truncated": make_error takes one, so every error has a code
+// that the table knows.
+struct ErrorCode {
+  const char* name;
+  ErrorKind kind;
+};
+
+// A warning's code, a type of its own so that it cannot be mistaken for a message. Declared in the
+// same tables as the errors' codes.
 struct WarningCode {
   const char* name;
 };
 
 using Diagnostics = std::vector<Diagnostic>;
 
+// Whether the diagnostic's code is written after its severity ("error[fba.truncated]: ").
+enum class ShowCode { no, yes };
+
 // "FILE:LINE:COL: error: MESSAGE" or "FILE: byte N: error: MESSAGE" (docs/cli.md). Without the
 // caret lines; see render_with_caret for the full form.
-std::string format_diagnostic(const Diagnostic& d);
+std::string format_diagnostic(const Diagnostic& d, ShowCode show = ShowCode::no);
 
 // format_diagnostic plus, when the source line is known, the line (at most 100 characters of it
 // around the column, "..." marking a cut side) and a caret under the column.
-std::string render_with_caret(const Diagnostic& d);
+std::string render_with_caret(const Diagnostic& d, ShowCode show = ShowCode::no);
 
 // Built field by field: Diagnostic grows fields (code) that most diagnostics leave empty.
 inline Diagnostic make_diagnostic(Severity severity, ErrorKind kind, Location where, std::string message,
@@ -80,12 +95,18 @@ inline Diagnostic make_diagnostic(Severity severity, ErrorKind kind, Location wh
   d.code = code;
   return d;
 }
-inline Diagnostic make_error(Location where, std::string message, std::string source_line = {}) {
-  return make_diagnostic(Severity::error, ErrorKind::bad_input, std::move(where), std::move(message),
-                         std::move(source_line), "");
+inline Diagnostic make_error(ErrorCode code, Location where, std::string message, std::string source_line = {}) {
+  return make_diagnostic(Severity::error, code.kind, std::move(where), std::move(message), std::move(source_line),
+                         code.name);
 }
-inline Diagnostic make_error(ErrorKind kind, Location where, std::string message, std::string source_line = {}) {
-  return make_diagnostic(Severity::error, kind, std::move(where), std::move(message), std::move(source_line), "");
+// `inner` told again at another place or in other words: its code and kind stay, the failure being
+// the same (an operand's error shown where the expression names it).
+inline Diagnostic retold(const Diagnostic& inner, Location where, std::string message, std::string source_line = {}) {
+  Diagnostic d = inner;
+  d.where = std::move(where);
+  d.message = std::move(message);
+  d.source_line = std::move(source_line);
+  return d;
 }
 // A warning without a code is always shown (never counted with others).
 inline Diagnostic make_warning(Location where, std::string message, std::string source_line = {}) {

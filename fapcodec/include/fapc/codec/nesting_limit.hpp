@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "fapc/codec/codes.hpp"
 #include "fapc/codec/diagnostic.hpp"
 
 namespace fapc {
@@ -14,7 +15,7 @@ inline constexpr int kMaxNestingDepth = 256;
 
 // "WHAT nested deeper than 256 levels (the depth limit)", ErrorKind::limit_exceeded.
 inline Diagnostic nesting_too_deep(Location where, const std::string& what, std::string source_line = {}) {
-  return make_error(ErrorKind::limit_exceeded, std::move(where),
+  return make_error(codes::limit::nesting_depth, std::move(where),
                     what + " nested deeper than " + std::to_string(kMaxNestingDepth) + " levels (the depth limit)",
                     std::move(source_line));
 }

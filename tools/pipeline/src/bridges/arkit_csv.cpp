@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "csv_lines.hpp"
+#include "fapc/pipeline/codes.hpp"
 #include "fapc/vocabulary/arkit_shapes.hpp"
 #include "fapc/vocabulary/mapping_table.hpp"
 #include "resampler.hpp"
@@ -137,12 +138,14 @@ Result<TrackRead> read_arkit_csv(std::string_view text, const std::string& file,
   if (!header) return header.error();
   const Columns c = find_columns(*header);
   if (c.shapes.empty()) {
-    return make_error(Location::text(file, 1, 1), "an ARKit CSV without any of the 52 shape columns");
+    return make_error(codes::arkit::no_shape_column, Location::text(file, 1, 1),
+                      "an ARKit CSV without any of the 52 shape columns");
   }
   TrackRead read;
   read.frames.fps = options.fps;
   if (!c.unread.empty()) {
-    read.warnings.push_back(columns_not_read(file, "arkit.columns_not_read", c.unread, "not ARKit shapes or angles"));
+    read.warnings.push_back(
+        columns_not_read(file, codes::arkit::columns_not_read, c.unread, "not ARKit shapes or angles"));
   }
   // The timecode's rate: one pass over the frame fields first (a timecode by itself does not say).
   int rate = 0;
@@ -172,9 +175,9 @@ Result<TrackRead> read_arkit_csv(std::string_view text, const std::string& file,
     if (c.clock == Clock::timecode) {
       const std::optional<double> seconds = timecode_seconds(cells[c.time].text, rate);
       if (!seconds) {
-        return lines.error_at(&cells[c.time], "'" + std::string(cells[c.time].text) +
-                                                  "' is not a timecode HH:MM:SS:FF[.fff] at " + std::to_string(rate) +
-                                                  " frames a second");
+        return lines.error_at(codes::arkit::bad_timecode, &cells[c.time],
+                              "'" + std::string(cells[c.time].text) + "' is not a timecode HH:MM:SS:FF[.fff] at " +
+                                  std::to_string(rate) + " frames a second");
       }
       time = *seconds;
       // A take that runs past midnight starts again at 00: the day is added back.
@@ -185,7 +188,8 @@ Result<TrackRead> read_arkit_csv(std::string_view text, const std::string& file,
       time = c.clock == Clock::milliseconds ? *t / 1000 : *t;
     }
     if (last_time && time < *last_time) {
-      return lines.error_at(&cells[c.time], "the time goes back, to " + std::string(cells[c.time].text));
+      return lines.error_at(codes::csv::time_backwards, &cells[c.time],
+                            "the time goes back, to " + std::string(cells[c.time].text));
     }
     last_time = time;
     ++rows;
@@ -210,13 +214,14 @@ Result<TrackRead> read_arkit_csv(std::string_view text, const std::string& file,
     if (Status pushed = resampler.push(time, v, Location::text(file, lines.line(), cells[place].column)); !pushed)
       return pushed.error();
   }
-  if (rows == 0) return make_error(Location::text(file, lines.line(), 1), "an ARKit CSV without any data row");
+  if (rows == 0)
+    return make_error(codes::csv::no_rows, Location::text(file, lines.line(), 1), "an ARKit CSV without any data row");
   if (clamped > 0) {
-    read.warnings.push_back(make_warning(WarningCode{"arkit.weight_clamped"}, Location::text(file, 1, 1),
+    read.warnings.push_back(make_warning(codes::arkit::weight_clamped, Location::text(file, 1, 1),
                                          std::to_string(clamped) + " shape weights outside 0-1 were clamped to it"));
   }
   if (rolled > 0) {
-    read.warnings.push_back(make_warning(WarningCode{"arkit.eye_roll_lost"}, Location::text(file, 1, 1),
+    read.warnings.push_back(make_warning(codes::arkit::eye_roll_lost, Location::text(file, 1, 1),
                                          std::to_string(rolled) + " eye roll values are not 0: FAPs have no eyeball "
                                                                   "roll, so they are lost"));
   }

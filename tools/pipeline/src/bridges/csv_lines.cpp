@@ -4,6 +4,8 @@
 #include <charconv>
 #include <cmath>
 
+#include "fapc/pipeline/codes.hpp"
+
 namespace fapc::pipeline::bridges {
 namespace {
 
@@ -37,9 +39,9 @@ bool CsvLines::next(std::vector<CsvCell>& cells) {
   return false;
 }
 
-Diagnostic CsvLines::error_at(const CsvCell* cell, std::string message) const {
+Diagnostic CsvLines::error_at(ErrorCode code, const CsvCell* cell, std::string message) const {
   const int column = cell ? cell->column : static_cast<int>(whole_.size()) + 1;
-  return make_error(Location::text(file_, line_, column), std::move(message), std::string(whole_));
+  return make_error(code, Location::text(file_, line_, column), std::move(message), std::string(whole_));
 }
 
 Result<double> CsvLines::number(const CsvCell& cell, std::string_view what) const {
@@ -49,17 +51,19 @@ Result<double> CsvLines::number(const CsvCell& cell, std::string_view what) cons
   if (begin != end && *begin == '+') ++begin;  // from_chars takes no plus sign
   const auto [ptr, ec] = std::from_chars(begin, end, value);
   if (cell.text.empty() || ec != std::errc{} || ptr != end || !std::isfinite(value)) {
-    return error_at(&cell, std::string(what) + ": '" + std::string(cell.text) + "' is not a number");
+    return error_at(codes::csv::not_a_number, &cell,
+                    std::string(what) + ": '" + std::string(cell.text) + "' is not a number");
   }
   return value;
 }
 
 Status CsvLines::check_width(const std::vector<CsvCell>& cells, std::size_t width) const {
   if (cells.size() > width) {
-    return error_at(&cells[width], "more cells than the header's " + std::to_string(width) + " columns");
+    return error_at(codes::csv::cell_count, &cells[width],
+                    "more cells than the header's " + std::to_string(width) + " columns");
   }
   if (cells.size() < width) {
-    return error_at(nullptr,
+    return error_at(codes::csv::cell_count, nullptr,
                     std::to_string(cells.size()) + " cells, but the header has " + std::to_string(width) + " columns");
   }
   return ok_status();
@@ -68,19 +72,19 @@ Status CsvLines::check_width(const std::vector<CsvCell>& cells, std::size_t widt
 Result<std::vector<std::string>> read_header(CsvLines& lines) {
   std::vector<CsvCell> cells;
   if (!lines.next(cells)) {
-    return make_error(Location::text(lines.file(), 1, 1), "an empty CSV file: no header line");
+    return make_error(codes::csv::no_header, Location::text(lines.file(), 1, 1), "an empty CSV file: no header line");
   }
   if (cells.size() > kMaxCsvColumns) {
-    return lines.error_at(&cells[kMaxCsvColumns], "the header has " + std::to_string(cells.size()) +
-                                                      " columns, more than the limit of " +
-                                                      std::to_string(kMaxCsvColumns));
+    return lines.error_at(codes::csv::too_many_columns, &cells[kMaxCsvColumns],
+                          "the header has " + std::to_string(cells.size()) + " columns, more than the limit of " +
+                              std::to_string(kMaxCsvColumns));
   }
   std::vector<std::string> names;
   names.reserve(cells.size());
   for (const CsvCell& cell : cells) {
-    if (cell.text.empty()) return lines.error_at(&cell, "an empty column name");
+    if (cell.text.empty()) return lines.error_at(codes::csv::bad_header, &cell, "an empty column name");
     if (std::find(names.begin(), names.end(), cell.text) != names.end()) {
-      return lines.error_at(&cell, "column '" + std::string(cell.text) + "' is named twice");
+      return lines.error_at(codes::csv::bad_header, &cell, "column '" + std::string(cell.text) + "' is named twice");
     }
     names.emplace_back(cell.text);
   }

@@ -34,7 +34,7 @@ class CsvLines {
   const std::string& file() const { return file_; }
 
   // An error at a cell of the current line, or at its end (cell null).
-  Diagnostic error_at(const CsvCell* cell, std::string message) const;
+  Diagnostic error_at(ErrorCode code, const CsvCell* cell, std::string message) const;
   // The cell as a finite number, or an error at it naming `what` (the column).
   Result<double> number(const CsvCell& cell, std::string_view what) const;
   // Cells past the header's width, or missing: an error at the first extra cell or the line end.

@@ -2,6 +2,7 @@
 #include "bases.hpp"
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/face/face_track.hpp"
+#include "fapc/pipeline/codes.hpp"
 #include "writers.hpp"
 
 namespace fapc::pipeline::bridges {
@@ -17,8 +18,8 @@ std::string fap_list(const std::vector<int>& faps) {
   return out;
 }
 
-Diagnostic lost(const std::string& output, const char* code, const std::string& message) {
-  return make_warning(WarningCode{code}, Location{output, 0, 0, -1}, message);
+Diagnostic lost(const std::string& output, WarningCode code, const std::string& message) {
+  return make_warning(code, Location::whole_file(output), message);
 }
 
 }  // namespace
@@ -38,11 +39,11 @@ Diagnostics losses(const FapSequence& frames, Carrier carrier, const std::string
       if (others.test(static_cast<std::size_t>(fap - 1))) faps.push_back(fap);
     if (!any_viseme) {
       out.push_back(
-          lost(output, "visemes.no_viseme", "no frame sends FAP 1 (viseme): the track is silence throughout"));
+          lost(output, codes::visemes::no_viseme, "no frame sends FAP 1 (viseme): the track is silence throughout"));
     }
     if (!faps.empty()) {
       out.push_back(
-          lost(output, "visemes.faps_lost",
+          lost(output, codes::visemes::faps_lost,
                "a viseme track carries FAP 1 only (the heavier of its two visemes); lost: FAPs " + fap_list(faps)));
     }
     return out;
@@ -53,7 +54,7 @@ Diagnostics losses(const FapSequence& frames, Carrier carrier, const std::string
   for (int fap : face::FaceTrack(frames).moving_faps())
     if (!carried.test(static_cast<std::size_t>(fap - 1))) faps.push_back(fap);
   if (!faps.empty()) {
-    out.push_back(lost(output, arkit ? "arkit_csv.faps_lost" : "openface_csv.faps_lost",
+    out.push_back(lost(output, arkit ? codes::arkit_csv::faps_lost : codes::openface_csv::faps_lost,
                        std::string(arkit ? "ARKit's shapes" : "OpenFace's 17 action units") + " cannot carry FAPs " +
                            fap_list(faps) + "; they are lost"));
   }

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "csv_lines.hpp"
+#include "fapc/pipeline/codes.hpp"
 #include "fapc/vocabulary/mapping_table.hpp"
 #include "resampler.hpp"
 
@@ -54,7 +55,7 @@ Result<Columns> find_columns(const std::vector<std::string>& header, const std::
   Columns c;
   const std::optional<std::size_t> timestamp = column_of(header, "timestamp");
   if (!timestamp) {
-    return make_error(Location::text(file, 1, 1),
+    return make_error(codes::openface::no_timestamp, Location::text(file, 1, 1),
                       "an OpenFace CSV without a 'timestamp' column: fapc places rows by it");
   }
   c.timestamp = *timestamp;
@@ -167,7 +168,7 @@ Result<TrackRead> read_openface_csv(std::string_view text, const std::string& fi
   TrackRead read;
   read.frames.fps = options.fps;
   if (!c.unread.empty()) {
-    read.warnings.push_back(columns_not_read(file, "openface.columns_not_read", c.unread,
+    read.warnings.push_back(columns_not_read(file, codes::openface::columns_not_read, c.unread,
                                              "landmarks, shape parameters, translations, AU presence and "
                                              "units without FAPs carry nothing fapc maps"));
   }
@@ -192,8 +193,9 @@ Result<TrackRead> read_openface_csv(std::string_view text, const std::string& fi
     Result<double> time = lines.number(cells[c.timestamp], "timestamp");
     if (!time) return time.error();
     if (last_time && *time < *last_time) {
-      return lines.error_at(&cells[c.timestamp], "the timestamp goes back, from " + std::to_string(*last_time) +
-                                                     " to " + std::string(cells[c.timestamp].text) + " s");
+      return lines.error_at(codes::csv::time_backwards, &cells[c.timestamp],
+                            "the timestamp goes back, from " + std::to_string(*last_time) + " to " +
+                                std::string(cells[c.timestamp].text) + " s");
     }
     last_time = *time;
     bool trusted = true;
@@ -218,22 +220,24 @@ Result<TrackRead> read_openface_csv(std::string_view text, const std::string& fi
         !pushed)
       return pushed.error();
   }
-  if (rows == 0) return make_error(Location::text(file, lines.line(), 1), "an OpenFace CSV without any data row");
+  if (rows == 0)
+    return make_error(codes::csv::no_rows, Location::text(file, lines.line(), 1),
+                      "an OpenFace CSV without any data row");
   if (untrusted > 0) {
     read.warnings.push_back(make_warning(
-        WarningCode{"openface.untrusted_rows"}, Location::text(file, first_untrusted_line, 1),
+        codes::openface::untrusted_rows, Location::text(file, first_untrusted_line, 1),
         std::to_string(untrusted) + " of " + std::to_string(rows) +
             " rows (the first here) have success 0 or a confidence below 0.5: they hold the last tracked face "
             "(the neutral face before the first)"));
   }
   if (other_faces > 0) {
-    read.warnings.push_back(make_warning(WarningCode{"openface.other_faces"}, Location::text(file, 1, 1),
+    read.warnings.push_back(make_warning(codes::openface::other_faces, Location::text(file, 1, 1),
                                          std::to_string(other_faces) +
                                              " rows of other faces (face_id) are not read: fapc follows the first "
                                              "row's face"));
   }
   if (clamped > 0) {
-    read.warnings.push_back(make_warning(WarningCode{"openface.intensity_clamped"}, Location::text(file, 1, 1),
+    read.warnings.push_back(make_warning(codes::openface::intensity_clamped, Location::text(file, 1, 1),
                                          std::to_string(clamped) + " action unit intensities outside 0-5 were "
                                                                    "clamped to that range"));
   }

@@ -25,7 +25,7 @@ struct TrackOptions {
 
 // A warning at the header naming the columns a reader does not use: nothing is dropped silently.
 // `names` in the file's order; the message lists the first few and the count.
-Diagnostic columns_not_read(const std::string& file, const char* code, const std::vector<std::string>& names,
+Diagnostic columns_not_read(const std::string& file, WarningCode code, const std::vector<std::string>& names,
                             std::string_view why);
 
 }  // namespace fapc::pipeline::bridges

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "fapc/codec/file_io.hpp"
+#include "fapc/pipeline/codes.hpp"
 #include "fapc/pipeline/combine.hpp"
 #include "fapc/pipeline/registry.hpp"
 
@@ -25,15 +26,16 @@ Result<Loaded> load_combine(const std::string& path, const ConvertOptions& optio
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.find_first_not_of(" \t") != std::string::npos && line[line.find_first_not_of(" \t")] != '#') {
       if (!expression.empty()) {
-        return make_error(Location::text(path, line_number, 1), "a .combine file holds one expression on one line",
-                          line);
+        return make_error(codes::combine::two_expressions, Location::text(path, line_number, 1),
+                          "a .combine file holds one expression on one line", line);
       }
       expression = line;
       expression_line = line_number;
     }
     start = end + 1;
   }
-  if (expression.empty()) return make_error(Location::text(path, 1, 1), "no expression in this file");
+  if (expression.empty())
+    return make_error(codes::combine::no_expression, Location::text(path, 1, 1), "no expression in this file");
   Loaded loaded;
   Result<algebra::Value> value = evaluate_combination(expression, path, options, loaded.warnings);
   if (!value) {

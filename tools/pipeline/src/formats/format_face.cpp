@@ -45,14 +45,14 @@ Status video_takes(std::int64_t frames, int fps, const Location& ends, const std
                    const ConvertOptions& options) {
   const PictureSettings& p = options.picture;
   return face::check_video(frames, fps, face::VideoOptions{p.width, p.height, p.frame_rate, options.limits, {}},
-                           Location{path, 0, 0, -1}, ends);
+                           Location::whole_file(path), ends);
 }
 
 // The same of frames already loaded (a .fap, an .fba), their length placed at the input.
 Status video_takes(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
   const std::vector<FapFrame>& frames = loaded.frames.frames;
   return video_takes(frames.empty() ? 0 : frames.back().number + 1, loaded.frames.fps,
-                     Location{loaded.named(path), 0, 0, -1}, path, options);
+                     Location::whole_file(loaded.named(path)), path, options);
 }
 
 Result<std::string> write_webm(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {

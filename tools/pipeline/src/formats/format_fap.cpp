@@ -5,6 +5,7 @@
 #include "fap_text_outputs.hpp"
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/codec/file_io.hpp"
+#include "fapc/pipeline/codes.hpp"
 #include "fapc/pipeline/fba_io.hpp"
 #include "fapc/pipeline/json_access.hpp"
 #include "fapc/pipeline/registry.hpp"
@@ -120,7 +121,8 @@ class FapSource : public FrameSource {
     return [this](std::size_t offset) { file_.release(offset); };
   }
   Diagnostic changed() const {
-    return make_error(ErrorKind::io, Location{path_, 0, 0, -1}, "the file changed while it was read");
+    return make_error(codes::input::changed_while_read, Location::whole_file(path_),
+                      "the file changed while it was read");
   }
   MappedFile file_;
   std::string path_;

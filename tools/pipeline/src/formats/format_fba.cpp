@@ -4,6 +4,7 @@
 
 #include "../fba_frame_writer.hpp"
 #include "../verify_streams.hpp"
+#include "fapc/pipeline/codes.hpp"
 #include "fapc/pipeline/fba_io.hpp"
 #include "fapc/pipeline/json_access.hpp"
 #include "fapc/pipeline/registry.hpp"
@@ -99,7 +100,8 @@ class FbaSource : public FrameSource {
       return code(frame);
     });
     if (!again || k != frames_)
-      return make_error(ErrorKind::io, Location{options_.file, 0, 0, -1}, "the file changed while it was read");
+      return make_error(codes::input::changed_while_read, Location::whole_file(options_.file),
+                        "the file changed while it was read");
     return ok_status();
   }
   std::size_t frames_read() const override { return frames_; }

@@ -10,6 +10,7 @@
 #include "fapc/codec/file_io.hpp"
 #include "fapc/mpeg4/mp4_reader.hpp"
 #include "fapc/mpeg4/mp4_writer.hpp"
+#include "fapc/pipeline/codes.hpp"
 #include "fapc/pipeline/fba_io.hpp"
 #include "fapc/pipeline/json_access.hpp"
 #include "fapc/pipeline/registry.hpp"
@@ -133,7 +134,7 @@ Result<Loaded> load_mp4(const std::string& path, const ConvertOptions& options) 
 Result<std::string> write_mp4_file(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
   // An empty input would make a track without samples: say so about the input.
   if (loaded.frames.frames.empty())
-    return make_error(Location{loaded.named(path), 0, 0, -1},
+    return make_error(codes::output::no_frames, Location::whole_file(loaded.named(path)),
                       "no frames to write: an MP4 FBA track needs at least one");
   auto encoded = encode_checked(loaded, options, loaded.named(path), /*align_planes=*/true);
   if (!encoded) return encoded.error();
@@ -168,7 +169,8 @@ class Mp4FrameWriter : public FbaFrameWriter {
   Status commit() override {
     // As write_mp4_file: an empty input would make a track without samples.
     if (facts_.frames == 0)
-      return make_error(Location{input_, 0, 0, -1}, "no frames to write: an MP4 FBA track needs at least one");
+      return make_error(codes::output::no_frames, Location::whole_file(input_),
+                        "no frames to write: an MP4 FBA track needs at least one");
     if (error_) return *error_;
     auto file = AtomicFile::create(path_);
     if (!file) return file.error();

@@ -1,5 +1,6 @@
 // .wav as an output: the input's voice (spoken FML talk text, or a recording a script names) as
 // mono 16-bit PCM, sample 0 at the face's time 0 (docs/speech.md).
+#include "fapc/pipeline/codes.hpp"
 #include "fapc/pipeline/registry.hpp"
 #include "fapc/transcoder/wav.hpp"
 
@@ -9,7 +10,7 @@ namespace {
 
 Result<std::string> write_wav(const Loaded& loaded, const std::string& path, const ConvertOptions& options) {
   if (!loaded.audio || loaded.audio->samples.empty()) {
-    return make_error(ErrorKind::unsupported, Location{loaded.named(path), 0, 0, -1},
+    return make_error(codes::output::no_audio, Location::whole_file(loaded.named(path)),
                       "this input has no audio to write to " + path +
                           " (audio comes from FML talk text, or an XMT-Omega audio element with a WAV file)");
   }
@@ -18,7 +19,7 @@ Result<std::string> write_wav(const Loaded& loaded, const std::string& path, con
   const AudioTrack& audio = *loaded.audio;
   const double samples = std::max(0.0, audio.start) * audio.sample_rate + static_cast<double>(audio.samples.size());
   if (samples > static_cast<double>(options.limits.max_audio_samples)) {
-    return limit_error(Location{loaded.named(path), 0, 0, -1},
+    return limit_error(Location::whole_file(loaded.named(path)),
                        "the .wav from time 0 to the voice's end (it starts at " + std::to_string(audio.start) +
                            " s) would hold " + std::to_string(static_cast<std::int64_t>(samples)) + " samples",
                        Limit::audio_samples, options.limits);

@@ -2,6 +2,7 @@
 // which reader takes the document (docs/bml.md, "Inputs named .xml"): the row whose xml_roots name
 // it. Any other root is refused naming it and the roots fapc reads.
 #include "fapc/codec/file_io.hpp"
+#include "fapc/pipeline/codes.hpp"
 #include "fapc/pipeline/json_access.hpp"
 #include "fapc/pipeline/registry.hpp"
 #include "formats/xml_root.hpp"
@@ -29,7 +30,7 @@ Result<Loaded> load_xml(const std::string& path, const ConvertOptions& options) 
   }
   const InputFormat* reader = formats().input_for_xml_root(lower_case(root.name));
   if (reader == nullptr) {
-    return make_error(ErrorKind::unsupported, root.where,
+    return make_error(codes::format::unknown_xml_root, root.where,
                       "an XML document whose root <" + root.name + ">" +
                           (root.ns.empty() ? "" : " (namespace " + root.ns + ")") +
                           " is none fapc reads (roots read: " + roots_read() + ")");

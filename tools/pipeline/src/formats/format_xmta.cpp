@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "fapc/audio_codec/aac.hpp"
+#include "fapc/audio_codec/codes.hpp"
 #include "fapc/mpeg4/mp4_writer.hpp"
 #include "fapc/mpeg4/xmta_writer.hpp"
 #include "fapc/pipeline/registry.hpp"
@@ -29,8 +30,8 @@ Result<std::string> write_fba_scene(const Loaded& loaded, const std::string& pat
     auto config = audio_codec::aac_lc_mono_config(loaded.audio->sample_rate);
     if (config.empty())
       return make_error(
-          ErrorKind::unsupported,
-          loaded.audio->source.file.empty() ? Location{loaded.named(path), 0, 0, -1} : loaded.audio->source,
+          codes::aac::sample_rate,
+          loaded.audio->source.file.empty() ? Location::whole_file(loaded.named(path)) : loaded.audio->source,
           "audio at " + std::to_string(loaded.audio->sample_rate) + " Hz has no AAC sampling frequency index");
     voice = mpeg4::XmtaAudio{std::move(config), static_cast<std::uint32_t>(loaded.audio->sample_rate), voice_source};
   }

@@ -30,11 +30,11 @@ Result<xmto::IncludedAnimation> load_animation(const std::string& path, const Lo
     // A file that cannot be opened or has no known kind is reported at the element naming it.
     const Diagnostic& error = loaded.error();
     if (error.where.line > 0 || error.where.byte_offset >= 0) return error;
-    return make_error(error.kind, where, "cannot place '" + path + "': " + error.message);
+    return retold(error, where, "cannot place '" + path + "': " + error.message);
   }
   xmto::IncludedAnimation included;
   included.timeline = loaded->timeline ? std::move(*loaded->timeline)
-                                       : timeline_from_frames(loaded->frames, 0, Location{path, 0, 0, -1});
+                                       : timeline_from_frames(loaded->frames, 0, Location::whole_file(path));
   included.warnings = std::move(loaded->warnings);
   return included;
 }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "fapc/xml/codes.hpp"
+
 namespace fapc::pipeline {
 namespace {
 
@@ -51,8 +53,9 @@ Result<XmlRoot> find_xml_root(std::string_view text, const std::string& file_nam
     while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
     if (i >= text.size() || text[i] != '<') {
       Location where = at(text, i, file_name);
-      return make_error(where, i >= text.size() ? "no root element: the text ends before any start tag"
-                                                : "not XML: a start tag was expected here");
+      return make_error(codes::xml::no_root, where,
+                        i >= text.size() ? "no root element: the text ends before any start tag"
+                                         : "not XML: a start tag was expected here");
     }
     const std::string_view rest = text.substr(i);
     std::string_view close;
@@ -66,7 +69,8 @@ Result<XmlRoot> find_xml_root(std::string_view text, const std::string& file_nam
     std::size_t end =
         rest.starts_with("<!DOCTYPE") && rest.find('[') < rest.find('>') ? rest.find("]>") : rest.find(close);
     if (end == std::string_view::npos)
-      return make_error(at(text, i, file_name), "an unclosed declaration or comment before the root element");
+      return make_error(codes::xml::not_well_formed, at(text, i, file_name),
+                        "an unclosed declaration or comment before the root element");
     i += end + (rest.starts_with("<!DOCTYPE") && rest[end] == ']' ? 2 : close.size());
   }
   XmlRoot root;
@@ -74,7 +78,8 @@ Result<XmlRoot> find_xml_root(std::string_view text, const std::string& file_nam
   std::size_t j = i + 1;
   while (j < text.size() && name_char(text[j])) ++j;
   const std::string qualified(text.substr(i + 1, j - i - 1));
-  if (qualified.empty()) return make_error(root.where, "not XML: a start tag was expected here");
+  if (qualified.empty())
+    return make_error(codes::xml::not_well_formed, root.where, "not XML: a start tag was expected here");
   const std::size_t colon = qualified.find(':');
   root.name = colon == std::string::npos ? qualified : qualified.substr(colon + 1);
   const std::size_t tag_end = text.find('>', j);

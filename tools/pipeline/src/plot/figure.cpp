@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "fapc/codec/fap_table.hpp"
+#include "fapc/pipeline/codes.hpp"
 #include "fapc/transcoder/algebra.hpp"
 #include "fapc/transcoder/render.hpp"
 
@@ -112,7 +113,7 @@ Result<std::vector<std::string>> select_targets(const std::string& selection, co
       message +=
           " (a FAP name or number, a range like 19-30, a group: jaw, lips, eyes, brows, cheeks, "
           "tongue, head, outer_lips, nose, ears, mouth, all; or viseme, expression)";
-      return make_error(ErrorKind::usage, Location{input, 0, 0, -1}, message);
+      return make_error(codes::plot::unknown_parameter, Location::whole_file(input), message);
     }
     wanted.insert(wanted.end(), names->begin(), names->end());
   }
@@ -122,7 +123,7 @@ Result<std::vector<std::string>> select_targets(const std::string& selection, co
   if (chosen.empty()) {
     std::string has;
     for (const std::string& name : available) has += (has.empty() ? "" : ", ") + name;
-    return make_error(ErrorKind::usage, Location{input, 0, 0, -1},
+    return make_error(codes::plot::nothing_selected, Location::whole_file(input),
                       "--faps '" + selection +
                           "' selects none of this input's parameters (it has: " + (has.empty() ? "none" : has) + ")");
   }
@@ -148,7 +149,7 @@ Result<Figure> build_figure(const Loaded& loaded, const std::string& input, cons
   std::optional<Curves> clips;
   if (options.per_clip) {
     if (!loaded.timeline)
-      return make_error(ErrorKind::unsupported, Location{input, 0, 0, -1},
+      return make_error(codes::plot::per_clip_needs_timeline, Location::whole_file(input),
                         "--per-clip needs a timeline input (Mimic, FML or XMT-Omega); this input has frames only");
     clips = render_clip_curves(*loaded.timeline, CurveOptions{options.fps, 1e-6});
   }

@@ -5,6 +5,7 @@
 
 #include "canvas.hpp"
 #include "csv.hpp"
+#include "fapc/pipeline/codes.hpp"
 #include "figure.hpp"
 
 namespace fapc::pipeline {
@@ -52,7 +53,8 @@ Result<Plot> plot_loaded(const Loaded& loaded, const std::string& input, PlotKin
     case PlotKind::csv:
       break;
   }
-  if (out.bytes.empty()) return make_error(ErrorKind::io, Location{input, 0, 0, -1}, "cairo could not draw the plot");
+  if (out.bytes.empty())
+    return make_error(codes::plot::draw_failed, Location::whole_file(input), "cairo could not draw the plot");
   return out;
 }
 

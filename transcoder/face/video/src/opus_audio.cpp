@@ -11,6 +11,8 @@ extern "C" {
 #include <algorithm>
 #include <cmath>
 
+#include "fapc/face/codes.hpp"
+
 namespace fapc::face {
 
 namespace {
@@ -34,12 +36,12 @@ OpusPackets::~OpusPackets() {
 
 Result<std::unique_ptr<OpusPackets>> encode_opus(const AudioInput& audio, bool global_header, const Location& at) {
   auto failed = [&](const std::string& what, int code) {
-    return make_error(ErrorKind::io, at, what + ": " + av_message(code));
+    return make_error(codes::video::encoder_failed, at, what + ": " + av_message(code));
   };
   if (audio.sample_rate <= 0 || audio.channels < 1 || audio.channels > 2)
-    return make_error(ErrorKind::unsupported, at, "audio for a .webm must be mono or stereo at a positive rate");
+    return make_error(codes::video::audio_layout, at, "audio for a .webm must be mono or stereo at a positive rate");
   const AVCodec* opus = avcodec_find_encoder_by_name("libopus");
-  if (!opus) return make_error(ErrorKind::unsupported, at, "this libavcodec has no libopus encoder");
+  if (!opus) return make_error(codes::video::no_codec, at, "this libavcodec has no libopus encoder");
   auto out = std::make_unique<OpusPackets>();
   out->codec = avcodec_alloc_context3(opus);
   AVCodecContext* c = out->codec;

@@ -14,6 +14,7 @@ extern "C" {
 #include <memory>
 
 #include "av_error.hpp"
+#include "fapc/face/codes.hpp"
 #include "fapc/face/renderer.hpp"
 #include "opus_audio.hpp"
 
@@ -87,15 +88,15 @@ Status check_video(std::int64_t frames, int fps, const VideoOptions& options, co
                    const Location& length_at) {
   if (options.width < kMinSide || options.height < kMinSide || options.width > kMaxSide || options.height > kMaxSide ||
       options.width % 2 || options.height % 2)
-    return make_error(ErrorKind::usage, at,
+    return make_error(codes::video::bad_size, at,
                       "--size " + std::to_string(options.width) + "x" + std::to_string(options.height) +
                           ": a .webm needs even sides from " + std::to_string(kMinSide) + " to " +
                           std::to_string(kMaxSide) + " pixels");
   const int rate = options.frame_rate > 0 ? options.frame_rate : fps;
-  if (rate > 120) return make_error(ErrorKind::usage, at, "--frame-rate must be 1 to 120");
+  if (rate > 120) return make_error(codes::video::bad_frame_rate, at, "--frame-rate must be 1 to 120");
   const double seconds = fps > 0 ? static_cast<double>(frames) / fps : 0;
   if (seconds > kMaxVideoSeconds)
-    return make_error(ErrorKind::limit_exceeded, length_at,
+    return make_error(codes::video::too_long, length_at,
                       "the animation lasts " + std::to_string(seconds) + " s; a video is limited to " +
                           std::to_string(int(kMaxVideoSeconds)) + " s");
   const std::int64_t pictures = video_frame_count(frames, fps, rate);
@@ -118,19 +119,19 @@ Status check_video(std::int64_t frames, int fps, const VideoOptions& options, co
 
 Result<std::string> encode_webm(const FaceTrack& track, const VideoOptions& options, const AudioInput* audio,
                                 const std::string& where) {
-  const Location at{where, 0, 0, -1};
+  const Location at = Location::whole_file(where);
   if (Status checked = check_video(track.frame_count(), track.fps(), options, at, at); !checked) return checked.error();
   const int rate = options.frame_rate > 0 ? options.frame_rate : track.fps();
   const std::int64_t frames = video_frame_count(track, rate);
   auto failed = [&](const std::string& what, int code) {
-    return make_error(ErrorKind::io, at, what + ": " + av_message(code));
+    return make_error(codes::video::encoder_failed, at, what + ": " + av_message(code));
   };
 
   // libav logs to standard error by default; a library must not print (its errors come back as
   // return codes here). This is process-wide, like libav's logging itself.
   av_log_set_level(AV_LOG_QUIET);
   const AVCodec* vp9 = avcodec_find_encoder_by_name("libvpx-vp9");
-  if (!vp9) return make_error(ErrorKind::unsupported, at, "this libavcodec has no libvpx-vp9 encoder");
+  if (!vp9) return make_error(codes::video::no_codec, at, "this libavcodec has no libvpx-vp9 encoder");
   Output out;
   Memory memory;
   if (int e = avformat_alloc_output_context2(&out.format, nullptr, "webm", nullptr); e < 0)

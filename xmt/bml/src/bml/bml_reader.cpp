@@ -20,6 +20,7 @@
 #include "bml/speak_text.hpp"
 #include "bml/sync_ref.hpp"
 #include "fapc/bml/bml.hpp"
+#include "fapc/bml/codes.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "fapc/xml/once_per_name.hpp"
 #include "fapc/xml/text.hpp"
@@ -84,9 +85,10 @@ class BmlReader {
   // `root`: the document's root, or a bml element inside another language's document (FML-APML's
   // bml part), whose parser warnings that document's reader reports itself.
   Result<BmlDocument> run(const xmlNode* root, bool whole_document) {
-    if (root == nullptr) return make_error(Location{doc_.file(), 1, 1}, "an empty document");
+    if (root == nullptr)
+      return make_error(codes::bml::empty_document, Location{doc_.file(), 1, 1}, "an empty document");
     if (xml::local_name(root) != "bml")
-      return doc_.error(root,
+      return doc_.error(codes::bml::not_bml, root,
                         "the root element is <" + std::string(xml::local_name(root)) + ">, not a BML <bml> block");
     out_.dialect = dialect_of(root);
     Block block;
@@ -147,10 +149,9 @@ class BmlReader {
 
   bool count_one(const xmlNode* node) {
     if (++counted_ <= options_.limits.max_runs) return true;
-    Diagnostic d = doc_.error(node, "more than " + std::to_string(options_.limits.max_runs) +
-                                        " behaviours and constraints (raise the limit with --max-runs)");
-    d.kind = ErrorKind::limit_exceeded;
-    return fail(std::move(d));
+    return fail(doc_.error(codes::limit::runs, node,
+                           "more than " + std::to_string(options_.limits.max_runs) +
+                               " behaviours and constraints (raise the limit with --max-runs)"));
   }
 
   bool read_block(const xmlNode* root, Block& block) {
@@ -166,8 +167,8 @@ class BmlReader {
       else if (c == "REPLACE")
         block.composition = Block::Composition::replace;
       else
-        return fail(
-            doc_.error(root, "composition", "composition '" + *composition + "' is not MERGE, APPEND or REPLACE"));
+        return fail(doc_.error(codes::bml::bad_composition, root, "composition",
+                               "composition '" + *composition + "' is not MERGE, APPEND or REPLACE"));
     }
     static const char* const kCompositionNames[] = {"MERGE", "APPEND", "REPLACE"};
     out_.compositions.emplace_back(kCompositionNames[static_cast<int>(block.composition)]);
@@ -210,14 +211,14 @@ class BmlReader {
                                             "the block's <lips> rows move the mouth: the visemes "
                                             "synthesised for this speech are not drawn",
                                             doc_.line_text(b.where.line)),
-                               "bml.lips_over_synthesis"));
+                               codes::bml::lips_over_synthesis));
       } else if (!lips && b.speech->recorded) {
         once_.report("recorded without lips",
                      with_code(make_warning(b.where,
                                             "recorded speech without <lips> rows: fapc does not find the phonemes "
                                             "of audio, so the mouth does not follow it",
                                             doc_.line_text(b.where.line)),
-                               "bml.recorded_speech_without_lips"));
+                               codes::bml::recorded_speech_without_lips));
       }
     }
   }
@@ -239,7 +240,7 @@ class BmlReader {
       once_.report(
           "not drawn " + b.element,
           with_code(doc_.warning(node, "<" + b.element + "> is not drawn by fapc (no body): its timing is kept"),
-                    "bml.not_drawn"));
+                    codes::bml::not_drawn));
     } else if ((name == "face" || name == "head" || name == "gaze") && greta_reference(node, b)) {
       // Greta's reference names (docs/bml.md, "Greta references"): read by greta_reference.cpp
     } else if (name == "lips" || name == "lip") {
@@ -266,7 +267,8 @@ class BmlReader {
       // Checked as a double: a huge value converted to int first is undefined (found by fuzzing).
       const double repetition = number_attribute(node, "repetition", 1.0);
       if (!(repetition >= 1 && repetition <= 100) || repetition != std::floor(repetition))
-        return fail(doc_.error(node, "repetition", "repetition must be a whole number from 1 to 100"));
+        return fail(
+            doc_.error(codes::bml::bad_value, node, "repetition", "repetition must be a whole number from 1 to 100"));
       b.repetition = static_cast<int>(repetition);
     } else if (name == "headDirectionShift") {
       b.kind = BehaviourKind::head_direction;
@@ -283,7 +285,7 @@ class BmlReader {
           "unknown " + b.element,
           with_code(doc_.warning(
                         node, "<" + b.element + "> is not a BML 1.0 behaviour: its timing is kept, nothing is drawn"),
-                    "bml.unknown_behaviour"));
+                    codes::bml::unknown_behaviour));
     }
     if (error_) return false;
     if (b.id.empty()) b.id = "#" + std::to_string(block.behaviours.size() + 1);
@@ -311,7 +313,7 @@ class BmlReader {
       if (!value) continue;
       std::string why;
       const auto ref = parse_sync_ref(*value, why);
-      if (!ref) return fail(doc_.error(node, attribute, why));
+      if (!ref) return fail(doc_.error(codes::bml::bad_reference, node, attribute, why));
       if (p != kStart && b.speech && b.speech->recorded && overruled_by_recording(node, b, timing, p, attribute, *ref))
         continue;
       Pending p_;
@@ -327,7 +329,7 @@ class BmlReader {
                      with_code(doc_.warning(node, attribute,
                                             std::string(attribute) + " is earlier than start: read as "
                                                                      "a time from the behaviour's start (Greta 0.x)"),
-                               "bml.time_from_start"));
+                               codes::bml::time_from_start));
       }
       p_.label = label(node, attribute, b.id + " " + attribute + "=\"" + std::string(xml::trim(*value)) + "\"");
       p_.node = node;
@@ -376,7 +378,7 @@ class BmlReader {
                            format_seconds(recorded) + ", " + format_seconds(b.speech->duration) +
                            " long by its marks and audio): "
                            "the recorded timing wins, and the speech's other placeholder times are not read"),
-          "bml.recorded_timing_wins"));
+          codes::bml::recorded_timing_wins));
     return true;
   }
 
@@ -404,7 +406,7 @@ class BmlReader {
     once_.report("viseme " + name, with_code(doc_.warning(node, "viseme",
                                                           "viseme '" + name + "' is not one of SmartBody's (" + known +
                                                               "): its timing is kept, the mouth does not move"),
-                                             "bml.unknown_viseme"));
+                                             codes::bml::unknown_viseme));
   }
 
   // faceFacs (and SmartBody's face type="facs"): au and side.
@@ -413,7 +415,8 @@ class BmlReader {
     const auto au = xml::attribute(node, "au");
     const auto n = au ? xml::decimal(xml::trim(*au)) : std::nullopt;
     if (!n || *n != std::floor(*n) || *n < 1 || *n > 99)
-      return fail(doc_.error(node, "au", "<" + b.element + "> needs au, an action unit number from 1 to 99"));
+      return fail(doc_.error(codes::bml::missing_attribute, node, "au",
+                             "<" + b.element + "> needs au, an action unit number from 1 to 99"));
     b.au = static_cast<int>(*n);
     const std::string side = upper(xml::trim(xml::attribute(node, "side").value_or("BOTH")));
     if (side == "LEFT")
@@ -423,12 +426,12 @@ class BmlReader {
     else if (side == "BOTH")
       b.side = 'B';
     else
-      return fail(doc_.error(node, "side", "side '" + side + "' is not LEFT, RIGHT or BOTH"));
+      return fail(doc_.error(codes::bml::bad_value, node, "side", "side '" + side + "' is not LEFT, RIGHT or BOTH"));
     return true;
   }
 
-  static Diagnostic with_code(Diagnostic d, const char* code) {
-    d.code = code;
+  static Diagnostic with_code(Diagnostic d, WarningCode code) {
+    d.code = code.name;
     return d;
   }
 
@@ -437,7 +440,7 @@ class BmlReader {
     if (!text) return fallback;
     const auto n = xml::decimal(xml::trim(*text));
     if (!n) {
-      fail(doc_.error(node, name, std::string(name) + " '" + *text + "' is not a number"));
+      fail(doc_.error(codes::bml::bad_value, node, name, std::string(name) + " '" + *text + "' is not a number"));
       return fallback;
     }
     return *n;
@@ -451,7 +454,7 @@ class BmlReader {
                                                     "gaze and head targets name objects of a world "
                                                     "fapc does not have: taken as straight ahead, "
                                                     "offsetAngle and offsetDirection turn from there"),
-                                       "bml.target_ahead"));
+                                       codes::bml::target_ahead));
   }
 
   // <speech><text>words <sync id="s1"/> words</text></speech>, or the text and its tm marks
@@ -492,7 +495,7 @@ class BmlReader {
       if (name == "sync" || name == "tm" || name == "mark") {
         const auto id = xml::attribute(n, "id");
         if (!id || xml::trim(*id).empty()) {
-          fail(doc_.error(n, "<" + std::string(name) + "> in speech needs an id"));
+          fail(doc_.error(codes::bml::missing_attribute, n, "<" + std::string(name) + "> in speech needs an id"));
           return;
         }
         marked.mark_ids.emplace_back(xml::trim(*id));
@@ -501,7 +504,7 @@ class BmlReader {
         once_.report("in speech " + std::string(name),
                      with_code(doc_.warning(n, "<" + std::string(name) +
                                                    "> in speech is not read (prosody marks): its text is not spoken"),
-                               "bml.speech_markup_skipped"));
+                               codes::bml::speech_markup_skipped));
       }
     }
   }
@@ -521,7 +524,7 @@ class BmlReader {
             "constraint " + std::string(name),
             with_code(doc_.warning(child, "<" + std::string(name) +
                                               "> is not a BML constraint (synchronize, before, after): skipped"),
-                      "bml.unknown_constraint"));
+                      codes::bml::unknown_constraint));
         continue;
       }
       std::optional<SyncRef> anchor;
@@ -529,18 +532,19 @@ class BmlReader {
       if (const auto ref = xml::attribute(child, "ref")) {
         std::string why;
         anchor = parse_sync_ref(*ref, why);
-        if (!anchor) return fail(doc_.error(child, "ref", why));
+        if (!anchor) return fail(doc_.error(codes::bml::bad_reference, child, "ref", why));
       } else if (name != "synchronize") {
-        return fail(doc_.error(child, "<" + std::string(name) + "> needs ref, the sync point the others come " +
-                                          (name == "before" ? "before" : "after")));
+        return fail(doc_.error(codes::bml::missing_attribute, child,
+                               "<" + std::string(name) + "> needs ref, the sync point the others come " +
+                                   (name == "before" ? "before" : "after")));
       }
       for (const xmlNode* sync : doc_.children(child)) {
         if (xml::local_name(sync) != "sync") continue;
         const auto ref_text = xml::attribute(sync, "ref");
-        if (!ref_text) return fail(doc_.error(sync, "<sync> in a constraint needs ref"));
+        if (!ref_text) return fail(doc_.error(codes::bml::missing_attribute, sync, "<sync> in a constraint needs ref"));
         std::string why;
         const auto ref = parse_sync_ref(*ref_text, why);
-        if (!ref) return fail(doc_.error(sync, "ref", why));
+        if (!ref) return fail(doc_.error(codes::bml::bad_reference, sync, "ref", why));
         if (!anchor) {  // the first sync of a synchronize is the one the others equal
           anchor = ref;
           anchor_node = sync;
@@ -578,13 +582,13 @@ class BmlReader {
                                    const SyncRef& ref, const Pending& at) {
     if (!ref.block.empty() && ref.block != block.id) {
       fail(doc_.error(
-          at.node, at.attribute,
+          codes::bml::unknown_reference, at.node, at.attribute,
           "'" + describe(ref) + "' names the block '" + ref.block + "'; this document's block is '" + block.id + "'"));
       return std::nullopt;
     }
     const auto found = ids.find(ref.behaviour);
     if (found == ids.end()) {
-      fail(doc_.error(at.node, at.attribute,
+      fail(doc_.error(codes::bml::unknown_reference, at.node, at.attribute,
                       "'" + describe(ref) + "': no behaviour '" + ref.behaviour + "' in block '" + block.id + "'"));
       return std::nullopt;
     }
@@ -596,7 +600,7 @@ class BmlReader {
       if (mark != ids_of.end())
         return PointRef{found->second, kStandardPoints + static_cast<std::uint32_t>(mark - ids_of.begin())};
     }
-    fail(doc_.error(at.node, at.attribute,
+    fail(doc_.error(codes::bml::unknown_reference, at.node, at.attribute,
                     "'" + describe(ref) + "': " + b.element + " '" + b.id + "' has no sync point '" + ref.sync +
                         "' (start, ready, strokeStart, stroke, strokeEnd, relax, end" +
                         (b.speech ? ", or one of its sync marks)" : ")")));
@@ -616,11 +620,11 @@ class BmlReader {
                                               "a second behaviour with id '" + b.id + "' (the first is at line " +
                                                   std::to_string(first.line) + "): references name the first",
                                               doc_.line_text(b.where.line)),
-                                 "bml.duplicate_id"));
+                                 codes::bml::duplicate_id));
           continue;
         }
         return fail(make_error(
-            b.where,
+            codes::bml::duplicate_id_error, b.where,
             "a second behaviour with id '" + b.id + "' (the first is at line " + std::to_string(first.line) + ")",
             doc_.line_text(b.where.line)));
       }
@@ -639,7 +643,7 @@ class BmlReader {
         // <synchronize> may hold a plain time: the others are put at it.
         if (mine.absolute && !other.absolute && p.kind == Relation::Kind::equal) std::swap(mine, other);
         if (mine.absolute)
-          return fail(doc_.error(p.node, p.attribute,
+          return fail(doc_.error(codes::bml::plain_times_compared, p.node, p.attribute,
                                  "this constraint compares two plain times: name a behaviour's sync point"));
         const auto point = point_of(block, ids, mine, p);
         if (!point) return false;
@@ -657,10 +661,8 @@ class BmlReader {
       double offset = other.offset - a_offset;
       if (p.reversed) {  // before: t(a) + a_offset <= t(b) + b.offset -> t(b) >= t(a) + (a_offset - b.offset)
         if (!b) {
-          Diagnostic d =
-              doc_.error(p.node, p.attribute, "before a plain time is not read: give the time as the sync point's own");
-          d.kind = ErrorKind::unsupported;
-          return fail(std::move(d));
+          return fail(doc_.error(codes::bml::before_plain_time, p.node, p.attribute,
+                                 "before a plain time is not read: give the time as the sync point's own"));
         }
         r.a = *b;
         r.b = a;
@@ -752,7 +754,7 @@ class BmlReader {
 
   Diagnostic at_label(int l, std::string message) const {
     const ConstraintSource& s = sources_[static_cast<std::size_t>(std::max(0, l))];
-    return make_error(s.where, std::move(message), doc_.line_text(s.where.line));
+    return make_error(codes::bml::constraints_conflict, s.where, std::move(message), doc_.line_text(s.where.line));
   }
 
   Diagnostic solve_error(const Block& block, const SolveError& e) const {

@@ -2,6 +2,7 @@
 
 #include <charconv>
 
+#include "fapc/bml/codes.hpp"
 #include "fapc/codec/fap_table.hpp"
 #include "fapc/vocabulary/fap_side.hpp"
 #include "fapc/vocabulary/mapping_table.hpp"
@@ -89,11 +90,11 @@ void lower_face(const Behaviour& b, const std::array<double, kStandardPoints>& t
       b.kind == BehaviourKind::face_facs ? unit_faps(b.au, b.side, 1.0, lost) : lexeme_faps(b.lexeme, lost);
   for (int au : lost)
     warnings.push_back(
-        make_warning(WarningCode{"bml.unit_not_drawn"}, b.where,
+        make_warning(codes::bml::unit_not_drawn, b.where,
                      "action unit " + std::to_string(au) + " moves no FAP (fapc's au_faps.tsv): not drawn"));
   if (faps.empty() && lost.empty()) {
     warnings.push_back(
-        make_warning(WarningCode{"bml.unknown_lexeme"}, b.where,
+        make_warning(codes::bml::unknown_lexeme, b.where,
                      "face lexeme '" + b.lexeme +
                          "' is not in fapc's vocabulary (the 17 of BML 1.0, docs/bml.md): its timing is kept"));
     return;

@@ -8,6 +8,7 @@
 #include "bml/bml_model.hpp"
 #include "bml/face_lowering.hpp"
 #include "bml/lexicon_behaviours.hpp"
+#include "fapc/bml/codes.hpp"
 #include "fapc/transcoder/audio_mix.hpp"
 
 namespace fapc::bml {
@@ -85,7 +86,7 @@ void lower_head(const Behaviour& b, const std::array<double, kStandardPoints>& t
     add("head_roll", envelope(t, sign * 10 * amount * kAngleUnitsPerDegree, false));
   } else {
     warnings.push_back(make_warning(
-        WarningCode{"bml.unknown_head_lexeme"}, b.where,
+        codes::bml::unknown_head_lexeme, b.where,
         "head lexeme '" + l + "' is not one fapc draws (NOD, SHAKE, TILT, TILT_LEFT, TILT_RIGHT): its timing is kept"));
   }
 }
@@ -181,7 +182,7 @@ void lower_behaviour(const Behaviour& b, const std::array<double, kStandardPoint
     // start = end is a consistent schedule (two sync points joined) but moves nothing: said, not
     // drawn, so that every clip of the timeline lasts some time.
     warnings.push_back(
-        make_warning(WarningCode{"bml.no_duration"}, b.where,
+        make_warning(codes::bml::no_duration, b.where,
                      "<" + b.element + " id=\"" + b.id + "\"> starts and ends at the same moment: it moves nothing"));
     return;
   }

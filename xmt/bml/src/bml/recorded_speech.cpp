@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "fapc/bml/codes.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "fapc/codec/include_policy.hpp"
 #include "fapc/transcoder/wav.hpp"
@@ -33,32 +34,32 @@ Status read_marks(const xml::XmlDocument& doc, const xmlNode* text, const Reader
         Diagnostic w = doc.warning(mark, "<" + std::string(name) +
                                              "> in recorded speech is not read: the recording is what "
                                              "is heard, and only the marks' times are taken");
-        w.code = "bml.speech_markup_skipped";
+        w.code = codes::bml::speech_markup_skipped.name;
         warnings.push_back(std::move(w));
         said = true;
       }
       continue;
     }
     const std::string id(xml::trim(xml::attribute(mark, "id").value_or("")));
-    if (id.empty()) return doc.error(mark, "<" + std::string(name) + "> in speech needs an id");
+    if (id.empty())
+      return doc.error(codes::bml::missing_attribute, mark, "<" + std::string(name) + "> in speech needs an id");
     const auto time_text = xml::attribute(mark, "time");
     if (!time_text)
-      return doc.error(mark,
+      return doc.error(codes::bml::missing_attribute, mark,
                        "a mark of recorded speech needs time, seconds from the speech's start (the recording's "
                        "audio says nothing about where its words are)");
     const auto time = xml::decimal(xml::trim(*time_text));
     if (!time || !std::isfinite(*time) || *time < 0)
-      return doc.error(mark, "time", "time '" + *time_text + "' is not a number of seconds from 0 on");
+      return doc.error(codes::bml::bad_value, mark, "time",
+                       "time '" + *time_text + "' is not a number of seconds from 0 on");
     if (*time > options.speech.max_seconds) {
-      Diagnostic d = doc.error(mark, "time",
-                               "mark '" + id + "' at " + seconds_text(*time) + ": the speech would last more than " +
-                                   seconds_text(options.speech.max_seconds) +
-                                   " (the frame limit at this frame rate; raise it with --max-frames)");
-      d.kind = ErrorKind::limit_exceeded;
-      return d;
+      return doc.error(codes::limit::frames, mark, "time",
+                       "mark '" + id + "' at " + seconds_text(*time) + ": the speech would last more than " +
+                           seconds_text(options.speech.max_seconds) +
+                           " (the frame limit at this frame rate; raise it with --max-frames)");
     }
     if (!out.mark_times.empty() && *time < out.mark_times.back())
-      return doc.error(mark, "time",
+      return doc.error(codes::bml::marks_out_of_order, mark, "time",
                        "mark '" + id + "' at " + seconds_text(*time) + " comes before the mark before it ('" +
                            out.mark_ids.back() + "' at " + seconds_text(out.mark_times.back()) + ")");
     out.mark_ids.push_back(id);
@@ -80,7 +81,7 @@ Status read_audio(const xml::XmlDocument& doc, const xmlNode* description, const
         doc.warning(file != nullptr ? file : description,
                     "recorded speech names no audio file (<file ref=\"NAME\"/>): its marks keep their times, "
                     "with no voice");
-    w.code = "bml.recorded_audio_missing";
+    w.code = codes::bml::recorded_audio_missing.name;
     warnings.push_back(std::move(w));
     return ok_status();
   }
@@ -100,7 +101,7 @@ Status read_audio(const xml::XmlDocument& doc, const xmlNode* description, const
                                "the recording '" + name +
                                    "' is not next to the document: the speech keeps "
                                    "its recorded times, with no voice");
-    w.code = "bml.recorded_audio_missing";
+    w.code = codes::bml::recorded_audio_missing.name;
     warnings.push_back(std::move(w));
     return ok_status();
   }
@@ -114,19 +115,18 @@ Status read_audio(const xml::XmlDocument& doc, const xmlNode* description, const
   }
   Result<std::string> bytes = read_file_bytes(*path, options.limits);
   if (!bytes) {
-    Diagnostic d = doc.error(file, "ref", "recording '" + name + "': " + bytes.error().message);
-    d.kind = bytes.error().kind;
-    return d;
+    const Location at = doc.where(file, "ref");
+    return retold(bytes.error(), at, "recording '" + name + "': " + bytes.error().message, doc.line_text(at.line));
   }
   Result<AudioClip> audio = read_wav(*bytes, *path);
   if (!audio) {  // placed at the reference, saying what is wrong where in the file
-    Diagnostic d = doc.error(
-        file, "ref",
+    const Location at = doc.where(file, "ref");
+    return retold(
+        audio.error(), at,
         "recording '" + name + "': " + audio.error().message +
             (audio.error().where.byte_offset >= 0 ? " (at byte " + std::to_string(audio.error().where.byte_offset) + ")"
-                                                  : std::string()));
-    d.kind = audio.error().kind;
-    return d;
+                                                  : std::string()),
+        doc.line_text(at.line));
   }
   if (static_cast<std::int64_t>(audio->samples.size()) > options.limits.max_audio_samples) {
     Diagnostic d = limit_error(doc.where(file, "ref"),

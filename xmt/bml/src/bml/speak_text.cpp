@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "fapc/bml/codes.hpp"
 #include "fml/speech_visemes.hpp"
 
 namespace fapc::bml {
@@ -27,7 +28,7 @@ Result<SpokenText> speak(const MarkedText& text, const ReaderOptions& options, c
   if (!options.speech.synthesize) {
     if (!warned) {
       warned = true;
-      warnings.push_back(make_warning(WarningCode{"bml.no_speech_engine"}, where,
+      warnings.push_back(make_warning(codes::bml::no_speech_engine, where,
                                       "no speech engine in this build: speech text becomes visemes by the letter "
                                       "table, silent, and sync marks fall in proportion to the text"));
     }

@@ -15,6 +15,7 @@
 #include "fapc/codec/file_io.hpp"
 #include "fapc/codec/include_policy.hpp"
 #include "fapc/codec/nesting_limit.hpp"
+#include "fapc/fml/codes.hpp"
 #include "fapc/fml/fml.hpp"
 #include "fapc/transcoder/audio_mix.hpp"
 #include "fapc/xml/name_table.hpp"
@@ -105,10 +106,11 @@ class FmlReader {
   Result<EmbeddedFmlMove> run_embedded(const xmlNode* node) {
     const std::string name(xml::local_name(node));
     if (name != "talk" && name != "expr" && name != "hdmv" && name != "fap" && name != "param" && name != "wait") {
-      return doc_.error(node, "FML '" + name +
-                                  "' inside XMT-Omega: only FML moves (talk, expr, hdmv, fap, param, "
-                                  "wait) are read here; use XMT-Omega's own time containers, or "
-                                  "place an FML document with animation src");
+      return doc_.error(codes::fml::not_a_move, node,
+                        "FML '" + name +
+                            "' inside XMT-Omega: only FML moves (talk, expr, hdmv, fap, param, "
+                            "wait) are read here; use XMT-Omega's own time containers, or "
+                            "place an FML document with animation src");
     }
     std::optional<ScheduleNode> placed = element(node);
     if (error_) return *error_;
@@ -126,13 +128,15 @@ class FmlReader {
     result_.warnings = doc_.warnings();
     const xmlNode* root = doc_.root();
     if (const std::string other = other_format_name(doc_, root); !other.empty()) {
-      return doc_.error(root, "this is " + other +
-                                  ", not FML (the Arya-DiPaola Face Modeling Language, "
-                                  "root fml with model and story): fapc does not read it");
+      return doc_.error(codes::fml::other_language, root,
+                        "this is " + other +
+                            ", not FML (the Arya-DiPaola Face Modeling Language, "
+                            "root fml with model and story): fapc does not read it");
     }
     if (xml::local_name(root) != "fml") {
       return doc_.error(
-          root, "not an FML document: the root element is '" + std::string(xml::local_name(root)) + "', expected fml");
+          codes::fml::not_fml, root,
+          "not an FML document: the root element is '" + std::string(xml::local_name(root)) + "', expected fml");
     }
     check_attributes(root, {});
     check_text(root);
@@ -150,7 +154,7 @@ class FmlReader {
       if (name == "model") {
         read_model(child);
       } else if (name == "story") {
-        if (story) return doc_.error(child, "a second story: an FML document has one");
+        if (story) return doc_.error(codes::fml::second_story, child, "a second story: an FML document has one");
         story = child;
         if (doc_.streamed()) {
           if (error_) return *error_;
@@ -163,7 +167,7 @@ class FmlReader {
       }
     }
     if (error_) return *error_;
-    if (!story) return doc_.error(root, "fml has no story: nothing to animate");
+    if (!story) return doc_.error(codes::fml::no_story, root, "fml has no story: nothing to animate");
     if (!story_read) read_story(story);
     if (error_) return *error_;
     // What follows needs no node: the tree's memory goes before the clips are made.
@@ -293,7 +297,8 @@ class FmlReader {
     const auto val_text = xml::attribute(item, "val");
     const auto val = val_text ? number(*val_text) : std::nullopt;
     if (!val || *val < 0) {
-      fail(doc_.error(item, val_text ? "val" : "", "range needs val, the largest angle in degrees (>= 0)"));
+      fail(doc_.error(codes::fml::bad_range, item, val_text ? "val" : "",
+                      "range needs val, the largest angle in degrees (>= 0)"));
       return;
     }
     // type: a direction (the paper's "left"); dir: an axis, both directions (docs/fml.md,
@@ -318,24 +323,25 @@ class FmlReader {
       } else if (d == "roll-left" || d == "tilt-left") {
         limits_.min[2] = -*val;
       } else {
-        fail(doc_.error(item, xml::attribute(item, "type") ? "type" : "dir",
+        fail(doc_.error(codes::fml::bad_range, item, xml::attribute(item, "type") ? "type" : "dir",
                         "range type '" + *dir +
                             "' is not a direction (left, right, up, down, roll-left, "
                             "roll-right) or an axis (0 yaw, 1 pitch, 2 roll)"));
       }
       return;
     }
-    fail(doc_.error(item, "range needs type, the direction it limits (left, right, up, down, ...)"));
+    fail(doc_.error(codes::fml::bad_range, item,
+                    "range needs type, the direction it limits (left, right, up, down, ...)"));
   }
 
   void read_event(const xmlNode* item) {
     const auto name = spelled(item, "name", {"id"});
     if (!name || trim(*name).empty()) {
-      fail(doc_.error(item, "event needs name"));
+      fail(doc_.error(codes::fml::missing_attribute, item, "event needs name"));
       return;
     }
     if (events_.count(trim(*name))) {
-      fail(doc_.error(item, "event '" + trim(*name) + "' is declared twice"));
+      fail(doc_.error(codes::fml::declared_twice, item, "event '" + trim(*name) + "' is declared twice"));
       return;
     }
     events_[trim(*name)] = EventDeclaration{xml::attribute(item, "val")};
@@ -344,9 +350,9 @@ class FmlReader {
   void read_template(const xmlNode* item) {
     const auto name = xml::attribute(item, "name");
     if (!name || trim(*name).empty()) {
-      fail(doc_.error(item, "template needs name"));
+      fail(doc_.error(codes::fml::missing_attribute, item, "template needs name"));
     } else if (!templates_.emplace(trim(*name), item).second) {
-      fail(doc_.error(item, "name", "template '" + trim(*name) + "' is defined twice"));
+      fail(doc_.error(codes::fml::declared_twice, item, "name", "template '" + trim(*name) + "' is defined twice"));
     } else {
       result_.templates.push_back(trim(*name));
     }
@@ -364,7 +370,7 @@ class FmlReader {
   void check_given_events() {
     for (const auto& [name, value] : options_.events) {
       if (!events_.count(name)) {
-        result_.warnings.push_back(make_warning({"fml.unused_event"}, Location{doc_.file(), 0, 0, -1},
+        result_.warnings.push_back(make_warning(codes::fml::unused_event, Location::whole_file(doc_.file()),
                                                 "--event " + name + " is not declared in the model; it is unused"));
       }
     }
@@ -375,7 +381,8 @@ class FmlReader {
 
   bool count_node(const xmlNode* node) {
     if (++nodes_ <= static_cast<double>(options_.limits.max_runs)) return true;
-    fail(limit_at(doc_.error(node, ""), "the story has too many elements after template expansion"));
+    fail(
+        limit_at(doc_.error(codes::limit::runs, node, ""), "the story has too many elements after template expansion"));
     return false;
   }
 
@@ -418,11 +425,12 @@ class FmlReader {
     }
     if (const auto n = number(text)) {
       if (*n <= 0) {
-        fail(doc_.error(node, "repeat", "repeat must be a count above 0"));
+        fail(doc_.error(codes::fml::bad_repeat, node, "repeat", "repeat must be a count above 0"));
         return false;
       }
       if (*n > static_cast<double>(options_.limits.max_runs)) {
-        fail(limit_at(doc_.error(node, "repeat", ""), "repeat " + text + " asks for more runs than allowed"));
+        fail(limit_at(doc_.error(codes::limit::runs, node, "repeat", ""),
+                      "repeat " + text + " asks for more runs than allowed"));
         return false;
       }
       timing.repeat = *n;
@@ -431,7 +439,7 @@ class FmlReader {
     const std::size_t semicolon = text.find(';');
     const std::string event = trim(text.substr(0, semicolon));
     if (!events_.count(event)) {
-      fail(doc_.error(node, "repeat",
+      fail(doc_.error(codes::fml::bad_repeat, node, "repeat",
                       "repeat '" + text + "' is not a count, indefinite, or an event declared in the model"));
       return false;
     }
@@ -506,12 +514,12 @@ class FmlReader {
     check_text(node);
     const auto event = spelled(node, "ev_name", {"ev_id", "event_name"});
     if (!event) {
-      fail(doc_.error(node, "excl needs ev_name, the event that chooses its branch"));
+      fail(doc_.error(codes::fml::missing_attribute, node, "excl needs ev_name, the event that chooses its branch"));
       return std::nullopt;
     }
     const std::string name = trim(*event);
     if (!events_.count(name) && !options_.events.count(name)) {
-      fail(doc_.error(node, xml::attribute(node, "ev_name") ? "ev_name" : "",
+      fail(doc_.error(codes::fml::undeclared_event, node, xml::attribute(node, "ev_name") ? "ev_name" : "",
                       "event '" + name + "' is not declared in the model (<event name=\"" + name + "\" val=\"-1\"/>)"));
       return std::nullopt;
     }
@@ -546,7 +554,7 @@ class FmlReader {
     check_text(node);
     const auto name = spelled(node, "name", {"template"});
     if (!name) {
-      fail(doc_.error(node, "behavior needs name, the template it plays"));
+      fail(doc_.error(codes::fml::missing_attribute, node, "behavior needs name, the template it plays"));
       return std::nullopt;
     }
     for (const xmlNode* child : xml::element_children(node)) {
@@ -557,14 +565,14 @@ class FmlReader {
     if (found == templates_.end()) {
       std::string known;
       for (const auto& [n, item] : templates_) known += (known.empty() ? "" : ", ") + n;
-      fail(doc_.error(node, xml::attribute(node, "name") ? "name" : "template",
+      fail(doc_.error(codes::fml::unknown_template, node, xml::attribute(node, "name") ? "name" : "template",
                       "no template '" + t + "' in the model" + (known.empty() ? "" : " (templates: " + known + ")")));
       return std::nullopt;
     }
     if (std::find(expanding_.begin(), expanding_.end(), t) != expanding_.end()) {
       std::string chain;
       for (const std::string& e : expanding_) chain += e + " -> ";
-      fail(doc_.error(node, "template '" + t + "' uses itself: " + chain + t));
+      fail(doc_.error(codes::fml::recursive_template, node, "template '" + t + "' uses itself: " + chain + t));
       return std::nullopt;
     }
     expanding_.push_back(t);
@@ -604,7 +612,7 @@ class FmlReader {
     const auto text = spelled(node, "val", {"value"});
     if (!text) return fallback;
     const auto v = number(*text);
-    if (!v) fail(doc_.error(node, value_name(node), "'" + *text + "' is not a number"));
+    if (!v) fail(doc_.error(codes::fml::not_a_number, node, value_name(node), "'" + *text + "' is not a number"));
     return v;
   }
 
@@ -623,7 +631,7 @@ class FmlReader {
     }
     const auto type = name == "hdmv" ? spelled(node, "type", {"dir"}) : xml::attribute(node, "type");
     if (!type) {
-      fail(doc_.error(node, std::string(name) + " needs type"));
+      fail(doc_.error(codes::fml::missing_attribute, node, std::string(name) + " needs type"));
       return std::nullopt;
     }
     if (name == "expr") return expr(node, timing, *type);
@@ -691,13 +699,13 @@ class FmlReader {
       std::string closest;
       for (const std::string_view n : closest_fap_names(trim(type)))
         closest += (closest.empty() ? "" : ", ") + std::string(n);
-      fail(doc_.error(node, "type",
+      fail(doc_.error(codes::fml::bad_fap, node, "type",
                       quoted_name(type) + " is not a FAP number (3-68) or name" +
                           (closest.empty() ? std::string() : "; did you mean " + closest + "?")));
       return std::nullopt;
     }
     if (info->number < 3) {
-      fail(doc_.error(node, "type",
+      fail(doc_.error(codes::fml::bad_fap, node, "type",
                       "FAP " + std::to_string(info->number) +
                           " is not animated with fap: use talk (visemes) or expr (expressions)"));
       return std::nullopt;
@@ -737,7 +745,7 @@ class FmlReader {
     const std::string text = trim(xml::text_content(node));
     const auto file = xml::attribute(node, "file");
     if (file && !text.empty()) {
-      fail(doc_.error(node, "file", "talk has both text and file; give one"));
+      fail(doc_.error(codes::fml::talk_text_and_file, node, "file", "talk has both text and file; give one"));
       return std::nullopt;
     }
     FmlLeaf leaf;
@@ -757,7 +765,8 @@ class FmlReader {
       leaf.talk->speech = std::move(*speech);
     } else {
       if (text.empty()) {
-        fail(doc_.error(node, "talk needs text to say or a phoneme file (file=\"x.pho\")"));
+        fail(doc_.error(codes::fml::talk_without_text, node,
+                        "talk needs text to say or a phoneme file (file=\"x.pho\")"));
         return std::nullopt;
       }
       if (!speak(node, text, *leaf.talk)) return std::nullopt;
@@ -822,7 +831,7 @@ class FmlReader {
                                     "the speech of this document would last more than " +
                                         seconds_text(limits.max_speech_seconds) + " s",
                                     Limit::speech_seconds, limits)
-                      : make_error(ErrorKind::limit_exceeded, doc_.where(node),
+                      : make_error(codes::limit::frames, doc_.where(node),
                                    "the speech would last more than " + seconds_text(options_.speech.max_seconds) +
                                        " s (the frame limit, --max-frames, at the frame rate)")));
       return false;
@@ -899,7 +908,8 @@ class FmlReader {
     const std::string& resolved = *allowed;
     Result<std::string> text = options_.read_file ? options_.read_file(resolved) : read_file_bytes(resolved);
     if (!text) {
-      fail(doc_.error(node, "file", "talk file '" + name + "': " + text.error().message));
+      fail(doc_.error(codes::fml::talk_file_unreadable, node, "file",
+                      "talk file '" + name + "': " + text.error().message));
       return std::nullopt;
     }
     result_.phoneme_files.push_back(resolved);
@@ -927,7 +937,7 @@ class FmlReader {
     const double total = estimated_runs(tree_.root, options_.duration.value_or(kUnendedSeconds), shortest,
                                         [this](std::size_t leaf_id) { return leaf_runs(leaf_id); });
     if (total <= static_cast<double>(options_.limits.max_runs)) return ok_status();
-    return limit_at(make_error(tree_.root.source, ""), "the story repeats to too many runs");
+    return limit_at(make_error(codes::limit::runs, tree_.root.source, ""), "the story repeats to too many runs");
   }
 
   // A limit_exceeded error at the place `at` points to (its source line kept).

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "fapc/fml/codes.hpp"
 #include "fapc/xml/clock_value.hpp"
 
 namespace fapc::fml {
@@ -13,7 +14,7 @@ Result<FmlTiming> read_fml_timing(const xml::XmlDocument& doc, const xmlNode* el
     if (!text) return ok_status();
     out = xml::parse_clock_value(*text);
     if (!out) {
-      return doc.error(element, name,
+      return doc.error(codes::fml::bad_time, element, name,
                        std::string(name) + " '" + *text + "' is not a time (seconds: 3, 3s, 250ms, 1.5min, 00:01.5)");
     }
     return ok_status();
@@ -25,10 +26,11 @@ Result<FmlTiming> read_fml_timing(const xml::XmlDocument& doc, const xmlNode* el
     if (Status s = read(name, *field); !s) return s.error();
   }
   if (timing.duration && *timing.duration < 0) {
-    return doc.error(element, duration_name, std::string(duration_name) + " cannot be negative");
+    return doc.error(codes::fml::bad_time, element, duration_name, std::string(duration_name) + " cannot be negative");
   }
   if (timing.end && *timing.end <= timing.begin.value_or(0)) {
-    return doc.error(element, "end", "end must come after begin (both count from the same point)");
+    return doc.error(codes::fml::bad_time, element, "end",
+                     "end must come after begin (both count from the same point)");
   }
   timing.repeat = xml::attribute(element, "repeat");
   return timing;

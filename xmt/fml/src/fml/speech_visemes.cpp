@@ -3,6 +3,7 @@
 #include <set>
 #include <utility>
 
+#include "fapc/fml/codes.hpp"
 #include "fapc/xml/text.hpp"
 
 namespace fapc::fml {
@@ -179,14 +180,14 @@ Result<Speech> visemes_from_pho(std::string_view text, const std::string& file_n
     const double ms = parsed.value_or(-1);
     if (!parsed || ms < 0 || ms > 60000) {
       const int col = length.empty() ? static_cast<int>(line.size()) + 1 : column(length);
-      return make_error(Location::text(file_name, line_number, col),
+      return make_error(codes::pho::bad_duration, Location::text(file_name, line_number, col),
                         "phoneme '" + std::string(phoneme) + "' needs a duration in milliseconds (0 to 60000)",
                         std::string(line));
     }
     // The pitch points (position %, Hz) are the voice's, not the face's: checked, then unused.
     for (std::string_view field = next_field(line, at); !field.empty(); field = next_field(line, at)) {
       if (!xml::decimal(field)) {
-        return make_error(Location::text(file_name, line_number, column(field)),
+        return make_error(codes::pho::not_a_number, Location::text(file_name, line_number, column(field)),
                           "'" + std::string(field) + "' is not a number (pitch points are position% and Hz)",
                           std::string(line));
       }
@@ -197,7 +198,7 @@ Result<Speech> visemes_from_pho(std::string_view text, const std::string& file_n
     if (viseme < 0) {
       if (unknown.insert(std::string(phoneme)).second) {
         warnings.push_back(
-            make_warning({"fml.phoneme_silence"}, Location::text(file_name, line_number, column(phoneme)),
+            make_warning(codes::fml::phoneme_silence, Location::text(file_name, line_number, column(phoneme)),
                          "phoneme '" + std::string(phoneme) + "' has no MPEG-4 viseme and is treated as silence",
                          std::string(line)));
       }

@@ -11,6 +11,7 @@
 
 #include "bml/bml_model.hpp"
 #include "bml/speak_text.hpp"
+#include "fapc/intent/codes.hpp"
 #include "fapc/xml/text.hpp"
 #include "intent/document_reader.hpp"
 #include "intent/realize.hpp"
@@ -90,7 +91,7 @@ class ApmlReader : public DocumentReader {
     if (const auto sec = xml::attribute(n, "sec")) {
       const auto value = xml::decimal(xml::trim(*sec));
       if (!value || *value < 0 || *value > options_.speech.max_seconds)
-        return doc_.error(n, "sec",
+        return doc_.error(codes::intent::bad_value, n, "sec",
                           "sec '" + *sec + "' is not a pause in seconds from 0 to " +
                               std::to_string(static_cast<long long>(options_.speech.max_seconds)) +
                               " (--max-speech-seconds)");

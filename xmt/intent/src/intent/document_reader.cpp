@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "fapc/intent/codes.hpp"
 #include "fapc/xml/text.hpp"
 #include "intent/realize.hpp"
 
@@ -17,19 +18,20 @@ DocumentReader::DocumentReader(const xml::XmlDocument& doc, const IntentOptions&
 
 Result<const xmlNode*> DocumentReader::root_named(std::string_view name) const {
   const xmlNode* root = doc_.root();
-  if (root == nullptr) return make_error(Location{doc_.file(), 1, 1}, "an empty document");
+  if (root == nullptr)
+    return make_error(codes::intent::empty_document, Location{doc_.file(), 1, 1}, "an empty document");
   if (xml::local_name(root) != name)
     return doc_.error(
-        root, "the root element is <" + std::string(xml::local_name(root)) + ">, not <" + std::string(name) + ">");
+        codes::intent::wrong_root, root,
+        "the root element is <" + std::string(xml::local_name(root)) + ">, not <" + std::string(name) + ">");
   return root;
 }
 
 Status DocumentReader::count(const xmlNode* node, const char* what) {
   if (++counted_ <= options_.limits.max_runs) return ok_status();
-  Diagnostic d = doc_.error(node, "more than " + std::to_string(options_.limits.max_runs) + " " + what +
-                                      " (raise the limit with --max-runs)");
-  d.kind = ErrorKind::limit_exceeded;
-  return d;
+  return doc_.error(
+      codes::limit::runs, node,
+      "more than " + std::to_string(options_.limits.max_runs) + " " + what + " (raise the limit with --max-runs)");
 }
 
 Result<IntentDocument> DocumentReader::draw_and_finish(std::vector<Intention> intentions, double end,
@@ -50,8 +52,8 @@ Result<IntentDocument> DocumentReader::draw_and_finish(std::vector<Intention> in
   return std::move(out_);
 }
 
-Diagnostic DocumentReader::with_code(Diagnostic d, const char* code) {
-  d.code = code;
+Diagnostic DocumentReader::with_code(Diagnostic d, WarningCode code) {
+  d.code = code.name;
   return d;
 }
 

@@ -26,7 +26,7 @@ class DocumentReader {
   // Draws each intention (start and end set) through the lexicon, ends the document at the last
   // end or at `end` (the speech's, from `end_where`), checks the frames and hands the document over.
   Result<IntentDocument> draw_and_finish(std::vector<Intention> intentions, double end, Location end_where);
-  static Diagnostic with_code(Diagnostic d, const char* code);
+  static Diagnostic with_code(Diagnostic d, WarningCode code);
 
   const xml::XmlDocument& doc_;
   const IntentOptions& options_;

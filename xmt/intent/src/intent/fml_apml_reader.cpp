@@ -9,6 +9,7 @@
 
 #include "bml/block_reader.hpp"
 #include "bml/sync_ref.hpp"
+#include "fapc/intent/codes.hpp"
 #include "fapc/xml/text.hpp"
 #include "intent/document_reader.hpp"
 #include "intent/realize.hpp"
@@ -44,7 +45,7 @@ class FmlApmlReader : public DocumentReader {
         once_.report(
             "part " + std::string(name),
             with_code(doc_.warning(part, "<" + std::string(name) + "> is neither the bml nor the fml part: not read"),
-                      "intent.unknown_part"));
+                      codes::intent::unknown_part));
       }
     }
     for (const xmlNode* fml : fml_parts)
@@ -104,7 +105,8 @@ class FmlApmlReader : public DocumentReader {
     if (!strength) return strength.error();
     i.strength = *strength;
     if (!xml::attribute(node, "start"))
-      return doc_.error(node, "<" + i.type + "> needs start: a time in seconds or a speech mark such as s1:tm1");
+      return doc_.error(codes::intent::missing_attribute, node,
+                        "<" + i.type + "> needs start: a time in seconds or a speech mark such as s1:tm1");
     if (!i.id.empty()) {
       const auto [it, fresh] = intention_ids_.emplace(i.id, pending_.size());
       if (!fresh)
@@ -113,7 +115,7 @@ class FmlApmlReader : public DocumentReader {
                                             "a second intention with id '" + i.id + "' (the first is at line " +
                                                 std::to_string(pending_[it->second].intention.where.line) +
                                                 "): references name the first"),
-                               "intent.duplicate_id"));
+                               codes::intent::duplicate_id));
     }
     pending_.push_back(std::move(p));
     return ok_status();
@@ -124,21 +126,23 @@ class FmlApmlReader : public DocumentReader {
     const std::string text = xml::attribute(p.node, attribute).value_or("");
     std::string why;
     const auto ref = bml::parse_sync_ref(text, why);
-    if (!ref) return doc_.error(p.node, attribute, why);
+    if (!ref) return doc_.error(codes::intent::bad_reference, p.node, attribute, why);
     // Beyond any animation fapc makes (--duration's bound): refused before it becomes a span whose
     // fractions a double cannot tell apart.
     if (std::abs(ref->offset) > kMaxSeconds)
-      return doc_.error(p.node, attribute, std::string(attribute) + " '" + text + "' is beyond 10^7 seconds");
+      return doc_.error(codes::intent::bad_time, p.node, attribute,
+                        std::string(attribute) + " '" + text + "' is beyond 10^7 seconds");
     if (ref->absolute) {
       if (ref->offset < 0)
-        return doc_.error(p.node, attribute, std::string(attribute) + " '" + text + "' is before the document's start");
+        return doc_.error(codes::intent::bad_time, p.node, attribute,
+                          std::string(attribute) + " '" + text + "' is before the document's start");
       return ref->offset;
     }
     if (const auto mark = marks_.find({ref->behaviour, ref->sync}); mark != marks_.end())
       return mark->second + ref->offset;
     const bool start = ref->sync == "start";
     if (!start && ref->sync != "end") {
-      return doc_.error(p.node, attribute,
+      return doc_.error(codes::intent::unknown_reference, p.node, attribute,
                         "'" + text + "': no mark '" + ref->sync + "' in a speech '" + ref->behaviour + "' (" +
                             marks_of(ref->behaviour) + "), and a behaviour or intention is named by start or end");
     }
@@ -146,11 +150,12 @@ class FmlApmlReader : public DocumentReader {
       return (start ? b->second.first : b->second.second) + ref->offset;
     const auto other = intention_ids_.find(ref->behaviour);
     if (other == intention_ids_.end())
-      return doc_.error(p.node, attribute,
+      return doc_.error(codes::intent::unknown_reference, p.node, attribute,
                         "'" + text + "': no speech, behaviour or intention '" + ref->behaviour + "'");
     Pending& named = pending_[other->second];
     if (named.state == Pending::State::resolving)
-      return doc_.error(p.node, attribute, "'" + text + "' refers back to itself through a cycle of intentions");
+      return doc_.error(codes::intent::reference_cycle, p.node, attribute,
+                        "'" + text + "' refers back to itself through a cycle of intentions");
     if (Status placed = place(named); !placed) return placed.error();
     return (start ? named.intention.start : named.intention.end) + ref->offset;
   }
@@ -185,13 +190,13 @@ class FmlApmlReader : public DocumentReader {
         once_.report("relative end", with_code(doc_.warning(p.node, "end",
                                                             "end is earlier than start: read as a time from "
                                                             "the intention's start (Greta 0.x)"),
-                                               "intent.time_from_start"));
+                                               codes::intent::time_from_start));
         *e += *start;
       }
       if (*e < *start) {
         char buffer[96];
         std::snprintf(buffer, sizeof buffer, "end (%.3f s) is before start (%.3f s)", *e, *start);
-        return doc_.error(p.node, "end", buffer);
+        return doc_.error(codes::intent::bad_time, p.node, "end", buffer);
       }
       if (*e > *start) end = *e;
     }

@@ -4,6 +4,7 @@
 
 #include "bml/bml_model.hpp"
 #include "bml/lexicon_behaviours.hpp"
+#include "fapc/intent/codes.hpp"
 #include "fapc/xml/text.hpp"
 
 namespace fapc::intent {
@@ -23,7 +24,7 @@ void realize(Intention& intention, const vocabulary::BehaviourLexicon& lexicon, 
     const std::string what = lexicon.knows(intention.type)
                                  ? "the " + intention.type + " '" + intention.value + "' has no row in the lexicon"
                                  : "the intention <" + intention.type + "> is not in the lexicon";
-    Diagnostic d = make_warning(WarningCode{"intent.unknown_intention"}, intention.where,
+    Diagnostic d = make_warning(codes::intent::unknown_intention, intention.where,
                                 what + " (" + lexicon.source + "): nothing is drawn, its span is kept");
     once.report("unknown " + intention.type + " " + intention.value, std::move(d));
     return;
@@ -31,7 +32,7 @@ void realize(Intention& intention, const vocabulary::BehaviourLexicon& lexicon, 
   for (const LexiconRow* row : rows) {
     if (row->behaviour == LexiconBehaviour::none) {
       once.report("none " + intention.type + " " + intention.value,
-                  make_warning(WarningCode{"intent.not_drawn"}, intention.where,
+                  make_warning(codes::intent::not_drawn, intention.where,
                                named(intention) + " is drawn as nothing (" + lexicon.source + " line " +
                                    std::to_string(row->line) + ": " + row->reason + "); its span is kept"));
       continue;
@@ -47,7 +48,8 @@ Result<double> read_strength(const xml::XmlDocument& doc, const xmlNode* node, c
   if (!text) return 1.0;
   const auto value = xml::decimal(xml::trim(*text));
   if (!value || *value < 0 || *value > 1)
-    return doc.error(node, attribute, std::string(attribute) + " '" + *text + "' is not a number from 0 to 1");
+    return doc.error(codes::intent::bad_value, node, attribute,
+                     std::string(attribute) + " '" + *text + "' is not a number from 0 to 1");
   return *value;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "bml/behaviour_defaults.hpp"
+#include "fapc/smil/codes.hpp"
 #include "smil/smil_script.hpp"
 
 namespace fapc::smil {
@@ -92,9 +93,10 @@ Result<PlacedScript> place_behaviours(const std::vector<SmilLeaf>& leaves, const
                       : leaf.duration ? from + *leaf.duration
                                       : spoken.duration;
     if (to <= from) {
-      return make_error(leaf.where, "this span is empty: its content-end comes " +
-                                        std::string(to < from ? "before" : "at the same time as") +
-                                        " its content-begin in the speech as spoken");
+      return make_error(codes::smil::empty_span, leaf.where,
+                        "this span is empty: its content-end comes " +
+                            std::string(to < from ? "before" : "at the same time as") +
+                            " its content-begin in the speech as spoken");
     }
     for (double begin : speech_runs[*leaf.speech])
       if (Status s = add_span(leaf, begin + from, begin + to); !s) return s.error();

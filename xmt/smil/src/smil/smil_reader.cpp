@@ -10,6 +10,7 @@
 #include <libxml/tree.h>
 
 #include "fapc/codec/file_io.hpp"
+#include "fapc/smil/codes.hpp"
 #include "fapc/smil/smil.hpp"
 #include "fapc/transcoder/wav.hpp"
 #include "fapc/xml/once_per_name.hpp"
@@ -75,10 +76,12 @@ class SmilReader {
 
   Result<SmilDocument> run() {
     const xmlNode* root = doc_.root();
-    if (root == nullptr) return make_error(Location{doc_.file(), 1, 1}, "an empty document");
+    if (root == nullptr)
+      return make_error(codes::smil::empty_document, Location{doc_.file(), 1, 1}, "an empty document");
     const std::string_view name = xml::local_name(root);
     if (name != "par" && name != "seq")
-      return doc_.error(root, "the root element is <" + std::string(name) + ">, not a SMIL-Agent par or seq");
+      return doc_.error(codes::smil::not_smil, root,
+                        "the root element is <" + std::string(name) + ">, not a SMIL-Agent par or seq");
     std::optional<ScheduleNode> tree = element(root, Context{options_.speech.language});
     if (error_) return *error_;
     if (Status s = resolve_anchors(); !s) return s.error();
@@ -138,8 +141,8 @@ class SmilReader {
     return false;
   }
 
-  void warn(const std::string& key, const char* code, Diagnostic d) {
-    d.code = code;
+  void warn(const std::string& key, WarningCode code, Diagnostic d) {
+    d.code = code.name;
     once_.report(key, std::move(d));
   }
 
@@ -150,13 +153,13 @@ class SmilReader {
       const std::string_view name = reinterpret_cast<const char*>(attr->name);
       if (std::find(kCommon.begin(), kCommon.end(), name) != kCommon.end()) {
         if (name.starts_with("system-") && name != "system-language")
-          warn("system test " + std::string(name), "smil.system_test_ignored",
+          warn("system test " + std::string(name), codes::smil::system_test_ignored,
                doc_.warning(node, name,
                             std::string(name) + " is not tested: fapc plays the element whatever the system"));
         continue;
       }
       if (std::find(own.begin(), own.end(), name) != own.end()) continue;
-      warn("attribute " + element + "@" + std::string(name), "smil.unknown_attribute",
+      warn("attribute " + element + "@" + std::string(name), codes::smil::unknown_attribute,
            doc_.warning(
                node, name,
                "attribute '" + std::string(name) + "' of " + element + " is not part of SMIL-Agent and was ignored"));
@@ -176,7 +179,7 @@ class SmilReader {
       if (const auto code = language_code(*lang)) {
         context.language = *code;
       } else {
-        warn("language " + *lang, "smil.unknown_language",
+        warn("language " + *lang, codes::smil::unknown_language,
              doc_.warning(node, "system-language",
                           "system-language '" + *lang +
                               "' is not a language fapc knows by name "
@@ -205,7 +208,7 @@ class SmilReader {
     } else if (name == "speech-animation" || name == "action") {
       placed = display(node, *timing);
     } else {
-      warn("element " + std::string(name), "smil.unknown_element",
+      warn("element " + std::string(name), codes::smil::unknown_element,
            doc_.warning(node, "element '" + std::string(name) +
                                   "' is not part of SMIL-Agent (par, seq, speech, "
                                   "speech-animation, action) and was skipped"));
@@ -223,7 +226,8 @@ class SmilReader {
     if (!text) return true;
     const std::string f = lower(xml::trim(*text));
     if (f == "freeze" || f == "hold" || f == "remove" || f == "auto" || f == "default") return true;
-    return fail(doc_.error(node, "fill", "fill '" + *text + "' is not freeze, hold, remove, auto or default"));
+    return fail(doc_.error(codes::smil::bad_value, node, "fill",
+                           "fill '" + *text + "' is not freeze, hold, remove, auto or default"));
   }
 
   bool freezes(const xmlNode* node) const {
@@ -241,7 +245,8 @@ class SmilReader {
     }
     const auto n = xml::decimal(xml::trim(*text));
     if (!n || *n <= 0)
-      return fail(doc_.error(node, "repeat", "repeat '" + *text + "' is not a count above 0 or indefinite"));
+      return fail(doc_.error(codes::smil::bad_value, node, "repeat",
+                             "repeat '" + *text + "' is not a count above 0 or indefinite"));
     if (*n > static_cast<double>(options_.limits.max_runs)) {
       Limits limits;
       limits.max_runs = options_.limits.max_runs;
@@ -267,19 +272,20 @@ class SmilReader {
     if (!collect_text(node, leaf.text)) return std::nullopt;
     if (const auto file = xml::attribute(node, "file")) {
       if (!leaf.text.text.empty())
-        warn("speech text and file", "smil.speech_text_ignored",
+        warn("speech text and file", codes::smil::speech_text_ignored,
              doc_.warning(node, "file", "this speech has a recording: its text is not spoken"));
       if (!leaf.text.mark_ids.empty()) {
-        fail(doc_.error(node, "file", "a speech read from a recording has no words to place its marks at"));
+        fail(doc_.error(codes::smil::marks_without_words, node, "file",
+                        "a speech read from a recording has no words to place its marks at"));
         return std::nullopt;
       }
       if (!record(node, *file, leaf)) return std::nullopt;
     } else if (leaf.text.text.empty()) {
-      fail(doc_.error(node, "speech has no text to say and no recording (file=\"x.wav\")"));
+      fail(doc_.error(codes::smil::empty_speech, node, "speech has no text to say and no recording (file=\"x.wav\")"));
       return std::nullopt;
     }
     if (!leaf.name.empty() && !speeches_.emplace(leaf.name, leaves_.size()).second) {
-      fail(doc_.error(node, "id", "a second speech with id '" + leaf.name + "'"));
+      fail(doc_.error(codes::smil::duplicate_id, node, "id", "a second speech with id '" + leaf.name + "'"));
       return std::nullopt;
     }
     out_.speeches.push_back(leaf.name);
@@ -314,15 +320,15 @@ class SmilReader {
       if (n->type != XML_ELEMENT_NODE) continue;
       const std::string_view name = xml::local_name(n);
       if (name != "mark") {
-        warn("in speech " + std::string(name), "smil.speech_markup_skipped",
+        warn("in speech " + std::string(name), codes::smil::speech_markup_skipped,
              doc_.warning(n,
                           "<" + std::string(name) + "> in speech is not read (only mark is): its text is not spoken"));
         continue;
       }
       const std::string id(xml::trim(xml::attribute(n, "id").value_or("")));
-      if (id.empty()) return fail(doc_.error(n, "a mark needs an id"));
+      if (id.empty()) return fail(doc_.error(codes::smil::missing_attribute, n, "a mark needs an id"));
       if (std::find(marked.mark_ids.begin(), marked.mark_ids.end(), id) != marked.mark_ids.end())
-        return fail(doc_.error(n, "id", "a second mark '" + id + "' in this speech"));
+        return fail(doc_.error(codes::smil::duplicate_id, n, "id", "a second mark '" + id + "' in this speech"));
       marked.mark_ids.push_back(id);
       marked.mark_offsets.push_back(marked.text.empty() ? 0 : marked.text.size() + 1);
     }
@@ -336,7 +342,9 @@ class SmilReader {
         resolve_include(xml::trim(name), doc_.file(), options_.includes, doc_.where(node, "file"));
     if (!path) return fail(path.error());
     Result<std::string> bytes = read_file_bytes(*path, options_.limits);
-    if (!bytes) return fail(doc_.error(node, "file", "speech file '" + name + "': " + bytes.error().message));
+    if (!bytes)
+      return fail(doc_.error(codes::smil::speech_file_unreadable, node, "file",
+                             "speech file '" + name + "': " + bytes.error().message));
     Result<AudioClip> audio = read_wav(*bytes, *path);
     if (!audio) return fail(audio.error());
     if (static_cast<std::int64_t>(audio->samples.size()) > options_.limits.max_audio_samples)
@@ -344,7 +352,7 @@ class SmilReader {
                               "speech file '" + name + "' holds " + std::to_string(audio->samples.size()) + " samples",
                               Limit::audio_samples, options_.limits));
     out_.recordings.push_back(*path);
-    warn("recording", "smil.recording_without_visemes",
+    warn("recording", codes::smil::recording_without_visemes,
          doc_.warning(
              node, "file",
              "a recorded speech is played as it is: fapc does not find its phonemes, so the mouth does not follow it"));
@@ -367,7 +375,8 @@ class SmilReader {
     if (const auto text = xml::attribute(node, "intensity")) {
       const auto v = xml::decimal(xml::trim(*text));
       if (!v || *v < 0 || *v > 1) {
-        fail(doc_.error(node, "intensity", "intensity '" + *text + "' is not a number from 0 to 1"));
+        fail(doc_.error(codes::smil::bad_value, node, "intensity",
+                        "intensity '" + *text + "' is not a number from 0 to 1"));
         return std::nullopt;
       }
       intensity = *v;
@@ -387,8 +396,8 @@ class SmilReader {
     } else {
       for (const char* mark : {"content-begin", "content-end"})
         if (xml::attribute(node, mark)) {
-          fail(
-              doc_.error(node, mark, std::string(mark) + " names a mark of a speech: it needs content-id, the speech"));
+          fail(doc_.error(codes::smil::missing_attribute, node, mark,
+                          std::string(mark) + " names a mark of a speech: it needs content-id, the speech"));
           return std::nullopt;
         }
     }
@@ -411,7 +420,7 @@ class SmilReader {
     leaf.name = std::string(xml::trim(name));
     leaf.behaviours = affect_behaviours(name, intensity, leaf.shift, leaf.where);
     if (leaf.behaviours.empty())
-      warn("affect " + leaf.name, "smil.unknown_affect",
+      warn("affect " + leaf.name, codes::smil::unknown_affect,
            doc_.warning(node, xml::attribute(node, "affect") ? "affect" : "",
                         "affect '" + leaf.name +
                             "' is not in fapc's smil_affects.tsv (docs/smil.md): its span is kept, nothing is drawn"));
@@ -426,14 +435,14 @@ class SmilReader {
     const std::string channel = xml::attribute(node, "channel").value_or("");
     action.channel = channel_of(channel);
     if (action.channel == Channel::other) {
-      warn("channel " + channel, "smil.unknown_channel",
+      warn("channel " + channel, codes::smil::unknown_channel,
            doc_.warning(node, "channel",
                         "channel '" + channel + "' is neither the eyes nor the head: the action turns the eyes"));
       action.channel = Channel::eyes;
     }
     for (const xmlNode* child : doc_.children(node)) {
       if (xml::local_name(child) != "parameter") {
-        warn("in action " + std::string(xml::local_name(child)), "smil.unknown_element",
+        warn("in action " + std::string(xml::local_name(child)), codes::smil::unknown_element,
              doc_.warning(
                  child, "<" + std::string(xml::local_name(child)) + "> in an action is not read (only parameter is)"));
         continue;
@@ -446,7 +455,7 @@ class SmilReader {
     leaf.behaviours = action_behaviours(action, why);
     if (lower(xml::trim(action.type)).starts_with("blink")) intrinsic = kBlinkSeconds;
     if (leaf.behaviours.empty())
-      warn("action " + leaf.name, "smil.unknown_action",
+      warn("action " + leaf.name, codes::smil::unknown_action,
            doc_.warning(node, xml::attribute(node, "action-type") ? "action-type" : "",
                         why + ": its span is kept, nothing is drawn"));
     return true;
@@ -463,7 +472,7 @@ class SmilReader {
         std::string known;
         for (const auto& [name, i] : speeches_) known += (known.empty() ? "" : ", ") + name;
         return doc_.error(
-            node, "content-id",
+            codes::smil::unknown_reference, node, "content-id",
             "content-id '" + id + "' names no speech of this script" +
                 (known.empty() ? std::string(" (it has no speech with an id)") : " (speeches: " + known + ")"));
       }
@@ -476,7 +485,7 @@ class SmilReader {
         const auto& ids = said.text.mark_ids;
         const auto found = std::find(ids.begin(), ids.end(), xml::trim(*text));
         if (found == ids.end())
-          return doc_.error(node, attribute,
+          return doc_.error(codes::smil::unknown_reference, node, attribute,
                             std::string(attribute) + " '" + *text + "' is no mark of speech '" + id + "'");
         *mark = static_cast<std::size_t>(found - ids.begin());
       }
@@ -485,7 +494,7 @@ class SmilReader {
     }
     for (std::size_t i = 0; i < leaves_.size(); ++i)
       if (leaves_[i].kind == SmilLeaf::Kind::affect && leaves_[i].name.empty())
-        warn("no affect", "smil.no_affect",
+        warn("no affect", codes::smil::no_affect,
              with_line(make_warning(leaves_[i].where,
                                     "speech-animation without an affect, and no affect on its speech: its span is "
                                     "kept, nothing is drawn")));

@@ -6,6 +6,8 @@
 #include <string>
 #include <string_view>
 
+#include "fapc/xmto/codes.hpp"
+
 namespace fapc::xmto {
 namespace {
 
@@ -44,7 +46,7 @@ class Reader {
     const auto text = xml::attribute(element_, name);
     if (!text || error) return std::nullopt;
     if (const auto parsed = number(*text)) return parsed;
-    fail(name, std::string(name) + " '" + *text + "' is not a number");
+    fail(codes::xmto::not_a_number, name, std::string(name) + " '" + *text + "' is not a number");
     return std::nullopt;
   }
 
@@ -52,7 +54,7 @@ class Reader {
     const auto text = xml::attribute(element_, name);
     if (!text || error) return std::nullopt;
     if (auto parsed = number_list(*text)) return parsed;
-    fail(name, std::string(name) + " '" + *text + "': expected " + what + " separated by ';'");
+    fail(codes::xmto::bad_list, name, std::string(name) + " '" + *text + "': expected " + what + " separated by ';'");
     return std::nullopt;
   }
 
@@ -69,12 +71,13 @@ class Reader {
       expected += (i == 0 ? "" : i + 1 == allowed.size() ? " or " : ", ") + std::string(word);
       ++i;
     }
-    fail(name, std::string(name) + " '" + *text + "' is not supported: expected " + expected);
+    fail(codes::xmto::unsupported_keyword, name,
+         std::string(name) + " '" + *text + "' is not supported: expected " + expected);
     return *allowed.begin();
   }
 
-  void fail(const char* attribute, std::string message) {
-    if (!error) error = doc_.error(element_, attribute, std::move(message));
+  void fail(ErrorCode code, const char* attribute, std::string message) {
+    if (!error) error = doc_.error(code, element_, attribute, std::move(message));
   }
 
   Diagnostic warning(const char* attribute, std::string message) const {
@@ -93,19 +96,20 @@ bool has(const xmlNode* element, const char* name) { return xml::attribute(eleme
 void check_key_times(Reader& reader, const AnimationFunction& f) {
   const std::vector<double>& times = f.key_times;
   if (times.size() != f.values.size()) {
-    reader.fail("keyTimes", "keyTimes has " + std::to_string(times.size()) + " times for " +
-                                std::to_string(f.values.size()) + " values");
+    reader.fail(
+        codes::xmto::bad_key_times, "keyTimes",
+        "keyTimes has " + std::to_string(times.size()) + " times for " + std::to_string(f.values.size()) + " values");
     return;
   }
   for (std::size_t i = 0; i < times.size(); ++i) {
     if (times[i] < 0 || times[i] > 1 || (i > 0 && times[i] < times[i - 1])) {
-      reader.fail("keyTimes", "keyTimes must rise from 0 to 1 (fractions of dur)");
+      reader.fail(codes::xmto::bad_key_times, "keyTimes", "keyTimes must rise from 0 to 1 (fractions of dur)");
       return;
     }
   }
-  if (times.front() != 0) reader.fail("keyTimes", "keyTimes must begin with 0");
+  if (times.front() != 0) reader.fail(codes::xmto::bad_key_times, "keyTimes", "keyTimes must begin with 0");
   if (f.calc == CalcMode::linear && times.back() != 1)
-    reader.fail("keyTimes", "keyTimes must end with 1 unless calcMode is discrete");
+    reader.fail(codes::xmto::bad_key_times, "keyTimes", "keyTimes must end with 1 unless calcMode is discrete");
 }
 
 }  // namespace
@@ -152,10 +156,10 @@ Result<AnimationFunction> read_animate(const xml::XmlDocument& doc, const xmlNod
       f.blend = BlendMode::add;
     }
   } else {
-    return doc.error(element, from ? "from" : "attributeName",
+    return doc.error(codes::xmto::animates_nothing, element, from ? "from" : "attributeName",
                      "animate needs values, to or by (from alone animates nothing)");
   }
-  if (f.values.empty()) return doc.error(element, "values", "values is empty");
+  if (f.values.empty()) return doc.error(codes::xmto::animates_nothing, element, "values", "values is empty");
 
   if (const auto key_times = reader.list("keyTimes", "fractions")) {
     if (f.calc == CalcMode::paced) {
@@ -173,7 +177,7 @@ Result<AnimationFunction> read_set(const xml::XmlDocument& doc, const xmlNode* e
   Reader reader(doc, element);
   const auto to = reader.value("to");
   if (reader.error) return *reader.error;
-  if (!to) return doc.error(element, "set needs a to value");
+  if (!to) return doc.error(codes::xmto::animates_nothing, element, "set needs a to value");
   AnimationFunction f;
   f.values = {*to};
   f.calc = CalcMode::discrete;

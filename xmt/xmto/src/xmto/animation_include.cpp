@@ -4,6 +4,7 @@
 
 #include "fapc/codec/include_policy.hpp"
 #include "fapc/xml/text.hpp"
+#include "fapc/xmto/codes.hpp"
 
 namespace fapc::xmto {
 namespace {
@@ -30,13 +31,14 @@ Result<Included> load_included(const xml::XmlDocument& doc, const xmlNode* eleme
   const auto src = xml::attribute(element, "src");
   const auto ref = xml::attribute(element, "ref");
   const char* used = src ? "src" : "ref";
-  if (!src && !ref) return doc.error(element, "animation needs src (or ref) naming the input to place");
+  if (!src && !ref)
+    return doc.error(codes::xmto::missing_attribute, element, "animation needs src (or ref) naming the input to place");
   if (src && ref) warnings.push_back(doc.warning(element, "ref", "ref is ignored: src is given"));
   std::string_view name = xml::trim(src ? *src : *ref);
   if (name.starts_with("file:")) name.remove_prefix(5);
-  if (name.empty()) return doc.error(element, used, std::string(used) + " is empty");
+  if (name.empty()) return doc.error(codes::xmto::bad_source, element, used, std::string(used) + " is empty");
   if (name.find("://") != std::string_view::npos) {
-    return doc.error(element, used,
+    return doc.error(codes::xmto::bad_source, element, used,
                      std::string(used) + " '" + std::string(name) + "': only local files can be placed, not URLs");
   }
   Result<std::string> path = resolve_include(name, doc.file(), options.includes, doc.where(element, used));
@@ -52,19 +54,18 @@ Result<Included> load_included(const xml::XmlDocument& doc, const xmlNode* eleme
   chain.push_back(doc.file());
   for (const std::string& open : chain) {
     if (same_file(open, included.path)) {
-      return doc.error(element, used,
+      return doc.error(codes::xmto::include_cycle, element, used,
                        "animation includes a document that is being read: " + chain_text(chain, included.path));
     }
   }
   if (chain.size() > kMaxIncludeDepth) {
-    Diagnostic deep = doc.error(element, used,
-                                "animations nested more than " + std::to_string(kMaxIncludeDepth) +
-                                    " documents deep: " + chain_text(chain, included.path));
-    deep.kind = ErrorKind::limit_exceeded;
-    return deep;
+    return doc.error(codes::limit::nesting_depth, element, used,
+                     "animations nested more than " + std::to_string(kMaxIncludeDepth) +
+                         " documents deep: " + chain_text(chain, included.path));
   }
   if (!options.load_animation) {
-    return doc.error(element, "animation elements need a loader for other inputs (none was given)");
+    return doc.error(codes::xmto::no_loader, element,
+                     "animation elements need a loader for other inputs (none was given)");
   }
   auto loaded = options.load_animation(included.path, doc.where(element, used));
   if (!loaded) return loaded.error();

@@ -11,6 +11,7 @@
 #include "fapc/transcoder/wav.hpp"
 #include "fapc/xml/clock_value.hpp"
 #include "fapc/xml/text.hpp"
+#include "fapc/xmto/codes.hpp"
 #include "fml/speech_visemes.hpp"
 
 namespace fapc::xmto {
@@ -21,9 +22,8 @@ namespace fs = std::filesystem;
 // An error of something the element names, placed at the element (its src attribute).
 Diagnostic at_src(const xml::XmlDocument& doc, const xmlNode* element, const std::string& name,
                   const Diagnostic& problem) {
-  Diagnostic d = doc.error(element, "src", "audio '" + name + "': " + problem.message);
-  d.kind = problem.kind;
-  return d;
+  const Location where = doc.where(element, "src");
+  return retold(problem, where, "audio '" + name + "': " + problem.message, doc.line_text(where.line));
 }
 
 // The file's bytes, refused before reading when larger than the limit.
@@ -59,13 +59,14 @@ Result<std::string> allowed(const xml::XmlDocument& doc, const xmlNode* element,
 Result<Recording> load_recording(const xml::XmlDocument& doc, const xmlNode* element, const XmtoOptions& options,
                                  Diagnostics& warnings) {
   const auto src = xml::attribute(element, "src");
-  if (!src) return doc.error(element, "audio needs src naming a WAV file");
+  if (!src) return doc.error(codes::xmto::missing_attribute, element, "audio needs src naming a WAV file");
   std::string_view trimmed = xml::trim(*src);
   if (trimmed.starts_with("file:")) trimmed.remove_prefix(5);
   const std::string name(trimmed);
-  if (name.empty()) return doc.error(element, "src", "src is empty");
+  if (name.empty()) return doc.error(codes::xmto::bad_source, element, "src", "src is empty");
   if (name.find("://") != std::string::npos)
-    return doc.error(element, "src", "src '" + name + "': only local files can be placed, not URLs");
+    return doc.error(codes::xmto::bad_source, element, "src",
+                     "src '" + name + "': only local files can be placed, not URLs");
   Result<std::string> path = allowed(doc, element, name, options);
   if (!path) return path.error();
   Result<std::string> bytes = read_bounded(doc, element, name, *path, options);
@@ -80,7 +81,9 @@ Result<Recording> load_recording(const xml::XmlDocument& doc, const xmlNode* ele
   double length = static_cast<double>(sound->samples.size()) / sound->sample_rate;
   if (const auto clip_end = xml::attribute(element, "clipEnd")) {
     const auto seconds = xml::parse_clock_value(*clip_end);
-    if (!seconds) return doc.error(element, "clipEnd", "clipEnd '" + std::string(*clip_end) + "' is not a clock value");
+    if (!seconds)
+      return doc.error(codes::xmto::bad_time, element, "clipEnd",
+                       "clipEnd '" + std::string(*clip_end) + "' is not a clock value");
     length = std::min(length, *seconds);
   }
   recording.timeline.explicit_end = length;

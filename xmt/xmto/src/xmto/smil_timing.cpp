@@ -6,6 +6,7 @@
 #include <string>
 
 #include "fapc/xml/text.hpp"
+#include "fapc/xmto/codes.hpp"
 #include "fapc/xmto/xmto.hpp"
 
 namespace fapc::xmto {
@@ -47,7 +48,7 @@ class Reader {
       value = sign * *seconds;
       return;
     }
-    fail(name, std::string(name) + " '" + *text + "': " + unsupported_offset(s));
+    fail(codes::xmto::unsupported_offset, name, std::string(name) + " '" + *text + "': " + unsupported_offset(s));
   }
 
   // dur and repeatDur: a clock value, "indefinite" (and "media" for dur: the implicit duration).
@@ -62,10 +63,11 @@ class Reader {
     if (allow_media && s == "media") return;
     const auto seconds = xml::parse_clock_value(s);
     if (!seconds) {
-      fail(name, std::string(name) + " '" + *text + "': expected " + kClockForms +
-                     (allow_media ? ", indefinite or media" : " or indefinite"));
+      fail(codes::xmto::bad_time, name,
+           std::string(name) + " '" + *text + "': expected " + kClockForms +
+               (allow_media ? ", indefinite or media" : " or indefinite"));
     } else if (*seconds <= 0) {
-      fail(name, std::string(name) + " must be greater than 0, found '" + *text + "'");
+      fail(codes::xmto::bad_time, name, std::string(name) + " must be greater than 0, found '" + *text + "'");
     } else {
       value = seconds;
     }
@@ -82,7 +84,8 @@ class Reader {
     double count = 0;
     const auto [end, failure] = std::from_chars(s.data(), s.data() + s.size(), count);
     if (s.empty() || failure != std::errc() || end != s.data() + s.size() || !std::isfinite(count) || count <= 0) {
-      fail("repeatCount", "repeatCount '" + *text + "': expected a number greater than 0 or indefinite");
+      fail(codes::xmto::bad_repeat, "repeatCount",
+           "repeatCount '" + *text + "': expected a number greater than 0 or indefinite");
       return;
     }
     value = count;
@@ -99,7 +102,8 @@ class Reader {
     } else if (s == "auto") {
       timing.fill_auto = true;
     } else if (s != "default") {
-      fail("fill", "fill '" + *text + "': expected freeze, remove, hold, transition, auto or default");
+      fail(codes::xmto::unsupported_keyword, "fill",
+           "fill '" + *text + "': expected freeze, remove, hold, transition, auto or default");
     }
   }
 
@@ -107,8 +111,8 @@ class Reader {
   const xml::XmlDocument& doc_;
   const xmlNode* element_;
 
-  void fail(const char* attribute, std::string message) {
-    if (!error) error = doc_.error(element_, attribute, std::move(message));
+  void fail(ErrorCode code, const char* attribute, std::string message) {
+    if (!error) error = doc_.error(code, element_, attribute, std::move(message));
   }
 };
 

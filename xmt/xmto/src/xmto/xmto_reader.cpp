@@ -12,6 +12,7 @@
 #include "fapc/xml/name_table.hpp"
 #include "fapc/xml/once_per_name.hpp"
 #include "fapc/xml/xml_document.hpp"
+#include "fapc/xmto/codes.hpp"
 #include "fapc/xmto/xmto.hpp"
 #include "fml/embedded_fml.hpp"
 #include "xmto/animation_function.hpp"
@@ -43,12 +44,12 @@ class DocumentReader {
     const xmlNode* root = doc_.root();
     const std::string_view name = xml::local_name(root);
     if (name == "XMT-A") {
-      return doc_.error(root,
+      return doc_.error(codes::xmto::xmt_a_input, root,
                         "XMT-A input is not supported: fapc writes XMT-A (.xmt output) but reads "
                         "XMT-Omega, whose root is XMT-O");
     }
     if (name != "XMT-O") {
-      return doc_.error(root,
+      return doc_.error(codes::xmto::not_xmto, root,
                         "not an XMT-Omega document: the root element is '" + std::string(name) + "', expected XMT-O");
     }
     root_namespace_ = xml::namespace_uri(root);
@@ -69,7 +70,7 @@ class DocumentReader {
       } else if (xml::local_name(child) == "head") {
         read_head(child);
       } else if (xml::local_name(child) == "body") {
-        if (body) return doc_.error(child, "a second body: an XMT-O document has one");
+        if (body) return doc_.error(codes::xmto::second_body, child, "a second body: an XMT-O document has one");
         body = child;
         if (doc_.streamed()) {
           tree = read_body(body);
@@ -81,7 +82,7 @@ class DocumentReader {
       }
     }
     check_text(root);
-    if (!body) return doc_.error(root, "XMT-O has no body");
+    if (!body) return doc_.error(codes::xmto::no_body, root, "XMT-O has no body");
     if (!body_read) tree = read_body(body);
     if (error_) return *error_;
     // The body is a sequence (SMIL); a body that never plays leaves an empty timeline.
@@ -318,7 +319,7 @@ class DocumentReader {
   bool within_budget(const xmlNode* node, double clips) {
     planned_clips_ += clips;
     if (planned_clips_ <= static_cast<double>(options_.limits.max_runs)) return true;
-    const Diagnostic at = doc_.error(node, "");
+    const Diagnostic at = doc_.error(codes::limit::runs, node, "");
     Limits limits;
     limits.max_runs = options_.limits.max_runs;
     Diagnostic d = limit_error(
@@ -365,13 +366,14 @@ class DocumentReader {
     leaf.fill = fill;
     const auto attribute_name = xml::attribute(node, "attributeName");
     if (!attribute_name) {
-      fail(doc_.error(node, std::string(xml::local_name(node)) + " needs attributeName (a FAP name or number)"));
+      fail(doc_.error(codes::xmto::missing_attribute, node,
+                      std::string(xml::local_name(node)) + " needs attributeName (a FAP name or number)"));
       return std::nullopt;
     }
     std::string why;
     const auto target = resolve_attribute_name(*attribute_name, why);
     if (!target) {
-      fail(doc_.error(node, "attributeName", why));
+      fail(doc_.error(codes::xmto::bad_target, node, "attributeName", why));
       return std::nullopt;
     }
     if (!target->warning.empty()) {

@@ -129,8 +129,8 @@ class XmlDocument {
   std::string line_text(int line) const;
 
   // Diagnostics at an element (or one of its attributes) with the source line for the caret.
-  Diagnostic error(const xmlNode* element, std::string message) const;
-  Diagnostic error(const xmlNode* element, std::string_view attribute, std::string message) const;
+  Diagnostic error(ErrorCode code, const xmlNode* element, std::string message) const;
+  Diagnostic error(ErrorCode code, const xmlNode* element, std::string_view attribute, std::string message) const;
   Diagnostic warning(const xmlNode* element, std::string message) const;
   Diagnostic warning(const xmlNode* element, std::string_view attribute, std::string message) const;
 
