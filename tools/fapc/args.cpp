@@ -1,5 +1,6 @@
 #include "fapc/args.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <iostream>
 #include <sstream>
@@ -109,31 +110,69 @@ std::vector<std::string> Args::values(const std::string& name) const {
   return it == values_.end() ? std::vector<std::string>{} : it->second;
 }
 
-int Args::integer(const std::string& name, int fallback, int low, int high) {
+namespace {
+
+// The declaration of a number option read by name; a name not declared so is the program's own
+// mistake, caught by the command tests of that option.
+const OptionSpec& numeric_spec(const std::string& name, Numeric numeric) {
+  static const OptionSpec undeclared{};
+  const OptionSpec* spec = find_option(name);
+  return spec && spec->numeric == numeric ? *spec : undeclared;
+}
+
+std::string out_of_range(const OptionSpec& spec, const std::string& name, const std::string& given) {
+  return "--" + name + " takes " + (spec.numeric == Numeric::integer ? "an integer" : "a number") + " from " +
+         shown_number(spec.low, spec.numeric) + " to " + shown_number(spec.high, spec.numeric) + ", not '" + given +
+         "'";
+}
+
+}  // namespace
+
+std::vector<std::string> Args::given() const {
+  std::set<std::string> names = flags_seen_;
+  for (const auto& [name, values] : values_) names.insert(name);
+  return {names.begin(), names.end()};
+}
+
+int Args::integer(const std::string& name, int fallback) {
   const auto text = value(name);
   if (!text) return fallback;
+  const OptionSpec& spec = numeric_spec(name, Numeric::integer);
   int parsed = 0;
   const auto [end, ec] = std::from_chars(text->data(), text->data() + text->size(), parsed);
-  if (ec != std::errc{} || end != text->data() + text->size() || parsed < low || parsed > high) {
-    fail(codes::cli::bad_option_value, "--" + name + " takes an integer from " + std::to_string(low) + " to " +
-                                           std::to_string(high) + ", not '" + *text + "'");
+  if (ec != std::errc{} || end != text->data() + text->size() || parsed < spec.low || parsed > spec.high) {
+    fail(codes::cli::bad_option_value, out_of_range(spec, name, *text));
     return fallback;
   }
   return parsed;
 }
 
-std::optional<double> Args::decimal(const std::string& name, double low, double high) {
+std::optional<double> Args::decimal(const std::string& name) {
   const auto text = value(name);
   if (!text) return std::nullopt;
+  const OptionSpec& spec = numeric_spec(name, Numeric::decimal);
   double parsed = 0;
   const auto [end, ec] = std::from_chars(text->data(), text->data() + text->size(), parsed);
-  if (ec != std::errc{} || end != text->data() + text->size() || !(parsed >= low && parsed <= high)) {
-    std::ostringstream message;
-    message << "--" << name << " takes a number from " << low << " to " << high << ", not '" << *text << "'";
-    fail(codes::cli::bad_option_value, message.str());
+  if (ec != std::errc{} || end != text->data() + text->size() || !(parsed >= spec.low && parsed <= spec.high)) {
+    fail(codes::cli::bad_option_value, out_of_range(spec, name, *text));
     return std::nullopt;
   }
   return parsed;
+}
+
+std::optional<std::string> Args::word(const std::string& name) {
+  const auto text = value(name);
+  if (!text) return std::nullopt;
+  const OptionSpec* spec = find_option(name);
+  std::vector<std::string> words;
+  std::istringstream all(spec ? spec->value_words() : std::string());
+  for (std::string w; all >> w;) words.push_back(w);
+  if (std::find(words.begin(), words.end(), *text) != words.end()) return text;
+  std::string listed;
+  for (std::size_t i = 0; i < words.size(); ++i)
+    listed += (i == 0 ? "" : i + 1 == words.size() ? " or " : ", ") + words[i];
+  fail(codes::cli::bad_option_value, "--" + name + " takes " + listed + ", not '" + *text + "'");
+  return std::nullopt;
 }
 
 namespace {

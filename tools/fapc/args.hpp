@@ -27,10 +27,15 @@ class Args {
   bool flag(const std::string& name) const { return flags_seen_.count(name) > 0; }
   std::optional<std::string> value(const std::string& name) const;  // the last one given
   std::vector<std::string> values(const std::string& name) const;   // every one, in order
-  // An integer option in [low, high]; sets error() when it is not one.
-  int integer(const std::string& name, int fallback, int low, int high);
-  // A decimal option in [low, high]; empty when absent; sets error() when it is not one.
-  std::optional<double> decimal(const std::string& name, double low, double high);
+  std::vector<std::string> given() const;                           // the options given, by long name, sorted
+  // A number option, read as its declaration says (cli_spec.cpp: integer or decimal, in its range):
+  // `fallback` (integer) or empty (decimal) when absent; sets error() when out of range, in one
+  // shape: "--NAME takes an integer from LOW to HIGH, not 'VALUE'".
+  int integer(const std::string& name, int fallback);
+  std::optional<double> decimal(const std::string& name);
+  // A word option (--ranges fit|max): one of the declared words, or error() "--NAME takes A, B or C,
+  // not 'VALUE'"; empty when absent or wrong.
+  std::optional<std::string> word(const std::string& name);
   // Records a usage error (the first one wins).
   void fail(ErrorCode code, std::string message) {
     if (!error_.empty()) return;

@@ -1,8 +1,13 @@
 #include "fapc/cli_spec.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <deque>
+#include <sstream>
 
+#include "fapc/codec/fap_file.hpp"
+#include "fapc/codec/limits.hpp"
+#include "fapc/pipeline/batch_shard.hpp"
 #include "fapc/pipeline/registry.hpp"
 
 namespace fapc::cli {
@@ -16,6 +21,12 @@ namespace {
 #define FAPC_READERS FAPC_CONVERTERS " encode decode verify info"
 
 using VC = ValueCompletion;
+using O = OptionSpec;
+
+// The defaults shown in help come from where the libraries define them (ConvertOptions,
+// PictureSettings, Limits), never from a second literal here.
+const pipeline::ConvertOptions kDefaults{};
+std::string limit_default(Limit which) { return limit_value(which, Limits{}); }
 
 const std::vector<CommandSpec> kCommands = {
     {"compile", "INPUT -o OUTPUT", "convert any input to any output (the kinds come from the extensions)",
@@ -77,51 +88,77 @@ const std::vector<OptionSpec> kOptions = {
      "comma-separated list (default fap)",
      "compile decode combine plot render batch", false, VC::output_kinds},
     // Scripts.
-    {"fps", 0, "N", "frames per second of the frames made from a script (default 25)", FAPC_CONVERTERS},
-    {"profile", 0, "FILE", "the profile that maps script targets to FAPs (docs/profiles.md)", FAPC_CONVERTERS, false,
-     VC::file},
-    {"lexicon", 0, "FILE", "the behaviour lexicon FML-APML and APML intentions are read by (docs/intentions.md)",
-     FAPC_CONVERTERS, false, VC::file},
-    {"event", 0, "NAME=VALUE", "set an FML event (excl branches, loops; docs/fml.md)", FAPC_CONVERTERS, true},
-    {"duration", 0, "S", "end what the source leaves open (indefinite repeats) after S seconds", FAPC_CONVERTERS},
-    {"speech-rate", 0, "N", "words per minute of FML talk speech, 80 to 450 (default 175; docs/speech.md)",
-     FAPC_CONVERTERS},
-    {"voice", 0, "LANG[+VARIANT]", "the speech engine's voice for FML talk text without its own (docs/speech.md)",
-     FAPC_CONVERTERS},
-    {"allow-include", 0, "DIR", "a folder includes may read besides the input's own tree (docs/security.md)",
-     FAPC_CONVERTERS, true, VC::folder},
+    O{"fps", 0, "N", "frames per second of the frames made from a script", FAPC_CONVERTERS}
+        .integer(1, 1000, std::to_string(kDefaults.fps))
+        .reads(),
+    O{"profile", 0, "FILE", "the profile that maps script targets to FAPs (docs/profiles.md)", FAPC_CONVERTERS, false,
+      VC::file}
+        .reads(),
+    O{"lexicon", 0, "FILE", "the behaviour lexicon FML-APML and APML intentions are read by (docs/intentions.md)",
+      FAPC_CONVERTERS, false, VC::file}
+        .reads(),
+    O{"event", 0, "NAME=VALUE", "set an FML event (excl branches, loops; docs/fml.md)", FAPC_CONVERTERS, true}.reads(),
+    O{"duration", 0, "S", "end what the source leaves open (indefinite repeats) after S seconds", FAPC_CONVERTERS}
+        .decimal(0, 1e7)
+        .reads(),
+    O{"speech-rate", 0, "N", "words per minute of speech made from text (docs/speech.md)", FAPC_CONVERTERS}
+        .decimal(80, 450, shown_number(kDefaults.words_per_minute, Numeric::decimal))
+        .reads(),
+    O{"voice", 0, "LANG[+VARIANT]", "the speech engine's voice for text without its own (docs/speech.md)",
+      FAPC_CONVERTERS}
+        .reads(),
+    O{"allow-include", 0, "DIR", "a folder includes may read besides the input's own tree (docs/security.md)",
+      FAPC_CONVERTERS, true, VC::folder}
+        .reads(),
     {"strict", 0, "", "treat every warning as an error; nothing is written", FAPC_CONVERTERS " decode"},
-    {"fap-flavour", 0, "F", "the .fap layout of one player family (docs/fap-files.md, \"Flavours\")",
-     FAPC_CONVERTERS " decode", false, VC::fap_flavours},
+    O{"fap-flavour", 0, "F", "the .fap layout of one player family (docs/fap-files.md, \"Flavours\")",
+      FAPC_CONVERTERS " decode", false, VC::fap_flavours}
+        .defaults_to(std::string(fap_flavour_name(kDefaults.fap_flavour)))
+        .writes(),
     // The FBA encoder.
-    {"quant", 0, "Q", "fap_quant of .fba/.mp4 outputs, 0 (lossless) to 31 (default 1)",
-     FAPC_CONVERTERS " encode verify"},
-    {"intra-period", 0, "N", "frames between intra frames; 0 lets the encoder decide",
-     FAPC_CONVERTERS " encode verify"},
-    {"ranges", 0, "fit|max", "quantiser ranges fitted to the frames or the largest", FAPC_CONVERTERS " encode verify",
-     false, VC::words, "fit max"},
-    {"masks", 0, "fit|keep", "FAP masks fitted to the values used or kept as the input gives them",
-     FAPC_CONVERTERS " encode verify", false, VC::words, "fit keep"},
-    {"verify", 0, "", "decode every encoded stream and check it before writing", FAPC_CONVERTERS " encode"},
+    O{"quant", 0, "Q", "fap_quant of .fba/.mp4 outputs; 0 is lossless", FAPC_CONVERTERS " encode verify"}
+        .integer(0, 31, std::to_string(kDefaults.quant))
+        .writes(),
+    O{"intra-period", 0, "N", "frames between intra frames; 0 lets the encoder decide",
+      FAPC_CONVERTERS " encode verify"}
+        .integer(0, 1 << 20, std::to_string(kDefaults.intra_period))
+        .writes(),
+    O{"ranges", 0, "fit|max", "quantiser ranges fitted to the frames or the largest", FAPC_CONVERTERS " encode verify",
+      false, VC::words, "fit max"}
+        .defaults_to(kDefaults.ranges)
+        .writes(),
+    O{"masks", 0, "fit|keep", "FAP masks fitted to the values used or kept as the input gives them",
+      FAPC_CONVERTERS " encode verify", false, VC::words, "fit keep"}
+        .defaults_to(kDefaults.masks)
+        .writes(),
+    O{"verify", 0, "", "decode every encoded stream and check it before writing", FAPC_CONVERTERS " encode"}.writes(),
     {"align-planes", 0, "", "start each plane on a byte boundary with a start code (MP4 samples)", "encode"},
     // The face outputs.
-    {"size", 0, "WxH", "picture size of .png/.webm/.html outputs (default 640x480)", FAPC_CONVERTERS},
-    {"frame-rate", 0, "N", "frames per second of a .webm (default: the input's)", FAPC_CONVERTERS},
-    {"frame", 0, "K", "the frame a .png shows (combine --states: the frame printed)", FAPC_CONVERTERS},
-    {"time", 0, "T", "the time (seconds) of the frame a .png shows", FAPC_CONVERTERS},
-    {"sheet", 0, "N", "a .png contact sheet of N frames", FAPC_CONVERTERS},
-    {"points", 0, "", "mark and number the feature points on a .png", FAPC_CONVERTERS},
-    {"view", 0, "2d|3d|both", "what a .html page shows: the 2D face, the 3D head or both (default 2d)", FAPC_CONVERTERS,
-     false, VC::words, "2d 3d both"},
-    {"morphs", 0, "faps|arkit", "the morph targets of .glb/.gltf outputs: one per FAP or ARKit's 52 shapes",
-     FAPC_CONVERTERS, false, VC::words, "faps arkit"},
+    O{"size", 0, "WxH", "picture size of .png/.webm/.html outputs, each side 16 to 7680 pixels", FAPC_CONVERTERS}
+        .defaults_to(std::to_string(kDefaults.picture.width) + "x" + std::to_string(kDefaults.picture.height))
+        .writes(),
+    O{"frame-rate", 0, "N", "frames per second of a .webm", FAPC_CONVERTERS}.integer(1, 120, "the input's").writes(),
+    O{"frame", 0, "K", "the frame a .png shows (combine --states: the frame printed)", FAPC_CONVERTERS}
+        .integer(0, 1 << 30)
+        .writes(),
+    O{"time", 0, "T", "the time (seconds) of the frame a .png shows", FAPC_CONVERTERS}.decimal(0, 1e7).writes(),
+    O{"sheet", 0, "N", "a .png contact sheet of N frames", FAPC_CONVERTERS}.integer(1, 400).writes(),
+    O{"points", 0, "", "mark and number the feature points on a .png", FAPC_CONVERTERS}.writes(),
+    O{"view", 0, "2d|3d|both", "what a .html page shows: the 2D face, the 3D head or both", FAPC_CONVERTERS, false,
+      VC::words, "2d 3d both"}
+        .defaults_to(kDefaults.picture.view)
+        .writes(),
+    O{"morphs", 0, "faps|arkit", "the morph targets of .glb/.gltf outputs: one per FAP or ARKit's 52 shapes",
+      FAPC_CONVERTERS, false, VC::words, "faps arkit"}
+        .defaults_to(kDefaults.picture.morphs)
+        .writes(),
     // One subcommand each.
     {"per-clip", 0, "", "draw every clip's own curve under the blended one", "plot"},
     {"faps", 0, "LIST", "the FAPs or groups to draw (lips,jaw,3-18,open_jaw)", "plot"},
     {"overlay", 0, "", "draw the chosen curves in one panel with a legend", "plot"},
     {"title", 0, "TEXT", "the figure's title (default: the input's name)", "plot"},
     {"states", 0, "", "print one state of the result as 66 integers instead of writing it", "combine"},
-    {"jobs", 'j', "N", "conversions at a time (default one per core)", "batch"},
+    O{"jobs", 'j', "N", "conversions at a time", "batch"}.integer(1, 256, "one per core"),
     {"report", 0, "FILE", "write a JUnit XML report of the inputs that ran", "batch batch-report", false, VC::file},
     {"report-json", 0, "FILE", "write a JSON report of the inputs that ran (docs/json.md)", "batch batch-report", false,
      VC::file},
@@ -132,11 +169,18 @@ const std::vector<OptionSpec> kOptions = {
     {"zsh-completion", 0, "", "print the zsh completion script", "help"},
     {"markdown", 0, "", "print the command and option tables of docs/cli.md", "help"},
     // The resource limits (docs/security.md).
-    {"max-frames", 0, "N", "refuse inputs of more frames (default 1048576)", FAPC_READERS},
-    {"max-runs", 0, "N", "refuse inputs of more runs or clips (default 4000000)", FAPC_READERS},
-    {"max-decompressed-bytes", 0, "N", "refuse compressed inputs that inflate to more bytes (default 2^30)",
-     FAPC_READERS},
-    {"max-expansion", 0, "F", "refuse scripts that expand more than F times (default 100)", FAPC_READERS},
+    O{"max-frames", 0, "N", "refuse inputs of more frames", FAPC_READERS}
+        .integer(1, 1 << 30, limit_default(Limit::frames))
+        .reads(),
+    O{"max-runs", 0, "N", "refuse inputs of more runs or clips", FAPC_READERS}
+        .integer(1, 1 << 30, limit_default(Limit::runs))
+        .reads(),
+    O{"max-decompressed-bytes", 0, "N", "refuse compressed inputs that inflate to more bytes", FAPC_READERS}
+        .decimal(1, 1e15, limit_default(Limit::decompressed_bytes))
+        .reads(),
+    O{"max-expansion", 0, "F", "refuse compressed inputs that inflate more than F times their size", FAPC_READERS}
+        .decimal(1, 1e9, limit_default(Limit::expansion))
+        .reads(),
     // A batch over several machines (docs/cluster.md).
     {"files-from", 0, "LIST",
      "convert the files LIST names, one a line, relative to the one folder INPUT "
@@ -146,15 +190,27 @@ const std::vector<OptionSpec> kOptions = {
      "convert shard I of N (counted from 0) of the planned jobs; default from "
      "SLURM_ARRAY_TASK_ID or JOB_COMPLETION_INDEX",
      "batch"},
-    {"shards", 0, "N", "the shard count, for an index from SLURM_ARRAY_TASK_ID or JOB_COMPLETION_INDEX", "batch"},
+    O{"shards", 0, "N", "the shard count, for an index from SLURM_ARRAY_TASK_ID or JOB_COMPLETION_INDEX", "batch"}
+        .integer(1, static_cast<double>(pipeline::kMaxShards)),
     {"force", 0, "", "convert every input, also those a completion record says are up to date", "batch"},
-    {"max-audio-samples", 0, "N", "refuse voice tracks of more samples (default 2^27)", FAPC_READERS},
-    {"max-speech-text", 0, "N", "refuse documents with more bytes of talk text (default 65536)", FAPC_READERS},
-    {"max-speech-seconds", 0, "S", "refuse documents with more seconds of speech (default 1800)", FAPC_READERS},
-    {"max-frame-pixels", 0, "N", "refuse pictures of more pixels (.png, .webm, .html; default 2^22)", FAPC_CONVERTERS},
-    {"max-sheet-pixels", 0, "N", "refuse contact sheets of more pixels (default 2^27)", FAPC_CONVERTERS},
-    {"max-video-pixels", 0, "N", "refuse videos of more pixels in all, pictures x size (default 2^31)",
-     FAPC_CONVERTERS},
+    O{"max-audio-samples", 0, "N", "refuse voice tracks of more samples", FAPC_READERS}
+        .decimal(1, 1e15, limit_default(Limit::audio_samples))
+        .reads(),
+    O{"max-speech-text", 0, "N", "refuse documents with more bytes of talk text", FAPC_READERS}
+        .decimal(1, 1e12, limit_default(Limit::speech_text))
+        .reads(),
+    O{"max-speech-seconds", 0, "S", "refuse documents with more seconds of speech", FAPC_READERS}
+        .decimal(1, 1e9, limit_default(Limit::speech_seconds))
+        .reads(),
+    O{"max-frame-pixels", 0, "N", "refuse pictures of more pixels (.png, .webm, .html)", FAPC_CONVERTERS}
+        .decimal(1, 1e15, limit_default(Limit::frame_pixels))
+        .writes(),
+    O{"max-sheet-pixels", 0, "N", "refuse contact sheets of more pixels", FAPC_CONVERTERS}
+        .decimal(1, 1e15, limit_default(Limit::sheet_pixels))
+        .writes(),
+    O{"max-video-pixels", 0, "N", "refuse videos of more pixels in all, pictures x size", FAPC_CONVERTERS}
+        .decimal(1, 1e15, limit_default(Limit::video_pixels))
+        .writes(),
 };
 
 #undef FAPC_READERS
@@ -172,6 +228,74 @@ bool OptionSpec::applies_to(std::string_view command) const {
     rest.remove_prefix(space + 1);
   }
   return false;
+}
+
+OptionSpec OptionSpec::integer(double min, double max, std::string default_value) const {
+  OptionSpec out = *this;
+  out.numeric = Numeric::integer;
+  out.low = min;
+  out.high = max;
+  out.shown_default = std::move(default_value);
+  return out;
+}
+
+OptionSpec OptionSpec::decimal(double min, double max, std::string default_value) const {
+  OptionSpec out = integer(min, max, std::move(default_value));
+  out.numeric = Numeric::decimal;
+  return out;
+}
+
+OptionSpec OptionSpec::defaults_to(std::string default_value) const {
+  OptionSpec out = *this;
+  out.shown_default = std::move(default_value);
+  return out;
+}
+
+OptionSpec OptionSpec::reads() const {
+  OptionSpec out = *this;
+  out.role = OptionRole::reading;
+  return out;
+}
+
+OptionSpec OptionSpec::writes() const {
+  OptionSpec out = *this;
+  out.role = OptionRole::writing;
+  return out;
+}
+
+std::string shown_number(double value, Numeric numeric) {
+  if (numeric == Numeric::integer) return std::to_string(static_cast<std::int64_t>(value));
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+std::string OptionSpec::value_words() const {
+  std::string out;
+  const auto add = [&out](const std::string& word) { out += (out.empty() ? "" : " ") + word; };
+  if (completion == ValueCompletion::input_kinds)
+    for (const auto& f : pipeline::formats().inputs()) add(f.kind);
+  if (completion == ValueCompletion::output_kinds)
+    for (const auto& f : pipeline::formats().outputs()) add(f.kind);
+  if (completion == ValueCompletion::fap_flavours)
+    for (char c : fap_flavour_names()) out += c == '|' ? ' ' : c;
+  if (completion == ValueCompletion::words) out = std::string(words);
+  return out;
+}
+
+std::string OptionSpec::value_facts() const {
+  std::string facts;
+  if (numeric != Numeric::none)
+    facts = std::string(numeric == Numeric::integer ? "an integer" : "a number") + " from " +
+            shown_number(low, numeric) + " to " + shown_number(high, numeric);
+  if (completion == ValueCompletion::words || completion == ValueCompletion::fap_flavours) {
+    std::string listed = value_words();
+    for (std::size_t at = listed.find(' '); at != std::string::npos; at = listed.find(' ', at + 2))
+      listed.replace(at, 1, ", ");
+    facts = "one of " + listed;
+  }
+  if (!shown_default.empty()) facts += (facts.empty() ? "default " : "; default ") + shown_default;
+  return facts;
 }
 
 std::string OptionSpec::label() const {

@@ -13,6 +13,15 @@ namespace fapc::cli {
 // What a shell may complete an option's value with.
 enum class ValueCompletion { none, file, folder, words, input_kinds, output_kinds, fap_flavours };
 
+// A number's kind: the parser reads it so (Args::integer, Args::decimal) and help names it.
+enum class Numeric { none, integer, decimal };
+
+// What an option changes, checked against the pipeline's rows (tests/command/option_rows_test.cpp):
+// `reading` options change how an input is read, and the rows of the inputs that read them name
+// them (`fapc formats`); given for an input whose row does not, they draw a warning
+// (cli.option_not_read). `writing` options change what an output holds; outputs' rows name them.
+enum class OptionRole { command, reading, writing };
+
 struct OptionSpec {
   std::string_view name{};        // the long form without "--": "fps"
   char short_name = 0;            // 'o' for -o; 0: none
@@ -22,12 +31,36 @@ struct OptionSpec {
   bool repeatable = false;        // each use adds a value (--event, --allow-include)
   ValueCompletion completion = ValueCompletion::none;
   std::string_view words{};  // the values for ValueCompletion::words, space-separated
+  // The value's type, range and default, set by the builders below (so that a row stays one line
+  // of name, help and commands): the parser reads a number within [low, high], and help, the man
+  // page and docs/cli.md show the range and the default.
+  Numeric numeric = Numeric::none;
+  double low = 0;
+  double high = 0;
+  std::string shown_default{};  // as people read it ("25", "640x480"); empty: none said
+  OptionRole role = OptionRole::command;
+
+  // An integer or a decimal number in [low, high].
+  OptionSpec integer(double min, double max, std::string default_value = {}) const;
+  OptionSpec decimal(double min, double max, std::string default_value = {}) const;
+  OptionSpec defaults_to(std::string default_value) const;
+  // It changes how inputs are read (or outputs written): the rows of those kinds name it.
+  OptionSpec reads() const;
+  OptionSpec writes() const;
 
   bool takes_value() const { return !value_name.empty(); }
   bool applies_to(std::string_view command) const;
   // "-o, --output FILE" or "--fps N".
   std::string label() const;
+  // The value's type, range and default for people: "an integer from 1 to 1000; default 25",
+  // "one of fit, max; default fit"; empty for a flag or a value without any.
+  std::string value_facts() const;
+  // The values a word option takes ("fit max"), from the declaration or the tables it names.
+  std::string value_words() const;
 };
+
+// A number as the parser's messages and help show it: integers in digits, others as printed.
+std::string shown_number(double value, Numeric numeric);
 
 struct CommandSpec {
   std::string_view name{};      // "compile"

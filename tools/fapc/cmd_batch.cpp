@@ -112,8 +112,7 @@ Result<std::optional<pipeline::Shard>> chosen_shard(Args& args) {
     return std::optional<pipeline::Shard>{*shard};
   }
   std::optional<std::size_t> shards;
-  if (args.value("shards"))
-    shards = static_cast<std::size_t>(args.integer("shards", 1, 1, static_cast<int>(pipeline::kMaxShards)));
+  if (args.value("shards")) shards = static_cast<std::size_t>(args.integer("shards", 1));
   if (!args.ok()) return make_error(codes::cli::bad_option, Location{}, args.error());
   return pipeline::shard_from_environment([](const char* name) { return std::getenv(name); }, shards);
 }
@@ -131,7 +130,10 @@ Status write_report(const std::optional<std::string>& path, const std::string& t
 int run_batch(const std::vector<std::string>& argv) {
   Args args("batch", argv);
   ConvertOptions options = convert_options(args);
-  const int threads = args.integer("jobs", 0, 1, 256);  // absent: one per core
+  // A batch's inputs are of many kinds: an option is for those that read it, and the others are
+  // not warned of it (docs/cli.md, "Options a kind does not read").
+  options.given.clear();
+  const int threads = args.integer("jobs", 0);  // absent: one per core
   if (!args.ok()) return usage_error("batch", args);
   const auto out_dir = args.value("output");
   if (!out_dir) return usage_error("batch", codes::cli::missing_output, "missing -o DIR");

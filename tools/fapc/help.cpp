@@ -1,9 +1,9 @@
 #include "fapc/help.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <sstream>
 
-#include "fapc/codec/fap_file.hpp"
 #include "fapc/pipeline/registry.hpp"
 #include "fapc/version.hpp"
 
@@ -33,16 +33,26 @@ std::string wrap(std::string_view text, std::size_t indent, std::size_t first_co
   return out;
 }
 
-std::string words_of(ValueCompletion completion, std::string_view words) {
+// The help sentence with the value's type, range and default after it (OptionSpec::value_facts).
+std::string help_with_facts(const OptionSpec& option) {
+  const std::string facts = option.value_facts();
+  const std::string help(option.help);
+  if (facts.empty()) return help;
+  // "... (docs/speech.md; a number from 80 to 450; default 175)": one parenthesis, not two.
+  if (help.ends_with(")")) return help.substr(0, help.size() - 1) + "; " + facts + ")";
+  return help + " (" + facts + ")";
+}
+
+// The kinds whose rows name an option (`fapc formats`), for the tables of docs/cli.md.
+std::string kinds_naming(const OptionSpec& option) {
   std::string out;
-  const auto add = [&out](const std::string& word) { out += (out.empty() ? "" : " ") + word; };
-  if (completion == ValueCompletion::input_kinds)
-    for (const auto& f : pipeline::formats().inputs()) add(f.kind);
-  if (completion == ValueCompletion::output_kinds)
-    for (const auto& f : pipeline::formats().outputs()) add(f.kind);
-  if (completion == ValueCompletion::fap_flavours)
-    for (char c : fap_flavour_names()) out += c == '|' ? ' ' : c;
-  if (completion == ValueCompletion::words) out = std::string(words);
+  const auto add = [&out, &option](const auto& table) {
+    for (const auto& f : table)
+      if (std::find(f.options.begin(), f.options.end(), option.name) != f.options.end())
+        out += (out.empty() ? "" : ", ") + f.kind;
+  };
+  if (option.role == OptionRole::reading) add(pipeline::formats().inputs());
+  if (option.role == OptionRole::writing) add(pipeline::formats().outputs());
   return out;
 }
 
@@ -113,7 +123,7 @@ void print_command_help(const CommandSpec& command, std::ostream& out) {
     } else {
       out << std::string(30 - label.size(), ' ');
     }
-    out << wrap(o->help, 30, 30) << '\n';
+    out << wrap(help_with_facts(*o), 30, 30) << '\n';
   }
 }
 
@@ -146,7 +156,7 @@ std::string man_page() {
   }
   out << ".SH OPTIONS\n";
   for (const OptionSpec& o : option_specs()) {
-    out << ".TP\n.B " << roff(o.label()) << (o.repeatable ? " ..." : "") << "\n" << roff(o.help) << " (";
+    out << ".TP\n.B " << roff(o.label()) << (o.repeatable ? " ..." : "") << "\n" << roff(help_with_facts(o)) << " (";
     out << (o.commands == "*" ? std::string("every command") : roff(o.commands)) << ").\n";
   }
   out << ".SH EXIT STATUS\n0 success; 1 bad input (nothing written); 2 bad usage; 3 a verification failed.\n"
@@ -166,7 +176,7 @@ std::string bash_completion() {
   for (const OptionSpec& o : option_specs()) {
     if (!o.takes_value()) continue;
     out << "    " << (o.short_name ? std::string("-") + o.short_name + "|" : "") << "--" << o.name << ") ";
-    const std::string words = words_of(o.completion, o.words);
+    const std::string words = o.value_words();
     if (!words.empty()) {
       out << "COMPREPLY=($(compgen -W \"" << words << "\" -- \"$cur\")); return;;\n";
     } else if (o.completion == ValueCompletion::file) {
@@ -210,7 +220,7 @@ std::string zsh_completion() {
       const std::string help = zsh_escape(o->help);
       std::string action;
       if (o->takes_value()) {
-        const std::string words = words_of(o->completion, o->words);
+        const std::string words = o->value_words();
         action = ":" + zsh_escape(o->value_name) + ":";
         if (!words.empty())
           action += "(" + words + ")";
@@ -244,13 +254,14 @@ std::string markdown_tables() {
   for (const CommandSpec& c : command_specs())
     out << "| `" << c.name << "` | " << (c.operands.empty() ? "" : "`" + std::string(c.operands) + "`") << " | "
         << c.summary << " |\n";
-  out << "\n| Option | Subcommands | Meaning |\n|---|---|---|\n";
+  out << "\n| Option | Subcommands | Meaning | Value | Kinds it applies to |\n|---|---|---|---|---|\n";
   for (const OptionSpec& o : option_specs()) {
     std::string label = o.label();
     for (std::size_t at = label.find('|'); at != std::string::npos; at = label.find('|', at + 2))
       label.replace(at, 1, "\\|");
     out << "| `" << label << "`" << (o.repeatable ? " (repeatable)" : "") << " | "
-        << (o.commands == "*" ? std::string("all") : std::string(o.commands)) << " | " << o.help << " |\n";
+        << (o.commands == "*" ? std::string("all") : std::string(o.commands)) << " | " << o.help << " | "
+        << o.value_facts() << " | " << kinds_naming(o) << " |\n";
   }
   // The kinds, from the pipeline's tables (the row is the only place that knows a format).
   const auto kinds = [&out](const std::string& header, const auto& table) {

@@ -92,11 +92,36 @@ ConvertResult write_outputs(Loaded loaded, const std::vector<OutputRequest>& out
   return result;
 }
 
+namespace {
+
+ConvertResult convert_with(const std::string& input, const std::vector<OutputRequest>& outputs,
+                           const std::vector<const OutputFormat*>& writers, const ConvertOptions& options);
+
+}  // namespace
+
 ConvertResult convert(const std::string& input, const std::vector<OutputRequest>& outputs,
                       const ConvertOptions& options) {
   ConvertResult result;
   std::vector<const OutputFormat*> writers;
   if ((result.error = find_writers(outputs, writers))) return result;
+  // Options the input's kind does not read are said first, and refused under --strict before
+  // anything is read.
+  Diagnostics unread = options_not_read(input, writers, options);
+  if (options.strict && !unread.empty()) {
+    result.warnings = std::move(unread);
+    result.error = strict_error(input, result.warnings.size());
+    return result;
+  }
+  result = convert_with(input, outputs, writers, options);
+  result.warnings.insert(result.warnings.begin(), unread.begin(), unread.end());
+  return result;
+}
+
+namespace {
+
+ConvertResult convert_with(const std::string& input, const std::vector<OutputRequest>& outputs,
+                           const std::vector<const OutputFormat*>& writers, const ConvertOptions& options) {
+  ConvertResult result;
   // The one engine: when the input's row gives a frame source and every writer's row takes frames
   // one at a time, they go through without the frames in memory; else the input is loaded whole
   // (and, a script, rendered) and each writer gets the loaded value.
@@ -132,5 +157,7 @@ ConvertResult convert(const std::string& input, const std::vector<OutputRequest>
   write_all(result, writers, outputs, options);
   return result;
 }
+
+}  // namespace
 
 }  // namespace fapc::pipeline

@@ -92,29 +92,37 @@ std::vector<std::string> script_options(std::initializer_list<std::string> own) 
 Registry built_in() {
   Registry r;
   r.add(described(builtin::fap_input(), "frames of FAP values as text (every known flavour; gzip too)",
-                  {"max-frames", "max-decompressed-bytes"}));
+                  {"max-frames", "max-decompressed-bytes", "max-expansion"}));
   r.add(described(builtin::fba_input(), "a raw MPEG-4 FBA elementary stream (gzip too)",
-                  {"max-frames", "max-decompressed-bytes"}));
+                  {"max-frames", "max-decompressed-bytes", "max-expansion"}));
   r.add(described(builtin::mp4_input(), "an MPEG-4 file's FBA track", {"max-frames"}));
   r.add(described(builtin::mimic_input(), "a Mimic script: timed actions on animation parameters", kScriptOptions));
-  r.add(described(builtin::fml_input(), "an FML document: events, excl/par/seq/repeat, talk text",
-                  script_options({"event", "speech-rate"})));
-  r.add(described(builtin::xmto_input(), "an XMT-Omega document animating FAPs (XMT-A is an output)", kScriptOptions));
+  r.add(described(
+      builtin::fml_input(), "an FML document: events, excl/par/seq/repeat, talk text",
+      script_options({"event", "speech-rate", "voice", "max-speech-text", "max-speech-seconds", "max-audio-samples"})));
+  r.add(described(builtin::xmto_input(), "an XMT-Omega document animating FAPs (XMT-A is an output)",
+                  script_options({"max-audio-samples"})));
+  // Its operands are inputs of any kind, read with the same options.
   r.add(described(builtin::combine_input(), "an Algebra of Expressions over other inputs (docs/algebra.md)",
-                  kScriptOptions));
+                  script_options({"event", "lexicon", "voice", "speech-rate", "max-speech-text", "max-speech-seconds",
+                                  "max-audio-samples", "max-decompressed-bytes"})));
   r.add(described(builtin::bml_input(), "a BML document: behaviours placed by their sync constraints, speech",
-                  kScriptOptions));
+                  script_options({"voice", "speech-rate", "max-audio-samples"})));
   r.add(described(builtin::bml_sequence_input(),
-                  "BML documents given in order, placed by their composition (docs/bml.md)", kScriptOptions));
+                  "BML documents given in order, placed by their composition (docs/bml.md)",
+                  script_options({"voice", "speech-rate", "max-audio-samples"})));
+  // What the rows it hands documents to read (tests/command/option_rows_test.cpp keeps it so).
   r.add(described(builtin::xml_input(),
                   "an .xml document read by its root: BML, FML, XMT-Omega, FML-APML, APML or SMIL-Agent",
-                  kScriptOptions));
+                  script_options({"event", "lexicon", "voice", "speech-rate", "max-speech-text", "max-speech-seconds",
+                                  "max-audio-samples"})));
   r.add(described(builtin::fml_apml_input(), "Greta's FML-APML: intentions on a speech's marks, through the lexicon",
-                  script_options({"lexicon", "voice", "speech-rate"})));
+                  script_options({"lexicon", "voice", "speech-rate", "max-audio-samples"})));
   r.add(described(builtin::apml_input(), "APML: intentions marked up over spoken text, through the lexicon",
-                  script_options({"lexicon", "voice", "speech-rate"})));
-  r.add(described(builtin::smil_input(), "an Xface SMIL-Agent script: speech with marks, affects, eye and head actions",
-                  script_options({"speech-rate"})));
+                  script_options({"lexicon", "voice", "speech-rate", "max-audio-samples"})));
+  r.add(described(
+      builtin::smil_input(), "an Xface SMIL-Agent script: speech with marks, affects, eye and head actions",
+      script_options({"speech-rate", "voice", "max-speech-text", "max-speech-seconds", "max-audio-samples"})));
   r.add(described(builtin::fap_output(), "frames of FAP values as text (.fap.gz compressed)", {"fap-flavour"}));
   r.add(described(builtin::fba_output(), "a raw MPEG-4 FBA elementary stream",
                   {"quant", "intra-period", "ranges", "masks", "verify"}));
@@ -129,11 +137,13 @@ Registry built_in() {
   r.add(described(builtin::csv_output(), "the curves and frames as comma-separated values", {}));
   r.add(described(builtin::timeline_output(), "the timeline of a script as text, for tests and debugging", {}));
   r.add(described(builtin::png_output(), "a picture of the face: one frame or a contact sheet",
-                  {"size", "frame", "time", "sheet", "points"}));
-  r.add(described(builtin::webm_output(), "a VP9 video of the face", {"size", "frame-rate"}));
-  r.add(described(builtin::html_output(), "a page that plays the face in a browser", {"size", "frame-rate", "view"}));
+                  {"size", "frame", "time", "sheet", "points", "max-frame-pixels", "max-sheet-pixels"}));
+  r.add(described(builtin::webm_output(), "a VP9 video of the face",
+                  {"size", "frame-rate", "max-frame-pixels", "max-video-pixels"}));
+  r.add(described(builtin::html_output(), "a page that plays the face in a browser",
+                  {"size", "frame-rate", "view", "max-frame-pixels", "max-video-pixels"}));
   r.add(described(builtin::wav_output(), "the voice (speech or a recording) as 16-bit PCM WAV",
-                  {"voice", "speech-rate"}));
+                  {"voice", "speech-rate", "max-audio-samples"}));
   r.add(described(builtin::tracker_csv_input(), "OpenFace or ARKit CSV, told by its header (docs/bridges.md)",
                   {"fps", "max-frames"}));
   r.add(described(builtin::openface_csv_input(), "OpenFace action units, pose and gaze (docs/bridges.md)",

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/codec/include_policy.hpp"
@@ -75,6 +76,10 @@ struct ConvertOptions {
   // Asked before a script's frames are rendered, with their count, their rate and the place that
   // ends the animation: convert() sets it from its outputs (OutputFormat::check_length).
   std::function<Status(std::int64_t frames, int fps, const Location& ends)> check_length;
+  // The options the command line was given, by name without "--": convert() warns
+  // (format.option_not_read) of those some input kind reads that neither the input's row nor an
+  // output's names (docs/cli.md, "Options a kind does not read"). Empty: nothing is said.
+  std::vector<std::string> given;
 };
 
 }  // namespace fapc::pipeline

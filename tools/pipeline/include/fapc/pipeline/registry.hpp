@@ -129,6 +129,11 @@ std::string extension_list(const std::vector<const OutputFormat*>& rows);
 std::vector<const InputFormat*> inputs_where(const std::function<bool(const InputFormat&)>& keep = {});
 std::vector<const OutputFormat*> outputs_where(const std::function<bool(const OutputFormat&)>& keep = {});
 
+// The warnings (format.option_not_read) for options.given that change how some kind is read but
+// that neither the row of `input`'s reader nor any of `writers` names: given, they change nothing.
+Diagnostics options_not_read(const std::string& input, const std::vector<const OutputFormat*>& writers,
+                             const ConvertOptions& options);
+
 // Loads any input the built-in readers know (by --from or extension), or says why not (unsupported for an
 // unknown extension). Includes and operands inside inputs are loaded through this too.
 Result<Loaded> load(const std::string& path, const ConvertOptions& options);
