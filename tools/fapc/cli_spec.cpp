@@ -28,6 +28,14 @@ using O = OptionSpec;
 const pipeline::ConvertOptions kDefaults{};
 std::string limit_default(Limit which) { return limit_value(which, Limits{}); }
 
+// A resource limit's option (docs/security.md): a number from 1 to `max`, its default Limits{}'s;
+// inputs' rows name it (reading) or outputs' (writing: the pictures).
+OptionSpec limit(const OptionSpec& spec, Limit which, double max, OptionRole role) {
+  OptionSpec out = spec.decimal(1, max, limit_default(which));
+  out.role = role;
+  return out;
+}
+
 const std::vector<CommandSpec> kCommands = {
     {"compile", "INPUT -o OUTPUT", "convert any input to any output (the kinds come from the extensions)",
      "Loads INPUT (by its extension or --from: {inputs}) and writes it as OUTPUT, whose kind comes "
@@ -175,12 +183,10 @@ const std::vector<OptionSpec> kOptions = {
     O{"max-runs", 0, "N", "refuse inputs of more runs or clips", FAPC_READERS}
         .integer(1, 1 << 30, limit_default(Limit::runs))
         .reads(),
-    O{"max-decompressed-bytes", 0, "N", "refuse compressed inputs that inflate to more bytes", FAPC_READERS}
-        .decimal(1, 1e15, limit_default(Limit::decompressed_bytes))
-        .reads(),
-    O{"max-expansion", 0, "F", "refuse compressed inputs that inflate more than F times their size", FAPC_READERS}
-        .decimal(1, 1e9, limit_default(Limit::expansion))
-        .reads(),
+    limit({"max-decompressed-bytes", 0, "N", "refuse compressed inputs that inflate to more bytes", FAPC_READERS},
+          Limit::decompressed_bytes, 1e15, OptionRole::reading),
+    limit({"max-expansion", 0, "F", "refuse compressed inputs that inflate more than F times their size", FAPC_READERS},
+          Limit::expansion, 1e9, OptionRole::reading),
     // A batch over several machines (docs/cluster.md).
     {"files-from", 0, "LIST",
      "convert the files LIST names, one a line, relative to the one folder INPUT "
@@ -193,24 +199,18 @@ const std::vector<OptionSpec> kOptions = {
     O{"shards", 0, "N", "the shard count, for an index from SLURM_ARRAY_TASK_ID or JOB_COMPLETION_INDEX", "batch"}
         .integer(1, static_cast<double>(pipeline::kMaxShards)),
     {"force", 0, "", "convert every input, also those a completion record says are up to date", "batch"},
-    O{"max-audio-samples", 0, "N", "refuse voice tracks of more samples", FAPC_READERS}
-        .decimal(1, 1e15, limit_default(Limit::audio_samples))
-        .reads(),
-    O{"max-speech-text", 0, "N", "refuse documents with more bytes of talk text", FAPC_READERS}
-        .decimal(1, 1e12, limit_default(Limit::speech_text))
-        .reads(),
-    O{"max-speech-seconds", 0, "S", "refuse documents with more seconds of speech", FAPC_READERS}
-        .decimal(1, 1e9, limit_default(Limit::speech_seconds))
-        .reads(),
-    O{"max-frame-pixels", 0, "N", "refuse pictures of more pixels (.png, .webm, .html)", FAPC_CONVERTERS}
-        .decimal(1, 1e15, limit_default(Limit::frame_pixels))
-        .writes(),
-    O{"max-sheet-pixels", 0, "N", "refuse contact sheets of more pixels", FAPC_CONVERTERS}
-        .decimal(1, 1e15, limit_default(Limit::sheet_pixels))
-        .writes(),
-    O{"max-video-pixels", 0, "N", "refuse videos of more pixels in all, pictures x size", FAPC_CONVERTERS}
-        .decimal(1, 1e15, limit_default(Limit::video_pixels))
-        .writes(),
+    limit({"max-audio-samples", 0, "N", "refuse voice tracks of more samples", FAPC_READERS}, Limit::audio_samples,
+          1e15, OptionRole::reading),
+    limit({"max-speech-text", 0, "N", "refuse documents with more bytes of talk text", FAPC_READERS},
+          Limit::speech_text, 1e12, OptionRole::reading),
+    limit({"max-speech-seconds", 0, "S", "refuse documents with more seconds of speech", FAPC_READERS},
+          Limit::speech_seconds, 1e9, OptionRole::reading),
+    limit({"max-frame-pixels", 0, "N", "refuse pictures of more pixels (.png, .webm, .html)", FAPC_CONVERTERS},
+          Limit::frame_pixels, 1e15, OptionRole::writing),
+    limit({"max-sheet-pixels", 0, "N", "refuse contact sheets of more pixels", FAPC_CONVERTERS}, Limit::sheet_pixels,
+          1e15, OptionRole::writing),
+    limit({"max-video-pixels", 0, "N", "refuse videos of more pixels in all, pictures x size", FAPC_CONVERTERS},
+          Limit::video_pixels, 1e15, OptionRole::writing),
 };
 
 #undef FAPC_READERS
