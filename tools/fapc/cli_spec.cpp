@@ -80,7 +80,9 @@ const std::vector<OptionSpec> kOptions = {
     {"fps", 0, "N", "frames per second of the frames made from a script (default 25)", FAPC_CONVERTERS},
     {"profile", 0, "FILE", "the profile that maps script targets to FAPs (docs/profiles.md)", FAPC_CONVERTERS, false,
      VC::file},
-    {"lexicon", 0, "FILE", "the behaviour lexicon FML-APML and APML intentions are read by (docs/intentions.md)",
+    {"lexicon", 0, "FILE",
+     "the behaviour lexicon FML-APML and APML intentions, BML face lexemes and Greta references are read by "
+     "(docs/intentions.md, docs/bml.md)",
      FAPC_CONVERTERS, false, VC::file},
     {"event", 0, "NAME=VALUE", "set an FML event (excl branches, loops; docs/fml.md)", FAPC_CONVERTERS, true},
     {"duration", 0, "S", "end what the source leaves open (indefinite repeats) after S seconds", FAPC_CONVERTERS},

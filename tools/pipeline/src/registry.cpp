@@ -103,12 +103,12 @@ Registry built_in() {
   r.add(described(builtin::combine_input(), "an Algebra of Expressions over other inputs (docs/algebra.md)",
                   kScriptOptions));
   r.add(described(builtin::bml_input(), "a BML document: behaviours placed by their sync constraints, speech",
-                  kScriptOptions));
+                  script_options({"lexicon"})));
   r.add(described(builtin::bml_sequence_input(),
                   "BML documents given in order, placed by their composition (docs/bml.md)", kScriptOptions));
   r.add(described(builtin::xml_input(),
                   "an .xml document read by its root: BML, FML, XMT-Omega, FML-APML, APML or SMIL-Agent",
-                  kScriptOptions));
+                  script_options({"lexicon"})));
   r.add(described(builtin::fml_apml_input(), "Greta's FML-APML: intentions on a speech's marks, through the lexicon",
                   script_options({"lexicon", "voice", "speech-rate"})));
   r.add(described(builtin::apml_input(), "APML: intentions marked up over spoken text, through the lexicon",

@@ -82,8 +82,8 @@ class BmlReader {
   // `owner`, when given, is the document's to free: its tree goes once the block is read, before
   // the clips are made (the nodes are no longer needed; the peak memory is one of them, not both).
   BmlReader(const xml::XmlDocument& doc, const ReaderOptions& options, EarlierBlocks* earlier = nullptr,
-            xml::XmlDocument* owner = nullptr)
-      : doc_(doc), options_(options), once_(out_.warnings), earlier_(earlier), owner_(owner) {}
+            xml::XmlDocument* owner = nullptr, const vocabulary::BehaviourLexicon* lexicon = nullptr)
+      : doc_(doc), options_(options), once_(out_.warnings), earlier_(earlier), owner_(owner), lexicon_(lexicon) {}
 
   // `root`: the document's root, or a bml element inside another language's document (FML-APML's
   // bml part), whose parser warnings that document's reader reports itself.
@@ -126,6 +126,7 @@ class BmlReader {
   EarlierBlocks* earlier_ = nullptr;
   double origin_ = 0;
   xml::XmlDocument* owner_ = nullptr;
+  const vocabulary::BehaviourLexicon* lexicon_ = nullptr;  // the user's (--lexicon), or none
 
   // The dialect (docs/bml.md, "Dialects"): BML 1.0 by its namespace; Greta/SEMAINE by its
   // gretabml descriptions or the older mindmakers namespace; SmartBody by its lips, curves and
@@ -283,6 +284,7 @@ class BmlReader {
       b.shift = name == "faceShift";
       b.lexeme = xml::attribute(node, "lexeme").value_or("");
       if (b.lexeme.empty()) b.kind = BehaviourKind::not_drawn;
+      user_lexeme(b);
     } else if (name == "faceFacs") {
       if (!read_facs(node, b)) return false;
     } else if (name == "gaze" || name == "gazeShift") {
@@ -410,10 +412,21 @@ class BmlReader {
     return true;
   }
 
+  // A lexeme the user's lexicon names (its faceLexeme rows) is drawn by those rows over the face's
+  // span, as a Greta reference's rows are, instead of through bml_lexemes.tsv.
+  void user_lexeme(Behaviour& b) const {
+    if (lexicon_ == nullptr || b.lexeme.empty()) return;
+    std::vector<const vocabulary::LexiconRow*> rows = lexicon_->rows_for("faceLexeme", b.lexeme);
+    if (rows.empty()) return;
+    b.kind = BehaviourKind::lexicon_rows;
+    b.row_shares.assign(rows.size(), 1.0);
+    b.rows = std::move(rows);
+  }
+
   // A face, head or gaze with a gretabml reference becomes that reference's rows; false (and
   // error_ unset) when it has none.
   bool greta_reference(const xmlNode* node, Behaviour& b) {
-    Result<bool> read = read_greta_reference(doc_, node, b, once_);
+    Result<bool> read = read_greta_reference(doc_, node, b, once_, lexicon_);
     if (!read) return !fail(read.error());
     return *read;
   }
@@ -824,19 +837,21 @@ namespace {
 // A BML 1.0 block of behaviours alone is streamed (XmlDocument::stream): its tree never stands
 // whole, each behaviour freed once read; anything else is read from a whole parse.
 Result<BmlDocument> read_bml_text(std::string_view text, const std::string& file_name, const ReaderOptions& options,
+                                  const vocabulary::BehaviourLexicon* lexicon,
                                   const xml::XmlDocument::TextReleaser& release_text) {
   if (const Status depth = xml::check_element_depth(text, file_name); !depth) return depth.error();
   // Only speech text is read; elsewhere white space is dropped.
   const xml::BlankText blank_text{false, {"text", "speech"}};
   return xml::read_streamed_or_whole(text, file_name, blank_text, release_text, [&](xml::XmlDocument& doc) {
-    return BmlReader(doc, options, nullptr, &doc).run(doc.root(), true);
+    return BmlReader(doc, options, nullptr, &doc, lexicon).run(doc.root(), true);
   });
 }
 
 }  // namespace
 
-Result<BmlDocument> read_bml(std::string_view text, const std::string& file_name, const ReaderOptions& options) {
-  return read_bml_text(text, file_name, options, {});
+Result<BmlDocument> read_bml(std::string_view text, const std::string& file_name, const ReaderOptions& options,
+                             const vocabulary::BehaviourLexicon* lexicon) {
+  return read_bml_text(text, file_name, options, lexicon, {});
 }
 
 Result<BmlDocument> read_bml_block(const xml::XmlDocument& doc, const xmlNode* block, const ReaderOptions& options) {
@@ -848,10 +863,11 @@ Result<BmlDocument> read_sequenced_block(const xml::XmlDocument& doc, const Read
   return BmlReader(doc, options, &earlier).run(doc.root(), true);
 }
 
-Result<BmlDocument> load_bml(const std::string& path, const ReaderOptions& options) {
+Result<BmlDocument> load_bml(const std::string& path, const ReaderOptions& options,
+                             const vocabulary::BehaviourLexicon* lexicon) {
   const auto source = SourceText::open(path);
   if (!source) return source.error();
-  return read_bml_text(source->bytes(), path, options, [&](std::size_t offset) { source->release(offset); });
+  return read_bml_text(source->bytes(), path, options, lexicon, [&](std::size_t offset) { source->release(offset); });
 }
 
 }  // namespace fapc::bml
