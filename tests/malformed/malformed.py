@@ -1002,12 +1002,47 @@ def bml_sequence_cases():
     return cases
 
 
+# BML behaviours' own values (docs/bml.md): each refused at the attribute (or the reference that
+# cannot hold) with its code, shown by -v.
+def bml_value_cases():
+    def block(*behaviours):
+        return ('<bml xmlns="http://www.bml-initiative.org/bml/bml-1.0" id="b">\n' + "\n".join(behaviours)
+                + "\n</bml>\n")
+
+    def refused_at(line, column, code):
+        def check(folder, stderr):
+            want = "in.bml:%d:%d: error[%s]" % (line, column, code)
+            return None if want in stderr else "wanted " + want
+        return check
+
+    def case(name, at, *behaviours):
+        return compile_case("bml.wrong." + name, block(*behaviours), extra=["-v"], check=refused_at(*at))
+
+    nod = '<head id="h" lexeme="NOD"/>'
+    return [
+        case("amount-nan", (2, 41, "bml.bad_value"), '<faceLexeme id="f" lexeme="RAISE_BROWS" amount="nan"/>'),
+        case("amount-word", (2, 41, "bml.bad_value"), '<faceLexeme id="f" lexeme="RAISE_BROWS" amount="lots"/>'),
+        case("side-middle", (2, 26, "bml.bad_value"), '<faceFacs id="f" au="12" side="MIDDLE"/>'),
+        case("repetition-fraction", (2, 27, "bml.bad_value"), '<head id="h" lexeme="NOD" repetition="2.5"/>'),
+        case("repetition-1e9", (2, 27, "bml.bad_value"), '<head id="h" lexeme="NOD" repetition="1e9"/>'),
+        case("reference-no-point", (3, 27, "bml.bad_reference"), nod, '<head id="g" lexeme="NOD" start="h::end"/>'),
+        case("reference-unknown", (3, 27, "bml.unknown_reference"), nod, '<head id="g" lexeme="NOD" start="x:end"/>'),
+        case("offset-word", (3, 27, "bml.bad_reference"), nod, '<head id="g" lexeme="NOD" start="h:end+x"/>'),
+        case("offset-before-block", (3, 27, "bml.constraints_conflict"), '<head id="h" lexeme="NOD" start="0"/>',
+             '<head id="g" lexeme="NOD" start="h:start-5"/>'),
+        case("chain-cycle", (4, 41, "bml.constraints_conflict"),
+             '<faceLexeme id="a" lexeme="RAISE_BROWS" start="c:end"/>',
+             '<faceLexeme id="b" lexeme="RAISE_BROWS" start="a:end"/>',
+             '<faceLexeme id="c" lexeme="RAISE_BROWS" start="b:end"/>'),
+    ]
+
+
 # Every generator of cases: CTest runs each group as one test (`groups`), which builds only its own
 # group's inputs, not the megabytes of every other group's.
 GROUPS = (not_a_file_cases, depth_cases, cycle_cases, huge_cases, number_cases, truncation_cases,
           junk_cases, wrong_result_cases, diagnostic_cases, batch_cases, csv_cases, speech_cases,
           output_cases, intent_cases, speech_placed_cases, smil_cases, smartbody_cases,
-          video_length_cases, no_audio_cases, batch_placed_cases, bml_sequence_cases)
+          video_length_cases, no_audio_cases, batch_placed_cases, bml_sequence_cases, bml_value_cases)
 
 
 def all_cases(group=None):
@@ -1043,7 +1078,7 @@ def write_case(case, folder):
 
 
 ERROR_PLACED = re.compile(r"^(?P<file>[^\n]+?):(?:(?P<line>\d+):(?P<col>\d+)| byte (?P<byte>\d+)): "
-                          r"(?P<severity>error|warning): ", re.M)
+                          r"(?P<severity>error|warning)(?:\[[a-z0-9_.]+\])?: ", re.M)  # -v shows the code
 ERROR_NAMED = re.compile(r"^(?P<file>[^\n:][^\n]*?): (?:[^\n]*?: )?error: ", re.M)
 SANITIZER = re.compile(r"runtime error:|AddressSanitizer|LeakSanitizer|UndefinedBehaviorSanitizer")
 

@@ -89,6 +89,19 @@ TEST(ReaderTimelines, BmlSequence) {
     expect_program_dump(fs::path(input).extension() == ".bml" ? "bml" : "bmlseq", input);
 }
 
+// BML 1.0 reference documents (saiba/OpenBMLParser's tests, docs/bml.md): a chain of offsets
+// (h1 to h4 at 4, 6, 8 and 10 s, as the document's comment requires), a nod held from 3 to 5 s with
+// a gesture at its stroke (timing only), a gaze straight ahead ready at 3 s and ending at 10 s.
+TEST(ReaderTimelines, Bml10Reference) {
+  for (const char* input :
+       {"corpus/bml/saiba__OpenBMLParser/testoffsetchain.xml", "corpus/bml/saiba__OpenBMLParser/testnodandbeat.xml",
+        "corpus/bml/saiba__OpenBMLParser/testgazereadytimed.xml"})
+    expect_program_dump("bml", input);
+}
+
+// SmartBody (docs/bml.md, "SmartBody"): recorded speech's lips rows as one viseme track.
+TEST(ReaderTimelines, BmlSmartBody) { expect_program_dump("bml", "corpus/bml/worldforge__smartbody/good.bml"); }
+
 TEST(ReaderTimelines, Fap) {
   for (const char* input : {"corpus/examples/fap/greta-lips.fap", "corpus/examples/fap/semaine-stamps.fap",
                             "corpus/examples/fap/vreng-joy.fap", "corpus/examples/xmto/parts/blink.fap"}) {

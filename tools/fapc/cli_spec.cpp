@@ -102,7 +102,9 @@ const std::vector<OptionSpec> kOptions = {
     O{"profile", 0, "FILE", "the profile that maps script targets to FAPs (docs/profiles.md)", FAPC_CONVERTERS, false,
       VC::file}
         .reads(),
-    O{"lexicon", 0, "FILE", "the behaviour lexicon FML-APML and APML intentions are read by (docs/intentions.md)",
+    O{"lexicon", 0, "FILE",
+      "the behaviour lexicon FML-APML and APML intentions, BML face lexemes and Greta references are read by "
+      "(docs/intentions.md, docs/bml.md)",
       FAPC_CONVERTERS, false, VC::file}
         .reads(),
     O{"event", 0, "NAME=VALUE", "set an FML event (excl branches, loops; docs/fml.md)", FAPC_CONVERTERS, true}.reads(),

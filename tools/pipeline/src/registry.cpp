@@ -107,19 +107,22 @@ Registry built_in() {
                   script_options({"event", "lexicon", "voice", "speech-rate", "max-speech-text", "max-speech-seconds",
                                   "max-audio-samples", "max-decompressed-bytes"})));
   r.add(described(builtin::bml_input(), "a BML document: behaviours placed by their sync constraints, speech",
-                  script_options({"voice", "speech-rate", "max-audio-samples"})));
-  r.add(described(builtin::bml_sequence_input(),
-                  "BML documents given in order, placed by their composition (docs/bml.md)",
-                  script_options({"voice", "speech-rate", "max-audio-samples"})));
+                  script_options({"lexicon", "voice", "speech-rate", "max-speech-text", "max-speech-seconds",
+                                  "max-audio-samples"})));
+  r.add(described(
+      builtin::bml_sequence_input(), "BML documents given in order, placed by their composition (docs/bml.md)",
+      script_options({"voice", "speech-rate", "max-speech-text", "max-speech-seconds", "max-audio-samples"})));
   // What the rows it hands documents to read (tests/command/option_rows_test.cpp keeps it so).
   r.add(described(builtin::xml_input(),
                   "an .xml document read by its root: BML, FML, XMT-Omega, FML-APML, APML or SMIL-Agent",
                   script_options({"event", "lexicon", "voice", "speech-rate", "max-speech-text", "max-speech-seconds",
                                   "max-audio-samples"})));
   r.add(described(builtin::fml_apml_input(), "Greta's FML-APML: intentions on a speech's marks, through the lexicon",
-                  script_options({"lexicon", "voice", "speech-rate", "max-audio-samples"})));
+                  script_options({"lexicon", "voice", "speech-rate", "max-speech-text", "max-speech-seconds",
+                                  "max-audio-samples"})));
   r.add(described(builtin::apml_input(), "APML: intentions marked up over spoken text, through the lexicon",
-                  script_options({"lexicon", "voice", "speech-rate", "max-audio-samples"})));
+                  script_options({"lexicon", "voice", "speech-rate", "max-speech-text", "max-speech-seconds",
+                                  "max-audio-samples"})));
   r.add(described(
       builtin::smil_input(), "an Xface SMIL-Agent script: speech with marks, affects, eye and head actions",
       script_options({"speech-rate", "voice", "max-speech-text", "max-speech-seconds", "max-audio-samples"})));

@@ -1,9 +1,11 @@
 // .bml as an input: BML blocks (docs/bml.md). Speech is spoken as FML talk is (--voice,
-// --speech-rate); --max-runs bounds the behaviours.
+// --speech-rate); --max-runs bounds the behaviours; --lexicon draws the face lexemes and Greta
+// references it names.
 #include "fapc/bml/bml.hpp"
 #include "fapc/pipeline/registry.hpp"
 #include "reader_options.hpp"
 #include "timeline_input.hpp"
+#include "user_lexicon.hpp"
 
 namespace fapc::pipeline::builtin {
 
@@ -32,8 +34,11 @@ nlohmann::ordered_json facts_of(const bml::BmlDocument& document) {
 }
 
 Result<Loaded> load_bml(const std::string& path, const ConvertOptions& options) {
+  Result<std::optional<vocabulary::BehaviourLexicon>> lexicon = user_lexicon(options);
+  if (!lexicon) return lexicon.error();
+  const vocabulary::BehaviourLexicon* user = *lexicon ? &**lexicon : nullptr;
   return load_script(
-      path, options, [&](const Profile&) { return bml::load_bml(path, reader_options(options)); }, facts_of);
+      path, options, [&](const Profile&) { return bml::load_bml(path, reader_options(options), user); }, facts_of);
 }
 
 Result<Loaded> load_bml_sequence(const std::string& path, const ConvertOptions& options) {

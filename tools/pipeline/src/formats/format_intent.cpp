@@ -3,11 +3,11 @@
 // reach these readers by their root element (format_xml.cpp).
 #include <optional>
 
-#include "fapc/codec/file_io.hpp"
 #include "fapc/intent/intent.hpp"
 #include "fapc/pipeline/registry.hpp"
 #include "reader_options.hpp"
 #include "timeline_input.hpp"
+#include "user_lexicon.hpp"
 
 namespace fapc::pipeline::builtin {
 
@@ -27,17 +27,6 @@ nlohmann::ordered_json facts_of(const intent::IntentDocument& document, const st
 }
 
 using Reader = Result<intent::IntentDocument> (*)(const std::string&, const intent::IntentOptions&);
-
-// The user's lexicon (--lexicon) over fapc's own, or fapc's alone.
-Result<std::optional<vocabulary::BehaviourLexicon>> user_lexicon(const ConvertOptions& options) {
-  if (!options.lexicon) return std::optional<vocabulary::BehaviourLexicon>{};
-  const auto source = SourceText::open(*options.lexicon, options.limits);
-  if (!source) return source.error();
-  Result<vocabulary::BehaviourLexicon> parsed = vocabulary::parse_behaviour_lexicon(source->bytes(), *options.lexicon);
-  if (!parsed) return parsed.error();
-  parsed->base = &vocabulary::bundled_behaviour_lexicon();  // what the file does not name
-  return std::optional<vocabulary::BehaviourLexicon>(std::move(*parsed));
-}
 
 Result<Loaded> load_with(Reader read, const std::string& path, const ConvertOptions& options) {
   Result<std::optional<vocabulary::BehaviourLexicon>> lexicon = user_lexicon(options);

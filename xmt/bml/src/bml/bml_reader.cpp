@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -72,15 +73,17 @@ struct Pending {
   double a_offset = 0;           // a's own offset: t(a) + a_offset ... (constraints)
   bool reversed = false;         // at_least the other way round (before)
   bool self = false;             // b is this behaviour's own start (Greta's times within a behaviour)
-  int label = 0;
-  const xmlNode* node = nullptr;
-  std::string attribute;
+  int label = 0;                 // also where errors about the relation are placed (no node is kept: a streamed
+                                 // document frees each behaviour once read)
 };
 
 class BmlReader {
  public:
-  BmlReader(const xml::XmlDocument& doc, const ReaderOptions& options, EarlierBlocks* earlier = nullptr)
-      : doc_(doc), options_(options), once_(out_.warnings), earlier_(earlier) {}
+  // `owner`, when given, is the document's to free: its tree goes once the block is read, before
+  // the clips are made (the nodes are no longer needed; the peak memory is one of them, not both).
+  BmlReader(const xml::XmlDocument& doc, const ReaderOptions& options, EarlierBlocks* earlier = nullptr,
+            xml::XmlDocument* owner = nullptr, const vocabulary::BehaviourLexicon* lexicon = nullptr)
+      : doc_(doc), options_(options), once_(out_.warnings), earlier_(earlier), owner_(owner), lexicon_(lexicon) {}
 
   // `root`: the document's root, or a bml element inside another language's document (FML-APML's
   // bml part), whose parser warnings that document's reader reports itself.
@@ -90,9 +93,16 @@ class BmlReader {
     if (xml::local_name(root) != "bml")
       return doc_.error(codes::bml::not_bml, root,
                         "the root element is <" + std::string(xml::local_name(root)) + ">, not a BML <bml> block");
+    if (doc_.streamed() && xml::namespace_uri(root) != kBml10) {
+      // The other dialects are told by what the block holds (dialect_of looks through it first):
+      // read whole (they are the small documents of planners and players).
+      doc_.abandon_stream();
+      return make_error(codes::bml::not_bml, doc_.where(root), "read whole");  // not shown: read again, parsed
+    }
     out_.dialect = dialect_of(root);
     Block block;
     if (!read_block(root, block)) return *error_;
+    if (owner_ != nullptr) owner_->release_tree();
     if (!schedule(block, origin_)) return *error_;
     once_.finish();
     if (whole_document)
@@ -106,13 +116,17 @@ class BmlReader {
   BmlDocument out_;
   xml::OncePerName once_;
   std::optional<Diagnostic> error_;
-  std::vector<ConstraintSource> sources_;
+  // In deques, as the pending relations: grown by chunks, never copied whole (a streamed block's
+  // length is not known ahead, and each copy of a vector of 10^5 took fresh pages).
+  std::deque<ConstraintSource> sources_;
   bool warned_no_engine_ = false;
-  std::set<const xmlNode*> overruled_;  // recorded speeches whose placeholder times were said
+  std::set<std::size_t> overruled_;  // recorded speeches (by index) whose placeholder times were said
   std::int64_t counted_ = 0;
   // A block of a sequence: the blocks before it, and where its composition placed it.
   EarlierBlocks* earlier_ = nullptr;
   double origin_ = 0;
+  xml::XmlDocument* owner_ = nullptr;
+  const vocabulary::BehaviourLexicon* lexicon_ = nullptr;  // the user's (--lexicon), or none
 
   // The dialect (docs/bml.md, "Dialects"): BML 1.0 by its namespace; Greta/SEMAINE by its
   // gretabml descriptions or the older mindmakers namespace; SmartBody by its lips, curves and
@@ -135,6 +149,12 @@ class BmlReader {
     if (smartbody) return "SmartBody";
     if (greta) return "Greta/SEMAINE";
     return "BML (no namespace)";
+  }
+
+  // An error at the reference a relation was read from.
+  Diagnostic error_at(ErrorCode code, const Pending& at, std::string message) const {
+    const Location& where = sources_[static_cast<std::size_t>(at.label)].where;
+    return make_error(code, where, std::move(message), doc_.line_text(where.line));
   }
 
   bool fail(Diagnostic d) {
@@ -179,11 +199,22 @@ class BmlReader {
     out_.block_starts.push_back(origin_);
     out_.blocks.push_back(block.id);
     out_.characters.push_back(block.character);
-    std::vector<Pending> pending;
+    std::deque<Pending> pending;
     std::vector<const xmlNode*> constraints;
-    for (const xmlNode* child : doc_.children(root)) {
+    // Reserved when the count is known (a parsed document), so that no vector is copied as it grows.
+    const std::size_t children = doc_.child_count(root);
+    block.behaviours.reserve(children);
+    block.timing.reserve(children);
+    // Streamed, each behaviour's subtree is freed once read: nothing keeps a node.
+    for (const xmlNode* child : doc_.children(root, {}, doc_.streamed())) {
       const std::string_view name = xml::local_name(child);
       if (name == "constraint" || name == "required") {
+        if (doc_.streamed()) {
+          // Constraints are read after every behaviour (their labels follow the behaviours', in
+          // the order errors are named by): their nodes must stay, so the document is read whole.
+          doc_.abandon_stream();
+          return fail(make_error(codes::bml::not_bml, doc_.where(child), "read whole"));  // not shown
+        }
         constraints.push_back(child);
         continue;
       }
@@ -225,7 +256,7 @@ class BmlReader {
 
   // ---- behaviours -------------------------------------------------------------------------
 
-  bool read_behaviour(const xmlNode* node, Block& block, std::vector<Pending>& pending) {
+  bool read_behaviour(const xmlNode* node, Block& block, std::deque<Pending>& pending) {
     const std::string_view name = xml::local_name(node);
     Behaviour b;
     b.element = std::string(name);
@@ -253,6 +284,7 @@ class BmlReader {
       b.shift = name == "faceShift";
       b.lexeme = xml::attribute(node, "lexeme").value_or("");
       if (b.lexeme.empty()) b.kind = BehaviourKind::not_drawn;
+      user_lexeme(b);
     } else if (name == "faceFacs") {
       if (!read_facs(node, b)) return false;
     } else if (name == "gaze" || name == "gazeShift") {
@@ -314,7 +346,8 @@ class BmlReader {
       std::string why;
       const auto ref = parse_sync_ref(*value, why);
       if (!ref) return fail(doc_.error(codes::bml::bad_reference, node, attribute, why));
-      if (p != kStart && b.speech && b.speech->recorded && overruled_by_recording(node, b, timing, p, attribute, *ref))
+      if (p != kStart && b.speech && b.speech->recorded &&
+          overruled_by_recording(node, index, b, timing, p, attribute, *ref))
         continue;
       Pending p_;
       p_.behaviour = index;
@@ -332,8 +365,6 @@ class BmlReader {
                                codes::bml::time_from_start));
       }
       p_.label = label(node, attribute, b.id + " " + attribute + "=\"" + std::string(xml::trim(*value)) + "\"");
-      p_.node = node;
-      p_.attribute = attribute;
       pending.push_back(std::move(p_));
     }
     if (name == "curves" && pending.size() == timed_before) time_curves(node, b, index, pending);
@@ -344,7 +375,7 @@ class BmlReader {
 
   // FaceFX curves with no timing attributes last from their first key to their last (times from
   // the utterance's start, which NVBG puts at the block's): their own timing, not a gesture's default.
-  void time_curves(const xmlNode* node, const Behaviour& b, std::uint32_t index, std::vector<Pending>& pending) {
+  void time_curves(const xmlNode* node, const Behaviour& b, std::uint32_t index, std::deque<Pending>& pending) {
     const auto extent = curves_extent(doc_, node);
     if (!extent) return;
     for (const auto& [point, seconds] : {std::pair{kStart, extent->first}, std::pair{kEnd, extent->second}}) {
@@ -354,7 +385,6 @@ class BmlReader {
       p.b.absolute = true;
       p.b.offset = seconds;
       p.label = label(node, "", b.id + " " + kPointNames[point] + " at its keys' " + format_seconds(seconds));
-      p.node = node;
       pending.push_back(std::move(p));
     }
   }
@@ -362,15 +392,15 @@ class BmlReader {
   // NVBG writes placeholder times on recorded speech (ready="0.1" ... end="0.2" for a second of
   // words): a plain time that disagrees with the recording (by more than a millisecond) is not
   // read; the recording wins, said once per speech at the first such attribute (docs/bml.md).
-  bool overruled_by_recording(const xmlNode* node, const Behaviour& b, const SolverBehaviour& timing, std::uint32_t p,
-                              const char* attribute, const SyncRef& ref) {
+  bool overruled_by_recording(const xmlNode* node, std::size_t index, const Behaviour& b, const SolverBehaviour& timing,
+                              std::uint32_t p, const char* attribute, const SyncRef& ref) {
     if (!ref.absolute) return false;  // a reference is a constraint of the user's: the solver checks it
     std::optional<double> start = 0.0;
     if (const auto text = xml::attribute(node, "start")) start = parse_seconds(*text);
     if (!start) return false;  // the start is itself a reference: the solver checks the plain time
     const double recorded = *start + timing.defaults[p];
     if (std::abs(ref.offset - recorded) <= 1e-3) return false;
-    if (overruled_.insert(node).second)
+    if (overruled_.insert(index).second)
       out_.warnings.push_back(with_code(
           doc_.warning(node, attribute,
                        std::string(attribute) + "=\"" + std::string(xml::trim(*xml::attribute(node, attribute))) +
@@ -382,10 +412,21 @@ class BmlReader {
     return true;
   }
 
+  // A lexeme the user's lexicon names (its faceLexeme rows) is drawn by those rows over the face's
+  // span, as a Greta reference's rows are, instead of through bml_lexemes.tsv.
+  void user_lexeme(Behaviour& b) const {
+    if (lexicon_ == nullptr || b.lexeme.empty()) return;
+    std::vector<const vocabulary::LexiconRow*> rows = lexicon_->rows_for("faceLexeme", b.lexeme);
+    if (rows.empty()) return;
+    b.kind = BehaviourKind::lexicon_rows;
+    b.row_shares.assign(rows.size(), 1.0);
+    b.rows = std::move(rows);
+  }
+
   // A face, head or gaze with a gretabml reference becomes that reference's rows; false (and
   // error_ unset) when it has none.
   bool greta_reference(const xmlNode* node, Behaviour& b) {
-    Result<bool> read = read_greta_reference(doc_, node, b, once_);
+    Result<bool> read = read_greta_reference(doc_, node, b, once_, lexicon_);
     if (!read) return !fail(read.error());
     return *read;
   }
@@ -511,7 +552,7 @@ class BmlReader {
 
   // ---- constraints ------------------------------------------------------------------------
 
-  bool read_constraint(const xmlNode* node, Block& block, std::vector<Pending>& pending) {
+  bool read_constraint(const xmlNode* node, Block& block, std::deque<Pending>& pending) {
     for (const xmlNode* child : doc_.children(node)) {
       const std::string_view name = xml::local_name(child);
       if (name == "constraint") {
@@ -557,8 +598,6 @@ class BmlReader {
         p.reversed = name == "before";
         p.label = label(sync, "ref",
                         std::string(name) + " " + std::string(xml::trim(*ref_text)) + " with " + describe(*anchor));
-        p.node = sync;
-        p.attribute = "ref";
         pending.push_back(std::move(p));
       }
       (void)anchor_node;
@@ -581,15 +620,15 @@ class BmlReader {
   std::optional<PointRef> point_of(const Block& block, const std::unordered_map<std::string, std::uint32_t>& ids,
                                    const SyncRef& ref, const Pending& at) {
     if (!ref.block.empty() && ref.block != block.id) {
-      fail(doc_.error(
-          codes::bml::unknown_reference, at.node, at.attribute,
+      fail(error_at(
+          codes::bml::unknown_reference, at,
           "'" + describe(ref) + "' names the block '" + ref.block + "'; this document's block is '" + block.id + "'"));
       return std::nullopt;
     }
     const auto found = ids.find(ref.behaviour);
     if (found == ids.end()) {
-      fail(doc_.error(codes::bml::unknown_reference, at.node, at.attribute,
-                      "'" + describe(ref) + "': no behaviour '" + ref.behaviour + "' in block '" + block.id + "'"));
+      fail(error_at(codes::bml::unknown_reference, at,
+                    "'" + describe(ref) + "': no behaviour '" + ref.behaviour + "' in block '" + block.id + "'"));
       return std::nullopt;
     }
     const Behaviour& b = block.behaviours[found->second];
@@ -600,14 +639,14 @@ class BmlReader {
       if (mark != ids_of.end())
         return PointRef{found->second, kStandardPoints + static_cast<std::uint32_t>(mark - ids_of.begin())};
     }
-    fail(doc_.error(codes::bml::unknown_reference, at.node, at.attribute,
-                    "'" + describe(ref) + "': " + b.element + " '" + b.id + "' has no sync point '" + ref.sync +
-                        "' (start, ready, strokeStart, stroke, strokeEnd, relax, end" +
-                        (b.speech ? ", or one of its sync marks)" : ")")));
+    fail(error_at(codes::bml::unknown_reference, at,
+                  "'" + describe(ref) + "': " + b.element + " '" + b.id + "' has no sync point '" + ref.sync +
+                      "' (start, ready, strokeStart, stroke, strokeEnd, relax, end" +
+                      (b.speech ? ", or one of its sync marks)" : ")")));
     return std::nullopt;
   }
 
-  bool resolve(Block& block, const std::vector<Pending>& pending) {
+  bool resolve(Block& block, const std::deque<Pending>& pending) {
     std::unordered_map<std::string, std::uint32_t> ids;
     for (std::uint32_t i = 0; i < block.behaviours.size(); ++i) {
       const Behaviour& b = block.behaviours[i];
@@ -643,8 +682,8 @@ class BmlReader {
         // <synchronize> may hold a plain time: the others are put at it.
         if (mine.absolute && !other.absolute && p.kind == Relation::Kind::equal) std::swap(mine, other);
         if (mine.absolute)
-          return fail(doc_.error(codes::bml::plain_times_compared, p.node, p.attribute,
-                                 "this constraint compares two plain times: name a behaviour's sync point"));
+          return fail(error_at(codes::bml::plain_times_compared, p,
+                               "this constraint compares two plain times: name a behaviour's sync point"));
         const auto point = point_of(block, ids, mine, p);
         if (!point) return false;
         a = *point;
@@ -661,8 +700,8 @@ class BmlReader {
       double offset = other.offset - a_offset;
       if (p.reversed) {  // before: t(a) + a_offset <= t(b) + b.offset -> t(b) >= t(a) + (a_offset - b.offset)
         if (!b) {
-          return fail(doc_.error(codes::bml::before_plain_time, p.node, p.attribute,
-                                 "before a plain time is not read: give the time as the sync point's own"));
+          return fail(error_at(codes::bml::before_plain_time, p,
+                               "before a plain time is not read: give the time as the sync point's own"));
         }
         r.a = *b;
         r.b = a;
@@ -686,26 +725,26 @@ class BmlReader {
     if (found == earlier_->placed.end()) {
       std::string known;
       for (const auto& [id, behaviours] : earlier_->placed) known += (known.empty() ? "'" : ", '") + id + "'";
-      return fail(doc_.error(codes::bml::unknown_reference, at.node, at.attribute,
-                             "'" + describe(ref) + "' names the block '" + ref.block +
-                                 "', which is not an earlier block of the sequence (" +
-                                 (known.empty() ? std::string("there is none") : "those are " + known) +
-                                 "; this block is '" + block.id + "')"));
+      return fail(error_at(codes::bml::unknown_reference, at,
+                           "'" + describe(ref) + "' names the block '" + ref.block +
+                               "', which is not an earlier block of the sequence (" +
+                               (known.empty() ? std::string("there is none") : "those are " + known) +
+                               "; this block is '" + block.id + "')"));
     }
     const auto behaviour = found->second.find(ref.behaviour);
     if (behaviour == found->second.end())
       return fail(
-          doc_.error(codes::bml::unknown_reference, at.node, at.attribute,
-                     "'" + describe(ref) + "': no behaviour '" + ref.behaviour + "' in block '" + ref.block + "'"));
+          error_at(codes::bml::unknown_reference, at,
+                   "'" + describe(ref) + "': no behaviour '" + ref.behaviour + "' in block '" + ref.block + "'"));
     const PlacedPoints& placed = behaviour->second;
     std::optional<double> time;
     if (const auto p = standard_point(ref.sync)) time = placed.points[*p];
     for (std::size_t m = 0; !time && m < placed.mark_ids.size(); ++m)
       if (placed.mark_ids[m] == ref.sync) time = placed.marks[m];
     if (!time)
-      return fail(doc_.error(codes::bml::unknown_reference, at.node, at.attribute,
-                             "'" + describe(ref) + "': '" + ref.behaviour + "' of block '" + ref.block +
-                                 "' has no sync point '" + ref.sync + "'"));
+      return fail(error_at(codes::bml::unknown_reference, at,
+                           "'" + describe(ref) + "': '" + ref.behaviour + "' of block '" + ref.block +
+                               "' has no sync point '" + ref.sync + "'"));
     ref.absolute = true;
     ref.offset = *time + ref.offset - origin_;
     ref.block.clear();
@@ -793,13 +832,26 @@ class BmlReader {
 
 }  // namespace
 
-Result<BmlDocument> read_bml(std::string_view text, const std::string& file_name, const ReaderOptions& options) {
+namespace {
+
+// A BML 1.0 block of behaviours alone is streamed (XmlDocument::stream): its tree never stands
+// whole, each behaviour freed once read; anything else is read from a whole parse.
+Result<BmlDocument> read_bml_text(std::string_view text, const std::string& file_name, const ReaderOptions& options,
+                                  const vocabulary::BehaviourLexicon* lexicon,
+                                  const xml::XmlDocument::TextReleaser& release_text) {
   if (const Status depth = xml::check_element_depth(text, file_name); !depth) return depth.error();
   // Only speech text is read; elsewhere white space is dropped.
   const xml::BlankText blank_text{false, {"text", "speech"}};
-  Result<xml::XmlDocument> doc = xml::XmlDocument::parse(text, file_name, blank_text);
-  if (!doc) return doc.error();
-  return BmlReader(*doc, options).run(doc->root(), true);
+  return xml::read_streamed_or_whole(text, file_name, blank_text, release_text, [&](xml::XmlDocument& doc) {
+    return BmlReader(doc, options, nullptr, &doc, lexicon).run(doc.root(), true);
+  });
+}
+
+}  // namespace
+
+Result<BmlDocument> read_bml(std::string_view text, const std::string& file_name, const ReaderOptions& options,
+                             const vocabulary::BehaviourLexicon* lexicon) {
+  return read_bml_text(text, file_name, options, lexicon, {});
 }
 
 Result<BmlDocument> read_bml_block(const xml::XmlDocument& doc, const xmlNode* block, const ReaderOptions& options) {
@@ -811,10 +863,11 @@ Result<BmlDocument> read_sequenced_block(const xml::XmlDocument& doc, const Read
   return BmlReader(doc, options, &earlier).run(doc.root(), true);
 }
 
-Result<BmlDocument> load_bml(const std::string& path, const ReaderOptions& options) {
+Result<BmlDocument> load_bml(const std::string& path, const ReaderOptions& options,
+                             const vocabulary::BehaviourLexicon* lexicon) {
   const auto source = SourceText::open(path);
   if (!source) return source.error();
-  return read_bml(source->bytes(), path, options);
+  return read_bml_text(source->bytes(), path, options, lexicon, [&](std::size_t offset) { source->release(offset); });
 }
 
 }  // namespace fapc::bml

@@ -19,6 +19,9 @@ std::map<int, double> unit_faps(int au, char side, double weight, std::vector<in
 // The standard lexemes of bml_lexemes.tsv, in its order.
 std::vector<std::string> standard_lexemes();
 
+// How many clips lower_face makes of a face (a unit outside the cached table aside: 0).
+std::size_t face_clip_count(const Behaviour& b);
+
 void lower_face(const Behaviour& b, const std::array<double, kStandardPoints>& t, double origin, Timeline& out,
                 Diagnostics& warnings);
 

@@ -34,17 +34,28 @@ std::string lower(std::string_view s) {
 
 // CLASS=NAME through the intention lexicon: the name, then the name without its trailing number
 // (Greta numbers variants of one display: fear1 ... fear4).
-std::vector<const LexiconRow*> intention_rows(std::string_view intention, std::string name) {
-  const BehaviourLexicon& lexicon = vocabulary::bundled_behaviour_lexicon();
-  std::vector<const LexiconRow*> rows = lexicon.rows_for(intention, name);
+// The user's lexicon (when given) first, then fapc's.
+std::vector<const LexiconRow*> first_rows(const BehaviourLexicon* user, const BehaviourLexicon& own,
+                                          std::string_view intention, std::string_view name) {
+  if (user != nullptr) {
+    std::vector<const LexiconRow*> rows = user->rows_for(intention, name);
+    if (!rows.empty()) return rows;
+  }
+  return own.rows_for(intention, name);
+}
+
+std::vector<const LexiconRow*> intention_rows(const BehaviourLexicon* user, std::string_view intention,
+                                              std::string name) {
+  const BehaviourLexicon& own = vocabulary::bundled_behaviour_lexicon();
+  std::vector<const LexiconRow*> rows = first_rows(user, own, intention, name);
   if (!rows.empty()) return rows;
   while (!name.empty() && std::isdigit(static_cast<unsigned char>(name.back()))) name.pop_back();
-  return name.empty() ? rows : lexicon.rows_for(intention, name);
+  return name.empty() ? rows : first_rows(user, own, intention, name);
 }
 
 // complex:A_and_B shows both halves at half their amount; complex:A_maskedby_B shows the mask B
 // whole and the felt A leaking through at 0.3 (docs/bml.md, "Greta references").
-Rows complex_rows(std::string_view intention, std::string_view expression) {
+Rows complex_rows(const BehaviourLexicon* user, std::string_view intention, std::string_view expression) {
   Rows out;
   for (const auto& [joint, first_share, second_share] :
        {std::tuple{std::string_view("_maskedby_"), 0.3, 1.0}, std::tuple{std::string_view("_and_"), 0.5, 0.5}}) {
@@ -53,8 +64,8 @@ Rows complex_rows(std::string_view intention, std::string_view expression) {
     if (at == std::string::npos) continue;
     const std::string first = lowered.substr(0, at);
     const std::string second = lowered.substr(at + joint.size());
-    const auto a = intention_rows(intention, first);
-    const auto b = intention_rows(intention, second);
+    const auto a = intention_rows(user, intention, first);
+    const auto b = intention_rows(user, intention, second);
     if (a.empty() || b.empty()) {
       out.missing = a.empty() ? first : second;
       return Rows{{}, {}, out.missing};
@@ -67,17 +78,17 @@ Rows complex_rows(std::string_view intention, std::string_view expression) {
   return out;
 }
 
-Rows rows_for(std::string_view element, std::string_view name) {
+Rows rows_for(const BehaviourLexicon* user, std::string_view element, std::string_view name) {
   Rows out;
   const std::string modality = element.starts_with("face") ? "face" : element.starts_with("gaze") ? "gaze" : "head";
-  add(out, vocabulary::bundled_greta_references().rows_for(modality, name), 1.0);
+  add(out, first_rows(user, vocabulary::bundled_greta_references(), modality, name), 1.0);
   if (!out.rows.empty() || modality != "face") return out;
   const std::size_t equals = name.find('=');
   if (equals == std::string_view::npos) return out;
   const std::string_view intention = name.substr(0, equals);
   const std::string_view value = name.substr(equals + 1);
-  if (value.starts_with("complex:")) return complex_rows(intention, value.substr(8));
-  add(out, intention_rows(intention, std::string(value)), 1.0);
+  if (value.starts_with("complex:")) return complex_rows(user, intention, value.substr(8));
+  add(out, intention_rows(user, intention, std::string(value)), 1.0);
   return out;
 }
 
@@ -91,7 +102,7 @@ struct Expressivity {
 }  // namespace
 
 Result<bool> read_greta_reference(const xml::XmlDocument& doc, const xmlNode* node, Behaviour& b,
-                                  xml::OncePerName& once) {
+                                  xml::OncePerName& once, const BehaviourLexicon* user) {
   const xmlNode* description = nullptr;
   const xmlNode* reference = nullptr;
   for (const xmlNode* child : doc.children(node))
@@ -150,7 +161,7 @@ Result<bool> read_greta_reference(const xml::XmlDocument& doc, const xmlNode* no
       once.report("expressivity " + std::string(parameter), std::move(w));
     }
 
-  Rows found = rows_for(b.element, name);
+  Rows found = rows_for(user, b.element, name);
   if (found.rows.empty()) {
     b.kind = BehaviourKind::not_drawn;
     Diagnostic w = doc.warning(

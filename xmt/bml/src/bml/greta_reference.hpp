@@ -13,8 +13,9 @@ namespace fapc::bml {
 // (BehaviourKind::lexicon_rows), scaled by the expressivity; an unknown name keeps the span and
 // draws nothing (warning bml.unknown_reference, at the reference, once per name). False when there
 // is no reference (the element is read as BML). Errors: an intensity or parameter that is not a
-// number in its range, at its element.
+// number in its range, at its element. `user`, when given (--lexicon), is looked up first: its
+// face, head and gaze rows name references, its other rows the intentions of CLASS=NAME.
 Result<bool> read_greta_reference(const xml::XmlDocument& doc, const xmlNode* node, Behaviour& b,
-                                  xml::OncePerName& once);
+                                  xml::OncePerName& once, const vocabulary::BehaviourLexicon* user = nullptr);
 
 }  // namespace fapc::bml

@@ -17,6 +17,7 @@
 #include "fapc/transcoder/reader_options.hpp"
 #include "fapc/transcoder/speech.hpp"
 #include "fapc/transcoder/timeline.hpp"
+#include "fapc/vocabulary/behaviour_lexicon.hpp"
 
 namespace fapc::bml {
 
@@ -57,9 +58,13 @@ struct BmlDocument {
 // Errors (file:line:col): not well-formed XML, another root than bml, malformed sync references,
 // references to unknown behaviours or sync points, constraints that cannot hold together (named
 // with the chain of constraints that forces the contradiction), a behaviour that would start
-// before its block.
-Result<BmlDocument> read_bml(std::string_view text, const std::string& file_name, const ReaderOptions& options = {});
-Result<BmlDocument> load_bml(const std::string& path, const ReaderOptions& options = {});
+// before its block. `lexicon`, when given, is a user's behaviour lexicon (--lexicon, docs/bml.md
+// "A lexicon of your own"): its faceLexeme rows draw the lexemes they name, its face, head and
+// gaze rows the Greta references they name, before fapc's own tables.
+Result<BmlDocument> read_bml(std::string_view text, const std::string& file_name, const ReaderOptions& options = {},
+                             const vocabulary::BehaviourLexicon* lexicon = nullptr);
+Result<BmlDocument> load_bml(const std::string& path, const ReaderOptions& options = {},
+                             const vocabulary::BehaviourLexicon* lexicon = nullptr);
 
 // Several BML documents given in order, as a realizer receives blocks (docs/bml.md, "Several
 // blocks"): `list` holds one document per line (`[at SECONDS] PATH`, `#` comments), each path
