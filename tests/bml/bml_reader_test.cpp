@@ -180,6 +180,30 @@ TEST(BmlReader, TooManyBehavioursIsALimitNamingTheOption) {
   EXPECT_NE(d.error().message.find("--max-runs"), std::string::npos);
 }
 
+// All of a document's speech counts against the speech limits, as FML's does: each speech alone is
+// small, together they are over (docs/security.md).
+TEST(BmlReader, AllSpeechTogetherIsBoundedByTheSpeechLimits) {
+  const std::string two_speeches =
+      "<speech id=\"s1\"><text>hello there, how are you</text></speech>\n"
+      "<speech id=\"s2\" start=\"s1:end\"><text>fine, and you, my friend</text></speech>";
+  ReaderOptions options;
+  options.limits.max_speech_text_bytes = 40;
+  Result<BmlDocument> d = read_bml(block(two_speeches), "t.bml", options);
+  ASSERT_FALSE(d);
+  EXPECT_EQ(d.error().code, "limit.speech_text");
+  EXPECT_EQ(d.error().where.line, 3);  // the second speech, where the total passes the limit
+  EXPECT_NE(d.error().message.find("--max-speech-text"), std::string::npos);
+
+  options = ReaderOptions{};
+  options.limits.max_speech_seconds = 2;  // each speech alone is shorter, the two together longer
+  d = read_bml(block(two_speeches), "t.bml", options);
+  ASSERT_FALSE(d);
+  EXPECT_EQ(d.error().code, "limit.speech_seconds");
+  EXPECT_EQ(d.error().where.line, 3);
+
+  EXPECT_TRUE(read_bml(block(two_speeches), "t.bml", ReaderOptions{}));
+}
+
 TEST(BmlReader, DuplicateIdsAreAnError) {
   const Diagnostic e = read_error("<wait id=\"a\"/>\n<wait id=\"a\"/>");
   EXPECT_EQ(e.where.line, 3);

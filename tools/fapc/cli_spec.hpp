@@ -19,7 +19,7 @@ enum class Numeric { none, integer, decimal };
 // What an option changes, checked against the pipeline's rows (tests/command/option_rows_test.cpp):
 // `reading` options change how an input is read, and the rows of the inputs that read them name
 // them (`fapc formats`); given for an input whose row does not, they draw a warning
-// (cli.option_not_read). `writing` options change what an output holds; outputs' rows name them.
+// (format.option_not_read). `writing` options change what an output holds; outputs' rows name them.
 enum class OptionRole { command, reading, writing };
 
 struct OptionSpec {

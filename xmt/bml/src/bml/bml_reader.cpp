@@ -119,7 +119,7 @@ class BmlReader {
   // In deques, as the pending relations: grown by chunks, never copied whole (a streamed block's
   // length is not known ahead, and each copy of a vector of 10^5 took fresh pages).
   std::deque<ConstraintSource> sources_;
-  bool warned_no_engine_ = false;
+  SpeakingSoFar spoken_so_far_;      // the document's speech against the speech limits
   std::set<std::size_t> overruled_;  // recorded speeches (by index) whose placeholder times were said
   std::int64_t counted_ = 0;
   // A block of a sequence: the blocks before it, and where its composition placed it.
@@ -513,7 +513,7 @@ class BmlReader {
     MarkedText marked;
     collect_text(text_node != nullptr ? text_node : node, marked);
     if (error_) return false;
-    Result<SpokenText> spoken = speak(marked, options_, b.where, out_.warnings, warned_no_engine_);
+    Result<SpokenText> spoken = speak(marked, options_, b.where, out_.warnings, spoken_so_far_);
     if (!spoken) return fail(spoken.error());
     if (std::find(out_.languages.begin(), out_.languages.end(), options_.speech.language) == out_.languages.end())
       out_.languages.push_back(options_.speech.language);

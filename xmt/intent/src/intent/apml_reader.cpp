@@ -155,7 +155,7 @@ class ApmlReader : public DocumentReader {
   Result<IntentDocument> finish(const xmlNode* root) {
     const Location where = doc_.where(root);
     const ReaderOptions speech_options = this->speech_options(root);
-    bool warned = false;
+    bml::SpeakingSoFar so_far;
     std::vector<double> begins;
     std::vector<bml::SpokenText> spoken;
     double clock = 0;
@@ -168,7 +168,7 @@ class ApmlReader : public DocumentReader {
         spoken.push_back(std::move(silent));
         continue;
       }
-      Result<bml::SpokenText> said = bml::speak(s.text, speech_options, where, out_.warnings, warned);
+      Result<bml::SpokenText> said = bml::speak(s.text, speech_options, where, out_.warnings, so_far);
       if (!said) return said.error();
       const std::string& language = speech_options.speech.language;
       if (std::find(out_.languages.begin(), out_.languages.end(), language) == out_.languages.end())

@@ -129,7 +129,7 @@ class SmilReader {
   std::vector<std::pair<std::size_t, const xmlNode*>> anchored_;
   std::map<std::size_t, std::string> said_affects_;  // speech leaf -> its own affect attribute
   std::int64_t elements_ = 0;
-  bool warned_no_engine_ = false;
+  bml::SpeakingSoFar spoken_so_far_;
 
   Diagnostic with_line(Diagnostic d) const {
     if (d.source_line.empty() && d.where.file == doc_.file()) d.source_line = doc_.line_text(d.where.line);
@@ -535,8 +535,7 @@ class SmilReader {
   Status speak(SmilLeaf& leaf) {
     ReaderOptions options = options_;
     options.speech.language = leaf.language;
-    options.speech.max_seconds = std::min(options.speech.max_seconds, options_.limits.max_speech_seconds);
-    Result<bml::SpokenText> spoken = bml::speak(leaf.text, options, leaf.where, out_.warnings, warned_no_engine_);
+    Result<bml::SpokenText> spoken = bml::speak(leaf.text, options, leaf.where, out_.warnings, spoken_so_far_);
     if (!spoken) return with_line(spoken.error());
     if (options_.speech.synthesize &&
         std::find(out_.languages.begin(), out_.languages.end(), leaf.language) == out_.languages.end())
