@@ -36,11 +36,12 @@ Result<EmbeddedFmlMove> FmlReader::run_embedded(const xmlNode* node) {
 Result<FmlDocument> FmlReader::run(xml::XmlDocument* owner) {
   result_.warnings = doc_.warnings();
   const xmlNode* root = doc_.root();
-  if (const std::string other = other_format_name(doc_, root); !other.empty()) {
+  if (const OtherFormat other = other_format(doc_, root, options_.other_readers); !other.what.empty()) {
     return doc_.error(codes::fml::other_language, root,
-                      "this is " + other +
+                      "this is " + other.what +
                           ", not FML (the Arya-DiPaola Face Modeling Language, "
-                          "root fml with model and story): fapc does not read it");
+                          "root fml with model and story): " +
+                          other.reading);
   }
   if (xml::local_name(root) != "fml") {
     return doc_.error(
