@@ -12,6 +12,7 @@
 #include "fapc/smil/codes.hpp"
 #include "fapc/speech/codes.hpp"
 #include "fapc/transcoder/codes.hpp"
+#include "fapc/transcoder/timeline_codes.hpp"
 #include "fapc/vocabulary/codes.hpp"
 #include "fapc/xml/codes.hpp"
 #include "fapc/xmto/codes.hpp"
@@ -20,6 +21,7 @@ namespace fapc::pipeline {
 
 std::vector<CodeTable> code_tables() {
   return {{"fapc::codec", codes::codec_codes},
+          {"fapc::timeline", codes::timeline_codes},
           {"fapc::transcoder", codes::transcoder_codes},
           {"fapc::speech", codes::speech_codes},
           {"fapc::audio_codec", codes::audio_codec_codes},

@@ -9,7 +9,7 @@
 #include <limits>
 #include <sstream>
 
-#include "fapc/transcoder/codes.hpp"
+#include "fapc/transcoder/timeline_codes.hpp"
 
 namespace fapc {
 namespace {
