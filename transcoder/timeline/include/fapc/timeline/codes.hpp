@@ -4,6 +4,6 @@
 
 #include "fapc/codec/codes.hpp"  // the codes every library shares (io, limit)
 
-#define FAPC_CODES_FILE "fapc/transcoder/timeline_codes.def"
+#define FAPC_CODES_FILE "fapc/timeline/codes.def"
 #define FAPC_CODES_TABLE timeline_codes
 #include "fapc/codec/declare_codes.inc"
