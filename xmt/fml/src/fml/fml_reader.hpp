@@ -1,6 +1,6 @@
 // The FML reader's one class, its work split by concern over the files named below (the model,
-// the story's time containers, templates, repeat, the moves, talk, the limits); fml_words.cpp
-// holds the words FML values are written in. Private to the library: read_fml (fapc/fml/fml.hpp)
+// the story's time containers, templates, repeat, the moves, talk, the limits); fml_words.hpp
+// has the words FML values are written in. Private to the library: read_fml (fapc/fml/fml.hpp)
 // is its door.
 #pragma once
 
@@ -25,6 +25,7 @@
 #include "fml/embedded_fml.hpp"
 #include "fml/fml_timing.hpp"
 #include "fml/fml_tree.hpp"
+#include "fml/fml_words.hpp"
 
 namespace fapc::fml::reading {
 
@@ -34,18 +35,6 @@ using Kind = ScheduleNode::Kind;
 inline constexpr double kUnendedSeconds = 1e6;
 
 inline constexpr std::initializer_list<const char*> kTiming = {"begin", "duration", "dur", "end", "repeat"};
-
-// fml_words.cpp: the words and numbers of FML values.
-std::string trim(std::string_view s);
-std::optional<double> number(std::string_view text);
-std::string format_number(double v);
-std::string lower(std::string_view s);
-// Event values compare as numbers when both are ("1" and "1.0"), else as text.
-bool same_value(const std::string& a, const std::string& b);
-// expr types: FAP 2 expression numbers (fap_table.hpp), words of the paper and common variants.
-std::optional<int> expression_number(const std::string& type);
-// hdmv axes (docs/fml.md, "Moves"): 0 yaw, 1 pitch, 2 roll.
-std::optional<int> head_axis(const std::string& type);
 
 // The head's allowed range per axis, in degrees, from the model's range items.
 struct HeadLimits {

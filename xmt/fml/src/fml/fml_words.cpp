@@ -3,8 +3,11 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <map>
 
-#include "fml/fml_reader.hpp"
+#include "fml/fml_words.hpp"
+
+#include "fapc/xml/text.hpp"
 
 namespace fapc::fml::reading {
 

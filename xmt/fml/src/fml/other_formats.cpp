@@ -1,9 +1,9 @@
 #include "fml/other_formats.hpp"
 
-#include <algorithm>
 #include <array>
-#include <cctype>
 #include <string_view>
+
+#include "fml/fml_words.hpp"
 
 namespace fapc::fml {
 
@@ -20,18 +20,12 @@ std::string unread_format_name(std::string_view root) {
   return {};
 }
 
-std::string lower_case(std::string_view s) {
-  std::string out(s);
-  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return std::tolower(c); });
-  return out;
-}
-
 }  // namespace
 
 OtherFormat other_format(const xml::XmlDocument& doc, const xmlNode* root, const std::vector<OtherReader>& others) {
   const std::string_view name = xml::local_name(root);
   if (name != "fml") {
-    const std::string lower = lower_case(name);
+    const std::string lower = reading::lower(name);
     for (const OtherReader& other : others) {
       if (other.root == lower)
         return {"a " + other.kind + " document (root <" + std::string(name) + ">)",
