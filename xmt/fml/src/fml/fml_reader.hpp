@@ -34,6 +34,7 @@ using Kind = ScheduleNode::Kind;
 // The time an indefinite repeat is taken to fill when nothing ends it, to bound its runs.
 inline constexpr double kUnendedSeconds = 1e6;
 
+// The timing attributes any element of the story may carry (fml_timing.cpp reads them).
 inline constexpr std::initializer_list<const char*> kTiming = {"begin", "duration", "dur", "end", "repeat"};
 
 // The head's allowed range per axis, in degrees, from the model's range items.
