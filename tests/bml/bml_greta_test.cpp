@@ -145,12 +145,12 @@ TEST(BmlGreta, RepetitivityRepeatsHeadMovements) {
 
 TEST(BmlGreta, UnknownNamesKeepTheirSpanWithAPlacedWarning) {
   const BmlDocument d = read_ok(greta("face", "affect=nostalgia"));
-  EXPECT_TRUE(has_warning(d, "bml.unknown_reference", 4));
+  EXPECT_TRUE(has_warning(d, "bml.unknown_greta_name", 4));
   ASSERT_EQ(d.behaviours.size(), 1U);
   EXPECT_FALSE(d.behaviours[0].drawn);
   EXPECT_DOUBLE_EQ(d.behaviours[0].end, 2);
   EXPECT_TRUE(d.timeline.clips.empty());
-  EXPECT_TRUE(has_warning(read_ok(greta("face", "affect=complex:JOY_and_NOSTALGIA")), "bml.unknown_reference", 4));
+  EXPECT_TRUE(has_warning(read_ok(greta("face", "affect=complex:JOY_and_NOSTALGIA")), "bml.unknown_greta_name", 4));
 }
 
 TEST(BmlGreta, ParametersWithoutACounterpartAreSaid) {

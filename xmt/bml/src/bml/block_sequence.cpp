@@ -9,6 +9,7 @@
 #include "bml/block_reader.hpp"
 #include "bml/sync_ref.hpp"
 #include "fapc/bml/bml.hpp"
+#include "fapc/bml/codes.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "fapc/codec/include_policy.hpp"
 #include "fapc/xml/text.hpp"
@@ -55,7 +56,8 @@ Result<std::vector<ListedDocument>> parse_list(std::string_view text, const std:
                                ? std::nullopt
                                : parse_seconds(line.substr(number_at, number_end - number_at));
       if (!seconds || *seconds < 0)
-        return make_error(d.at_where, "'at' needs the time the block is sent, seconds from 0 on, then the document",
+        return make_error(codes::bml::bad_sequence, d.at_where,
+                          "'at' needs the time the block is sent, seconds from 0 on, then the document",
                           std::string(line));
       d.at = *seconds;
       path_at = number_end == std::string_view::npos ? line.size() : line.find_first_not_of(" \t", number_end);
@@ -63,25 +65,26 @@ Result<std::vector<ListedDocument>> parse_list(std::string_view text, const std:
     }
     d.name = std::string(xml::trim(line.substr(path_at)));
     d.where = Location::text(list_name, line_number, static_cast<int>(path_at) + 1);
-    if (d.name.empty()) return make_error(d.where, "a time with no document after it", std::string(line));
+    if (d.name.empty())
+      return make_error(codes::bml::bad_sequence, d.where, "a time with no document after it", std::string(line));
     // A NUL would end the name early when the file is opened: another file than the one written.
     const auto control =
         std::find_if(d.name.begin(), d.name.end(), [](unsigned char c) { return c < 0x20 && c != '\t'; });
     if (control != d.name.end())
       return make_error(
+          codes::bml::bad_sequence,
           Location::text(list_name, line_number, static_cast<int>(path_at + (control - d.name.begin())) + 1),
           "a control character in a document's path", std::string(line));
     if (static_cast<std::int64_t>(out.size()) >= max_documents) {
-      Diagnostic e = make_error(
-          d.where,
+      return make_error(
+          codes::limit::runs, d.where,
           "more than " + std::to_string(max_documents) + " documents and behaviours (raise the limit with --max-runs)",
           std::string(line));
-      e.kind = ErrorKind::limit_exceeded;
-      return e;
     }
     out.push_back(std::move(d));
   }
-  if (out.empty()) return make_error(Location::text(list_name, 1, 1), "no BML document in this list");
+  if (out.empty())
+    return make_error(codes::bml::bad_sequence, Location::text(list_name, 1, 1), "no BML document in this list");
   return out;
 }
 
@@ -138,7 +141,7 @@ class Sequence {
   Status add(const ListedDocument& listed) {
     if (listed.at) {
       if (*listed.at < earlier_.arrival)
-        return make_error(listed.at_where,
+        return make_error(codes::bml::blocks_out_of_order, listed.at_where,
                           "at " + seconds_text(*listed.at) + " is before the block listed before it (sent at " +
                               seconds_text(earlier_.arrival) + "): blocks are listed in the order they are sent");
       earlier_.arrival = *listed.at;
@@ -169,7 +172,7 @@ class Sequence {
                          "this REPLACE block, sent at " + seconds_text(block->block_starts.front()) + ", removes " +
                              std::to_string(removed) +
                              " behaviour(s) of earlier blocks that had not started (the first: " + first + ")");
-        w.code = "bml.replaced";
+        w.code = codes::bml::replaced.name;
         out_.warnings.push_back(std::move(w));
       }
     }
@@ -202,11 +205,11 @@ class Sequence {
     if (id.empty() || std::find(out_.blocks.begin(), out_.blocks.end(), id) == out_.blocks.end()) return ok_status();
     if (block.dialect == "BML 1.0")
       return doc.error(
-          doc.root(), "id",
+          codes::bml::duplicate_block_id_error, doc.root(), "id",
           "a second block with id '" + id + "' in this sequence (BML 1.0 asks every block's id to be unique)");
     Diagnostic w = doc.warning(doc.root(), "id",
                                "a second block with id '" + id + "' in this sequence: references name the first");
-    w.code = "bml.duplicate_block_id";
+    w.code = codes::bml::duplicate_block_id.name;
     out_.warnings.push_back(std::move(w));
     return ok_status();
   }

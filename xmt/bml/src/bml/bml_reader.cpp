@@ -686,7 +686,7 @@ class BmlReader {
     if (found == earlier_->placed.end()) {
       std::string known;
       for (const auto& [id, behaviours] : earlier_->placed) known += (known.empty() ? "'" : ", '") + id + "'";
-      return fail(doc_.error(at.node, at.attribute,
+      return fail(doc_.error(codes::bml::unknown_reference, at.node, at.attribute,
                              "'" + describe(ref) + "' names the block '" + ref.block +
                                  "', which is not an earlier block of the sequence (" +
                                  (known.empty() ? std::string("there is none") : "those are " + known) +
@@ -695,7 +695,7 @@ class BmlReader {
     const auto behaviour = found->second.find(ref.behaviour);
     if (behaviour == found->second.end())
       return fail(
-          doc_.error(at.node, at.attribute,
+          doc_.error(codes::bml::unknown_reference, at.node, at.attribute,
                      "'" + describe(ref) + "': no behaviour '" + ref.behaviour + "' in block '" + ref.block + "'"));
     const PlacedPoints& placed = behaviour->second;
     std::optional<double> time;
@@ -703,7 +703,7 @@ class BmlReader {
     for (std::size_t m = 0; !time && m < placed.mark_ids.size(); ++m)
       if (placed.mark_ids[m] == ref.sync) time = placed.marks[m];
     if (!time)
-      return fail(doc_.error(at.node, at.attribute,
+      return fail(doc_.error(codes::bml::unknown_reference, at.node, at.attribute,
                              "'" + describe(ref) + "': '" + ref.behaviour + "' of block '" + ref.block +
                                  "' has no sync point '" + ref.sync + "'"));
     ref.absolute = true;

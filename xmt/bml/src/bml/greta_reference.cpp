@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "fapc/bml/codes.hpp"
 #include "fapc/xml/text.hpp"
 
 namespace fapc::bml {
@@ -125,14 +126,15 @@ Result<bool> read_greta_reference(const xml::XmlDocument& doc, const xmlNode* no
             doc.warning(child, "<" + std::string(xml::local_name(child)) +
                                    "> is not drawn: fapc's faces and heads have no counterpart (docs/bml.md, "
                                    "\"Greta references\")");
-        w.code = "bml.expressivity_not_drawn";
+        w.code = codes::bml::expressivity_not_drawn.name;
         once.report("expressivity " + std::string(parameter), std::move(w));
       }
       continue;
     }
     if (!value || !std::isfinite(*value) || *value < low || *value > 1)
-      return doc.error(child, "<" + std::string(xml::local_name(child)) + "> '" + text + "' is not a number from " +
-                                  (is_intensity ? "0" : "-1") + " to 1");
+      return doc.error(codes::bml::bad_value, child,
+                       "<" + std::string(xml::local_name(child)) + "> '" + text + "' is not a number from " +
+                           (is_intensity ? "0" : "-1") + " to 1");
     *slot = *value;
   }
   // Said, not drawn: fluidity and Greta's overall activation have no counterpart in one display
@@ -144,7 +146,7 @@ Result<bool> read_greta_reference(const xml::XmlDocument& doc, const xmlNode* no
       Diagnostic w =
           doc.warning(description, std::string(parameter) + " is read and not drawn on a " +
                                        (face ? "face" : "head or gaze") + " (docs/bml.md, \"Greta references\")");
-      w.code = "bml.expressivity_not_drawn";
+      w.code = codes::bml::expressivity_not_drawn.name;
       once.report("expressivity " + std::string(parameter), std::move(w));
     }
 
@@ -156,7 +158,7 @@ Result<bool> read_greta_reference(const xml::XmlDocument& doc, const xmlNode* no
         "'" + name + "' is not a Greta reference fapc knows (greta_references.tsv, intentions.tsv" +
             (found.missing.empty() || found.missing == name ? std::string() : "; '" + found.missing + "' has no row") +
             "): its timing is kept, nothing is drawn");
-    w.code = "bml.unknown_reference";
+    w.code = codes::bml::unknown_greta_name.name;
     once.report("reference " + name, std::move(w));
     return true;
   }
