@@ -24,7 +24,7 @@ TEST(FmlNamesOtherReaders, EveryRowWithARootIsNamedWithItsExtension) {
       const std::string expected = "this is a " + f.kind + " document (root <" + root + ">), not FML";
       EXPECT_EQ(read.error().message.substr(0, expected.size()), expected) << read.error().message;
       EXPECT_TRUE(read.error().message.ends_with("fapc reads it as " + f.extensions.front())) << read.error().message;
-      EXPECT_STREQ(read.error().code, codes::fml::other_language.name);
+      EXPECT_EQ(read.error().code, codes::fml::other_language.name);
       ++named;
     }
   }
