@@ -7,7 +7,7 @@
 #include <tuple>
 #include <vector>
 
-#include "fapc/transcoder/audio.hpp"
+#include "fapc/timeline/audio.hpp"
 
 namespace fapc::test {
 

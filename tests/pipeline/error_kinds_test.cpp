@@ -8,7 +8,7 @@
 #include "fapc/codec/file_io.hpp"
 #include "fapc/pipeline/convert.hpp"
 #include "fapc/pipeline/verify.hpp"
-#include "fapc/transcoder/schedule.hpp"
+#include "fapc/timeline/schedule.hpp"
 #include "pipeline_test_helpers.hpp"
 #include "support/test_support.hpp"
 

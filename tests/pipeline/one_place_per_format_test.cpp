@@ -116,5 +116,52 @@ TEST(OnePlacePerFormat, NoSourceOutsideTheTableSpellsAKindOrAnExtension) {
                                   << unexpected;
 }
 
+// The readers (xmt/, Mimic and the Algebra in transcoder/) and the timeline model name no format by
+// its extension either (the writers' own libraries, face/ and the like, name what they write): a reader
+// handed another reader's document names it from ReaderOptions::other_readers, made from the
+// table's rows. An extension counts when a literal holds it as a word (".bml", "read it as .smil").
+// Allowed: (file under the source tree, extension) -> why.
+const std::map<std::pair<std::string, std::string>, std::string> kLibraryExtensions = {
+    {{"xmt/bml/src/bml/recorded_speech.cpp", ".wav"}, "a BML speech's recorded audio named without extension"},
+    {{"xmt/xmto/src/xmto/xmto_reader.cpp", ".xmt"}, "the XMT-Omega reader telling XMT-A from its own .xmt"},
+};
+
+bool holds_as_word(const std::string& literal, const std::string& extension) {
+  for (std::size_t at = literal.find(extension); at != std::string::npos; at = literal.find(extension, at + 1)) {
+    const std::size_t end = at + extension.size();
+    const bool starts = at == 0 || literal[at - 1] == ' ' || literal[at - 1] == '(';
+    const bool ends = end == literal.size() || std::string(" ),;:").find(literal[end]) != std::string::npos;
+    if (starts && ends) return true;
+  }
+  return false;
+}
+
+TEST(OnePlacePerFormat, AWordScanFindsAnExtensionInAMessage) {
+  EXPECT_TRUE(holds_as_word("(read it as .smil)", ".smil"));
+  EXPECT_TRUE(holds_as_word(".bml", ".bml"));
+  EXPECT_FALSE(holds_as_word("a.bml", ".bml"));
+  EXPECT_FALSE(holds_as_word(".bmlseq", ".bml"));
+}
+
+TEST(OnePlacePerFormat, NoReaderNamesAnExtensionOfTheTable) {
+  std::set<std::string> extensions;
+  for (const auto& f : pipeline::formats().inputs()) extensions.insert(f.extensions.begin(), f.extensions.end());
+  for (const auto& f : pipeline::formats().outputs()) extensions.insert(f.extensions.begin(), f.extensions.end());
+  const std::string root = test::source_dir() + "/";
+  std::string unexpected;
+  for (const char* folder : {"xmt/", "transcoder/timeline/", "transcoder/src/", "transcoder/include/"})
+    for (const char* suffix : {".cpp", ".hpp"})
+      for (const std::string& file : test::files_under(root + folder, suffix)) {
+        const std::string relative = file.substr(root.size());
+        for (const Literal& literal : string_literals(test::read_text(file)))
+          for (const std::string& extension : extensions)
+            if (holds_as_word(literal.text, extension) && !kLibraryExtensions.contains({relative, extension}))
+              unexpected += relative + ":" + std::to_string(literal.line) + ": \"" + literal.text + "\"\n";
+      }
+  EXPECT_TRUE(unexpected.empty()) << "a reader names a format of the table by its extension (take it from "
+                                     "ReaderOptions::other_readers, made from the rows):\n"
+                                  << unexpected;
+}
+
 }  // namespace
 }  // namespace fapc

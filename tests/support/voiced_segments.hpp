@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "fapc/codec/fap_sequence.hpp"
-#include "fapc/transcoder/audio.hpp"
+#include "fapc/timeline/audio.hpp"
 
 namespace fapc::test {
 

@@ -7,8 +7,8 @@
 #include <map>
 #include <sstream>
 
-#include "fapc/transcoder/schedule.hpp"
-#include "fapc/transcoder/timeline.hpp"
+#include "fapc/timeline/schedule.hpp"
+#include "fapc/timeline/timeline.hpp"
 
 namespace fapc {
 namespace {

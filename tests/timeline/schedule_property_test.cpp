@@ -5,7 +5,7 @@
 
 #include <random>
 
-#include "fapc/transcoder/schedule.hpp"
+#include "fapc/timeline/schedule.hpp"
 
 namespace fapc {
 namespace {

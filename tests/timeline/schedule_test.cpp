@@ -1,7 +1,7 @@
 // The scheduler against timings worked out by hand (docs/timeline.md).
 #include <gtest/gtest.h>
 
-#include "fapc/transcoder/schedule.hpp"
+#include "fapc/timeline/schedule.hpp"
 
 namespace fapc {
 namespace {

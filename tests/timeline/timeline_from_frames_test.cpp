@@ -4,8 +4,8 @@
 #include <algorithm>
 
 #include "fapc/codec/fap_file.hpp"
+#include "fapc/timeline/timeline_from_frames.hpp"
 #include "fapc/transcoder/render.hpp"
-#include "fapc/transcoder/timeline_from_frames.hpp"
 #include "support/test_support.hpp"
 
 namespace fapc {

@@ -13,7 +13,7 @@
 #include "fapc/codec/fba.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "fapc/mpeg4/mp4_reader.hpp"
-#include "fapc/transcoder/timeline_from_frames.hpp"
+#include "fapc/timeline/timeline_from_frames.hpp"
 #include "support/test_support.hpp"
 
 namespace fapc {

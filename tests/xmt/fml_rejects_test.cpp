@@ -144,22 +144,43 @@ TEST(FmlRejects, EveryBadDocumentGivesItsExactDiagnostic) {
 }
 
 TEST(FmlRejects, NeighbouringFormatsAreNamedNotMisread) {
+  // The readers of fapc are named from the list the options carry (the pipeline makes it from its
+  // table: tests/pipeline/fml_names_other_readers_test.cpp); this one stands for it.
+  ReaderOptions options;
+  options.other_readers = {{"fml-apml", "fml-apml", ".fml-apml"},
+                           {"apml", "apml", ".apml"},
+                           {"bml", "bml", ".bml"},
+                           {"par", "smil", ".smil"}};
   const std::map<std::string, std::string> formats = {
-      {"fml-apml-bml.xml", "this is Greta FML-APML, not FML"},
-      {"apml-Neutral.xml", "this is APML (Greta's Affective Presentation Markup Language), not FML"},
-      {"bml-BML_example2.xml", "this is BML (Behavior Markup Language), not FML"},
-      {"smil-simpleEnglish.smil", "this is an Xface SMIL-Agent script (read it as .smil), not FML"},
+      {"fml-apml-bml.xml", "this is a fml-apml document (root <fml-apml>), not FML"},
+      {"apml-Neutral.xml", "this is a apml document (root <apml>), not FML"},
+      {"bml-BML_example2.xml", "this is a bml document (root <bml>), not FML"},
+      {"smil-simpleEnglish.smil", "this is a smil document (root <par>), not FML"},
       {"other-erl_example.xml", "this is Greta ERL (expression library), not FML"},
       {"other-score.xml", "this is a Greta score, not FML"},
   };
   const std::string folder = test::corpus_dir() + "/fml-neighbours/";
   EXPECT_EQ(test::files_under(folder, "").size(), formats.size());
   for (const auto& [name, start] : formats) {
-    const auto read = read_fml(test::read_text(folder + name), name);
+    const auto read = read_fml(test::read_text(folder + name), name, options);
     ASSERT_FALSE(read.ok()) << name;
     EXPECT_EQ(read.error().message.substr(0, start.size()), start) << read.error().message;
     EXPECT_GT(read.error().where.line, 0) << name;
   }
+}
+
+TEST(FmlRejects, AnotherReadersDocumentSaysHowToReadIt) {
+  ReaderOptions options;
+  options.other_readers = {{"bml", "bml", ".bml"}};
+  const auto read = read_fml("<BML id=\"b\"/>\n", "b.fml", options);
+  ASSERT_FALSE(read.ok());
+  EXPECT_EQ(format_diagnostic(read.error()),
+            "b.fml:1:1: error: this is a bml document (root <BML>), not FML (the Arya-DiPaola Face Modeling "
+            "Language, root fml with model and story): fapc reads it as .bml");
+  // Without the list, no reader is named: the root is reported as not FML's.
+  const auto unnamed = read_fml("<bml id=\"b\"/>\n", "b.fml");
+  ASSERT_FALSE(unnamed.ok());
+  EXPECT_EQ(unnamed.error().message, "not an FML document: the root element is 'bml', expected fml");
 }
 
 TEST(FmlRejects, TheInnerFmlOfFmlApmlIsRecognised) {

@@ -10,7 +10,7 @@
 #include "fapc/codec/fap_file.hpp"
 #include "fapc/codec/fba.hpp"
 #include "fapc/speech/engine.hpp"
-#include "fapc/transcoder/timeline_from_frames.hpp"
+#include "fapc/timeline/timeline_from_frames.hpp"
 #include "fapc/xmto/xmto.hpp"
 #include "support/test_support.hpp"
 

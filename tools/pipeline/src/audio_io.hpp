@@ -7,7 +7,7 @@
 
 #include "fapc/codec/limits.hpp"
 #include "fapc/mpeg4/audio_track.hpp"
-#include "fapc/transcoder/audio.hpp"
+#include "fapc/timeline/audio.hpp"
 
 namespace fapc::pipeline {
 

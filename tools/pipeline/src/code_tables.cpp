@@ -11,6 +11,7 @@
 #include "fapc/pipeline/codes.hpp"
 #include "fapc/smil/codes.hpp"
 #include "fapc/speech/codes.hpp"
+#include "fapc/timeline/codes.hpp"
 #include "fapc/transcoder/codes.hpp"
 #include "fapc/vocabulary/codes.hpp"
 #include "fapc/xml/codes.hpp"
@@ -20,6 +21,7 @@ namespace fapc::pipeline {
 
 std::vector<CodeTable> code_tables() {
   return {{"fapc::codec", codes::codec_codes},
+          {"fapc::timeline", codes::timeline_codes},
           {"fapc::transcoder", codes::transcoder_codes},
           {"fapc::speech", codes::speech_codes},
           {"fapc::audio_codec", codes::audio_codec_codes},

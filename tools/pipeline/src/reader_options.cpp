@@ -1,5 +1,6 @@
 #include "reader_options.hpp"
 
+#include "fapc/pipeline/registry.hpp"
 #include "fapc/speech/engine.hpp"
 #include "timeline_input.hpp"
 
@@ -22,6 +23,9 @@ ReaderOptions reader_options(const ConvertOptions& options, const Profile* profi
   out.speech.words_per_minute = options.words_per_minute;
   // Speech may last as long as the frames may: the frame limit at the frame rate.
   out.speech.max_seconds = static_cast<double>(options.limits.max_frames) / options.fps;
+  // What each row's reader takes, so that a reader handed another's document names the row's.
+  for (const InputFormat& f : formats().inputs())
+    for (const std::string& root : f.xml_roots) out.other_readers.push_back({root, f.kind, f.extensions.front()});
   return out;
 }
 

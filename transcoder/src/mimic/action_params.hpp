@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "fapc/codec/diagnostic.hpp"
-#include "fapc/transcoder/timeline.hpp"
+#include "fapc/timeline/timeline.hpp"
 #include "mimic_ast.hpp"
 
 namespace fapc::mimic {

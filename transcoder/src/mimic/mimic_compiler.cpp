@@ -18,11 +18,11 @@
 #include "fapc/codec/file_io.hpp"
 #include "fapc/codec/include_policy.hpp"
 #include "fapc/codec/nesting_limit.hpp"
+#include "fapc/timeline/schedule.hpp"
 #include "fapc/transcoder/algebra.hpp"
 #include "fapc/transcoder/codes.hpp"
 #include "fapc/transcoder/expression_file.hpp"
 #include "fapc/transcoder/mimic.hpp"
-#include "fapc/transcoder/schedule.hpp"
 #include "mimic_lexer.hpp"
 #include "mimic_parser.hpp"
 

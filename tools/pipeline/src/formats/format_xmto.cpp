@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "fapc/pipeline/registry.hpp"
-#include "fapc/transcoder/timeline_from_frames.hpp"
+#include "fapc/timeline/timeline_from_frames.hpp"
 #include "fapc/xmto/xmto.hpp"
 #include "input_chain.hpp"
 #include "reader_options.hpp"

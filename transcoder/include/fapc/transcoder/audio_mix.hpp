@@ -7,7 +7,7 @@
 
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/limits.hpp"
-#include "fapc/transcoder/audio.hpp"
+#include "fapc/timeline/audio.hpp"
 
 namespace fapc {
 

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "fapc/transcoder/timeline.hpp"
+#include "fapc/timeline/timeline.hpp"
 
 namespace fapc {
 

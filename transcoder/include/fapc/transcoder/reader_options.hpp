@@ -11,6 +11,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/include_policy.hpp"
@@ -35,6 +36,15 @@ struct SpeechOptions {
   Coarticulation coarticulation;
 };
 
+// A document another reader takes, known by its root element: a reader handed one by mistake
+// names the reader to use ("a bml document: fapc reads it as .bml, not FML"). The pipeline makes
+// the list from its table's rows (their xml_roots), so that no reader lists other formats.
+struct OtherReader {
+  std::string root;       // lower case, as the row lists it
+  std::string kind;       // the row's kind name
+  std::string extension;  // the row's first extension
+};
+
 struct ReaderOptions {
   // The resource limits of the read (docs/security.md): max_runs bounds the elements, behaviours
   // and runs after repeats (--max-runs); the speech text and seconds of the whole document, the
@@ -57,6 +67,8 @@ struct ReaderOptions {
   // The end when the document gives none (--duration): lets indefinite repeats end.
   std::optional<double> duration;
   SpeechOptions speech;
+  // The other readers' roots (OtherReader); empty: a reader names none.
+  std::vector<OtherReader> other_readers;
 };
 
 }  // namespace fapc

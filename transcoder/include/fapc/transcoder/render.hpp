@@ -10,9 +10,9 @@
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/fap_sequence.hpp"
 #include "fapc/codec/limits.hpp"
+#include "fapc/timeline/timeline.hpp"
 #include "fapc/transcoder/curves.hpp"
 #include "fapc/transcoder/profile.hpp"
-#include "fapc/transcoder/timeline.hpp"
 
 namespace fapc {
 

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "fapc/codec/diagnostic.hpp"
-#include "fapc/transcoder/audio.hpp"
-#include "fapc/transcoder/timeline.hpp"
+#include "fapc/timeline/audio.hpp"
+#include "fapc/timeline/timeline.hpp"
 
 namespace fapc {
 

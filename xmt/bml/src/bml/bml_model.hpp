@@ -11,8 +11,8 @@
 
 #include "bml/sync_solver.hpp"
 #include "fapc/codec/diagnostic.hpp"
+#include "fapc/timeline/timeline.hpp"
 #include "fapc/transcoder/speech.hpp"
-#include "fapc/transcoder/timeline.hpp"
 #include "fapc/vocabulary/behaviour_lexicon.hpp"
 
 namespace fapc::bml {

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "fapc/transcoder/schedule.hpp"
+#include "fapc/timeline/schedule.hpp"
 #include "fapc/xml/xml_document.hpp"
 
 namespace fapc::fml {

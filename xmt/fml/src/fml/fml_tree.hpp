@@ -1,4 +1,4 @@
-// What the FML reader builds before scheduling: the time tree for fapc::schedule() and, per leaf,
+// What the FML reader builds before scheduling: the time tree for fapc::timeline::schedule() and, per leaf,
 // what its runs become on the timeline. lower_fml() turns the scheduled runs into clips.
 #pragma once
 
@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "fapc/transcoder/schedule.hpp"
-#include "fapc/transcoder/timeline.hpp"
+#include "fapc/timeline/schedule.hpp"
+#include "fapc/timeline/timeline.hpp"
 #include "fml/speech_visemes.hpp"
 
 namespace fapc::fml {

@@ -4,14 +4,22 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
+#include "fapc/transcoder/reader_options.hpp"
 #include "fapc/xml/xml_document.hpp"
 
 namespace fapc::fml {
 
-// "Greta FML-APML", "the fml part of a Greta FML-APML document", "APML", "BML", "Xface
-// SMIL-Agent", "Greta ERL", "Greta score", "XMT-Omega", "XMT-A"; empty when the document may be FML.
-// `root` is `doc`'s root; a streamed document is read only as far as its model or story.
-std::string other_format_name(const xml::XmlDocument& doc, const xmlNode* root);
+// What the document is when it is not FML: a document another reader of fapc takes, from `others`
+// (ReaderOptions::other_readers: the pipeline's table), {"a bml document (root <bml>)", "fapc
+// reads it as .bml"}; one no reader takes, {"Greta ERL (expression library)", "fapc does not read
+// it"}; the fml part of FML-APML. `what` is empty when the document may be FML. `root` is `doc`'s
+// root; a streamed document is read only as far as its model or story.
+struct OtherFormat {
+  std::string what;
+  std::string reading;  // how fapc reads it, if it does
+};
+OtherFormat other_format(const xml::XmlDocument& doc, const xmlNode* root, const std::vector<OtherReader>& others);
 
 }  // namespace fapc::fml

@@ -1,5 +1,5 @@
 // What the SMIL-Agent reader builds before scheduling (smil_reader.cpp): the time tree for
-// fapc::schedule_tree() and, per leaf, what it says. place_behaviours() turns the scheduled runs
+// fapc::timeline::schedule_tree() and, per leaf, what it says. place_behaviours() turns the scheduled runs
 // into a BML block (bml/bml_model.hpp) whose lowering is the BML reader's.
 #pragma once
 
@@ -12,7 +12,7 @@
 #include "bml/bml_model.hpp"
 #include "bml/speak_text.hpp"
 #include "fapc/smil/smil.hpp"
-#include "fapc/transcoder/schedule.hpp"
+#include "fapc/timeline/schedule.hpp"
 
 namespace fapc::smil {
 

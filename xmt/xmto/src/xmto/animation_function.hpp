@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "fapc/transcoder/timeline.hpp"
+#include "fapc/timeline/timeline.hpp"
 #include "fapc/xml/xml_document.hpp"
 
 namespace fapc::xmto {

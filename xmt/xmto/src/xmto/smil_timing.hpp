@@ -5,8 +5,8 @@
 
 #include <optional>
 
-#include "fapc/transcoder/schedule.hpp"
-#include "fapc/transcoder/timeline.hpp"
+#include "fapc/timeline/schedule.hpp"
+#include "fapc/timeline/timeline.hpp"
 #include "fapc/xml/xml_document.hpp"
 
 namespace fapc::xmto {

@@ -1,4 +1,4 @@
-// What the XMT-Omega reader builds before scheduling: the time tree for fapc::schedule() and, per
+// What the XMT-Omega reader builds before scheduling: the time tree for fapc::timeline::schedule() and, per
 // leaf, what its runs become on the timeline. lower_to_timeline() turns the scheduled runs into
 // clips (docs/xmt-omega.md).
 #pragma once
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "fapc/transcoder/schedule.hpp"
-#include "fapc/transcoder/timeline.hpp"
+#include "fapc/timeline/schedule.hpp"
+#include "fapc/timeline/timeline.hpp"
 #include "xmto/animation_function.hpp"
 
 namespace fapc::xmto {

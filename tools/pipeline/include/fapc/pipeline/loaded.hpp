@@ -10,9 +10,9 @@
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/fap_sequence.hpp"
 #include "fapc/pipeline/json_value.hpp"
-#include "fapc/transcoder/audio.hpp"
+#include "fapc/timeline/audio.hpp"
+#include "fapc/timeline/timeline.hpp"
 #include "fapc/transcoder/curves.hpp"
-#include "fapc/transcoder/timeline.hpp"
 
 namespace fapc::pipeline {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "fapc/codec/diagnostic.hpp"
-#include "fapc/transcoder/audio.hpp"
+#include "fapc/timeline/audio.hpp"
 
 namespace fapc::audio_codec {
 

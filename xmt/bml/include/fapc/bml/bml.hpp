@@ -13,10 +13,10 @@
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/include_policy.hpp"
 #include "fapc/codec/limits.hpp"
+#include "fapc/timeline/timeline.hpp"
 #include "fapc/transcoder/frame_budget.hpp"
 #include "fapc/transcoder/reader_options.hpp"
 #include "fapc/transcoder/speech.hpp"
-#include "fapc/transcoder/timeline.hpp"
 #include "fapc/vocabulary/behaviour_lexicon.hpp"
 
 namespace fapc::bml {

@@ -1,5 +1,5 @@
 // The FML reader (docs/fml.md): an Arya-DiPaola Face Modeling Language document
-// lowered to the shared timeline through fapc::schedule(). Moves ramp their target from its
+// lowered to the shared timeline through fapc::timeline::schedule(). Moves ramp their target from its
 // current value to theirs and hold it; talk becomes FAP 1 visemes, expr FAP 2 expressions, hdmv
 // the head rotation FAPs; excl branches are chosen by event values given up front.
 #pragma once
@@ -15,11 +15,11 @@
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/include_policy.hpp"
 #include "fapc/codec/limits.hpp"
+#include "fapc/timeline/timeline.hpp"
 #include "fapc/transcoder/frame_budget.hpp"
 #include "fapc/transcoder/profile.hpp"
 #include "fapc/transcoder/reader_options.hpp"
 #include "fapc/transcoder/speech.hpp"
-#include "fapc/transcoder/timeline.hpp"
 
 namespace fapc::fml {
 

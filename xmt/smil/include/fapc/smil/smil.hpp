@@ -14,8 +14,8 @@
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/include_policy.hpp"
 #include "fapc/codec/limits.hpp"
+#include "fapc/timeline/timeline.hpp"
 #include "fapc/transcoder/reader_options.hpp"
-#include "fapc/transcoder/timeline.hpp"
 
 namespace fapc::smil {
 

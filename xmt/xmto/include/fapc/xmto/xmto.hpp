@@ -1,5 +1,5 @@
 // The XMT-Omega reader (docs/xmt-omega.md): an XMT-O document lowered to the
-// shared timeline through fapc::schedule(). Reads the SMIL timing and animation subset that
+// shared timeline through fapc::timeline::schedule(). Reads the SMIL timing and animation subset that
 // describes face animation; `animation src` places another input, loaded by a caller-given
 // function, so this library depends on no other front end.
 #pragma once
@@ -15,9 +15,9 @@
 #include "fapc/codec/include_policy.hpp"
 #include "fapc/codec/limits.hpp"
 #include "fapc/fml/fml.hpp"
+#include "fapc/timeline/timeline.hpp"
 #include "fapc/transcoder/frame_budget.hpp"
 #include "fapc/transcoder/reader_options.hpp"
-#include "fapc/transcoder/timeline.hpp"
 #include "fapc/xml/clock_value.hpp"  // parse_clock_value, part of this reader's interface
 
 namespace fapc::xmto {

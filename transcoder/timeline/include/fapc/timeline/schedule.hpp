@@ -16,7 +16,7 @@
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/limits.hpp"
 
-namespace fapc {
+namespace fapc::timeline {
 
 // std::optional<double> in 8 bytes instead of 16: "no value" is one NaN bit pattern that no
 // arithmetic produces (a quiet NaN with a payload), so every double, NaN included, stays a value.
@@ -169,4 +169,9 @@ std::variant<Schedule, ScheduleError> schedule_tree(const ScheduleNode& root, co
 // "the action" where the predicate needs one.
 Result<Schedule> schedule(const ScheduleNode& root, const ScheduleOptions& options = {});
 
+}  // namespace fapc::timeline
+
+// Until the tree names the model fapc::timeline::..., the names are seen from fapc as before.
+namespace fapc {
+using namespace timeline;
 }  // namespace fapc

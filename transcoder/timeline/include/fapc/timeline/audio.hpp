@@ -8,7 +8,7 @@
 
 #include "fapc/codec/diagnostic.hpp"
 
-namespace fapc {
+namespace fapc::timeline {
 
 // One piece of sound placed on the timeline: mono 16-bit PCM at its own rate, starting at `begin`
 // (absolute seconds, like Clip::begin). Front ends add one per spoken text or audio element.
@@ -43,4 +43,9 @@ struct AudioTrack {
   }
 };
 
+}  // namespace fapc::timeline
+
+// Until the tree names the model fapc::timeline::..., the names are seen from fapc as before.
+namespace fapc {
+using namespace timeline;
 }  // namespace fapc

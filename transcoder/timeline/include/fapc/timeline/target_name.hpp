@@ -10,7 +10,7 @@
 
 #include "fapc/codec/file_name.hpp"
 
-namespace fapc {
+namespace fapc::timeline {
 
 class TargetName {
  public:
@@ -45,4 +45,9 @@ class TargetName {
 
 std::ostream& operator<<(std::ostream& out, const TargetName& name);
 
+}  // namespace fapc::timeline
+
+// Until the tree names the model fapc::timeline::..., the names are seen from fapc as before.
+namespace fapc {
+using namespace timeline;
 }  // namespace fapc

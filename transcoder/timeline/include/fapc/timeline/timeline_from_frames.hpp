@@ -4,9 +4,9 @@
 
 #include "fapc/codec/diagnostic.hpp"
 #include "fapc/codec/fap_sequence.hpp"
-#include "fapc/transcoder/timeline.hpp"
+#include "fapc/timeline/timeline.hpp"
 
-namespace fapc {
+namespace fapc::timeline {
 
 // One clip per FAP and run of consecutive frames carrying it: keys at the frame times, linear
 // between them, the last value held to the end of its frame, so that rendering at the sequence's
@@ -14,4 +14,9 @@ namespace fapc {
 // step keys. `shift` moves every clip (seconds); `source` labels them.
 Timeline timeline_from_frames(const FapSequence& sequence, double shift, const Location& source);
 
+}  // namespace fapc::timeline
+
+// Until the tree names the model fapc::timeline::..., the names are seen from fapc as before.
+namespace fapc {
+using namespace timeline;
 }  // namespace fapc

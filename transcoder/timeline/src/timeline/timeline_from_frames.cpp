@@ -1,10 +1,10 @@
-#include "fapc/transcoder/timeline_from_frames.hpp"
+#include "fapc/timeline/timeline_from_frames.hpp"
 
 #include <cmath>
 #include <map>
 #include <string>
 
-namespace fapc {
+namespace fapc::timeline {
 namespace {
 
 // A clip being grown frame by frame.
@@ -122,4 +122,4 @@ Timeline timeline_from_frames(const FapSequence& sequence, double shift, const L
   return timeline;
 }
 
-}  // namespace fapc
+}  // namespace fapc::timeline

@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "fapc/codec/diagnostic.hpp"
-#include "fapc/transcoder/audio.hpp"
-#include "fapc/transcoder/target_name.hpp"
+#include "fapc/timeline/audio.hpp"
+#include "fapc/timeline/target_name.hpp"
 
-namespace fapc {
+namespace fapc::timeline {
 
 // How a curve goes from one key point to the next. sin/log/exp are the Mimic fading functions
 // f(u) on the fraction u of the segment elapsed: value = a + (b - a) * f(u).
@@ -128,4 +128,9 @@ const char* to_string(Fill fill);
 // A readable, stable text dump, one clip per line, for tests and `fapc compile --dump-timeline`.
 std::string dump(const Timeline& timeline);
 
+}  // namespace fapc::timeline
+
+// Until the tree names the model fapc::timeline::..., the names are seen from fapc as before.
+namespace fapc {
+using namespace timeline;
 }  // namespace fapc

@@ -2,9 +2,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "fapc/transcoder/timeline.hpp"
+#include "fapc/timeline/timeline.hpp"
 
-namespace fapc {
+namespace fapc::timeline {
 namespace {
 
 // The Mimic fading functions on the fraction u in [0, 1] of a segment (docs/mimic.md,
@@ -82,4 +82,4 @@ double Curve::left_limit(double local_time) const {
   return on_segment(after, local_time);
 }
 
-}  // namespace fapc
+}  // namespace fapc::timeline

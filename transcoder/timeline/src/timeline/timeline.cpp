@@ -1,9 +1,9 @@
 #include <algorithm>
 #include <sstream>
 
-#include "fapc/transcoder/timeline.hpp"
+#include "fapc/timeline/timeline.hpp"
 
-namespace fapc {
+namespace fapc::timeline {
 
 double Timeline::end() const {
   if (explicit_end) return *explicit_end;
@@ -69,4 +69,4 @@ std::string dump(const Timeline& timeline) {
   return out.str();
 }
 
-}  // namespace fapc
+}  // namespace fapc::timeline

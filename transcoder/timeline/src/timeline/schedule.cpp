@@ -2,16 +2,16 @@
 // where it is known without the parent, bottom-up, into a table by the node's number in depth-first
 // order (so the whole run is linear in the tree size, with no map from nodes), then place() walks
 // the tree once, top-down, with absolute times, numbering the nodes the same way.
-#include "fapc/transcoder/schedule.hpp"
+#include "fapc/timeline/schedule.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
 
-#include "fapc/transcoder/codes.hpp"
+#include "fapc/timeline/codes.hpp"
 
-namespace fapc {
+namespace fapc::timeline {
 namespace {
 
 using Kind = ScheduleNode::Kind;
@@ -407,4 +407,4 @@ std::variant<Schedule, ScheduleError> schedule_tree(const ScheduleNode& root, co
   return result;
 }
 
-}  // namespace fapc
+}  // namespace fapc::timeline

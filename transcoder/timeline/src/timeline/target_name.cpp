@@ -1,9 +1,9 @@
-#include "fapc/transcoder/target_name.hpp"
+#include "fapc/timeline/target_name.hpp"
 
 #include <array>
 #include <ostream>
 
-namespace fapc {
+namespace fapc::timeline {
 
 FileName TargetName::intern(std::string_view name) {
   constexpr std::size_t kRecent = 8;
@@ -19,4 +19,4 @@ FileName TargetName::intern(std::string_view name) {
 
 std::ostream& operator<<(std::ostream& out, const TargetName& name) { return out << name.str(); }
 
-}  // namespace fapc
+}  // namespace fapc::timeline
