@@ -25,12 +25,6 @@ struct ListedDocument {
   Location at_where;
 };
 
-std::string seconds_text(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3g s", v);
-  return buffer;
-}
-
 // `[at SECONDS] PATH` per line; blank lines and `#` lines are skipped.
 Result<std::vector<ListedDocument>> parse_list(std::string_view text, const std::string& list_name,
                                                std::int64_t max_documents) {

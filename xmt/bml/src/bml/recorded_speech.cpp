@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "bml/sync_ref.hpp"
 #include "fapc/bml/codes.hpp"
 #include "fapc/codec/file_io.hpp"
 #include "fapc/codec/include_policy.hpp"
@@ -15,12 +16,6 @@ namespace fapc::bml {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string seconds_text(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3g s", v);
-  return buffer;
-}
 
 // The marks of the speech's text (sync, tm or mark elements), each with its recorded time.
 // Other elements in the text (prosody marks) are said once: the recording is what is heard.

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 namespace fapc::bml {
@@ -83,6 +84,12 @@ std::optional<SyncRef> parse_sync_ref(std::string_view text, std::string& why) {
   ref.behaviour = parts[parts.size() - 2];
   ref.sync = parts.back();
   return ref;
+}
+
+std::string seconds_text(double seconds) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g s", seconds);
+  return buffer;
 }
 
 }  // namespace fapc::bml

@@ -23,4 +23,7 @@ std::optional<SyncRef> parse_sync_ref(std::string_view text, std::string& why);
 // A finite decimal number of seconds ("2", "-0.5", "1e-3"), nothing else around it but blanks.
 std::optional<double> parse_seconds(std::string_view text);
 
+// Seconds as messages show them ("2.5 s", three significant digits).
+std::string seconds_text(double seconds);
+
 }  // namespace fapc::bml
